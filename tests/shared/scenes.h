@@ -1,0 +1,13 @@
+#pragma once
+// Shared scenes (STYLE.md): the levels, chains and creatures that tests, benchmarks and tools
+// all use, built in one place.
+
+#include <string>
+
+namespace ossa::scenes {
+
+// Absolute path of a file in the source tree (levels/, assets/, tests/...). Uses the
+// OSSA_SOURCE_DIR environment variable when set (CTest sets it), else the compiled-in one.
+std::string source_path(const std::string& relative);
+
+}  // namespace ossa::scenes
