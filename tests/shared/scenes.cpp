@@ -11,3 +11,19 @@ std::string source_path(const std::string& relative) {
 }
 
 }  // namespace ossa::scenes
+
+namespace ossa::scenes {
+
+Skeleton chain_skeleton(int bones, float length, float bend) {
+  Skeleton s;
+  for (int i = 0; i < bones; ++i) {
+    BoneLocal rest;
+    rest.offset_ls = i == 0 ? glm::vec2(0.0f) : glm::vec2(length, 0.0f);
+    rest.angle_ls = i == 0 ? 0.0f : bend;
+    s.add_bone("bone" + std::to_string(i), i == 0 ? BoneKind::kRoot : BoneKind::kBackVertebra,
+               i == 0 ? kNoParent : i - 1, length, 0.1f * length, rest, Layer::kBody);
+  }
+  return s;
+}
+
+}  // namespace ossa::scenes

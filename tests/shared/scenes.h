@@ -11,3 +11,13 @@ namespace ossa::scenes {
 std::string source_path(const std::string& relative);
 
 }  // namespace ossa::scenes
+
+#include "ossa/skeleton/skeleton.h"
+
+namespace ossa::scenes {
+
+// A straight chain of `bones` bones (the first is the root at the origin), each `length`
+// metres long, each joint bent by `bend` radians.
+Skeleton chain_skeleton(int bones, float length, float bend = 0.0f);
+
+}  // namespace ossa::scenes

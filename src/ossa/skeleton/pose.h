@@ -1,0 +1,58 @@
+#pragma once
+// Pose — one creature's animated joint values — and the jobs that turn it into matrices:
+// forward kinematics (local joints → model-space and world-space bone matrices) and the
+// skinning palette. Jobs follow STYLE.md (ozz IKTwoBoneJob style): documented input fields,
+// outputs passed in, validate() / run(), no allocation inside run().
+
+#include <span>
+#include <vector>
+
+#include "ossa/math/transform2d.h"
+#include "ossa/skeleton/skeleton.h"
+
+namespace ossa {
+
+// Per-creature joint values, one BoneLocal per bone of its Skeleton.
+struct Pose {
+  std::vector<BoneLocal> locals;
+
+  // The skeleton's rest pose.
+  static Pose rest(const Skeleton& skeleton) { return Pose{skeleton.rest_locals()}; }
+};
+
+// Forward kinematics: model_i = model_parent(i) · T(offset_i) · R(angle_i), and optionally
+// world_i = root_to_world · model_i. Because parents precede children, one pass suffices.
+struct ForwardKinematicsJob {
+  const Skeleton* skeleton = nullptr;     // input
+  std::span<const BoneLocal> locals;      // input: one per bone
+  Mat2x3 model_to_world;                  // input: creature placement (mirror for facing -x)
+  std::span<Mat2x3> model;                // output: bone frame → model space, one per bone
+  std::span<Mat2x3> world;                // optional output: bone frame → world space
+
+  bool validate() const;
+  bool run() const;
+};
+
+// The world-space joint positions of a pose: start (joint with parent) and end of each bone.
+glm::vec2 bone_start(const Mat2x3& bone_matrix);
+glm::vec2 bone_end(const Mat2x3& bone_matrix, float length);
+
+// Skinning palette: palette_i = world_i · inverse_bind_i, where inverse_bind maps a vertex from
+// the space it was authored in (model space of the bind pose) to the bone frame. Sprite meshes
+// authored directly in bone space pass an empty inverse_bind (palette = world).
+struct PaletteJob {
+  std::span<const Mat2x3> world;          // input
+  std::span<const Mat2x3> inverse_bind;   // input, empty or one per bone
+  std::span<Mat2x3> palette;              // output
+
+  bool validate() const;
+  bool run() const;
+};
+
+// Convenience: model-space matrices of a pose (allocates; for tools and tests).
+std::vector<Mat2x3> model_matrices(const Skeleton& skeleton, std::span<const BoneLocal> locals);
+
+// Inverse of an invertible affine matrix.
+Mat2x3 inverse(const Mat2x3& m);
+
+}  // namespace ossa
