@@ -1,0 +1,113 @@
+#include "ossa/level/level.h"
+
+#include <algorithm>
+#include <cmath>
+#include <utility>
+
+#include "ossa/assert.h"
+
+namespace ossa {
+
+namespace {
+bool all_valid(const std::vector<Box>& boxes) {
+  for (const Box& b : boxes) {
+    if (!b.is_valid()) return false;
+  }
+  return true;
+}
+bool finite(glm::vec2 v) { return std::isfinite(v.x) && std::isfinite(v.y); }
+}  // namespace
+
+Level::Level(std::vector<Box> colliders, glm::vec2 spawn, std::string level_name)
+    : name(std::move(level_name)), spawn_ws(spawn), colliders_(std::move(colliders)) {
+  OSSA_ASSERT(all_valid(colliders_), "Level: every collider must be a valid box");
+  rebuild_index();
+}
+
+const Box& Level::box(int index) const {
+  OSSA_ASSERT(index >= 0 && index < size(), "Level::box: index out of range");
+  return colliders_[index];
+}
+
+Box Level::bounds() const {
+  Box b{spawn_ws, spawn_ws};
+  for (const Box& c : colliders_) b = b.united(c);
+  return b;
+}
+
+int Level::add_box(const Box& box) {
+  OSSA_ASSERT(box.is_valid(), "Level::add_box: invalid box");
+  colliders_.push_back(box);
+  rebuild_index();
+  return size() - 1;
+}
+
+void Level::remove_box(int index) {
+  OSSA_ASSERT(index >= 0 && index < size(), "Level::remove_box: index out of range");
+  colliders_.erase(colliders_.begin() + index);
+  rebuild_index();
+}
+
+void Level::set_box(int index, const Box& box) {
+  OSSA_ASSERT(index >= 0 && index < size(), "Level::set_box: index out of range");
+  OSSA_ASSERT(box.is_valid(), "Level::set_box: invalid box");
+  colliders_[index] = box;
+  // Refitting keeps the index exact but loosens it when boxes move far; a rebuild after as
+  // many refits as there are boxes keeps the amortised cost O(log n) per edit.
+  if (++refits_ > std::max(64, size())) {
+    rebuild_index();
+  } else {
+    index_.update(index, box);
+  }
+}
+
+void Level::set_colliders(std::vector<Box> colliders) {
+  OSSA_ASSERT(all_valid(colliders), "Level::set_colliders: every collider must be a valid box");
+  colliders_ = std::move(colliders);
+  rebuild_index();
+}
+
+void Level::rebuild_index() {
+  index_.build(colliders_);
+  refits_ = 0;
+}
+
+std::optional<GroundHit> Level::ground_height_below(float x_min, float x_max, float from_y,
+                                                    float max_drop) const {
+  OSSA_ASSERT(std::isfinite(x_min) && std::isfinite(x_max) && std::isfinite(from_y) &&
+                  std::isfinite(max_drop),
+              "ground_height_below: inputs must be finite");
+  OSSA_ASSERT(x_min <= x_max && max_drop >= 0.0f, "ground_height_below: empty span or negative drop");
+  return index_.ground(x_min, x_max, from_y - max_drop, from_y + kGroundEpsilon);
+}
+
+bool Level::overlaps(const Box& box) const {
+  OSSA_ASSERT(finite(box.min_ws) && finite(box.max_ws), "overlaps: box must be finite");
+  return index_.any_overlap(box);
+}
+
+std::optional<int> Level::first_overlap(const Box& box) const {
+  OSSA_ASSERT(finite(box.min_ws) && finite(box.max_ws), "first_overlap: box must be finite");
+  const int i = index_.lowest_overlap(box);
+  if (i < 0) return std::nullopt;
+  return i;
+}
+
+void Level::overlapping(const Box& box, std::vector<int>& out) const {
+  OSSA_ASSERT(finite(box.min_ws) && finite(box.max_ws), "overlapping: box must be finite");
+  index_.overlapping(box, out);
+}
+
+std::optional<SweepHit> Level::sweep_box(const Box& box, glm::vec2 delta) const {
+  OSSA_ASSERT(finite(box.min_ws) && finite(box.max_ws) && finite(delta),
+              "sweep_box: inputs must be finite");
+  OSSA_ASSERT(box.min_ws.x <= box.max_ws.x && box.min_ws.y <= box.max_ws.y,
+              "sweep_box: box min must not exceed max");
+  return index_.sweep(box, delta);
+}
+
+std::optional<SweepHit> Level::raycast(glm::vec2 from_ws, glm::vec2 to_ws) const {
+  return sweep_box(Box{from_ws, from_ws}, to_ws - from_ws);
+}
+
+}  // namespace ossa
