@@ -44,6 +44,7 @@ int Skeleton::add_bone(std::string name, BoneKind kind, int parent, float length
   widths_.push_back(width);
   layers_.push_back(layer);
   rest_.push_back(rest);
+  flip_y_.push_back(0);
   return bone_count() - 1;
 }
 

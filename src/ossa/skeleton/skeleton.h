@@ -74,6 +74,12 @@ class Skeleton {
   // Changes a bone's rest transform (used while building, e.g. after leg placement).
   void set_rest(int bone, const BoneLocal& rest) { rest_[bone] = rest; }
 
+  // Sprite orientation: a bone whose anatomical dorsal/front side lies on its local -y
+  // (e.g. vertebrae behind the root, whose bones point tail-wards so local +y is ventral)
+  // is drawn mirrored across its own axis.
+  bool sprite_flip_y(int bone) const { return flip_y_[bone] != 0; }
+  void set_sprite_flip_y(int bone, bool flip) { flip_y_[bone] = flip ? 1 : 0; }
+
   // True when every parent precedes its child and every value is finite and non-negative
   // where it must be.
   bool is_valid() const;
@@ -86,6 +92,7 @@ class Skeleton {
   std::vector<float> widths_;
   std::vector<Layer> layers_;
   std::vector<BoneLocal> rest_;
+  std::vector<uint8_t> flip_y_;
 };
 
 }  // namespace ossa
