@@ -1,0 +1,251 @@
+#include "ossa/gen/generator.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "ossa/gen/body_plan.h"
+#include "ossa/math/rng.h"
+
+namespace ossa {
+
+namespace {
+
+struct Slot {
+  GirdleKind girdle;
+  int slot;
+};
+
+int skull_for_class(const std::string& animal_class) {
+  if (animal_class == "bird") return 1;
+  if (animal_class == "fish") return 3;
+  if (animal_class == "reptile" || animal_class == "dinosaur" || animal_class == "amphibian") return 2;
+  return 0;
+}
+
+// [Z 7.2.4]: a limb takes a random free slot it is allowed on; with none free, another limb
+// that may move to a free slot makes room; else the limb is dropped.
+bool place_limb(LimbKind kind, std::vector<LimbGene>& placed, const std::vector<Slot>& slots, Rng& rng,
+                const Slot* preferred = nullptr) {
+  auto is_free = [&](const Slot& s) {
+    for (const LimbGene& l : placed) {
+      if (l.girdle == s.girdle && l.slot == s.slot) return false;
+    }
+    return true;
+  };
+  std::vector<Slot> free;
+  for (const Slot& s : slots) {
+    if (is_free(s) && limb_allowed(kind, s.girdle)) free.push_back(s);
+  }
+  if (!free.empty()) {
+    Slot chosen = free[static_cast<size_t>(rng.uniform_int(0, static_cast<int>(free.size()) - 1))];
+    if (preferred && is_free(*preferred) && limb_allowed(kind, preferred->girdle)) chosen = *preferred;
+    placed.push_back({kind, chosen.girdle, chosen.slot, {}});
+    return true;
+  }
+  for (LimbGene& other : placed) {
+    if (!limb_allowed(kind, other.girdle)) continue;
+    for (const Slot& s : slots) {
+      if (is_free(s) && limb_allowed(other.kind, s.girdle)) {
+        const LimbGene moved_from = other;
+        other.girdle = s.girdle;
+        other.slot = s.slot;
+        placed.push_back({kind, moved_from.girdle, moved_from.slot, {}});
+        return true;
+      }
+    }
+  }
+  return false;
+}
+
+}  // namespace
+
+Generator::Generator(Dataset dataset, PcaModel model) : dataset_(std::move(dataset)), model_(std::move(model)) {}
+
+Result<Generator> Generator::load(const std::string& dataset_path) {
+  Result<Dataset> data = load_dataset(dataset_path);
+  if (!data) return data.error();
+  if (data->animals.size() < 2) return Error::at(dataset_path, "animals", "expected at least 2 animals");
+  PcaModel model = PcaModel::fit(*data);
+  return Generator(std::move(*data), std::move(model));
+}
+
+void recompute_rest_angles(Genome& g) {
+  const BodyPlan plan = plan_body(g);
+  for (LimbGene& limb : g.limbs) {
+    switch (limb.kind) {
+      case LimbKind::kLeg: {
+        const GirdlePlan& gp = plan.girdles[static_cast<int>(limb.girdle)];
+        if (!gp.exists) break;
+        limb.angles = place_leg(plan, gp.joint_fu[limb.slot], limb_lengths(plan, g, limb.kind, limb.girdle),
+                                limb.girdle, g.contact);
+        break;
+      }
+      case LimbKind::kArm: limb.angles = arm_rest_angles(); break;
+      case LimbKind::kFin: limb.angles = fin_rest_angles(); break;
+      case LimbKind::kWing: break;
+    }
+  }
+}
+
+Genome Generator::complete(std::array<double, kPcaDims> pca, Rng& rng, const GenerateOptions& options,
+                           std::string name, uint64_t seed) const {
+  Genome g;
+  g.name = std::move(name);
+  g.seed = seed;
+  g.pca = pca;
+  g.options = options.genome;
+  g.pca[kWeightKg] = std::max(0.01, g.pca[kWeightKg]);
+
+  // Girdles this body offers (the neck girdle needs a long enough neck) [Z 7.2.3].
+  const BodyPlan bare = plan_body(g);
+  std::vector<Slot> slots;
+  const int per_girdle = g.options.multi_limb ? 2 : 1;
+  for (GirdleKind k : {GirdleKind::kShoulder, GirdleKind::kHip, GirdleKind::kNeck}) {
+    if (!bare.girdles[static_cast<int>(k)].exists) continue;
+    for (int s = 0; s < per_girdle; ++s) slots.push_back({k, s});
+  }
+  if (g.options.neck_girdle && !bare.girdles[static_cast<int>(GirdleKind::kNeck)].exists) {
+    g.options.neck_girdle = false;  // the neck is too short after all: no neck girdle
+  }
+
+  // Counts [Z 7.2.4]: user input first, else lotteries on the PCA point.
+  const double wing_p = std::clamp(g.pca[kWings], 0.0, 1.0);
+  const double leg_v = std::clamp(g.pca[kLegPairs], 0.0, 2.0);
+  const int wings = options.wings ? *options.wings : (rng.chance(wing_p) ? 1 : 0);
+  const int legs = options.leg_pairs ? *options.leg_pairs
+                                     : (leg_v <= 1.0 ? (rng.chance(leg_v) ? 1 : 0) : (rng.chance(leg_v - 1.0) ? 2 : 1));
+  const int arms = options.arm_pairs ? *options.arm_pairs : (rng.chance(wing_p) ? 1 : 0);
+  const double front_total = std::max(0.0, g.pca[kFrontUpper]) + std::max(0.0, g.pca[kFrontLower]) +
+                             std::max(0.0, g.pca[kFrontHand]);
+  const bool front_limb = front_total > 0.15 * bare.body_size;
+  const int fins = options.fin_pairs ? *options.fin_pairs
+                                     : (legs == 0 && wings == 0 && front_total > 0.02 * bare.body_size ? 1 : 0);
+
+  std::vector<LimbGene> placed;
+  for (int i = 0; i < wings; ++i) place_limb(LimbKind::kWing, placed, slots, rng);
+  // A lone leg pair stands on the lower girdle: the seed draws the girdle at random, which
+  // puts a kangaroo on its front legs half of the time.
+  const GirdlePlan& sh = bare.girdles[static_cast<int>(GirdleKind::kShoulder)];
+  const GirdlePlan& hp = bare.girdles[static_cast<int>(GirdleKind::kHip)];
+  const Slot lower = sh.joint_fu[0].y < hp.joint_fu[0].y - 0.05f * bare.body_size
+                         ? Slot{GirdleKind::kShoulder, 0}
+                         : Slot{GirdleKind::kHip, 0};
+  for (int i = 0; i < legs; ++i) place_limb(LimbKind::kLeg, placed, slots, rng, legs == 1 ? &lower : nullptr);
+  for (int i = 0; i < arms; ++i) place_limb(LimbKind::kArm, placed, slots, rng);
+  // Arms come with the wing probability [Z 7.2.4]; a walker with a free shoulder and a
+  // substantial front limb keeps it as arms (kangaroo, T. rex, human), else it would vanish.
+  if (!options.arm_pairs && arms == 0 && legs >= 1 && front_limb) {
+    bool shoulder_free = true;
+    for (const LimbGene& l : placed) shoulder_free &= !(l.girdle == GirdleKind::kShoulder && l.slot == 0);
+    if (shoulder_free) placed.push_back({LimbKind::kArm, GirdleKind::kShoulder, 0, {}});
+  }
+  for (int i = 0; i < fins; ++i) place_limb(LimbKind::kFin, placed, slots, rng);
+  // Stable order: by girdle (neck, shoulder, hip), then slot.
+  std::stable_sort(placed.begin(), placed.end(), [](const LimbGene& a, const LimbGene& b) {
+    return std::make_pair(static_cast<int>(a.girdle), a.slot) < std::make_pair(static_cast<int>(b.girdle), b.slot);
+  });
+  g.limbs = placed;
+
+  // Vertebrae and ribs [Z 7.3].
+  g.neck_vertebrae = wings > 0 ? rng.uniform_int(10, 30) : 7;
+  g.back_vertebrae = 25;
+  g.tail_vertebrae = rng.uniform_int(5, 20);
+  g.rib_interval = static_cast<float>(rng.uniform(0.35, 1.0));
+
+  // Skull: by the body's features (examples override it by their class).
+  if (wings > 0) {
+    g.skull_variant = 1;
+  } else if (legs == 0) {
+    g.skull_variant = fins > 0 ? 3 : 2;
+  } else {
+    g.skull_variant = rng.chance(0.25) ? 2 : 0;
+  }
+
+  // Size: a 2 m frame, or length ∝ mass^(1/3) (a 500 kg animal fills the 2 m frame).
+  g.scale = 0.002f;
+  if (g.options.true_size) g.scale = static_cast<float>(0.002 * std::cbrt(g.pca[kWeightKg] / 500.0));
+
+  // Contact mode from the heel probability [Z 7.2.1], then the rest pose.
+  const BodyPlan plan = plan_body(g);
+  g.contact = rng.chance(plan.heel_probability) ? ContactMode::kFlat : ContactMode::kTip;
+  for (LimbGene& limb : g.limbs) {
+    if (limb.kind == LimbKind::kWing) {
+      // Folded wing: random angles in fixed intervals [Z 7.2].
+      limb.angles = {static_cast<float>(rng.uniform(-2.9, -2.6)), static_cast<float>(rng.uniform(-3.0, -2.7)),
+                     static_cast<float>(rng.uniform(2.6, 3.0))};
+    }
+  }
+  recompute_rest_angles(g);
+  return g;
+}
+
+Genome Generator::random(uint64_t seed, const GenerateOptions& options) const {
+  Rng rng(seed);
+  std::vector<Condition> conditions;
+  if (options.wings) conditions.push_back({kWings, static_cast<double>(*options.wings), true});
+  if (options.leg_pairs) conditions.push_back({kLegPairs, static_cast<double>(*options.leg_pairs), true});
+  if (options.weight_kg) conditions.push_back({kWeightKg, *options.weight_kg, false});
+  if (options.genome.neck_girdle) {
+    // Forcing a neck girdle is a condition on the neck [Z 7.2.3]: the head end as high as
+    // the long-necked examples carry it.
+    double high = 0.0;
+    for (const Animal& a : dataset_.animals) high = std::max<double>(high, a.spine[kSpineHead].y);
+    conditions.push_back({spine_y_dim(kSpineHead), 0.9 * high, false});
+  }
+  PcaVector raw = model_.sample_conditional(rng, conditions);
+  // Reject the rare degenerate draw (a back shorter than 5% of the frame).
+  for (int attempt = 0; attempt < 8; ++attempt) {
+    const glm::vec2 d = glm::vec2(raw[spine_x_dim(kSpineHip)] - raw[spine_x_dim(kSpineShoulder)],
+                                  raw[spine_y_dim(kSpineHip)] - raw[spine_y_dim(kSpineShoulder)]);
+    if (std::sqrt(d.x * d.x + d.y * d.y) > 50.0f) break;
+    raw = model_.sample_conditional(rng, conditions);
+  }
+  std::array<double, kPcaDims> pca;
+  for (int d = 0; d < kPcaDims; ++d) pca[d] = raw[d];
+  return complete(pca, rng, options, "random-" + std::to_string(seed), seed);
+}
+
+Result<Genome> Generator::example(std::string_view name, uint64_t seed, const GenerateOptions& options) const {
+  const Animal* animal = dataset_.find(name);
+  if (!animal) return Error::at("", "example", "no example animal named \"" + std::string(name) + "\"");
+  const PcaVector raw = to_vector(*animal);
+  std::array<double, kPcaDims> pca;
+  for (int d = 0; d < kPcaDims; ++d) pca[d] = raw[d];
+  GenerateOptions o = options;
+  // The example's own counts decide (they are exact 0/1/2 values).
+  if (!o.wings) o.wings = animal->wings;
+  if (!o.leg_pairs) o.leg_pairs = animal->leg_pairs;
+  Rng rng(seed);
+  Genome g = complete(pca, rng, o, animal->name, seed);
+  g.skull_variant = skull_for_class(animal->animal_class);
+  return g;
+}
+
+Genome Generator::variation(const Genome& parent, uint64_t seed, double sigma) const {
+  Rng rng(seed);
+  Genome g = parent;
+  g.seed = seed;
+  PcaVector raw;
+  for (int d = 0; d < kPcaDims; ++d) raw[d] = parent.pca[d];
+  PcaVector s = model_.to_sigma(raw);
+  for (int i = 0; i < kPcaDims; ++i) s[i] += rng.normal(0.0, sigma);
+  raw = model_.from_sigma(s);
+  for (int d = 0; d < kPcaDims; ++d) g.pca[d] = raw[d];
+  // The discrete features the body was built with stay put; they are not PCA dimensions.
+  g.pca[kWings] = parent.pca[kWings];
+  g.pca[kLegPairs] = parent.pca[kLegPairs];
+  g.pca[kWeightKg] = std::max(0.01, g.pca[kWeightKg]);
+  // Occasional discrete mutations [Z 8.2].
+  if (g.tail_vertebrae > 0 && rng.chance(0.2)) g.tail_vertebrae = std::clamp(g.tail_vertebrae + rng.uniform_int(-3, 3), 5, 20);
+  if (rng.chance(0.2)) g.rib_interval = static_cast<float>(std::clamp(g.rib_interval + rng.normal(0.0, 0.1), 0.2, 1.0));
+  if (g.neck_vertebrae > 7 && rng.chance(0.2)) g.neck_vertebrae = std::clamp(g.neck_vertebrae + rng.uniform_int(-2, 2), 10, 30);
+  if (rng.chance(0.05)) g.skull_variant = rng.uniform_int(0, kSkullVariants - 1);
+  if (g.options.true_size) g.scale = static_cast<float>(0.002 * std::cbrt(g.pca[kWeightKg] / 500.0));
+  // A neck girdle needs a long neck; drop limbs whose girdle the new body no longer has.
+  const BodyPlan plan = plan_body(g);
+  std::erase_if(g.limbs, [&](const LimbGene& l) { return !plan.girdles[static_cast<int>(l.girdle)].exists; });
+  recompute_rest_angles(g);
+  return g;
+}
+
+}  // namespace ossa

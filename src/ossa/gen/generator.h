@@ -1,0 +1,62 @@
+#pragma once
+// Generator — draws Genomes: random creatures from the PCA model with optional conditions,
+// the 44 examples, and variations of a genome [Z 6–8]. All randomness happens here; the
+// SkeletonBuilder (skeleton_builder.h) turns a Genome into a Creature deterministically.
+
+#include <optional>
+#include <string_view>
+
+#include "ossa/gen/dataset.h"
+#include "ossa/gen/genome.h"
+#include "ossa/gen/pca_model.h"
+#include "ossa/io/result.h"
+
+namespace ossa {
+
+class Rng;
+
+// User input for a random creature. Unset conditions come from the PCA point.
+struct GenerateOptions {
+  std::optional<int> wings;          // 0 or 1: condition on the PCA and the wing count
+  std::optional<int> leg_pairs;      // 0, 1 or 2 ground-contact leg pairs
+  std::optional<double> weight_kg;   // > 0
+  std::optional<int> arm_pairs;      // else drawn with the wing probability [Z 7.2.4]
+  std::optional<int> fin_pairs;      // else 1 for legless wingless bodies with a tail, else 0
+  GenomeOptions genome;              // neck girdle, several limbs per girdle, spacing, size
+};
+
+class Generator {
+ public:
+  Generator(Dataset dataset, PcaModel model);
+
+  // Loads assets/creatures/examples.json (or `path`) and fits the model.
+  static Result<Generator> load(const std::string& dataset_path);
+
+  const Dataset& dataset() const { return dataset_; }
+  const PcaModel& model() const { return model_; }
+
+  // A random creature; the same seed and options give a byte-identical genome.
+  Genome random(uint64_t seed, const GenerateOptions& options = {}) const;
+  // One of the 44 examples (English or German name), with its own PCA values; the discrete
+  // choices (vertebrae, ribs, limb slots) are drawn from `seed`.
+  Result<Genome> example(std::string_view name, uint64_t seed = 1,
+                         const GenerateOptions& options = {}) const;
+  // A variation [Z 8.2]: a Gaussian step of `sigma` (in σ units of every principal component)
+  // in PCA space, plus occasional discrete mutations (vertebra counts, rib interval, skull).
+  Genome variation(const Genome& parent, uint64_t seed, double sigma) const;
+
+  // Completes a genome whose PCA point and options are set: draws limb layout, vertebrae,
+  // ribs, contact mode and skull from rng, then computes the rest-pose angles.
+  Genome complete(std::array<double, kPcaDims> pca, Rng& rng, const GenerateOptions& options,
+                  std::string name, uint64_t seed) const;
+
+ private:
+  Dataset dataset_;
+  PcaModel model_;
+};
+
+// Recomputes the rest angles of every leg, arm and fin of `genome` from its current PCA point
+// and layout ([Z 7.2.2] leg placement); wing angles (drawn at random) are kept.
+void recompute_rest_angles(Genome& genome);
+
+}  // namespace ossa

@@ -1,0 +1,179 @@
+#include "ossa/gen/genome.h"
+
+#include <cmath>
+
+#include "ossa/io/file.h"
+
+namespace ossa {
+
+namespace {
+
+constexpr const char* kFormat = "ossa.creature";
+
+template <class E, size_t N>
+bool parse_enum(const std::string& text, const std::array<E, N>& values, const char* (*name)(E), E* out) {
+  for (E v : values) {
+    if (text == name(v)) {
+      *out = v;
+      return true;
+    }
+  }
+  return false;
+}
+
+constexpr std::array<LimbKind, 4> kLimbKinds = {LimbKind::kLeg, LimbKind::kArm, LimbKind::kWing, LimbKind::kFin};
+constexpr std::array<GirdleKind, 3> kGirdleKinds = {GirdleKind::kNeck, GirdleKind::kShoulder, GirdleKind::kHip};
+constexpr std::array<ContactMode, 2> kContactModes = {ContactMode::kTip, ContactMode::kFlat};
+
+}  // namespace
+
+const char* skull_variant_name(int variant) {
+  switch (variant) {
+    case 0: return "mammal";
+    case 1: return "bird";
+    case 2: return "reptile";
+    case 3: return "fish";
+  }
+  return "unknown";
+}
+
+Json genome_to_json(const Genome& g) {
+  Json pca = Json::object();
+  for (int d = 0; d < kPcaDims; ++d) pca[dim_name(d)] = g.pca[d];
+  Json limbs = Json::array();
+  for (const LimbGene& l : g.limbs) {
+    limbs.push_back({{"kind", limb_kind_name(l.kind)},
+                     {"girdle", girdle_kind_name(l.girdle)},
+                     {"slot", l.slot},
+                     {"angles", {l.angles[0], l.angles[1], l.angles[2]}}});
+  }
+  return Json{{"format", kFormat},
+              {"version", Genome::kVersion},
+              {"name", g.name},
+              {"seed", g.seed},
+              {"pca", pca},
+              {"vertebrae", {{"neck", g.neck_vertebrae}, {"back", g.back_vertebrae}, {"tail", g.tail_vertebrae}}},
+              {"rib_interval", g.rib_interval},
+              {"limbs", limbs},
+              {"contact", contact_mode_name(g.contact)},
+              {"skull", g.skull_variant},
+              {"scale", g.scale},
+              {"options",
+               {{"arc_length_vertebrae", g.options.arc_length_vertebrae},
+                {"neck_girdle", g.options.neck_girdle},
+                {"multi_limb", g.options.multi_limb},
+                {"true_size", g.options.true_size}}}};
+}
+
+Result<Genome> genome_from_json(const Json& doc, std::string_view file) {
+  JsonReader r{std::string(file)};
+  if (!r.expect_object(doc, "")) return r.error();
+  const std::string format = r.string(doc, "", "format");
+  if (!r.failed() && format != kFormat) {
+    r.fail("format", std::string("expected \"") + kFormat + "\", got \"" + format + "\"");
+  }
+  const long long version = r.integer(doc, "", "version", 1, 1000000);
+  if (!r.failed() && version != Genome::kVersion) {
+    r.fail("version", "expected " + std::to_string(Genome::kVersion) + " (this build reads version " +
+                          std::to_string(Genome::kVersion) + "), got " + std::to_string(version));
+  }
+  Genome g;
+  g.name = r.string_or(doc, "", "name", "");
+  if (r.has(doc, "seed")) {
+    const Json& s = doc["seed"];
+    if (s.is_number_unsigned()) {
+      g.seed = s.get<uint64_t>();
+    } else {
+      g.seed = static_cast<uint64_t>(r.integer(doc, "", "seed", 0));
+    }
+  }
+  if (const Json* pca = r.object(doc, "", "pca")) {
+    for (int d = 0; d < kPcaDims; ++d) {
+      const double lo = d == kWeightKg ? 0.0 : -100000.0;
+      g.pca[d] = r.number(*pca, "pca", dim_name(d), lo, d == kWeightKg ? 1e6 : 100000.0);
+    }
+  }
+  if (const Json* v = r.object(doc, "", "vertebrae")) {
+    g.neck_vertebrae = static_cast<int>(r.integer(*v, "vertebrae", "neck", 0, 64));
+    g.back_vertebrae = static_cast<int>(r.integer(*v, "vertebrae", "back", 2, 64));
+    g.tail_vertebrae = static_cast<int>(r.integer(*v, "vertebrae", "tail", 0, 64));
+  }
+  g.rib_interval = r.number_f(doc, "", "rib_interval", 0.0, 1.0);
+  if (const Json* limbs = r.array(doc, "", "limbs")) {
+    if (limbs->size() > 12) r.fail("limbs", "expected at most 12 limb pairs, got " + std::to_string(limbs->size()));
+    for (size_t i = 0; i < limbs->size() && !r.failed(); ++i) {
+      const std::string path = json_path("limbs", i);
+      const Json& lj = (*limbs)[i];
+      if (!r.expect_object(lj, path)) break;
+      LimbGene l;
+      const std::string kind = r.string(lj, path, "kind");
+      if (!r.failed() && !parse_enum(kind, kLimbKinds, limb_kind_name, &l.kind)) {
+        r.fail(json_path(path, "kind"), "expected \"leg\", \"arm\", \"wing\" or \"fin\", got \"" + kind + "\"");
+      }
+      const std::string girdle = r.string(lj, path, "girdle");
+      if (!r.failed() && !parse_enum(girdle, kGirdleKinds, girdle_kind_name, &l.girdle)) {
+        r.fail(json_path(path, "girdle"), "expected \"neck\", \"shoulder\" or \"hip\", got \"" + girdle + "\"");
+      }
+      l.slot = static_cast<int>(r.integer(lj, path, "slot", 0, 1));
+      if (const Json* angles = r.array(lj, path, "angles")) {
+        if (angles->size() != 3) {
+          r.fail(json_path(path, "angles"), "expected 3 angles, got " + std::to_string(angles->size()));
+        } else {
+          for (int k = 0; k < 3; ++k) {
+            l.angles[k] = static_cast<float>(r.as_number((*angles)[k], json_path(json_path(path, "angles"), k), -10.0, 10.0));
+          }
+        }
+      }
+      g.limbs.push_back(l);
+    }
+  }
+  const std::string contact = r.string_or(doc, "", "contact", "tip");
+  if (!r.failed() && !parse_enum(contact, kContactModes, contact_mode_name, &g.contact)) {
+    r.fail("contact", "expected \"tip\" or \"flat\", got \"" + contact + "\"");
+  }
+  g.skull_variant = static_cast<int>(r.integer_or(doc, "", "skull", 0, 0, kSkullVariants - 1));
+  g.scale = r.number_f(doc, "", "scale", 1e-6, 1000.0);
+  if (r.has(doc, "options")) {
+    if (const Json* o = r.object(doc, "", "options")) {
+      g.options.arc_length_vertebrae = r.boolean_or(*o, "options", "arc_length_vertebrae", true);
+      g.options.neck_girdle = r.boolean_or(*o, "options", "neck_girdle", false);
+      g.options.multi_limb = r.boolean_or(*o, "options", "multi_limb", false);
+      g.options.true_size = r.boolean_or(*o, "options", "true_size", false);
+    }
+  }
+  if (!r.failed()) {
+    for (size_t i = 0; i < g.limbs.size(); ++i) {
+      if (g.limbs[i].slot == 1 && !g.options.multi_limb) {
+        r.fail(json_path(json_path("limbs", i), "slot"), "expected 0 (slot 1 needs options.multi_limb), got 1");
+        break;
+      }
+      for (size_t k = 0; k < i; ++k) {
+        if (g.limbs[k].girdle == g.limbs[i].girdle && g.limbs[k].slot == g.limbs[i].slot) {
+          r.fail(json_path("limbs", i), "expected a free girdle slot, but limbs[" + std::to_string(k) +
+                                            "] already uses " + girdle_kind_name(g.limbs[i].girdle) +
+                                            " slot " + std::to_string(g.limbs[i].slot));
+        }
+      }
+    }
+  }
+  if (r.failed()) return r.error();
+  return g;
+}
+
+Result<Genome> parse_genome(std::string_view text, std::string_view file) {
+  Result<Json> doc = parse_json(text, file);
+  if (!doc) return doc.error();
+  return genome_from_json(*doc, file);
+}
+
+Result<Genome> load_genome(const std::string& path) {
+  Result<std::string> text = read_file(path);
+  if (!text) return text.error();
+  return parse_genome(*text, path);
+}
+
+Status save_genome(const std::string& path, const Genome& genome) {
+  return write_json_atomic(path, genome_to_json(genome));
+}
+
+}  // namespace ossa

@@ -1,0 +1,76 @@
+#pragma once
+// Genome — everything needed to rebuild one creature's skeleton exactly, without drawing a
+// random number [Z 8.1]: the PCA point in original units, the discrete choices the generator
+// made (vertebra counts, rib interval, limbs and their rest angles, contact mode, skull), the
+// scale and the options. Saved as versioned JSON (`.creature.json`):
+//
+//   { "format": "ossa.creature", "version": 1, "name": "horse", "seed": 42,
+//     "pca": { "wings": 0, "leg_pairs": 2, "weight_kg": 500, "spine[0].x": 812.0, ... },
+//     "vertebrae": { "neck": 7, "back": 25, "tail": 18 }, "rib_interval": 0.62,
+//     "limbs": [ { "kind": "leg", "girdle": "shoulder", "slot": 0,
+//                  "angles": [-1.9, 0.4, -0.5] }, ... ],
+//     "contact": "tip", "skull": 0, "scale": 0.0021,
+//     "options": { "arc_length_vertebrae": true, "neck_girdle": false, "multi_limb": false,
+//                  "true_size": false } }
+//
+// `pca` holds the 29 dimensions of gen/dataset.h by their dim_name(). `angles` are the rest
+// pose of the limb chain: the upper bone's absolute angle in model space, then the lower bone
+// and hand/foot relative to their parent (radians), for the near copy; the far copy mirrors
+// nothing (it is the same limb seen from the other side) and reuses them.
+
+#include <array>
+#include <cstdint>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "ossa/gen/creature.h"
+#include "ossa/gen/dataset.h"
+#include "ossa/io/json.h"
+#include "ossa/io/result.h"
+
+namespace ossa {
+
+struct GenomeOptions {
+  bool arc_length_vertebrae = true;  // false: the thesis's t = i/n spacing [Z 7.3]
+  bool neck_girdle = false;          // a girdle just below the head (centaur) [Z 7.2.3]
+  bool multi_limb = false;           // two limb slots per girdle (pegasus) [Z 7.2.3]
+  bool true_size = false;            // scale from the weight (length ∝ mass^(1/3)), else 2 m frame
+};
+
+struct LimbGene {
+  LimbKind kind = LimbKind::kLeg;
+  GirdleKind girdle = GirdleKind::kShoulder;
+  int slot = 0;                              // 0, or 1 with multi_limb
+  std::array<float, 3> angles{};             // rest pose, see above (radians)
+};
+
+struct Genome {
+  static constexpr int kVersion = 1;
+
+  std::string name;                          // example name or "random"
+  uint64_t seed = 0;                         // the seed the choices were drawn from (info only)
+  std::array<double, kPcaDims> pca{};        // raw units (frame units, kg, 0/1, 0..2)
+  int neck_vertebrae = 7;                    // [Z 7.3]: 7, winged 10–30
+  int back_vertebrae = 25;                   // 13 in front of the root, 12 behind
+  int tail_vertebrae = 10;                   // 5–20 (0 when the tail has no length)
+  float rib_interval = 0.6f;                 // ribs on back vertebrae in [0, x] of the back arc
+                                             // from the shoulder, x in [0, 1]
+  std::vector<LimbGene> limbs;               // one per limb pair
+  ContactMode contact = ContactMode::kTip;
+  int skull_variant = 0;                     // 0 mammal, 1 bird, 2 reptile, 3 fish
+  float scale = 0.002f;                      // metres per frame unit
+  GenomeOptions options;
+};
+
+constexpr int kSkullVariants = 4;
+const char* skull_variant_name(int variant);
+
+Json genome_to_json(const Genome& genome);
+// Parses and validates; errors name the file and field.
+Result<Genome> genome_from_json(const Json& doc, std::string_view file);
+Result<Genome> parse_genome(std::string_view text, std::string_view file);
+Result<Genome> load_genome(const std::string& path);
+Status save_genome(const std::string& path, const Genome& genome);  // atomic
+
+}  // namespace ossa
