@@ -1,0 +1,215 @@
+#include "ossa/level/level_io.h"
+
+#include <charconv>
+#include <cmath>
+#include <cstdio>
+#include <cstring>
+
+#include "ossa/io/file.h"
+
+namespace ossa {
+
+double shortest_decimal(float f) {
+  if (!std::isfinite(f)) return static_cast<double>(f);
+  char buf[64];
+  const auto [end, ec] = std::to_chars(buf, buf + sizeof(buf), f);
+  if (ec != std::errc()) return static_cast<double>(f);
+  double d = 0.0;
+  const auto [p, ec2] = std::from_chars(buf, end, d);
+  if (ec2 != std::errc() || static_cast<float>(d) != f) return static_cast<double>(f);
+  return d;
+}
+
+namespace {
+
+// A size field: finite, > 0, <= kMaxLevelCoordinate. Returns 0 after an error.
+double read_size(JsonReader& r, const Json& parent, const std::string& path, const char* key) {
+  const double v = r.number(parent, path, key);
+  if (r.failed()) return 0.0;
+  if (v <= 0.0) {
+    r.fail(json_path(path, key), "expected a number > 0, got " + describe_json(parent.at(key)));
+    return 0.0;
+  }
+  if (v > kMaxLevelCoordinate) {
+    r.fail(json_path(path, key), "expected a number <= 1000000, got " + describe_json(parent.at(key)));
+    return 0.0;
+  }
+  return v;
+}
+
+std::optional<Background> read_background(JsonReader& r, const Json& doc) {
+  if (!r.has(doc, "background")) return std::nullopt;
+  const Json* bg = r.object(doc, "", "background");
+  if (!bg) return std::nullopt;
+  Background b;
+  b.image = r.string_or(*bg, "background", "image", "");
+  b.parallax = static_cast<float>(r.number_or(*bg, "background", "parallax", 0.5, 0.0, 1.0));
+  if (r.has(*bg, "colour")) {
+    const Json* c = r.array(*bg, "background", "colour");
+    if (c && c->size() != 3) {
+      r.fail("background.colour", "expected an array of 3 numbers (r, g, b), got " +
+                                      std::to_string(c->size()) + " elements");
+    } else if (c) {
+      for (size_t i = 0; i < 3; ++i) {
+        b.colour[static_cast<int>(i)] =
+            static_cast<float>(r.as_number((*c)[i], json_path("background.colour", i), 0.0, 1.0));
+      }
+    }
+  }
+  return b;
+}
+
+}  // namespace
+
+Result<Level> level_from_json(const Json& doc, std::string_view file) {
+  JsonReader r{std::string(file)};
+  if (!r.expect_object(doc, "")) return r.error();
+  if (!r.has(doc, "format") && r.has(doc, "orientation")) {
+    r.fail("format", "missing; this looks like a Tiled map: import it with import_tiled");
+    return r.error();
+  }
+  const std::string format = r.string(doc, "", "format");
+  if (r.failed()) return r.error();
+  if (format != kLevelFormat) {
+    r.fail("format", std::string("expected \"") + kLevelFormat + "\", got " + describe_json(doc.at("format")));
+    return r.error();
+  }
+  r.integer(doc, "", "version", kLevelVersion, kLevelVersion);
+  if (r.failed()) return r.error();
+
+  Level level;
+  level.name = r.string_or(doc, "", "name", "");
+  if (const Json* spawn = r.object(doc, "", "spawn")) {
+    level.spawn_ws.x = r.number_f(*spawn, "spawn", "x", -kMaxLevelCoordinate, kMaxLevelCoordinate);
+    level.spawn_ws.y = r.number_f(*spawn, "spawn", "y", -kMaxLevelCoordinate, kMaxLevelCoordinate);
+  }
+  level.background = read_background(r, doc);
+  if (r.failed()) return r.error();
+
+  const Json* colliders = r.array(doc, "", "colliders");
+  if (!colliders) return r.error();
+  if (colliders->size() > static_cast<size_t>(kMaxLevelColliders)) {
+    r.fail("colliders", "expected at most " + std::to_string(kMaxLevelColliders) + " boxes, got " +
+                            std::to_string(colliders->size()));
+    return r.error();
+  }
+  std::vector<Box> boxes;
+  boxes.reserve(colliders->size());
+  for (size_t i = 0; i < colliders->size(); ++i) {
+    const Json& c = (*colliders)[i];
+    const std::string path = json_path("colliders", i);
+    if (!r.expect_object(c, path)) return r.error();
+    const double x = r.number(c, path, "x", -kMaxLevelCoordinate, kMaxLevelCoordinate);
+    const double y = r.number(c, path, "y", -kMaxLevelCoordinate, kMaxLevelCoordinate);
+    const double w = read_size(r, c, path, "w");
+    const double h = read_size(r, c, path, "h");
+    if (r.failed()) return r.error();
+    // The far corner is x + w rounded once, so saved files read back exactly.
+    const Box box{{static_cast<float>(x), static_cast<float>(y)},
+                  {static_cast<float>(x + w), static_cast<float>(y + h)}};
+    if (!(box.min_ws.x < box.max_ws.x)) {
+      r.fail(json_path(path, "w"), "too small to be represented at x = " + std::to_string(x));
+      return r.error();
+    }
+    if (!(box.min_ws.y < box.max_ws.y)) {
+      r.fail(json_path(path, "h"), "too small to be represented at y = " + std::to_string(y));
+      return r.error();
+    }
+    boxes.push_back(box);
+  }
+  level.set_colliders(std::move(boxes));
+  return level;
+}
+
+Result<Level> parse_level(std::string_view text, std::string_view file) {
+  Result<Json> doc = parse_json(text, file);
+  if (!doc) return doc.error();
+  return level_from_json(*doc, file);
+}
+
+Result<Level> load_level(const std::string& path) {
+  Result<Json> doc = read_json_file(path);
+  if (!doc) return doc.error();
+  return level_from_json(*doc, path);
+}
+
+namespace {
+
+// The width (or height) to write for [lo, hi] so that the loader's float(x + w), with x the
+// written corner, gives back exactly `hi`: the shortest decimal that does so (0.6 rather than
+// 0.6000004 for the step from 10.6 to 11.2), else the exact difference.
+double extent_for(float lo, float hi) {
+  const double x = shortest_decimal(lo);
+  const double exact = shortest_decimal(hi) - x;
+  for (int digits = 1; digits <= 9; ++digits) {
+    char buf[64];
+    std::snprintf(buf, sizeof(buf), "%.*g", digits, exact);
+    double w = 0.0;
+    const auto [p, ec] = std::from_chars(buf, buf + std::strlen(buf), w);
+    if (ec == std::errc() && w > 0.0 && static_cast<float>(x + w) == hi) return w;
+  }
+  return static_cast<double>(hi) - x;
+}
+
+}  // namespace
+
+Json level_to_json(const Level& level) {
+  Json doc = Json::object();
+  doc["format"] = kLevelFormat;
+  doc["version"] = kLevelVersion;
+  doc["name"] = level.name;
+  doc["spawn"] = {{"x", shortest_decimal(level.spawn_ws.x)}, {"y", shortest_decimal(level.spawn_ws.y)}};
+  if (level.background) {
+    const Background& b = *level.background;
+    doc["background"] = {{"image", b.image},
+                         {"parallax", shortest_decimal(b.parallax)},
+                         {"colour", {shortest_decimal(b.colour.r), shortest_decimal(b.colour.g),
+                                     shortest_decimal(b.colour.b)}}};
+  }
+  Json colliders = Json::array();
+  for (const Box& box : level.colliders()) {
+    colliders.push_back({{"x", shortest_decimal(box.min_ws.x)},
+                         {"y", shortest_decimal(box.min_ws.y)},
+                         {"w", extent_for(box.min_ws.x, box.max_ws.x)},
+                         {"h", extent_for(box.min_ws.y, box.max_ws.y)}});
+  }
+  doc["colliders"] = std::move(colliders);
+  return doc;
+}
+
+std::string level_to_text(const Level& level) {
+  // Same content as level_to_json, but in the documented key order and one collider per
+  // line, so shipped levels read well and diff line by line.
+  const Json doc = level_to_json(level);
+  std::string out = "{\n";
+  for (const char* key : {"format", "version", "name", "spawn", "background"}) {
+    if (!doc.contains(key)) continue;
+    out += "  \"" + std::string(key) + "\": ";
+    if (doc[key].is_object()) {
+      // Keep the documented field order inside spawn and background too.
+      nlohmann::ordered_json o;
+      for (const char* k : {"x", "y", "image", "parallax", "colour"}) {
+        if (doc[key].contains(k)) o[k] = doc[key][k];
+      }
+      out += o.dump();
+    } else {
+      out += doc[key].dump();
+    }
+    out += ",\n";
+  }
+  out += "  \"colliders\": [";
+  const Json& colliders = doc["colliders"];
+  for (size_t i = 0; i < colliders.size(); ++i) {
+    nlohmann::ordered_json c;
+    for (const char* k : {"x", "y", "w", "h"}) c[k] = colliders[i][k];
+    out += (i == 0 ? "\n    " : ",\n    ") + c.dump();
+  }
+  out += colliders.empty() ? "]\n}\n" : "\n  ]\n}\n";
+  return out;
+}
+
+Status save_level(const std::string& path, const Level& level) {
+  return write_file_atomic(path, level_to_text(level));
+}
+
+}  // namespace ossa

@@ -1,0 +1,63 @@
+#pragma once
+// Level files (DESIGN.md §6): versioned JSON, loaded at start from levels/default.json.
+//
+// Format, version 1 (units metres, +x right, +y up):
+//
+//   {
+//     "format": "ossa.level",            required, exactly this string
+//     "version": 1,                      required, integer; this build reads version 1
+//     "name": "default",                 optional string, default ""
+//     "spawn": {"x": 2.0, "y": 0.0},     required: where the player's creature starts
+//     "background": {                    optional object; every field optional
+//       "image": "backgrounds/hills.png",   image path relative to assets/, default ""
+//       "parallax": 0.5,                    scroll factor in [0, 1], default 0.5
+//       "colour": [0.55, 0.70, 0.85]        linear RGB, three numbers in [0, 1]
+//     },
+//     "colliders": [                     required array (may be empty), at most 1 000 000
+//       {"x": 0.0, "y": -1.0, "w": 70.0, "h": 1.0},   x, y = bottom-left corner;
+//       ...                                            w, h = width and height > 0
+//     ]
+//   }
+//
+// Coordinates must be finite with |x|, |y| <= 1 000 000; sizes in (0, 1 000 000]. Unknown
+// fields are ignored, so newer writers may add fields without breaking older readers.
+// Numbers are written in their shortest form that reads back to the same float ("0.1", not
+// "0.10000000149011612"), and loading a saved level gives an equal Level.
+//
+// Errors name the file and the field, e.g.
+//   levels/x.json: colliders[3].w: expected a number > 0, got -2
+// No input, however malformed, crashes the loader.
+
+#include <string>
+#include <string_view>
+
+#include "ossa/io/json.h"
+#include "ossa/io/result.h"
+#include "ossa/level/level.h"
+
+namespace ossa {
+
+inline constexpr const char* kLevelFormat = "ossa.level";
+inline constexpr int kLevelVersion = 1;
+inline constexpr int kMaxLevelColliders = 1000000;
+inline constexpr double kMaxLevelCoordinate = 1.0e6;  // metres, bound on |x|, |y|, w, h
+
+// Reads and parses a level file.
+Result<Level> load_level(const std::string& path);
+// Parses level JSON text; `file` names the source in error messages.
+Result<Level> parse_level(std::string_view text, std::string_view file);
+// Reads a level from an already parsed document.
+Result<Level> level_from_json(const Json& doc, std::string_view file);
+// The JSON document of a level (format above).
+Json level_to_json(const Level& level);
+// The file text: the same document in the documented key order, one collider per line.
+std::string level_to_text(const Level& level);
+// Saves level_to_text atomically (write_file_atomic: temporary file, fsync, rename), so a
+// failed save leaves the old file intact.
+Status save_level(const std::string& path, const Level& level);
+
+// The double closest to the shortest decimal that reads back as `f` (0.1f -> 0.1), so files
+// stay readable. Shared with the Tiled export.
+double shortest_decimal(float f);
+
+}  // namespace ossa
