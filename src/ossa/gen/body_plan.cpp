@@ -16,6 +16,7 @@ constexpr float kScapulaAngle = -1.05f;  // abs, frame space: down and forward
 constexpr float kPelvisAngle = -2.05f;   // abs: down and back
 constexpr int kBackFront = 13;           // [Z 7.3] vertebrae in front of the root
 constexpr int kBackRear = 12;
+constexpr float kMaxPitch = 0.6f;        // radians: the most the body tilts to stand
 
 glm::vec2 rotate(glm::vec2 v, float a) {
   const float c = std::cos(a), s = std::sin(a);
@@ -83,12 +84,11 @@ bool limb_allowed(LimbKind kind, GirdleKind girdle) {
 
 int limb_bend_sign(GirdleKind girdle) { return girdle == GirdleKind::kHip ? 1 : -1; }
 
-BodyPlan plan_body(const Genome& g) {
+namespace {
+
+// Everything but the ground, from the (C1-fixed, possibly pitched) spine control points.
+BodyPlan plan_geometry(const Genome& g, const Animal& a, const std::array<glm::vec2, kSpinePoints>& p) {
   BodyPlan plan;
-  Animal a = from_vector(Eigen::Map<const PcaVector>(g.pca.data()));
-  std::array<glm::vec2, kSpinePoints> p = a.spine;
-  make_c1(p[2], p[3], p[4]);
-  make_c1(p[5], p[6], p[7]);
   plan.neck = CubicBezier{{p[0], p[1], p[2], p[3]}};
   plan.back = CubicBezier{{p[3], p[4], p[5], p[6]}};
   plan.tail = CubicBezier{{p[6], p[7], p[8], p[9]}};
@@ -172,18 +172,77 @@ BodyPlan plan_body(const Genome& g) {
     if (slots == 2) setup(GirdleKind::kNeck, 1, std::min(j + 2, plan.shoulder_joint - 1));
   }
 
+  return plan;
+}
+
+// Reach of a leg down to its contact point: the whole chain for tip contact, the heel (upper
+// and lower bone) for flat contact.
+float leg_reach(const LimbLengths& l, ContactMode contact) {
+  return static_cast<float>(contact == ContactMode::kFlat ? l.upper + l.lower : l.total());
+}
+
+}  // namespace
+
+BodyPlan plan_body(const Genome& g) {
+  const Animal a = from_vector(Eigen::Map<const PcaVector>(g.pca.data()));
+  std::array<glm::vec2, kSpinePoints> p = a.spine;
+  make_c1(p[2], p[3], p[4]);
+  make_c1(p[5], p[6], p[7]);
+  BodyPlan plan = plan_geometry(g, a, p);
+
+  // Pitch: with legs on both shoulder and hip, tilt the body about the root so both girdles
+  // stand at the same fraction of their legs' reach — short front legs put the nose down
+  // (rabbit, kangaroo) instead of leaving a girdle under the ground [Z 9.8 (4)].
+  const LimbGene* front_leg = nullptr;
+  const LimbGene* hind_leg = nullptr;
+  for (const LimbGene& limb : g.limbs) {
+    if (limb.kind != LimbKind::kLeg) continue;
+    if (limb.girdle == GirdleKind::kShoulder && !front_leg) front_leg = &limb;
+    if (limb.girdle == GirdleKind::kHip && !hind_leg) hind_leg = &limb;
+  }
+  if (front_leg && hind_leg) {
+    const glm::vec2 s = plan.girdles[static_cast<int>(GirdleKind::kShoulder)].joint_fu[front_leg->slot];
+    const glm::vec2 h = plan.girdles[static_cast<int>(GirdleKind::kHip)].joint_fu[hind_leg->slot];
+    const float ls = leg_reach(limb_lengths(plan, g, LimbKind::kLeg, GirdleKind::kShoulder), g.contact);
+    const float lh = leg_reach(limb_lengths(plan, g, LimbKind::kLeg, GirdleKind::kHip), g.contact);
+    const glm::vec2 d = s - h;
+    const float dist = std::sqrt(d.x * d.x + d.y * d.y);
+    if (dist > 1.0f) {
+      // Solve (R(θ) d).y = kGroundFraction (ls - lh) for the smallest |θ|.
+      const float want = std::clamp(kGroundFraction * (ls - lh) / dist, -1.0f, 1.0f);
+      const float phi = std::atan2(d.y, d.x);
+      const float theta = std::clamp(wrap_angle(std::asin(want) - phi), -kMaxPitch, kMaxPitch);
+      if (std::fabs(theta) > 1e-3f) {
+        const glm::vec2 pivot = plan.joints[plan.root_joint];
+        for (glm::vec2& q : p) q = pivot + rotate(q - pivot, theta);
+        plan = plan_geometry(g, a, p);
+        plan.pitch = theta;
+      }
+    }
+  }
+
   // Ground [Z 7.2.1]: every leg reaches it at kGroundFraction of its length; it moves up
   // from the frame bottom when the legs are too short. Measured from the real girdle joint
   // (the seed measured from the curve's control point and lists the gap as a problem, 9.8).
+  // When the girdles stand at very different heights, the ground is lowered (never below
+  // full reach of any leg) so that no girdle ends up crouched under 35% of its reach, which
+  // would leave the folded start of [Z 7.2.2] under the ground [Z 9.8 (4)].
   bool any_leg = false;
   float ground = 0.0f;
+  float lowest_allowed = -1e30f, highest_allowed = 1e30f;
   for (const LimbGene& limb : g.limbs) {
     if (limb.kind != LimbKind::kLeg) continue;
     const GirdlePlan& gp = plan.girdles[static_cast<int>(limb.girdle)];
     if (!gp.exists) continue;
-    const float total = static_cast<float>(limb_lengths(plan, g, limb.kind, limb.girdle).total());
-    ground = std::max(ground, gp.joint_fu[limb.slot].y - kGroundFraction * total);
+    const float reach = leg_reach(limb_lengths(plan, g, limb.kind, limb.girdle), g.contact);
+    const float joint_y = gp.joint_fu[limb.slot].y;
+    ground = std::max(ground, joint_y - kGroundFraction * reach);
+    lowest_allowed = std::max(lowest_allowed, joint_y - 0.98f * reach);
+    highest_allowed = std::min(highest_allowed, joint_y - 0.35f * reach);
     any_leg = true;
+  }
+  if (any_leg && lowest_allowed <= highest_allowed) {
+    ground = std::clamp(ground, lowest_allowed, highest_allowed);
   }
   if (!any_leg) {
     // Legless bodies lie on the ground: just below their lowest spine joint.
@@ -193,7 +252,7 @@ BodyPlan plan_body(const Genome& g) {
   }
   plan.ground_y = ground;
 
-  // Heel/wrist contact probability [Z 7.2.1].
+  // Heel/wrist contact probability [Z 7.2.1], judged with the whole leg (tip contact).
   float p_sum = 0.0f;
   int p_count = 0;
   for (const LimbGene& limb : g.limbs) {
@@ -202,7 +261,8 @@ BodyPlan plan_body(const Genome& g) {
     if (!gp.exists) continue;
     const LimbLengths l = limb_lengths(plan, g, limb.kind, limb.girdle);
     float p_leg = 0.0f;
-    if (ground <= 0.0f && l.distal > 0.0) {
+    const float tip_ground = gp.joint_fu[limb.slot].y - kGroundFraction * static_cast<float>(l.total());
+    if (tip_ground <= 0.0f && l.distal > 0.0) {
       p_leg = std::clamp(static_cast<float>((l.total() - gp.joint_fu[limb.slot].y) / l.distal), 0.0f, 1.0f);
     }
     p_sum += p_leg;

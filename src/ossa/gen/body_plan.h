@@ -42,6 +42,7 @@ struct BodyPlan {
   std::array<GirdlePlan, kGirdleCount> girdles;  // indexed by GirdleKind
   LimbLengths front, hind;  // clamped >= 0
   float ground_y = 0.0f;    // fu [Z 7.2.1]
+  float pitch = 0.0f;       // radians the spine was tilted about the root to stand level
   float heel_probability = 0.0f;  // [Z 7.2.1]: chance the legs stand flat (heel/wrist down)
 };
 

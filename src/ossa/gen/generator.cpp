@@ -38,12 +38,17 @@ bool place_limb(LimbKind kind, std::vector<LimbGene>& placed, const std::vector<
   }
   if (!free.empty()) {
     Slot chosen = free[static_cast<size_t>(rng.uniform_int(0, static_cast<int>(free.size()) - 1))];
-    if (preferred && is_free(*preferred) && limb_allowed(kind, preferred->girdle)) chosen = *preferred;
+    for (const Slot& s : free) {
+      if (preferred && s.girdle == preferred->girdle && s.slot == preferred->slot) chosen = s;
+    }
     placed.push_back({kind, chosen.girdle, chosen.slot, {}});
     return true;
   }
+  auto in_slots = [&](GirdleKind girdle, int slot) {
+    return std::any_of(slots.begin(), slots.end(), [&](const Slot& s) { return s.girdle == girdle && s.slot == slot; });
+  };
   for (LimbGene& other : placed) {
-    if (!limb_allowed(kind, other.girdle)) continue;
+    if (!limb_allowed(kind, other.girdle) || !in_slots(other.girdle, other.slot)) continue;
     for (const Slot& s : slots) {
       if (is_free(s) && limb_allowed(other.kind, s.girdle)) {
         const LimbGene moved_from = other;
@@ -118,8 +123,14 @@ Genome Generator::complete(std::array<double, kPcaDims> pca, Rng& rng, const Gen
   const double front_total = std::max(0.0, g.pca[kFrontUpper]) + std::max(0.0, g.pca[kFrontLower]) +
                              std::max(0.0, g.pca[kFrontHand]);
   const bool front_limb = front_total > 0.15 * bare.body_size;
-  const int fins = options.fin_pairs ? *options.fin_pairs
-                                     : (legs == 0 && wings == 0 && front_total > 0.02 * bare.body_size ? 1 : 0);
+  // Fins: legless, wingless bodies swim; with a front limb it becomes the fin, else a coin
+  // decides between a fish and a snake-like body.
+  int fins = 0;
+  if (options.fin_pairs) {
+    fins = *options.fin_pairs;
+  } else if (legs == 0 && wings == 0) {
+    fins = front_total > 0.02 * bare.body_size || rng.chance(0.5) ? 1 : 0;
+  }
 
   std::vector<LimbGene> placed;
   for (int i = 0; i < wings; ++i) place_limb(LimbKind::kWing, placed, slots, rng);
@@ -130,7 +141,13 @@ Genome Generator::complete(std::array<double, kPcaDims> pca, Rng& rng, const Gen
   const Slot lower = sh.joint_fu[0].y < hp.joint_fu[0].y - 0.05f * bare.body_size
                          ? Slot{GirdleKind::kShoulder, 0}
                          : Slot{GirdleKind::kHip, 0};
-  for (int i = 0; i < legs; ++i) place_limb(LimbKind::kLeg, placed, slots, rng, legs == 1 ? &lower : nullptr);
+  // A leg must be able to carry the body: girdles whose limb is shorter than 10% of the back
+  // get no legs (random points near the legless examples have stubs there).
+  std::vector<Slot> leg_slots;
+  for (const Slot& s : slots) {
+    if (limb_lengths(bare, g, LimbKind::kLeg, s.girdle).total() >= 0.1 * bare.body_size) leg_slots.push_back(s);
+  }
+  for (int i = 0; i < legs; ++i) place_limb(LimbKind::kLeg, placed, leg_slots, rng, legs == 1 ? &lower : nullptr);
   for (int i = 0; i < arms; ++i) place_limb(LimbKind::kArm, placed, slots, rng);
   // Arms come with the wing probability [Z 7.2.4]; a walker with a free shoulder and a
   // substantial front limb keeps it as arms (kangaroo, T. rex, human), else it would vanish.
@@ -168,6 +185,17 @@ Genome Generator::complete(std::array<double, kPcaDims> pca, Rng& rng, const Gen
   // Contact mode from the heel probability [Z 7.2.1], then the rest pose.
   const BodyPlan plan = plan_body(g);
   g.contact = rng.chance(plan.heel_probability) ? ContactMode::kFlat : ContactMode::kTip;
+  if (g.contact == ContactMode::kFlat) {
+    // Standing flat shortens the reach to the heel; a girdle that would then sit too low to
+    // stand (under 30% of its reach above the ground) keeps to its toes.
+    const BodyPlan flat = plan_body(g);
+    for (const LimbGene& limb : g.limbs) {
+      if (limb.kind != LimbKind::kLeg) continue;
+      const LimbLengths l = limb_lengths(flat, g, limb.kind, limb.girdle);
+      const float height = flat.girdles[static_cast<int>(limb.girdle)].joint_fu[limb.slot].y - flat.ground_y;
+      if (height < 0.3f * static_cast<float>(l.upper + l.lower)) g.contact = ContactMode::kTip;
+    }
+  }
   for (LimbGene& limb : g.limbs) {
     if (limb.kind == LimbKind::kWing) {
       // Folded wing: random angles in fixed intervals [Z 7.2].
@@ -215,6 +243,12 @@ Result<Genome> Generator::example(std::string_view name, uint64_t seed, const Ge
   // The example's own counts decide (they are exact 0/1/2 values).
   if (!o.wings) o.wings = animal->wings;
   if (!o.leg_pairs) o.leg_pairs = animal->leg_pairs;
+  if (!o.fin_pairs) {
+    // Fish and whales swim with fins; a snake has none.
+    const bool swims = animal->animal_class == "fish" || (animal->leg_pairs == 0 && animal->wings == 0 &&
+                                                          animal->front.total() > 0.0);
+    o.fin_pairs = swims ? 1 : 0;
+  }
   Rng rng(seed);
   Genome g = complete(pca, rng, o, animal->name, seed);
   g.skull_variant = skull_for_class(animal->animal_class);
