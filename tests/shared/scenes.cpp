@@ -27,3 +27,16 @@ Skeleton chain_skeleton(int bones, float length, float bend) {
 }
 
 }  // namespace ossa::scenes
+
+namespace ossa::scenes {
+
+const Generator& generator() {
+  static const Generator g = [] {
+    Result<Generator> r = Generator::load(source_path("assets/creatures/examples.json"));
+    OSSA_ASSERT(r.ok(), "assets/creatures/examples.json must load");
+    return std::move(r.value());
+  }();
+  return g;
+}
+
+}  // namespace ossa::scenes

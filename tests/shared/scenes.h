@@ -21,3 +21,12 @@ namespace ossa::scenes {
 Skeleton chain_skeleton(int bones, float length, float bend = 0.0f);
 
 }  // namespace ossa::scenes
+
+#include "ossa/gen/generator.h"
+
+namespace ossa::scenes {
+
+// The generator fitted on the shipped examples (loaded once per process).
+const Generator& generator();
+
+}  // namespace ossa::scenes

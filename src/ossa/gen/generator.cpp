@@ -147,7 +147,18 @@ Genome Generator::complete(std::array<double, kPcaDims> pca, Rng& rng, const Gen
   for (const Slot& s : slots) {
     if (limb_lengths(bare, g, LimbKind::kLeg, s.girdle).total() >= 0.1 * bare.body_size) leg_slots.push_back(s);
   }
-  for (int i = 0; i < legs; ++i) place_limb(LimbKind::kLeg, placed, leg_slots, rng, legs == 1 ? &lower : nullptr);
+  for (int i = 0; i < legs; ++i) {
+    // At most one leg pair per girdle [Z 7.2.4], even with several slots per girdle.
+    std::vector<Slot> usable;
+    for (const Slot& s : leg_slots) {
+      if (std::none_of(placed.begin(), placed.end(), [&](const LimbGene& l) {
+            return l.kind == LimbKind::kLeg && l.girdle == s.girdle;
+          })) {
+        usable.push_back(s);
+      }
+    }
+    place_limb(LimbKind::kLeg, placed, usable, rng, legs == 1 ? &lower : nullptr);
+  }
   for (int i = 0; i < arms; ++i) place_limb(LimbKind::kArm, placed, slots, rng);
   // Arms come with the wing probability [Z 7.2.4]; a walker with a free shoulder and a
   // substantial front limb keeps it as arms (kangaroo, T. rex, human), else it would vanish.
