@@ -16,20 +16,13 @@ bool HermiteSpline::is_valid() const {
   return true;
 }
 
-std::size_t HermiteSpline::segment(float t) const {
-  // Branchless binary search for the last key with key.t <= t among keys[0 .. n-2]: the
-  // compiler turns the select into a cmov, so random t values do not cost mispredictions.
-  std::size_t lo = 0;
-  std::size_t len = keys.size() - 1;
-  while (len > 1) {
-    const std::size_t half = len / 2;
-    lo = keys[lo + half].t <= t ? lo + half : lo;
-    len -= half;
-  }
-  return lo;
-}
+namespace {
 
-void HermiteSpline::evaluate(float t, float* position, float* velocity) const {
+// The evaluation itself, shared by position(), velocity() and evaluate(): in a -fPIC build a
+// public member function is not inlined into another (it could be interposed), and these are
+// called per creature, limb and tick. Null outputs are skipped at compile time after inlining.
+inline void evaluate_spline(const std::vector<HermiteKey>& keys, float t, float* position,
+                            float* velocity) {
   OSSA_ASSERT(!keys.empty(), "HermiteSpline: no keys");
   const std::size_t n = keys.size();
   if (n == 1) {
@@ -43,7 +36,14 @@ void HermiteSpline::evaluate(float t, float* position, float* velocity) const {
   t = t > t_first ? t : t_first;
   t = t < t_last ? t : t_last;
 
-  const std::size_t i = segment(t);
+  // Branchless binary search for the last key with key.t <= t among keys[0 .. n-2]: the
+  // compiler turns the select into a cmov, so random t values do not cost mispredictions.
+  std::size_t i = 0;
+  for (std::size_t len = n - 1; len > 1;) {
+    const std::size_t half = len / 2;
+    i = keys[i + half].t <= t ? i + half : i;
+    len -= half;
+  }
   const HermiteKey& k0 = keys[i];
   const HermiteKey& k1 = keys[i + 1];
   const float dt = k1.t - k0.t;
@@ -65,15 +65,21 @@ void HermiteSpline::evaluate(float t, float* position, float* velocity) const {
   }
 }
 
+}  // namespace
+
+void HermiteSpline::evaluate(float t, float* position, float* velocity) const {
+  evaluate_spline(keys, t, position, velocity);
+}
+
 float HermiteSpline::position(float t) const {
   float p = 0.0f;
-  evaluate(t, &p, nullptr);
+  evaluate_spline(keys, t, &p, nullptr);
   return p;
 }
 
 float HermiteSpline::velocity(float t) const {
   float v = 0.0f;
-  evaluate(t, nullptr, &v);
+  evaluate_spline(keys, t, nullptr, &v);
   return v;
 }
 

@@ -48,11 +48,6 @@ class HermiteSpline {
   /// For w in [0, 1] two valid splines blend into a valid one (a convex combination of two
   /// strictly increasing sequences is strictly increasing).
   static HermiteSpline blend(const HermiteSpline& a, const HermiteSpline& b, float w);
-
- private:
-  // Index i of the segment [keys[i], keys[i+1]] containing t (t already clamped); requires
-  // keys.size() >= 2.
-  std::size_t segment(float t) const;
 };
 
 }  // namespace ossa

@@ -22,17 +22,19 @@
 //  - soft_reach > 0 eases the chain into full extension instead of snapping straight, is
 //    continuous in the target, and never places the end beyond the target.
 //
-// Cost: no allocation, no acos/sin/cos. The triangle is solved with the law of cosines for the
-// middle joint's projection on the root → target line and its height above it; positions and
-// the bone directions (cos/sin of the bone angles) follow from those with 2 sqrt and 3 divisions.
-// The angles, needed by forward kinematics, cost two extra fast_atan2 (math/angle.h) and can be
-// skipped with compute_angles = false. tests/bench/math_bench.cpp measures both forms ("ik" with
-// angles, "ik_positions" without) against a naive acos/atan2 + sin/cos solver.
+// Cost: no allocation, no libm trigonometry, no data-dependent branches on the regular path.
+// The triangle is solved in double with the law of cosines — the root angle's cosine and the
+// middle joint's height (one sqrt each) — and one division serves 1/distance, 1/(2 l1 r) and
+// 1/l2; positions and the bone directions (cos/sin of the bone angles) follow from those by
+// multiplication. The angles, needed by forward kinematics, cost two branch-free fast_atan2
+// (math/angle.h); compute_angles = false skips them. tests/bench/math_bench.cpp measures both
+// forms per solve against a naive solver (atan2 + two acos, then cos/sin of both bones) with
+// the same outputs: "ik" (angles + positions, the form FK uses) and "ik_positions".
 //
-// Range: full float accuracy while squared lengths and distances are normal floats (about
-// 1e-15 to 1e15 metres); outside that the result stays finite but loses precision. The 1e-5
-// tolerance is relative to the chain; the rounding of the input coordinates themselves comes
-// on top (it matters only when |root| is many thousand chain lengths from the origin).
+// Range: any finite float input gives a finite result; the triangle is solved in double, so
+// millimetre and kilometre chains are equally accurate. The 1e-5 tolerance is relative to the
+// chain; the rounding of the float coordinates themselves comes on top (it matters only when
+// |root| is many thousand chain lengths from the origin).
 
 #include <glm/vec2.hpp>
 
