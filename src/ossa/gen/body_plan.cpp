@@ -11,7 +11,10 @@ namespace ossa {
 namespace {
 
 constexpr float kHalfPi = 0.5f * kPi;
-constexpr float kGroundFraction = 0.8f;  // [Z 7.2.1] legs reach the ground at 80% of length
+// [Z 7.2.1] legs reach the ground at this fraction of their length. The seed uses 0.8, which
+// folds a standing quadruped into a crouch (its own elephant and brachiosaurus); at 0.9 the
+// knees stay visibly bent and the stance reads as standing.
+constexpr float kGroundFraction = 0.9f;
 constexpr float kScapulaAngle = -1.05f;  // abs, frame space: down and forward
 constexpr float kPelvisAngle = -2.05f;   // abs: down and back
 constexpr int kBackFront = 13;           // [Z 7.3] vertebrae in front of the root
@@ -338,37 +341,53 @@ std::array<float, 3> place_leg(const BodyPlan& plan, glm::vec2 joint, const Limb
     return {-kHalfPi, 0.0f, kHalfPi};
   }
 
-  float step = 40.0f * kPi / 180.0f;
+  // Two phases of the same iteration. Phase 1 swings each bone toward a natural standing
+  // direction (zig-zag: hind femur forward-down, shank back-down, foot near vertical; front
+  // humerus back-down, forearm and hand down) — the seed's pure "toward vertical" rule makes
+  // whichever bone moves first hang straight and leaves the next one flat (its elephant and
+  // brachiosaurus examples). Phase 2 is [Z 7.2.2] as written: toward vertical, to extend a
+  // leg that still does not reach. Every step is undone when it breaks a joint limit or puts
+  // a joint under the ground; steps start at 40° and shrink by 6/7 per round.
+  const float natural[3] = {
+      hind ? (flat ? -1.25f : -0.95f) : (flat ? -1.85f : -2.05f),
+      hind ? (flat ? -1.85f : -2.2f) : (flat ? -1.45f : -1.57f),
+      hind ? -1.4f : -1.6f};
   const int joints = flat ? 2 : 3;
-  for (int iter = 0; iter < 300 && step > 1e-6f; ++iter) {
-    const float gap = chain_points(joint, l, a).p[target].y - ground;
-    if (gap < tolerance) break;
-    int undone = 0;
-    for (int j = 0; j < joints; ++j) {
-      // Rotate the bone toward pointing straight down: the more vertical, the more extended
-      // the leg [Z 7.2.2]. Never across the vertical (that step is undone too).
-      float abs_angle = a[0];
-      for (int k = 1; k <= j; ++k) abs_angle += a[k];
-      const float diff = wrap_angle(-kHalfPi - abs_angle);
-      if (std::fabs(diff) < 1e-7f) {
-        ++undone;
-        continue;
+  for (int phase = 0; phase < 2; ++phase) {
+    float step = 40.0f * kPi / 180.0f;
+    for (int iter = 0; iter < 300 && step > 1e-6f; ++iter) {
+      const float gap = chain_points(joint, l, a).p[target].y - ground;
+      if (gap < tolerance) break;
+      int undone = 0;
+      for (int j = 0; j < joints; ++j) {
+        float abs_angle = a[0];
+        for (int k = 1; k <= j; ++k) abs_angle += a[k];
+        const float goal = phase == 0 ? natural[j] : -kHalfPi;
+        const float diff = wrap_angle(goal - abs_angle);
+        if (std::fabs(diff) < 1e-7f) {
+          ++undone;
+          continue;
+        }
+        // Never across the goal direction (for phase 2: the vertical).
+        const float delta = std::copysign(std::min(step, std::fabs(diff)), diff);
+        float trial[3] = {a[0], a[1], a[2]};
+        trial[j] += delta;
+        // Swinging a bone keeps the bones below it pointing the same way: a standing leg
+        // moves one joint, not the whole chain below it.
+        if (j + 1 < 3) trial[j + 1] -= delta;
+        flat_foot(trial);
+        if (valid(trial)) {
+          a[0] = trial[0];
+          a[1] = trial[1];
+          a[2] = trial[2];
+        } else {
+          ++undone;
+        }
       }
-      const float delta = std::copysign(std::min(step, std::fabs(diff)), diff);
-      float trial[3] = {a[0], a[1], a[2]};
-      trial[j] += delta;
-      flat_foot(trial);
-      if (valid(trial)) {
-        a[0] = trial[0];
-        a[1] = trial[1];
-        a[2] = trial[2];
-      } else {
-        ++undone;
-      }
+      // [Z 9.8 (2)] fix: shrink faster when every rotation of this round was undone (count
+      // undone steps, not the change of distance, which is tiny for short bones anyway).
+      step *= undone == joints ? 0.5f : 6.0f / 7.0f;
     }
-    // [Z 9.8 (2)] fix: shrink faster when every rotation of this round was undone (count
-    // undone steps, not the change of distance, which is tiny for short bones anyway).
-    step *= undone == joints ? 0.5f : 6.0f / 7.0f;
   }
 
   std::array<float, 3> result = {a[0], a[1], a[2]};

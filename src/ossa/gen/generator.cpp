@@ -134,13 +134,10 @@ Genome Generator::complete(std::array<double, kPcaDims> pca, Rng& rng, const Gen
 
   std::vector<LimbGene> placed;
   for (int i = 0; i < wings; ++i) place_limb(LimbKind::kWing, placed, slots, rng);
-  // A lone leg pair stands on the lower girdle: the seed draws the girdle at random, which
-  // puts a kangaroo on its front legs half of the time.
-  const GirdlePlan& sh = bare.girdles[static_cast<int>(GirdleKind::kShoulder)];
-  const GirdlePlan& hp = bare.girdles[static_cast<int>(GirdleKind::kHip)];
-  const Slot lower = sh.joint_fu[0].y < hp.joint_fu[0].y - 0.05f * bare.body_size
-                         ? Slot{GirdleKind::kShoulder, 0}
-                         : Slot{GirdleKind::kHip, 0};
+  // A lone leg pair stands on the hip when the hind limb can carry the body: bipeds carry
+  // their weight behind [Z 7.2.3]; the seed's random girdle puts a kangaroo on its front legs
+  // half of the time.
+  const Slot hip_slot = Slot{GirdleKind::kHip, 0};
   // A leg must be able to carry the body: girdles whose limb is shorter than 10% of the back
   // get no legs (random points near the legless examples have stubs there).
   std::vector<Slot> leg_slots;
@@ -157,7 +154,7 @@ Genome Generator::complete(std::array<double, kPcaDims> pca, Rng& rng, const Gen
         usable.push_back(s);
       }
     }
-    place_limb(LimbKind::kLeg, placed, usable, rng, legs == 1 ? &lower : nullptr);
+    place_limb(LimbKind::kLeg, placed, usable, rng, legs == 1 ? &hip_slot : nullptr);
   }
   for (int i = 0; i < arms; ++i) place_limb(LimbKind::kArm, placed, slots, rng);
   // Arms come with the wing probability [Z 7.2.4]; a walker with a free shoulder and a
@@ -196,6 +193,8 @@ Genome Generator::complete(std::array<double, kPcaDims> pca, Rng& rng, const Gen
   // Contact mode from the heel probability [Z 7.2.1], then the rest pose.
   const BodyPlan plan = plan_body(g);
   g.contact = rng.chance(plan.heel_probability) ? ContactMode::kFlat : ContactMode::kTip;
+  // Winged bodies stand on their toes: flat would lay a bird's tarsometatarsus on the ground.
+  if (wings > 0) g.contact = ContactMode::kTip;
   if (g.contact == ContactMode::kFlat) {
     // Standing flat shortens the reach to the heel; a girdle that would then sit too low to
     // stand (under 30% of its reach above the ground) keeps to its toes.
