@@ -1,0 +1,146 @@
+// glTF export round trip: export with Assimp, re-import with Assimp, and compare the node
+// hierarchy and the skin with the skeleton (tools/ossa-gen/gltf_export.h).
+
+#include <catch2/catch.hpp>
+
+#include <assimp/Importer.hpp>
+#include <assimp/scene.h>
+
+#include <cstdio>
+#include <filesystem>
+#include <map>
+#include <string>
+
+#include "gltf_export.h"
+#include "ossa/gen/generator.h"
+#include "ossa/gen/skeleton_builder.h"
+#include "ossa/skeleton/pose.h"
+#include "shared/scenes.h"
+#include "tools/hand_creature.h"
+
+namespace ossa {
+namespace {
+
+std::string temp_path(const std::string& name) {
+  const std::filesystem::path dir = std::filesystem::temp_directory_path() / "ossa-gltf-test";
+  std::filesystem::create_directories(dir);
+  return (dir / name).string();
+}
+
+// Re-imports `path` and checks it against the creature's skeleton.
+void check_round_trip(const Creature& c, const std::string& path) {
+  Assimp::Importer importer;
+  const aiScene* scene = importer.ReadFile(path, 0);
+  INFO(path << ": " << importer.GetErrorString());
+  REQUIRE(scene != nullptr);
+  REQUIRE(scene->mRootNode != nullptr);
+  const Skeleton& s = c.skeleton;
+
+  // Every bone is a node whose parent node is its parent bone (the root bone hangs from the
+  // scene's root node), with the rest-pose local transform.
+  for (int i = 0; i < s.bone_count(); ++i) {
+    INFO("bone " << s.name(i));
+    const aiNode* node = scene->mRootNode->FindNode(s.name(i).c_str());
+    REQUIRE(node != nullptr);
+    REQUIRE(node->mParent != nullptr);
+    if (s.parent(i) >= 0) {
+      CHECK(std::string(node->mParent->mName.C_Str()) == s.name(s.parent(i)));
+    } else {
+      CHECK(node->mParent == scene->mRootNode);
+    }
+    const BoneLocal& l = c.rest_pose.locals[i];
+    const aiMatrix4x4& t = node->mTransformation;
+    CHECK(t.a4 == Approx(l.offset_ls.x).margin(1e-4));
+    CHECK(t.b4 == Approx(l.offset_ls.y).margin(1e-4));
+    CHECK(t.c4 == Approx(0.0).margin(1e-6));
+    CHECK(t.a1 == Approx(std::cos(l.angle_ls)).margin(1e-4));
+    CHECK(t.b1 == Approx(std::sin(l.angle_ls)).margin(1e-4));
+  }
+
+  // One skinned mesh with one bone per skeleton bone, each with weights.
+  REQUIRE(scene->mNumMeshes >= 1);
+  const aiMesh* mesh = scene->mMeshes[0];
+  CHECK(mesh->mNumVertices == static_cast<unsigned>(4 * s.bone_count()));
+  CHECK(mesh->HasTextureCoords(0));
+  REQUIRE(mesh->mNumBones == static_cast<unsigned>(s.bone_count()));
+  std::map<std::string, const aiBone*> bones;
+  for (unsigned b = 0; b < mesh->mNumBones; ++b) bones[mesh->mBones[b]->mName.C_Str()] = mesh->mBones[b];
+  const std::vector<Mat2x3> model = model_matrices(s, c.rest_pose.locals);
+  for (int i = 0; i < s.bone_count(); ++i) {
+    INFO("bone " << s.name(i));
+    REQUIRE(bones.count(s.name(i)) == 1);
+    const aiBone* bone = bones[s.name(i)];
+    CHECK(bone->mNumWeights >= 1);
+    float total = 0.0f;
+    for (unsigned w = 0; w < bone->mNumWeights; ++w) total += bone->mWeights[w].mWeight;
+    CHECK(total == Approx(4.0f).margin(1e-3));
+    // Offset matrix = inverse bind: maps the bone's model-space start to the origin.
+    const glm::vec2 start = bone_start(model[i]);
+    const aiVector3D local = bone->mOffsetMatrix * aiVector3D(start.x, start.y, 0.0f);
+    CHECK(local.x == Approx(0.0).margin(1e-3));
+    CHECK(local.y == Approx(0.0).margin(1e-3));
+  }
+}
+
+}  // namespace
+
+TEST_CASE("glTF export of a hand-built creature re-imports with its skeleton", "[gltf]") {
+  for (bool winged : {false, true}) {
+    const Creature c = test::hand_built_creature(winged);
+    const std::string path = temp_path(c.name + ".gltf");
+    const Status st = tools::export_gltf(c, path);
+    INFO((st.ok() ? std::string() : st.message()));
+    REQUIRE(st.ok());
+    check_round_trip(c, path);
+  }
+}
+
+TEST_CASE("glTF export references the atlas only when it exists", "[gltf]") {
+  const Creature c = test::hand_built_creature();
+  const std::string atlas = temp_path("atlas.png");
+  {
+    std::FILE* f = std::fopen(atlas.c_str(), "wb");
+    REQUIRE(f != nullptr);
+    std::fputs("not really a png", f);
+    std::fclose(f);
+  }
+  tools::GltfOptions with;
+  with.atlas_path = atlas;
+  REQUIRE(tools::export_gltf(c, temp_path("with_atlas.gltf"), with).ok());
+  tools::GltfOptions without;
+  without.atlas_path = temp_path("missing-atlas.png");
+  REQUIRE(tools::export_gltf(c, temp_path("without_atlas.gltf"), without).ok());
+  auto text = [](const std::string& p) {
+    std::FILE* f = std::fopen(p.c_str(), "rb");
+    std::string s;
+    char buf[4096];
+    size_t n;
+    while (f && (n = std::fread(buf, 1, sizeof buf, f)) > 0) s.append(buf, n);
+    if (f) std::fclose(f);
+    return s;
+  };
+  CHECK(text(temp_path("with_atlas.gltf")).find("atlas.png") != std::string::npos);
+  CHECK(text(temp_path("without_atlas.gltf")).find("atlas.png") == std::string::npos);
+}
+
+TEST_CASE("glTF export fails cleanly on an unwritable path", "[gltf]") {
+  const Creature c = test::hand_built_creature();
+  const Status st = tools::export_gltf(c, "/nonexistent-dir/x/y.gltf");
+  CHECK_FALSE(st.ok());
+}
+
+TEST_CASE("glTF export of generated examples re-imports with their skeletons", "[gltf]") {
+  Result<Generator> gen = Generator::load(scenes::source_path("assets/creatures/examples.json"));
+  REQUIRE(gen.ok());
+  for (const char* name : {"horse", "giraffe", "kangaroo", "pigeon"}) {
+    Result<Genome> genome = gen->example(name, 1);
+    if (!genome.ok()) continue;  // not every name need exist in the dataset
+    Result<Creature> c = build_creature(*genome);
+    REQUIRE(c.ok());
+    const std::string path = temp_path(std::string(name) + ".gltf");
+    REQUIRE(tools::export_gltf(*c, path).ok());
+    check_round_trip(*c, path);
+  }
+}
+
+}  // namespace ossa

@@ -1,0 +1,387 @@
+// ossa-gen — generate vertebrate skeletons from the example PCA model and export them
+// (issue "Creature generator", DESIGN.md §5). Every failure prints one clear message on stderr
+// and exits non-zero; no input, however malformed, may crash it (DESIGN.md §11).
+
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <exception>
+#include <iostream>
+#include <map>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "gltf_export.h"
+#include "ossa/gen/export_obj.h"
+#include "ossa/gen/export_svg.h"
+#include "ossa/gen/generator.h"
+#include "ossa/gen/skeleton_builder.h"
+#include "ossa/io/file.h"
+#include "ossa/io/json.h"
+
+namespace {
+
+using namespace ossa;
+
+constexpr const char* kUsage = R"(usage: ossa-gen SOURCE [CONDITIONS] [VARIATIONS] [OUTPUTS]
+       ossa-gen --stats | --sheet F.svg [--dataset F]
+
+Generate vertebrate skeletons from the PCA model of 44 example animals and export them.
+
+source (one of):
+  --example NAME        an example animal by English or German name (e.g. horse, Pferd)
+  --random              a random creature from the PCA model
+  --in F.creature.json  load a saved genome instead of generating one
+  --seed N              seed of the random choices (default 1)
+conditions (--example, --random):
+  --wings 0|1           condition on wings
+  --leg-pairs 0|1|2     condition on ground-contact leg pairs
+  --weight KG           condition on the weight (kg, > 0)
+  --neck-girdle         allow a girdle below the head (centaur)
+  --multi-limb          allow two limb pairs per girdle (pegasus)
+variations:
+  --variations K        K variations of the creature (seeds seed+1 .. seed+K)
+  --sigma S             step size in sigma units of the principal components (default 0.3)
+outputs (with variations, F-1.ext .. F-K.ext):
+  --out F.creature.json save the genome
+  --svg F.svg           side view of the skeleton
+  --gltf F.gltf         glTF 2.0 (node hierarchy, skinned sprite mesh) via Assimp
+  --obj F.obj           box proxies, one box per bone
+  --summary             JSON description of the creature(s) on stdout (the default output)
+  --count N             with --random --summary: N creatures from consecutive seeds, print
+                        counts, limb-layout histogram and throughput
+model:
+  --stats               JSON statistics of the PCA model on stdout
+  --sheet F.svg         all examples (seed 1 each) in a grid with their names
+  --dataset F           examples file (default: $OSSA_SOURCE_DIR/assets/creatures/examples.json)
+  --help                this text
+)";
+
+struct Args {
+  std::optional<std::string> example, in, dataset, out, svg, gltf, obj, sheet;
+  bool random = false, stats = false, summary = false, help = false;
+  uint64_t seed = 1;
+  std::optional<int> wings, leg_pairs, variations;
+  std::optional<double> weight, sigma;
+  std::optional<long long> count;
+  bool neck_girdle = false, multi_limb = false;
+};
+
+struct UsageError {
+  std::string message;
+};
+
+[[noreturn]] void usage_error(const std::string& message) { throw UsageError{message}; }
+
+long long parse_int(const std::string& flag, const std::string& text, long long lo, long long hi) {
+  char* end = nullptr;
+  errno = 0;
+  const long long v = std::strtoll(text.c_str(), &end, 10);
+  if (text.empty() || *end != '\0' || errno == ERANGE || v < lo || v > hi) {
+    usage_error(flag + ": expected an integer in [" + std::to_string(lo) + ", " +
+                std::to_string(hi) + "], got \"" + text + "\"");
+  }
+  return v;
+}
+
+double parse_double(const std::string& flag, const std::string& text, double lo, bool lo_open) {
+  char* end = nullptr;
+  const double v = std::strtod(text.c_str(), &end);
+  if (text.empty() || *end != '\0' || !std::isfinite(v) || v < lo || (lo_open && v == lo)) {
+    usage_error(flag + ": expected a number " + (lo_open ? "> " : ">= ") + std::to_string(lo) +
+                ", got \"" + text + "\"");
+  }
+  return v;
+}
+
+Args parse_args(int argc, char** argv) {
+  Args a;
+  std::vector<std::string> args(argv + 1, argv + argc);
+  for (size_t i = 0; i < args.size(); ++i) {
+    const std::string& flag = args[i];
+    auto value = [&]() -> std::string {
+      if (i + 1 >= args.size() || (args[i + 1].rfind("--", 0) == 0 && args[i + 1].size() > 2)) {
+        usage_error(flag + ": missing value");
+      }
+      return args[++i];
+    };
+    auto once = [&](auto& field, auto v) {
+      if (field) usage_error(flag + ": given twice");
+      field = v;
+    };
+    if (flag == "--help" || flag == "-h") a.help = true;
+    else if (flag == "--example") once(a.example, value());
+    else if (flag == "--random") a.random = true;
+    else if (flag == "--in") once(a.in, value());
+    else if (flag == "--seed") a.seed = static_cast<uint64_t>(parse_int(flag, value(), 0, 9007199254740991LL));
+    else if (flag == "--wings") once(a.wings, static_cast<int>(parse_int(flag, value(), 0, 1)));
+    else if (flag == "--leg-pairs") once(a.leg_pairs, static_cast<int>(parse_int(flag, value(), 0, 2)));
+    else if (flag == "--weight") once(a.weight, parse_double(flag, value(), 0.0, true));
+    else if (flag == "--neck-girdle") a.neck_girdle = true;
+    else if (flag == "--multi-limb") a.multi_limb = true;
+    else if (flag == "--variations") once(a.variations, static_cast<int>(parse_int(flag, value(), 1, 10000)));
+    else if (flag == "--sigma") once(a.sigma, parse_double(flag, value(), 0.0, false));
+    else if (flag == "--out") once(a.out, value());
+    else if (flag == "--svg") once(a.svg, value());
+    else if (flag == "--gltf") once(a.gltf, value());
+    else if (flag == "--obj") once(a.obj, value());
+    else if (flag == "--sheet") once(a.sheet, value());
+    else if (flag == "--dataset") once(a.dataset, value());
+    else if (flag == "--stats") a.stats = true;
+    else if (flag == "--summary") a.summary = true;
+    else if (flag == "--count") once(a.count, parse_int(flag, value(), 1, 100000000));
+    else usage_error("unknown argument \"" + flag + "\"");
+  }
+  if (a.help) return a;
+  const int sources = (a.example ? 1 : 0) + (a.random ? 1 : 0) + (a.in ? 1 : 0);
+  if (sources > 1) usage_error("--example, --random and --in exclude each other");
+  const bool creature_outputs = a.out || a.svg || a.gltf || a.obj || a.summary;
+  if (sources == 0 && (creature_outputs || a.variations || a.count)) {
+    usage_error("no creature source: give --example NAME, --random or --in F.creature.json");
+  }
+  if (sources == 0 && !a.stats && !a.sheet) {
+    usage_error("nothing to do: give a creature source, --stats or --sheet (see --help)");
+  }
+  const bool conditions = a.wings || a.leg_pairs || a.weight || a.neck_girdle || a.multi_limb;
+  if (a.in && conditions) usage_error("conditions apply to generated creatures, not to --in");
+  if (a.count && !(a.random && a.summary)) usage_error("--count needs --random and --summary");
+  if (a.count && (a.variations || a.out || a.svg || a.gltf || a.obj)) {
+    usage_error("--count only prints a summary; drop --variations and file outputs");
+  }
+  if (a.sigma && !a.variations) usage_error("--sigma needs --variations");
+  return a;
+}
+
+std::string source_dir() {
+  const char* env = std::getenv("OSSA_SOURCE_DIR");
+  return env && *env ? env : OSSA_SOURCE_DIR;
+}
+
+// "F.creature.json" → "F-3.creature.json"; "F.svg" → "F-3.svg" (suffix before the extension).
+std::string numbered(const std::string& path, int index, int total) {
+  if (total <= 1) return path;
+  const size_t slash = path.find_last_of('/');
+  const size_t from = slash == std::string::npos ? 0 : slash + 1;
+  size_t dot = path.find(".creature.json", from);
+  if (dot == std::string::npos) dot = path.find_last_of('.');
+  if (dot == std::string::npos || dot < from) dot = path.size();
+  return path.substr(0, dot) + "-" + std::to_string(index) + path.substr(dot);
+}
+
+Status write_text(const std::string& path, const std::string& text) {
+  return write_file_atomic(path, text);
+}
+
+Json creature_summary(const Genome& g, const Creature& c) {
+  const Skeleton& s = c.skeleton;
+  Json j;
+  j["name"] = c.name;
+  j["seed"] = g.seed;
+  j["legs"] = c.count(LimbKind::kLeg);
+  j["arms"] = c.count(LimbKind::kArm);
+  j["wings"] = c.count(LimbKind::kWing);
+  j["fins"] = c.count(LimbKind::kFin);
+  j["bones"] = s.bone_count();
+  j["vertebrae"] = {{"neck", s.count(BoneKind::kNeckVertebra)},
+                    {"back", s.count(BoneKind::kBackVertebra)},
+                    {"tail", s.count(BoneKind::kTailVertebra)}};
+  j["ribs"] = s.count(BoneKind::kRib);
+  j["weight_kg"] = g.pca[kWeightKg];
+  j["contact"] = contact_mode_name(c.contact);
+  j["skull"] = skull_variant_name(g.skull_variant);
+  j["scale"] = c.scale;
+  Json limbs = Json::array();
+  for (const Limb& l : c.limbs) {
+    if (l.side != Side::kNear) continue;
+    limbs.push_back({{"kind", limb_kind_name(l.kind)}, {"girdle", girdle_kind_name(l.girdle)},
+                     {"slot", l.slot}});
+  }
+  j["limb_pairs"] = limbs;
+  return j;
+}
+
+std::string layout_key(const Creature& c) {
+  return "legs" + std::to_string(c.count(LimbKind::kLeg)) + "-arms" +
+         std::to_string(c.count(LimbKind::kArm)) + "-wings" +
+         std::to_string(c.count(LimbKind::kWing)) + "-fins" +
+         std::to_string(c.count(LimbKind::kFin));
+}
+
+Json model_stats(const Generator& gen) {
+  const PcaModel& m = gen.model();
+  Json j;
+  j["samples"] = m.example_count();
+  j["dimensions"] = kPcaDims;
+  Json ev = Json::array();
+  for (int i = 0; i < kPcaDims; ++i) ev.push_back(m.eigenvalues()[i]);
+  j["eigenvalues"] = ev;
+  Json explained = Json::array();
+  for (int k = 1; k <= kPcaDims; ++k) explained.push_back(m.explained_variance(k));
+  j["explained_variance"] = explained;
+  const PcaVector mean = m.mean_raw();
+  Json mean_j = Json::object();
+  for (int d = 0; d < kPcaDims; ++d) mean_j[dim_name(d)] = mean[d];
+  j["mean"] = mean_j;
+  double best = 1e300, worst = -1.0;
+  std::string nearest, farthest;
+  for (const Animal& a : gen.dataset().animals) {
+    const double dist = (PcaModel::preprocess(to_vector(a)) - m.mean_preprocessed()).norm();
+    if (dist < best) best = dist, nearest = a.name;
+    if (dist > worst) worst = dist, farthest = a.name;
+  }
+  j["nearest_to_mean"] = {{"name", nearest}, {"distance", best}};
+  j["farthest_from_mean"] = {{"name", farthest}, {"distance", worst}};
+  return j;
+}
+
+int fail(const std::string& message) {
+  std::fprintf(stderr, "ossa-gen: %s\n", message.c_str());
+  return 1;
+}
+
+int run(const Args& a) {
+  const std::string dataset_path =
+      a.dataset ? *a.dataset : source_dir() + "/assets/creatures/examples.json";
+  std::optional<Generator> generator;
+  if (a.example || a.random || a.stats || a.sheet || a.variations) {
+    Result<Generator> g = Generator::load(dataset_path);
+    if (!g) return fail(g.message());
+    generator.emplace(std::move(*g));
+  }
+
+  if (a.stats) std::cout << model_stats(*generator).dump(2) << "\n";
+
+  if (a.sheet) {
+    std::vector<std::pair<std::string, Creature>> sheet;
+    std::vector<int> skulls;
+    for (const Animal& animal : generator->dataset().animals) {
+      Result<Genome> genome = generator->example(animal.name, 1);
+      if (!genome) return fail(animal.name + ": " + genome.message());
+      Result<Creature> creature = build_creature(*genome);
+      if (!creature) return fail(animal.name + ": " + creature.message());
+      sheet.emplace_back(animal.name + " (" + animal.name_de + ")", std::move(*creature));
+      skulls.push_back(genome->skull_variant);
+    }
+    if (Status st = write_text(*a.sheet, sheet_svg(sheet, 6, skulls)); !st) return fail(st.message());
+  }
+
+  if (!a.example && !a.random && !a.in) return 0;
+
+  GenerateOptions options;
+  options.wings = a.wings;
+  options.leg_pairs = a.leg_pairs;
+  options.weight_kg = a.weight;
+  options.genome.neck_girdle = a.neck_girdle;
+  options.genome.multi_limb = a.multi_limb;
+
+  if (a.count) {
+    std::map<std::string, long long> layouts;
+    long long with_wings = 0;
+    const auto t0 = std::chrono::steady_clock::now();
+    for (long long k = 0; k < *a.count; ++k) {
+      const Genome genome = generator->random(a.seed + static_cast<uint64_t>(k), options);
+      Result<Creature> creature = build_creature(genome);
+      if (!creature) {
+        return fail("seed " + std::to_string(a.seed + static_cast<uint64_t>(k)) + ": " +
+                    creature.message());
+      }
+      with_wings += creature->count(LimbKind::kWing) > 0;
+      ++layouts[layout_key(*creature)];
+    }
+    const double seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    Json j;
+    j["count"] = *a.count;
+    j["first_seed"] = a.seed;
+    j["with_wings"] = with_wings;
+    j["limb_layouts"] = layouts;
+    j["seconds"] = seconds;
+    j["per_second"] = seconds > 0.0 ? static_cast<double>(*a.count) / seconds : 0.0;
+    std::cout << j.dump(2) << "\n";
+    return 0;
+  }
+
+  Genome base;
+  if (a.in) {
+    Result<Genome> g = load_genome(*a.in);
+    if (!g) return fail(g.message());
+    base = std::move(*g);
+  } else if (a.example) {
+    Result<Genome> g = generator->example(*a.example, a.seed, options);
+    if (!g) return fail("--example " + *a.example + ": " + g.message());
+    base = std::move(*g);
+  } else {
+    base = generator->random(a.seed, options);
+  }
+
+  std::vector<Genome> genomes;
+  if (a.variations) {
+    for (int k = 1; k <= *a.variations; ++k) {
+      genomes.push_back(generator->variation(base, base.seed + static_cast<uint64_t>(k),
+                                             a.sigma.value_or(0.3)));
+    }
+  } else {
+    genomes.push_back(std::move(base));
+  }
+
+  const int total = static_cast<int>(genomes.size());
+  Json summaries = Json::array();
+  const std::string atlas = source_dir() + "/assets/sprites/bones/atlas.png";
+  for (int k = 0; k < total; ++k) {
+    const Genome& genome = genomes[static_cast<size_t>(k)];
+    Result<Creature> built = build_creature(genome);
+    if (!built) return fail((a.in ? *a.in + ": " : std::string()) + built.message());
+    const Creature& c = *built;
+    if (a.out) {
+      if (Status st = save_genome(numbered(*a.out, k + 1, total), genome); !st) return fail(st.message());
+    }
+    if (a.svg) {
+      SvgOptions o;
+      o.skull_variant = genome.skull_variant;
+      if (Status st = write_text(numbered(*a.svg, k + 1, total), creature_svg(c, o)); !st) {
+        return fail(st.message());
+      }
+    }
+    if (a.obj) {
+      if (Status st = write_text(numbered(*a.obj, k + 1, total), creature_obj(c)); !st) {
+        return fail(st.message());
+      }
+    }
+    if (a.gltf) {
+      tools::GltfOptions o;
+      o.atlas_path = atlas;
+      if (Status st = tools::export_gltf(c, numbered(*a.gltf, k + 1, total), o); !st) {
+        return fail(st.message());
+      }
+    }
+    summaries.push_back(creature_summary(genome, c));
+  }
+  const bool file_outputs = a.out || a.svg || a.obj || a.gltf;
+  if (a.summary || !file_outputs) {
+    std::cout << (total == 1 ? summaries[0] : summaries).dump(2) << "\n";
+  }
+  return 0;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  try {
+    const Args args = parse_args(argc, argv);
+    if (args.help) {
+      std::fputs(kUsage, stdout);
+      return 0;
+    }
+    return run(args);
+  } catch (const UsageError& e) {
+    std::fprintf(stderr, "ossa-gen: %s\n(see ossa-gen --help)\n", e.message.c_str());
+    return 2;
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "ossa-gen: error: %s\n", e.what());
+    return 1;
+  }
+}
