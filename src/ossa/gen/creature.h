@@ -46,6 +46,7 @@ struct Creature {
   std::vector<Limb> limbs;      // near and far copies, pairs adjacent
   Pose rest_pose;
   ContactMode contact = ContactMode::kTip;
+  int skull_variant = 0;        // 0 mammal, 1 bird, 2 reptile, 3 fish (genome.h)
   float scale = 0.002f;         // metres per frame unit
   glm::vec2 origin_frame{0.0f}; // frame point that maps to the model origin
   float ground_y_ms = 0.0f;     // always 0 by construction; kept explicit for clarity

@@ -30,6 +30,7 @@ class Assembler {
     c_.origin_frame = {plan.joints[plan.root_joint].x, plan.ground_y};
     c_.name = g.name;
     c_.contact = g.contact;
+    c_.skull_variant = g.skull_variant;
     bone_ending_at_.assign(plan.joints.size(), -1);
   }
 

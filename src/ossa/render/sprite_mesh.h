@@ -1,0 +1,84 @@
+#pragma once
+// SpriteMesh — the bone-sprite mesh of one creature [Z 7.4], built on the CPU from its
+// Skeleton and the bone sprite set (assets/sprites/bones/sprites.json), ready for GPU
+// skinning. No GL here: CreatureBatch uploads it.
+//
+// Every bone gets the sprite of its kind, placed by the sprite's parent and child joint
+// anchors so that the anchors land on the bone's start and end, whatever its length; the
+// sprite's height follows the bone's width. Positions are in creature model space of the
+// rest pose (the bind pose); a vertex is skinned by palette = world · inverse_bind of its
+// bones (pose.h PaletteJob), so smooth weights across a joint are possible.
+
+#include <array>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include <glm/vec2.hpp>
+
+#include "ossa/gen/creature.h"
+#include "ossa/io/result.h"
+#include "ossa/math/transform2d.h"
+
+namespace ossa {
+
+// Which sprite a bone gets; chosen from BoneKind, limb kind, contact mode and skull variant.
+enum class SpriteId : uint8_t {
+  kSkullMammal, kSkullBird, kSkullReptile, kSkullFish,
+  kVertebra, kTailVertebra, kRib, kScapula, kPelvis,
+  kLongBone,      // upper and lower limb bones
+  kPaw, kHoof, kFlatFoot, kBirdFoot, kWingHand, kFin,
+  kCount
+};
+const char* sprite_name(SpriteId id);
+
+// One sprite of the set: its rectangle in the atlas and its joint anchors in the sprite's
+// unit box (u right along the bone, v up; (0,0) bottom-left, (1,1) top-right).
+struct SpriteInfo {
+  std::string name;           // "vertebra", file stem of its PNG/SVG
+  glm::vec2 parent_anchor{0.0f, 0.5f};  // unit box: where the joint to the parent sits
+  glm::vec2 child_anchor{1.0f, 0.5f};   // unit box: where the joint to the child sits
+  float aspect = 0.25f;       // height / (distance between the anchors) at width 1 — a
+                              // bone's drawn height is max(aspect * length, bone width)
+  glm::vec2 uv_min{0.0f}, uv_max{1.0f};  // atlas rectangle (filled in when the atlas is packed)
+};
+
+// The sprite set: one SpriteInfo per SpriteId, loaded from sprites.json (versioned,
+// validated; errors name the file and field).
+struct SpriteSet {
+  std::array<SpriteInfo, static_cast<size_t>(SpriteId::kCount)> sprites;
+  const SpriteInfo& operator[](SpriteId id) const { return sprites[static_cast<size_t>(id)]; }
+};
+Result<SpriteSet> load_sprite_set(const std::string& path);
+// The built-in anchors (used by tests and when no file is given).
+SpriteSet default_sprite_set();
+
+// One vertex as the skinned shader reads it.
+struct SpriteVertex {
+  glm::vec2 position_ms;            // bind-pose model space, metres
+  glm::vec2 uv;                     // atlas texture coordinates
+  std::array<uint8_t, 4> bones{};   // bone indices within the creature (≤ 255 bones)
+  std::array<float, 4> weights{};   // sum to 1
+  float shade = 1.0f;               // 1 near/body, < 1 for the far side (drawn darker)
+};
+
+struct SpriteMeshOptions {
+  bool smooth_weights = false;      // blend vertices near a joint with the parent bone
+  float far_shade = 0.62f;          // brightness of far-side bones
+};
+
+// Triangles in three index ranges, one per Layer (far first, then body, then near), so one
+// draw call per layer draws every creature of a batch in the right order.
+struct SpriteMesh {
+  std::vector<SpriteVertex> vertices;
+  std::vector<uint32_t> indices;
+  std::array<uint32_t, 4> layer_begin{};  // indices [layer_begin[l], layer_begin[l+1])
+  std::vector<Mat2x3> inverse_bind;       // one per bone: model space → bone frame
+  std::vector<SpriteId> bone_sprites;     // one per bone
+};
+
+SpriteId sprite_for_bone(const Creature& creature, int bone);
+SpriteMesh build_sprite_mesh(const Creature& creature, const SpriteSet& sprites,
+                             const SpriteMeshOptions& options = {});
+
+}  // namespace ossa
