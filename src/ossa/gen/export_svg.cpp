@@ -329,8 +329,10 @@ void hand(PathBuilder& p, PathBuilder& holes, const BoneContext& b, HandShape sh
     case HandShape::kFlat:
     case HandShape::kHand: {
       // Heel/wrist block, metapodials, two phalanges; hands spread three fingers.
-      p.circle({0.12f * L, 0.0f}, 0.9f * h);
-      p.capsule({0.12f * L, 0.0f}, {0.62f * L, 0.0f}, 0.5f * h, 0.4f * h);
+      // The block starts at the joint (no gap to the lower limb's knob).
+      const float rb = std::min(0.9f * h, 0.2f * L);
+      p.circle({0.6f * rb, 0.0f}, rb);
+      p.capsule({0.6f * rb, 0.0f}, {0.62f * L, 0.0f}, 0.5f * h, 0.4f * h);
       const int digits = shape == HandShape::kHand ? 3 : 1;
       for (int i = 0; i < digits; ++i) {
         const float spread = (static_cast<float>(i) - 0.5f * (digits - 1)) * 0.18f;
