@@ -26,9 +26,9 @@ bool TwoBoneIkJob::validate() const { return valid(*this); }
 
 bool TwoBoneIkJob::run() {
   if (!valid(*this)) return false;
-  // The triangle is solved in double: the lower bone's direction is (r - x, h) / l2, and with
-  // a short lower bone (foot-sized l2 under a long thigh) float rounding of x and h, relative
-  // to l1, would be amplified by l1 / l2. In double that amplification stays far below float
+  // The triangle is solved in double: the lower bone's direction is (r - l1 c, -l1 s) / l2
+  // (below), and with a short lower bone (foot-sized l2 under a long thigh) float rounding of
+  // c and s would be amplified by l1 / l2. In double that amplification stays far below float
   // output precision, and every product below stays a normal number for any float input.
   const double l1 = upper_length;
   const double l2 = lower_length;
