@@ -1,0 +1,51 @@
+#include "ossa/platform/image.h"
+
+#include <SDL2/SDL.h>
+#include <SDL2/SDL_image.h>
+
+#include <cstring>
+
+namespace ossa {
+
+Result<Image> load_image(const std::string& path) {
+  SDL_Surface* loaded = IMG_Load(path.c_str());
+  if (!loaded) return Error{path + ": cannot load image: " + IMG_GetError()};
+  // RGBA32 is R, G, B, A in byte order whatever the endianness: what GL_RGBA/UNSIGNED_BYTE reads.
+  SDL_Surface* rgba = SDL_ConvertSurfaceFormat(loaded, SDL_PIXELFORMAT_RGBA32, 0);
+  SDL_FreeSurface(loaded);
+  if (!rgba) return Error{path + ": cannot convert image to RGBA: " + SDL_GetError()};
+  Image image;
+  image.width = rgba->w;
+  image.height = rgba->h;
+  image.rgba.resize(static_cast<size_t>(rgba->w) * rgba->h * 4);
+  SDL_LockSurface(rgba);
+  for (int y = 0; y < rgba->h; ++y) {
+    std::memcpy(&image.rgba[static_cast<size_t>(y) * rgba->w * 4],
+                static_cast<const uint8_t*>(rgba->pixels) + static_cast<size_t>(y) * rgba->pitch,
+                static_cast<size_t>(rgba->w) * 4);
+  }
+  SDL_UnlockSurface(rgba);
+  SDL_FreeSurface(rgba);
+  if (image.empty()) return Error{path + ": image has no pixels"};
+  return image;
+}
+
+Image checker_image(int width, int height, int cell) {
+  Image image;
+  image.width = width;
+  image.height = height;
+  image.rgba.resize(static_cast<size_t>(width) * height * 4);
+  for (int y = 0; y < height; ++y) {
+    for (int x = 0; x < width; ++x) {
+      const bool on = ((x / cell) + (y / cell)) % 2 == 0;
+      uint8_t* p = image.pixel(x, y);
+      p[0] = on ? 255 : 40;
+      p[1] = on ? 0 : 40;
+      p[2] = on ? 255 : 40;
+      p[3] = 255;
+    }
+  }
+  return image;
+}
+
+}  // namespace ossa

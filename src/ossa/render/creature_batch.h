@@ -1,0 +1,131 @@
+#pragma once
+// CreatureBatch — GPU skinning of many bone-sprite creatures with a constant number of draw
+// calls (DESIGN.md §9, [T 4.3.1] RiggedShader generalised to a crowd):
+//   * all creatures' SpriteMeshes live in ONE vertex buffer and ONE index buffer; the index
+//     buffer is layer-major (every creature's far triangles, then body, then near), so
+//   * one draw call per layer (3 per frame) draws every creature in the right order;
+//   * each frame ONE upload sends all creatures' palettes (world · inverse_bind per bone,
+//     PaletteJob) to a texture buffer of RG32F texels, three per bone (Mat2x3 as stored);
+//   * each vertex carries its creature's palette base, baked in when the geometry is built.
+// draw_naive() is the per-bone reference path (one draw and one uniform upload per bone) for
+// the benchmark. Needs a current GL context from construction on.
+//
+//   CreatureBatch batch;
+//   int id = batch.add(build_sprite_mesh(creature, atlas.sprites), creature.skeleton);
+//   batch.set_world(id, world_matrices);      // every frame, per creature
+//   batch.upload_palettes();                  // once per frame
+//   renderer.draw_batch(batch, atlas.texture);
+
+#include <array>
+#include <cstdint>
+#include <span>
+#include <vector>
+
+#include <glm/mat3x3.hpp>
+#include <glm/vec2.hpp>
+
+#include "ossa/math/transform2d.h"
+#include "ossa/render/sprite_mesh.h"
+#include "ossa/render/vertex_array.h"
+#include "ossa/skeleton/skeleton.h"
+
+namespace ossa {
+
+class ShaderProgram;
+
+// The skinned program's vertex: a SpriteVertex plus its creature's palette base.
+struct BatchVertex {
+  glm::vec2 position_ms{0.0f};
+  glm::vec2 uv{0.0f};
+  std::array<uint8_t, 4> bones{};
+  std::array<float, 4> weights{};
+  float shade = 1.0f;
+  uint32_t palette_base = 0;
+  static std::span<const VertexAttrib> layout();
+};
+
+// The bone program's vertex: a bone's start or end in bind-pose model space and its palette
+// entry (creature base + bone).
+struct BoneLineVertex {
+  glm::vec2 position_ms{0.0f};
+  uint32_t palette_index = 0;
+  static std::span<const VertexAttrib> layout();
+};
+
+class CreatureBatch {
+ public:
+  CreatureBatch();
+  ~CreatureBatch();
+  CreatureBatch(const CreatureBatch&) = delete;
+  CreatureBatch& operator=(const CreatureBatch&) = delete;
+
+  // Adds a creature; returns its instance index. Its palette starts as the bind pose at the
+  // origin (palette = identity). Geometry is (re)built on the next draw.
+  int add(const SpriteMesh& mesh, const Skeleton& skeleton);
+  void clear();
+
+  int creature_count() const { return static_cast<int>(creatures_.size()); }
+  int bone_count() const { return static_cast<int>(palette_.size()); }  // all creatures
+  int bone_count(int instance) const { return creatures_[instance].bone_count; }
+  int vertex_count() const { return static_cast<int>(vertices_.size()); }
+  int triangle_count() const { return static_cast<int>(mesh_indices_total_ / 3); }
+
+  // CPU staging palette of one creature (bone_count(instance) matrices, bone frame... see
+  // set_world): write it, then upload_palettes().
+  std::span<Mat2x3> palette(int instance);
+  std::span<const Mat2x3> palette() const { return palette_; }
+  // palette(instance)[i] = world[i] · inverse_bind[i] (PaletteJob); world has one matrix per
+  // bone: bone frame → world space.
+  void set_world(int instance, std::span<const Mat2x3> world);
+  // Convenience: the creature's pose through forward kinematics placed by model_to_world.
+  void set_pose(int instance, const Skeleton& skeleton, std::span<const BoneLocal> locals,
+                const Mat2x3& model_to_world);
+
+  // ONE glBufferSubData of every creature's palette into the texture buffer.
+  void upload_palettes();
+
+  // Batched draw: binds the palette and atlas, one glDrawElements per non-empty layer.
+  // The skinned program must be in use with u_view_proj set. Returns the draw calls issued.
+  int draw(const ShaderProgram& skinned, unsigned atlas_texture);
+  // Per-bone reference: one draw and one u_bone upload per run of triangles of one bone
+  // (the naive program must be in use). Returns the draw calls issued.
+  int draw_naive(const ShaderProgram& naive, unsigned atlas_texture);
+  // Skeleton lines of every creature, one draw (bone program in use).
+  int draw_bones(const ShaderProgram& bone);
+
+  // Index ranges of the layer-major index buffer (first index, count) per Layer.
+  std::array<std::pair<uint32_t, uint32_t>, kLayerCount> layer_ranges();
+
+ private:
+  struct Instance {
+    uint32_t vertex_base = 0, vertex_count = 0;
+    uint32_t palette_base = 0;
+    int bone_count = 0;
+    std::array<uint32_t, 4> layer_begin{};  // into mesh_indices_ below (creature-local)
+    uint32_t index_base = 0;                // where its indices start in mesh_indices_
+    std::vector<Mat2x3> inverse_bind;
+  };
+  struct NaiveRun {
+    uint32_t first = 0, count = 0;  // indices in the layer-major buffer
+    uint32_t palette_index = 0;
+  };
+  void rebuild_geometry();
+  void ensure_palette_buffer();
+
+  std::vector<Instance> creatures_;
+  std::vector<BatchVertex> vertices_;
+  std::vector<uint32_t> mesh_indices_;      // per creature, creature-local vertex numbers
+  size_t mesh_indices_total_ = 0;
+  std::vector<BoneLineVertex> bone_lines_;
+  std::vector<Mat2x3> palette_;
+  std::array<std::pair<uint32_t, uint32_t>, kLayerCount> layer_ranges_{};
+  std::vector<NaiveRun> naive_runs_;
+  bool geometry_dirty_ = true;
+
+  VertexArray<BatchVertex> mesh_va_;
+  VertexArray<BoneLineVertex> bone_va_;
+  unsigned palette_buffer_ = 0, palette_texture_ = 0;
+  size_t palette_capacity_ = 0;   // matrices the GPU buffer holds
+};
+
+}  // namespace ossa

@@ -1,0 +1,166 @@
+// Renderer benchmarks (issue "Renderer"): the batched GPU-skinning path of CreatureBatch
+// against the per-bone reference, and the palette upload against a memcpy of the same bytes.
+// Built into ossa-render-bench (tools/ossa-render/CMakeLists.txt) with bench_main.cpp, so the
+// ratio table is printed at the end. Runs offscreen (SDL's offscreen driver, Mesa llvmpipe):
+// GPU time here is CPU time of the software rasteriser, so the frame figures include it.
+//
+// tests/bench/CMakeLists.txt globs every *_bench.cpp into ossa-bench, which links ossa::core
+// only: this file compiles to nothing there; ossa-render-bench defines OSSA_RENDER_BENCH.
+#ifdef OSSA_RENDER_BENCH
+
+#include <benchmark/benchmark.h>
+
+#include <cstdlib>
+#include <cstring>
+#include <memory>
+#include <vector>
+
+#include "ossa/gen/generator.h"
+#include "ossa/gen/skeleton_builder.h"
+#include "ossa/platform/window.h"
+#include "ossa/render/creature_batch.h"
+#include "ossa/render/gl.h"
+#include "ossa/render/renderer.h"
+#include "ossa/render/sprite_mesh.h"
+#include "ossa/render/texture.h"
+#include "ossa/skeleton/pose.h"
+
+namespace {
+
+using namespace ossa;
+
+constexpr int kCreatures = 1000;
+constexpr int kWidth = 640, kHeight = 360;
+
+std::string source_dir() {
+  const char* env = std::getenv("OSSA_SOURCE_DIR");
+  return env && *env ? env : OSSA_SOURCE_DIR;
+}
+
+// One GL context, renderer, atlas and a batch of 1000 creatures (20 examples and random
+// creatures mixed) with their world matrices, built once per process.
+struct Scene {
+  Window window;
+  std::unique_ptr<Renderer> renderer;
+  std::unique_ptr<Atlas> atlas;
+  std::unique_ptr<CreatureBatch> batch;
+  std::vector<Creature> kinds;
+  std::vector<int> kind_of;                  // per instance
+  std::vector<std::vector<Mat2x3>> world;    // per instance, per bone
+  bool ok = false;
+
+  Scene() {
+    setenv("SDL_VIDEODRIVER", "offscreen", 1);
+    WindowDesc desc;
+    desc.width = kWidth;
+    desc.height = kHeight;
+    desc.offscreen = true;
+    auto w = Window::create(desc);
+    if (!w.ok()) return;
+    window = std::move(w.value());
+    auto r = Renderer::create(default_shader_dir());
+    if (!r.ok()) return;
+    renderer = std::make_unique<Renderer>(std::move(r.value()));
+    const std::string dir = source_dir() + "/assets/sprites/bones";
+    auto set = load_sprite_set(dir + "/sprites.json");
+    atlas = std::make_unique<Atlas>(Atlas::build(set.ok() ? set.value() : default_sprite_set(), dir));
+    auto gen = Generator::load(source_dir() + "/assets/creatures/examples.json");
+    if (!gen.ok()) return;
+    for (const char* name : {"horse", "kangaroo", "giraffe", "cat", "dog"}) {
+      if (auto g = gen->example(name, 1); g.ok()) {
+        if (auto c = build_creature(g.value()); c.ok()) kinds.push_back(std::move(c.value()));
+      }
+    }
+    for (uint64_t seed = 1; kinds.size() < 20; ++seed) {
+      if (auto c = build_creature(gen->random(seed)); c.ok()) kinds.push_back(std::move(c.value()));
+    }
+    batch = std::make_unique<CreatureBatch>();
+    std::vector<SpriteMesh> meshes;
+    for (const Creature& c : kinds) meshes.push_back(build_sprite_mesh(c, atlas->sprites));
+    for (int i = 0; i < kCreatures; ++i) {
+      const int k = i % static_cast<int>(kinds.size());
+      kind_of.push_back(k);
+      batch->add(meshes[k], kinds[k].skeleton);
+      // A 40 x 25 grid of creatures, 3 m apart.
+      Transform2D place;
+      place.translation = {3.0f * static_cast<float>(i % 40), 2.5f * static_cast<float>(i / 40)};
+      const auto model = model_matrices(kinds[k].skeleton, kinds[k].rest_pose.locals);
+      std::vector<Mat2x3> wm(model.size());
+      for (size_t b = 0; b < model.size(); ++b) wm[b] = place.to_mat2x3() * model[b];
+      world.push_back(std::move(wm));
+    }
+    renderer->camera.fit({{-1.0f, -1.0f}, {120.0f, 63.0f}}, float(kWidth) / kHeight, 0.02f);
+    ok = true;
+  }
+
+  void build_palettes() {
+    for (int i = 0; i < kCreatures; ++i) batch->set_world(i, world[i]);
+  }
+};
+
+Scene& scene() {
+  static Scene s;
+  return s;
+}
+
+void frame_1000_creatures_ossa(benchmark::State& state) {
+  Scene& s = scene();
+  if (!s.ok) return state.SkipWithError("no GL context / data");
+  for (auto _ : state) {
+    s.build_palettes();
+    s.batch->upload_palettes();
+    s.renderer->begin_frame(kWidth, kHeight, {0.5f, 0.6f, 0.7f});
+    s.renderer->draw_batch(*s.batch, s.atlas->texture);
+    glFinish();
+  }
+  state.counters["draw_calls"] = s.renderer->stats.draw_calls;
+  state.counters["bones"] = s.batch->bone_count();
+  state.counters["vertices"] = s.batch->vertex_count();
+}
+
+void frame_1000_creatures_reference(benchmark::State& state) {
+  Scene& s = scene();
+  if (!s.ok) return state.SkipWithError("no GL context / data");
+  for (auto _ : state) {
+    s.build_palettes();
+    s.renderer->begin_frame(kWidth, kHeight, {0.5f, 0.6f, 0.7f});
+    s.renderer->draw_batch_naive(*s.batch, s.atlas->texture);
+    glFinish();
+  }
+  state.counters["draw_calls"] = s.renderer->stats.draw_calls;
+  state.counters["bones"] = s.batch->bone_count();
+  state.counters["vertices"] = s.batch->vertex_count();
+}
+
+void palette_upload_ossa(benchmark::State& state) {
+  Scene& s = scene();
+  if (!s.ok) return state.SkipWithError("no GL context / data");
+  s.build_palettes();
+  for (auto _ : state) {
+    s.batch->upload_palettes();
+    glFinish();  // the driver copies at once or at the next sync; count it either way
+  }
+  state.SetBytesProcessed(state.iterations() * int64_t(s.batch->palette().size_bytes()));
+}
+
+void palette_upload_reference(benchmark::State& state) {
+  Scene& s = scene();
+  if (!s.ok) return state.SkipWithError("no GL context / data");
+  s.build_palettes();
+  const auto src = s.batch->palette();
+  std::vector<Mat2x3> dst(src.size());
+  for (auto _ : state) {
+    std::memcpy(dst.data(), src.data(), src.size_bytes());
+    benchmark::DoNotOptimize(dst.data());
+    benchmark::ClobberMemory();
+  }
+  state.SetBytesProcessed(state.iterations() * int64_t(src.size_bytes()));
+}
+
+BENCHMARK(frame_1000_creatures_ossa)->Name("frame_1000_creatures:ossa")->Unit(benchmark::kMillisecond);
+BENCHMARK(frame_1000_creatures_reference)->Name("frame_1000_creatures:reference")->Unit(benchmark::kMillisecond);
+BENCHMARK(palette_upload_ossa)->Name("palette_upload:ossa")->Unit(benchmark::kMicrosecond);
+BENCHMARK(palette_upload_reference)->Name("palette_upload:reference")->Unit(benchmark::kMicrosecond);
+
+}  // namespace
+#endif  // OSSA_RENDER_BENCH

@@ -1,0 +1,264 @@
+// ossa-render — renders creatures offscreen to a PNG (issue "Renderer", DESIGN.md §9): N
+// creatures side by side in their rest pose on the ground, the camera fitting them. Uses the
+// same Window / Renderer / CreatureBatch as the game, through SDL's offscreen driver, so it
+// runs with no display. Every failure prints one clear message and exits non-zero.
+
+#include <algorithm>
+#include <cerrno>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <exception>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "ossa/gen/generator.h"
+#include "ossa/gen/genome.h"
+#include "ossa/gen/skeleton_builder.h"
+#include "ossa/level/level_io.h"
+#include "ossa/platform/window.h"
+#include "ossa/render/capture.h"
+#include "ossa/render/creature_batch.h"
+#include "ossa/render/debug_draw.h"
+#include "ossa/render/gl.h"
+#include "ossa/render/renderer.h"
+#include "ossa/render/sprite_mesh.h"
+#include "ossa/render/texture.h"
+
+namespace {
+
+using namespace ossa;
+
+constexpr const char* kUsage = R"(usage: ossa-render SOURCE [--level F] --png OUT [options]
+
+Render creatures offscreen (no display needed) standing in their rest pose on the ground.
+
+source (one of):
+  --example NAME          one of the 44 example animals (English or German name)
+  --random                a random creature (with --seed N, default 1)
+  --creature F            a saved genome (.creature.json)
+options:
+  --seed N                seed of the random choices (default 1)
+  --level F               stand on this level's ground under its spawn point
+  --png OUT               write the frame as PNG
+  --width W --height H    image size in pixels (default 1024 x 576)
+  --count N               N creatures side by side (default 1, at most 10000)
+  --bones                 draw skeleton lines over the sprites
+  --stats                 print JSON: draw_calls, creatures, bones, vertices, triangles
+  --help                  this text
+)";
+
+struct Args {
+  std::optional<std::string> example, creature, level, png;
+  bool random = false, stats = false, bones = false;
+  uint64_t seed = 1;
+  int width = 1024, height = 576, count = 1;
+};
+
+[[noreturn]] void fail(const std::string& message) {
+  std::fprintf(stderr, "ossa-render: %s\n", message.c_str());
+  std::exit(1);
+}
+
+std::string source_dir() {
+  const char* env = std::getenv("OSSA_SOURCE_DIR");
+  return env && *env ? env : OSSA_SOURCE_DIR;
+}
+
+long parse_int(const std::string& flag, const std::string& text, long lo, long hi) {
+  char* end = nullptr;
+  errno = 0;
+  const long v = std::strtol(text.c_str(), &end, 10);
+  if (text.empty() || *end != '\0' || errno != 0 || v < lo || v > hi) {
+    fail(flag + ": expected an integer in [" + std::to_string(lo) + ", " + std::to_string(hi) +
+         "], got \"" + text + "\"");
+  }
+  return v;
+}
+
+Args parse_args(int argc, char** argv) {
+  Args a;
+  for (int i = 1; i < argc; ++i) {
+    const std::string flag = argv[i];
+    auto value = [&]() -> std::string {
+      if (i + 1 >= argc) fail(flag + ": missing value");
+      return argv[++i];
+    };
+    if (flag == "--help" || flag == "-h") {
+      std::fputs(kUsage, stdout);
+      std::exit(0);
+    } else if (flag == "--example") {
+      a.example = value();
+    } else if (flag == "--creature") {
+      a.creature = value();
+    } else if (flag == "--random") {
+      a.random = true;
+    } else if (flag == "--seed") {
+      a.seed = static_cast<uint64_t>(parse_int(flag, value(), 0, 2147483647L));
+    } else if (flag == "--level") {
+      a.level = value();
+    } else if (flag == "--png") {
+      a.png = value();
+    } else if (flag == "--width") {
+      a.width = static_cast<int>(parse_int(flag, value(), 16, 8192));
+    } else if (flag == "--height") {
+      a.height = static_cast<int>(parse_int(flag, value(), 16, 8192));
+    } else if (flag == "--count") {
+      a.count = static_cast<int>(parse_int(flag, value(), 1, 10000));
+    } else if (flag == "--stats") {
+      a.stats = true;
+    } else if (flag == "--bones") {
+      a.bones = true;
+    } else {
+      fail("unknown argument \"" + flag + "\" (see --help)");
+    }
+  }
+  const int sources = (a.example ? 1 : 0) + (a.creature ? 1 : 0) + (a.random ? 1 : 0);
+  if (sources == 0) fail("nothing to render: give --example NAME, --random or --creature F");
+  if (sources > 1) fail("give only one of --example, --random, --creature");
+  if (!a.png && !a.stats) fail("nothing to do: give --png OUT and/or --stats");
+  return a;
+}
+
+Creature make_creature(const Args& a) {
+  Genome genome;
+  if (a.creature) {
+    auto g = load_genome(*a.creature);
+    if (!g.ok()) fail(g.message());
+    genome = std::move(g.value());
+  } else {
+    auto generator = Generator::load(source_dir() + "/assets/creatures/examples.json");
+    if (!generator.ok()) fail(generator.message());
+    if (a.example) {
+      auto g = generator->example(*a.example, a.seed);
+      if (!g.ok()) fail(g.message());
+      genome = std::move(g.value());
+    } else {
+      genome = generator->random(a.seed);
+    }
+  }
+  auto creature = build_creature(genome);
+  if (!creature.ok()) fail(creature.message());
+  return std::move(creature.value());
+}
+
+// Model-space bounds of the rest pose: every joint, padded by the bone widths (sprites are
+// drawn about as thick as the bone is wide).
+Box rest_bounds(const Creature& c) {
+  const auto model = model_matrices(c.skeleton, c.rest_pose.locals);
+  Box b{{1e9f, 1e9f}, {-1e9f, -1e9f}};
+  for (int i = 0; i < c.skeleton.bone_count(); ++i) {
+    const float pad = 0.5f * std::max(c.skeleton.width(i), 0.1f * c.skeleton.length(i));
+    for (glm::vec2 p : {bone_start(model[i]), bone_end(model[i], c.skeleton.length(i))}) {
+      b.min_ws = glm::min(b.min_ws, p - glm::vec2(pad));
+      b.max_ws = glm::max(b.max_ws, p + glm::vec2(pad));
+    }
+  }
+  b.min_ws.y = std::min(b.min_ws.y, 0.0f);
+  return b;
+}
+
+int run(const Args& a) {
+  Creature creature = make_creature(a);
+
+  std::optional<Level> level;
+  if (a.level) {
+    auto l = load_level(*a.level);
+    if (!l.ok()) fail(l.message());
+    level = std::move(l.value());
+  }
+
+  WindowDesc desc;
+  desc.title = "ossa-render";
+  desc.width = a.width;
+  desc.height = a.height;
+  desc.offscreen = true;
+  auto window = Window::create(desc);
+  if (!window.ok()) fail(window.message());
+  auto renderer = Renderer::create(default_shader_dir());
+  if (!renderer.ok()) fail(renderer.message());
+
+  const std::string sprite_dir = source_dir() + "/assets/sprites/bones";
+  SpriteSet sprites = default_sprite_set();
+  if (auto s = load_sprite_set(sprite_dir + "/sprites.json"); s.ok()) {
+    sprites = std::move(s.value());
+  } else {
+    render_log(s.message() + " (using the built-in sprite anchors)");
+  }
+  Atlas atlas = Atlas::build(sprites, sprite_dir);
+
+  // Side by side, 15 % of a body length apart, on the ground under each creature.
+  const Box body = rest_bounds(creature);
+  const float spacing = body.width() * 1.15f;
+  const glm::vec2 start = level ? level->spawn_ws : glm::vec2(0.0f);
+  const SpriteMesh mesh = build_sprite_mesh(creature, atlas.sprites);
+  CreatureBatch batch;
+  Box view{{1e9f, 1e9f}, {-1e9f, -1e9f}};
+  for (int i = 0; i < a.count; ++i) {
+    const float x = start.x + spacing * static_cast<float>(i);
+    float ground = start.y;
+    if (level) {
+      // The highest ground under the body, searching from well above the spawn.
+      if (auto hit = level->ground_height_below(x + body.min_ws.x, x + body.max_ws.x,
+                                                start.y + 2.0f, 100.0f)) {
+        ground = hit->height_ws;
+      }
+    }
+    const int id = batch.add(mesh, creature.skeleton);
+    Transform2D place;
+    place.translation = {x, ground};
+    batch.set_pose(id, creature.skeleton, creature.rest_pose.locals, place.to_mat2x3());
+    view = view.united(body.translated({x, ground}));
+  }
+  batch.upload_palettes();
+
+  // The ground: the level's colliders, or a plain strip under the creatures.
+  DebugDraw debug;
+  const glm::vec4 ground_fill{0.42f, 0.36f, 0.27f, 1.0f}, ground_edge{0.25f, 0.20f, 0.14f, 1.0f};
+  Camera2D& camera = renderer->camera;
+  camera.fit(view, static_cast<float>(a.width) / static_cast<float>(a.height), 0.08f);
+  const Box visible = camera.visible_box();
+  if (level) {
+    debug.add_level(*level, ground_fill, ground_edge);
+  } else {
+    debug.add_box({{visible.min_ws.x - 1.0f, visible.min_ws.y - 1.0f}, {visible.max_ws.x + 1.0f, start.y}},
+                  ground_fill, true);
+    debug.add_line({visible.min_ws.x - 1.0f, start.y}, {visible.max_ws.x + 1.0f, start.y}, ground_edge);
+  }
+
+  const glm::vec3 sky = level && level->background ? level->background->colour
+                                                   : glm::vec3(0.55f, 0.70f, 0.85f);
+  renderer->begin_frame(window->width(), window->height(), sky);
+  renderer->draw_debug(debug);
+  const int calls_before = renderer->stats.draw_calls;
+  renderer->draw_batch(batch, atlas.texture);
+  const int creature_calls = renderer->stats.draw_calls - calls_before;
+  if (a.bones) renderer->draw_bones(batch, {0.9f, 0.1f, 0.1f, 1.0f});
+  if (!check_gl("ossa-render")) fail("OpenGL reported an error while drawing (see above)");
+
+  if (a.png) {
+    const Image frame = read_framebuffer(window->width(), window->height());
+    if (auto s = write_png(*a.png, frame); !s.ok()) fail(s.message());
+  }
+  if (a.stats) {
+    const DrawStats& st = renderer->stats;
+    std::printf(
+        "{\n  \"name\": \"%s\",\n  \"creatures\": %d,\n  \"bones\": %d,\n  \"vertices\": %d,\n"
+        "  \"triangles\": %d,\n  \"draw_calls\": %d,\n  \"creature_draw_calls\": %d,\n"
+        "  \"atlas_missing_sprites\": %d,\n  \"width\": %d,\n  \"height\": %d\n}\n",
+        creature.name.c_str(), batch.creature_count(), batch.bone_count(), batch.vertex_count(),
+        batch.triangle_count(), st.draw_calls, creature_calls, atlas.missing, window->width(), window->height());
+  }
+  return 0;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  try {
+    return run(parse_args(argc, argv));
+  } catch (const std::exception& e) {
+    fail(std::string("unexpected error: ") + e.what());
+  }
+}
