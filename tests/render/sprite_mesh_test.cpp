@@ -178,7 +178,8 @@ TEST_CASE("sprite choice follows kind, limb, contact and skull variant", "[rende
       CHECK(static_cast<int>(sprite_for_bone(c, c.skull)) == std::clamp(c.skull_variant, 0, 3));
     }
     for (int t : c.tail) CHECK(sprite_for_bone(c, t) == SpriteId::kTailVertebra);
-    for (int b : c.neck) CHECK(sprite_for_bone(c, b) == SpriteId::kVertebra);
+    for (int b : c.neck) CHECK(sprite_for_bone(c, b) == SpriteId::kTailVertebra);
+    for (int b : c.back) CHECK(sprite_for_bone(c, b) == SpriteId::kVertebra);
     for (const Limb& l : c.limbs) {
       const SpriteId hand = sprite_for_bone(c, l.bones[2]);
       switch (l.kind) {

@@ -143,8 +143,10 @@ SpriteId sprite_for_bone(const Creature& creature, int bone) {
   OSSA_ASSERT(bone >= 0 && bone < s.bone_count(), "sprite_for_bone: bone index out of range");
   switch (s.kind(bone)) {
     case BoneKind::kRoot:
-    case BoneKind::kNeckVertebra:
     case BoneKind::kBackVertebra: return SpriteId::kVertebra;
+    // Neck vertebrae are long spools with low spines, like tail vertebrae: the tall-spined
+    // back vertebra stretched to a neck segment's length reads as a row of spikes.
+    case BoneKind::kNeckVertebra:
     case BoneKind::kTailVertebra: return SpriteId::kTailVertebra;
     case BoneKind::kSkull:
       return static_cast<SpriteId>(static_cast<int>(SpriteId::kSkullMammal) +

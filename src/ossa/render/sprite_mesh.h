@@ -94,7 +94,8 @@ struct SpriteMesh {
 
 // Sprite choice (documented rule, same as the SVG exporter's shapes):
 //   skull → skull variant (creature.skull_variant: 0 mammal, 1 bird, 2 reptile, 3 fish);
-//   neck and back vertebrae → kVertebra; tail → kTailVertebra; rib, scapula, pelvis → theirs;
+//   back vertebrae → kVertebra; neck and tail vertebrae → kTailVertebra (long, low-spined);
+//   rib, scapula, pelvis → theirs;
 //   upper and lower limb bones → kLongBone (also in fins: only the distal bone is a fin fan);
 //   hand bone by its limb: wing → kWingHand, fin → kFin, arm → kFlatFoot (a flat hand);
 //   leg → kBirdFoot on a winged creature, kFlatFoot for ContactMode::kFlat, else (tip contact)
