@@ -1,0 +1,669 @@
+#include "ossa/anim/animator.h"
+
+// [SECTION] helpers
+// [SECTION] construction and reset
+// [SECTION] update: turn, gait clock, legs
+// [SECTION] swing planning (set_new_splines) and footholds
+// [SECTION] body placement
+// [SECTION] pose: spine, IK, arms, tail
+
+#include <algorithm>
+#include <cmath>
+
+#include "ossa/math/angle.h"
+#include "ossa/math/two_bone_ik.h"
+
+namespace ossa {
+
+// [SECTION] helpers ----------------------------------------------------------------------
+
+namespace {
+
+constexpr float kEps = 1e-5f;
+constexpr float kReachLimit = 0.985f;  // stance legs never extend beyond this fraction
+
+float frac(float x) { return x - std::floor(x); }
+float smoothstep(float a, float b, float x) {
+  const float t = std::clamp((x - a) / (b - a), 0.0f, 1.0f);
+  return t * t * (3.0f - 2.0f * t);
+}
+// Signed shortest difference b - a of two phases, in (-0.5, 0.5].
+float phase_diff(float a, float b) {
+  float d = frac(b - a);
+  return d > 0.5f ? d - 1.0f : d;
+}
+float circular_lerp(float a, float b, float t) { return frac(a + t * phase_diff(a, b)); }
+// Did the phase, moving from prev to now (forward by less than half a cycle), pass x?
+bool crossed(float prev, float now, float x) {
+  const float d = phase_diff(prev, now);
+  if (d <= 0.0f) return false;
+  const float to_x = frac(x - prev);
+  return to_x > 0.0f && to_x <= d;
+}
+float approach(float value, float target, float rate, float dt) {
+  if (dt <= 0.0f) return target;
+  return target + (value - target) * std::exp(-rate * dt);
+}
+glm::vec2 rotate(glm::vec2 v, float a) {
+  const float c = std::cos(a), s = std::sin(a);
+  return {c * v.x - s * v.y, s * v.x + c * v.y};
+}
+float bone_angle(const Mat2x3& m) { return std::atan2(m.m[1], m.m[0]); }
+float bump(float s) { return std::pow(std::max(0.0f, std::sin(kPi * s)), 0.7f); }
+
+}  // namespace
+
+const char* gait_name(Gait gait) {
+  switch (gait) {
+    case Gait::kIdle: return "idle";
+    case Gait::kWalk: return "walk";
+    case Gait::kRun: return "run";
+    case Gait::kTrot: return "trot";
+    case Gait::kGallop: return "gallop";
+    case Gait::kCrawl: return "crawl";
+  }
+  return "unknown";
+}
+
+// [SECTION] construction and reset -------------------------------------------------------
+
+Animator::Animator(const Creature& creature, SplinePrototypes prototypes, AnimatorParams params)
+    : creature_(&creature), spline_prototypes_(std::move(prototypes)), params_(params) {
+  const Skeleton& sk = creature.skeleton;
+  pose_ = creature.rest_pose;
+  model_rest_ = model_matrices(sk, pose_.locals);
+  model_ = model_rest_;
+  world_ = model_rest_;
+  root_rest_y_ = bone_start(model_rest_[creature.root]).y;
+
+  // Leg groups: one per girdle slot carrying legs, front first.
+  for (int i = 0; i < static_cast<int>(creature.limbs.size()); ++i) {
+    const Limb& limb = creature.limbs[i];
+    if (limb.kind == LimbKind::kArm) arms_.push_back(i);
+    if (limb.kind == LimbKind::kFin) fins_.push_back(i);
+    if (limb.kind != LimbKind::kLeg) continue;
+    LegInfo info;
+    info.limb = i;
+    info.reach = sk.length(limb.bones[0]) + sk.length(limb.bones[1]);
+    info.foot_length = sk.length(limb.bones[2]);
+    const glm::vec2 joint = bone_start(model_rest_[limb.bones[0]]);
+    const glm::vec2 ankle = bone_end(model_rest_[limb.bones[1]], sk.length(limb.bones[1]));
+    const glm::vec2 tip = bone_end(model_rest_[limb.bones[2]], sk.length(limb.bones[2]));
+    info.foot_angle_ms = creature.contact == ContactMode::kFlat ? 0.0f : bone_angle(model_rest_[limb.bones[2]]);
+    info.foot_offset_ms = creature.contact == ContactMode::kFlat ? glm::vec2(0.0f) : tip - ankle;
+    int group = -1;
+    for (int g = 0; g < static_cast<int>(groups_.size()); ++g) {
+      const Limb& other = creature.limbs[legs_[groups_[g].legs[0]].limb];
+      if (other.girdle == limb.girdle && other.slot == limb.slot) group = g;
+    }
+    if (group < 0) {
+      group = static_cast<int>(groups_.size());
+      groups_.push_back({joint, joint.y, {}});
+    }
+    groups_[group].legs.push_back(static_cast<int>(legs_.size()));
+    info.group = group;
+    legs_.push_back(info);
+  }
+  // Front (largest x) first; remap the legs' group indices.
+  std::vector<int> order(groups_.size());
+  for (size_t i = 0; i < order.size(); ++i) order[i] = static_cast<int>(i);
+  std::stable_sort(order.begin(), order.end(),
+                   [&](int a, int b) { return groups_[a].joint_ms.x > groups_[b].joint_ms.x; });
+  std::vector<Group> sorted;
+  for (int g : order) sorted.push_back(groups_[g]);
+  groups_ = sorted;
+  for (int g = 0; g < static_cast<int>(groups_.size()); ++g) {
+    for (int leg : groups_[g].legs) legs_[leg].group = g;
+  }
+  feet_.resize(legs_.size());
+  foot_of_leg_.resize(legs_.size());
+  for (size_t i = 0; i < legs_.size(); ++i) foot_of_leg_[i] = static_cast<int>(i);
+
+  hip_height_ = 0.0f;
+  for (const Group& g : groups_) hip_height_ += g.rest_height;
+  hip_height_ = groups_.empty() ? std::max(root_rest_y_, 0.05f) : hip_height_ / static_cast<float>(groups_.size());
+  hip_height_ = std::max(hip_height_, 0.02f);
+  float x_min = 0.0f, x_max = 0.0f;
+  for (int b = 0; b < sk.bone_count(); ++b) {
+    const glm::vec2 p = bone_start(model_rest_[b]);
+    x_min = std::min(x_min, p.x);
+    x_max = std::max(x_max, p.x);
+  }
+  body_half_length_ = std::max(0.5f * (x_max - x_min), 0.05f);
+  for (size_t i = 0; i < legs_.size(); ++i) feet_[i].offset = leg_target_offset(static_cast<int>(i));
+}
+
+float Animator::walk_speed() const { return std::sqrt(0.5f * params_.gravity * hip_height_); }
+float Animator::run_speed() const { return std::sqrt(2.5f * params_.gravity * hip_height_); }
+
+Mat2x3 Animator::model_to_world() const {
+  Mat2x3 m;
+  m.m[0] = static_cast<float>(facing_);
+  m.m[4] = body_x_;
+  return m;
+}
+
+glm::vec2 Animator::foot_ws(int leg) const {
+  const Limb& limb = leg_limb(leg);
+  const Skeleton& sk = creature_->skeleton;
+  const int b = creature_->contact == ContactMode::kFlat ? limb.bones[1] : limb.bones[2];
+  return bone_end(world_[b], sk.length(b));
+}
+
+void Animator::reset(glm::vec2 position_ws, const Level& level, int facing) {
+  facing_ = facing < 0 ? -1 : 1;
+  body_x_ = position_ws.x;
+  speed_ = 0.0f;
+  phase_ = 0.0f;
+  frequency_ = 0.0f;
+  moving_ = false;
+  blocked_ = false;
+  lean_ = 0.0f;
+  pitch_ = 0.0f;
+  run_factor_ = trot_factor_ = gallop_factor_ = 0.0f;
+  tail_angle_ = tail_rate_ = root_vy_ = 0.0f;
+  steps_ = 0;
+  idle_time_ = 0.0f;
+  gait_ = legs_.empty() ? Gait::kCrawl : Gait::kIdle;
+  const float search = std::max(2.0f * hip_height_, 1.0f);
+  auto ground_at = [&](float x0, float x1, float fallback) {
+    auto hit = level.ground_height_below(std::min(x0, x1), std::max(x0, x1), position_ws.y + search, 100.0f);
+    return hit ? hit->height_ws : fallback;
+  };
+  root_y_ = ground_at(body_x_ - body_half_length_, body_x_ + body_half_length_, position_ws.y) + root_rest_y_;
+  for (size_t i = 0; i < legs_.size(); ++i) {
+    const LegInfo& info = legs_[i];
+    const Limb& limb = creature_->limbs[info.limb];
+    const glm::vec2 ankle = bone_end(model_rest_[limb.bones[1]], creature_->skeleton.length(limb.bones[1]));
+    const glm::vec2 contact_ms = ankle + info.foot_offset_ms;
+    Foot& f = feet_[foot_of_leg_[i]];
+    f = Foot{};
+    f.offset = leg_target_offset(static_cast<int>(i));
+    const float x = to_world(contact_ms).x;
+    f.pos_ws = {x, ground_at(x - 0.02f, x + 0.02f, position_ws.y)};
+  }
+  place_body(0.0f, level);
+  build_pose(0.0f);
+}
+
+// [SECTION] update: turn, gait clock, legs ------------------------------------------------
+
+void Animator::update(float dt, float desired_velocity, const Level& level) {
+  if (!(dt > 0.0f) || !std::isfinite(desired_velocity)) return;
+  const float ism = std::max(params_.interpolation_speed_multiplier, 0.01f);
+  const int want = desired_velocity > 1e-4f ? 1 : desired_velocity < -1e-4f ? -1 : 0;
+  if (want != 0 && want != facing_) reverse(level);
+
+  float target = std::fabs(desired_velocity);
+  if (blocked_) {
+    if (want != blocked_dir_) {
+      blocked_ = false;
+    } else {
+      target = 0.0f;
+      blocked_retry_ -= dt;
+      // Re-test the way ahead now and then: the level may have changed.
+      if (blocked_retry_ <= 0.0f && !legs_.empty()) {
+        blocked_retry_ = 0.5f;
+        glm::vec2 landing;
+        if (find_landing(blocked_leg_, landing_x(blocked_leg_, std::fabs(desired_velocity)), level, &landing)) {
+          blocked_ = false;
+        }
+      }
+    }
+  }
+  // The stick sets the speed precisely [T 4.1]; starting and stopping are immediate [T 5.1]
+  // (the half-length first step and the eased stop make them read well).
+  speed_ = target <= 1e-4f ? 0.0f : target;
+  update_gait(dt);
+  lean_ = approach(lean_, -params_.max_spine_rotation * std::min(speed_ / run_speed(), 1.2f), 6.0f * ism, dt);
+
+  // Body motion, stopped by walls the body would run into.
+  float dx = facing_ * speed_ * dt;
+  if (dx != 0.0f) {
+    const Skeleton& sk = creature_->skeleton;
+    glm::vec2 lo(1e30f), hi(-1e30f);
+    auto add = [&](int b) {
+      const glm::vec2 p = bone_start(world_[b]), q = bone_end(world_[b], sk.length(b));
+      lo = glm::min(lo, glm::min(p, q));
+      hi = glm::max(hi, glm::max(p, q));
+    };
+    add(creature_->root);
+    for (int b : creature_->back) add(b);
+    for (int b : creature_->neck) add(b);
+    if (creature_->skull >= 0) add(creature_->skull);
+    // Low obstacles are the legs' business (steps); the body only meets walls.
+    const float support = root_y_ - root_rest_y_ * params_.stance_height;
+    lo.y = std::max(lo.y + 0.3f * hip_height_, support + params_.max_step_up * hip_height_);
+    lo.y = std::min(lo.y, hi.y);
+    Box body{lo, glm::max(hi, lo + glm::vec2(1e-3f))};
+    if (auto hit = level.sweep_box(body, {dx, 0.0f}); hit && hit->t < 1.0f) {
+      dx = facing_ * std::max(0.0f, hit->t * std::fabs(dx) - 1e-4f);
+      blocked_ = true;
+      blocked_dir_ = facing_;
+      blocked_retry_ = 0.5f;
+    }
+  }
+  body_x_ += dx;
+
+  if (legs_.empty()) {
+    crawl_phase_ = frac(crawl_phase_ + speed_ * dt / std::max(body_half_length_, 0.05f));
+    if (blocked_) speed_ = 0.0f;
+    gait_ = speed_ > 0.0f ? Gait::kCrawl : Gait::kIdle;
+    idle_time_ += dt;
+    place_body(dt, level);
+    build_pose(dt);
+    return;
+  }
+
+  const float dphi = frequency_ * dt;
+  if (speed_ > 0.0f && !blocked_) {
+    const bool starting = !moving_;
+    if (starting) {
+      // Start so the lead leg lifts now; its first step is half a stride [T 4.4.1].
+      moving_ = true;
+      phase_ = frac(duty_ - feet_[foot_of_leg_[0]].offset);
+      for (size_t i = 0; i < legs_.size(); ++i) {
+        Foot& f = feet_[foot_of_leg_[i]];
+        f.phase_prev = frac(phase_ + f.offset);
+      }
+    }
+    phase_ = frac(phase_ + dphi);
+    for (size_t i = 0; i < legs_.size(); ++i) {
+      Foot& f = feet_[foot_of_leg_[i]];
+      f.offset = circular_lerp(f.offset, leg_target_offset(static_cast<int>(i)),
+                               std::min(1.0f, 0.6f * ism * dt / std::max(std::fabs(phase_diff(f.offset, leg_target_offset(static_cast<int>(i)))), 1e-6f)));
+      const float p = frac(phase_ + f.offset);
+      if (f.state == LegState::kStance) {
+        bool lift = starting ? p >= duty_ : crossed(f.phase_prev, p, duty_);
+        // A foot left behind (a gait change, a shortened step) lifts before it would slide.
+        const LegInfo& info = legs_[i];
+        const glm::vec2 joint = to_model(girdle_ws(info.group));
+        const glm::vec2 ankle = to_model(f.pos_ws) - info.foot_offset_ms;
+        if (glm::length(ankle - joint) > 0.97f * kReachLimit * info.reach && -(ankle.x - joint.x) > 0.0f) lift = true;
+        if (lift) set_new_splines(static_cast<int>(i), level, std::max(1.0f - p, 0.05f));
+      } else if (!f.easing) {
+        f.progress += f.rate * dphi;
+      }
+      f.phase_prev = p;
+    }
+  } else {
+    moving_ = false;
+    idle_time_ += dt;
+    for (size_t i = 0; i < legs_.size(); ++i) {
+      Foot& f = feet_[foot_of_leg_[i]];
+      if (f.state == LegState::kSwing && !f.easing) start_ease(static_cast<int>(i), level);
+    }
+  }
+  if (blocked_) speed_ = 0.0f;
+  for (size_t i = 0; i < legs_.size(); ++i) {
+    Foot& f = feet_[foot_of_leg_[i]];
+    if (f.state != LegState::kSwing) continue;
+    if (f.easing) f.progress += f.rate * dt;
+    if (f.progress >= 1.0f) {
+      f.state = LegState::kStance;
+      f.pos_ws = f.to_ws;
+      f.easing = false;
+      ++steps_;
+      continue;
+    }
+    const float s = std::clamp(f.progress, 0.0f, 1.0f);
+    const float up = f.to_ws.y - f.from_ws.y;
+    // Rise early when stepping up, descend late when stepping down.
+    const float ease = up >= 0.0f ? smoothstep(0.0f, 0.55f, s) : smoothstep(0.45f, 1.0f, s);
+    f.pos_ws.x = f.from_ws.x + f.swing_x.position(s) * (f.to_ws.x - f.from_ws.x);
+    f.pos_ws.y = f.from_ws.y + ease * up + f.lift * f.swing_y.position(s) + f.raise * bump(s);
+  }
+  place_body(dt, level);
+  build_pose(dt);
+}
+
+void Animator::update_gait(float dt) {
+  const float ism = std::max(params_.interpolation_speed_multiplier, 0.01f);
+  froude_ = speed_ * speed_ / (params_.gravity * hip_height_);
+  run_factor_ = approach(run_factor_, smoothstep(params_.run_froude_start, params_.run_froude_end, froude_), 5.0f * ism, dt);
+  float trot = smoothstep(0.7f * params_.trot_froude, 1.3f * params_.trot_froude, froude_);
+  float gallop = smoothstep(0.85f * params_.gallop_froude, 1.15f * params_.gallop_froude, froude_);
+  if (params_.gait_override != GaitOverride::kAuto) {
+    trot = params_.gait_override == GaitOverride::kWalk ? 0.0f : 1.0f;
+    gallop = params_.gait_override == GaitOverride::kGallop ? 1.0f : 0.0f;
+  }
+  trot_factor_ = approach(trot_factor_, trot, 4.0f * ism, dt);
+  gallop_factor_ = approach(gallop_factor_, gallop, 4.0f * ism, dt);
+  duty_ = params_.duty_walk + (params_.duty_run - params_.duty_walk) * run_factor_;
+
+  // Stride: Alexander's relation, limited so that a stance foot half a stance ahead or
+  // behind its girdle stays within reach.
+  float stride = 2.3f * hip_height_ * std::pow(std::max(froude_, 1e-4f), 0.3f) * params_.step_distance_multiplier;
+  float max_stride = 1e30f;
+  for (const LegInfo& leg : legs_) {
+    const float h = groups_[leg.group].rest_height * params_.stance_height - std::max(0.0f, -leg.foot_offset_ms.y);
+    const float reach_x = std::sqrt(std::max(kReachLimit * kReachLimit * leg.reach * leg.reach - h * h, 0.0f));
+    max_stride = std::min(max_stride, 2.0f * 0.8f * (reach_x + std::fabs(leg.foot_offset_ms.x)) / std::max(duty_, 0.2f));
+  }
+  stride_ = std::clamp(stride, 0.25f * hip_height_, std::max(max_stride, 0.25f * hip_height_));
+  frequency_ = speed_ > 0.0f ? speed_ / stride_ : 0.0f;
+
+  if (legs_.empty()) {
+    gait_ = speed_ > 0.0f ? Gait::kCrawl : Gait::kIdle;
+  } else if (speed_ <= 0.0f) {
+    gait_ = Gait::kIdle;
+  } else if (groups_.size() == 1) {
+    gait_ = run_factor_ > 0.5f ? Gait::kRun : Gait::kWalk;
+  } else {
+    gait_ = gallop_factor_ > 0.5f ? Gait::kGallop : trot_factor_ > 0.5f ? Gait::kTrot : Gait::kWalk;
+  }
+}
+
+float Animator::leg_target_offset(int leg) const {
+  const LegInfo& info = legs_[leg];
+  const bool far = creature_->limbs[info.limb].side == Side::kFar;
+  const int n = static_cast<int>(groups_.size());
+  if (n == 1) return far ? 0.5f : 0.0f;
+  if (n == 2) {
+    const bool front = info.group == 0;
+    // Footfall patterns as phase offsets (hind near = 0): lateral-sequence walk, trot
+    // (diagonal pairs), transverse gallop.
+    const float walk = front ? (far ? 0.75f : 0.25f) : (far ? 0.5f : 0.0f);
+    const float trot = front ? (far ? 0.0f : 0.5f) : (far ? 0.5f : 0.0f);
+    const float gallop = front ? (far ? 0.62f : 0.5f) : (far ? 0.12f : 0.0f);
+    return circular_lerp(circular_lerp(walk, trot, trot_factor_), gallop, gallop_factor_);
+  }
+  // More pairs: a metachronal (tripod-like) wave, alternating down the body.
+  const float near = (info.group % 2) * 0.5f;
+  return far ? frac(near + 0.5f) : near;
+}
+
+void Animator::reverse(const Level& level) {
+  (void)level;
+  // Mirror in place: leg pairs take over the feet standing where their girdle will be
+  // (group i ← group n-1-i, same side), and the root shifts so girdles land on those feet.
+  const int n = static_cast<int>(groups_.size());
+  if (n > 0) {
+    std::vector<int> old = foot_of_leg_;
+    float shift = 0.0f;
+    for (int g = 0; g < n; ++g) {
+      const Group& mine = groups_[g];
+      const Group& other = groups_[n - 1 - g];
+      shift += mine.joint_ms.x + other.joint_ms.x;
+      for (size_t k = 0; k < mine.legs.size(); ++k) {
+        const int src = other.legs[std::min(k, other.legs.size() - 1)];
+        foot_of_leg_[mine.legs[k]] = old[src];
+      }
+    }
+    // Groups of unequal size could map two legs to one foot; fall back to identity then.
+    std::vector<int> seen(feet_.size(), 0);
+    bool ok = true;
+    for (int f : foot_of_leg_) ok &= (seen[f]++ == 0);
+    if (!ok) foot_of_leg_ = old;
+    body_x_ += facing_ * shift / static_cast<float>(n);
+  }
+  facing_ = -facing_;
+  lean_ = 0.0f;
+}
+
+// [SECTION] swing planning (set_new_splines) and footholds ----------------------------------
+
+bool Animator::find_landing(int leg, float x_wanted, const Level& level, glm::vec2* landing) const {
+  const LegInfo& info = legs_[leg];
+  const Foot& f = feet_[foot_of_leg_[leg]];
+  const float up = params_.max_step_up * groups_[info.group].rest_height;
+  const float down = params_.max_step_down * groups_[info.group].rest_height;
+  // The foot's horizontal extent relative to its contact point (model space → world).
+  const glm::vec2 ankle_rel = -info.foot_offset_ms;
+  const glm::vec2 tip_rel = creature_->contact == ContactMode::kFlat ? glm::vec2(info.foot_length, 0.0f) : glm::vec2(0.0f);
+  const float a = facing_ * std::min({0.0f, ankle_rel.x, tip_rel.x});
+  const float b = facing_ * std::max({0.0f, ankle_rel.x, tip_rel.x});
+  const float span_lo = std::min(a, b) - 0.01f, span_hi = std::max(a, b) + 0.01f;
+  const float height = std::max({0.02f, ankle_rel.y, 0.3f * info.foot_length});
+  // Prefer the planned spot, then the nearest shorter or slightly longer steps: as short as
+  // just ahead of where the foot is now, at most 25% longer.
+  const float stepx = std::max(0.025f * stride_, 0.005f);
+  const float shortest = facing_ * (x_wanted - f.pos_ws.x) - 0.05f * stride_;
+  for (int k = 0; k <= 100; ++k) {
+    const int n = (k + 1) / 2;
+    const float d = k % 2 == 1 ? -stepx * static_cast<float>(n) : 0.25f * stepx * static_cast<float>(n);
+    if (-d > shortest) {
+      if (k % 2 == 1) continue;
+      if (d > 0.25f * stride_) break;
+    }
+    if (d > 0.25f * stride_) continue;
+    const float x = x_wanted + facing_ * d;
+    auto hit = level.ground_height_below(x + span_lo, x + span_hi, f.pos_ws.y + up, up + down);
+    if (!hit) continue;
+    const float y = hit->height_ws;
+    const Box foot_box{{x + span_lo + 0.002f, y + 0.002f}, {x + span_hi - 0.002f, y + height}};
+    if (level.overlaps(foot_box)) continue;
+    *landing = {x, y};
+    return true;
+  }
+  return false;
+}
+
+float Animator::landing_x(int leg, float speed, float swing_phase) const {
+  const LegInfo& info = legs_[leg];
+  const Limb& limb = creature_->limbs[info.limb];
+  const glm::vec2 ankle = bone_end(model_rest_[limb.bones[1]], creature_->skeleton.length(limb.bones[1]));
+  const float contact_dx = (ankle + info.foot_offset_ms).x - groups_[info.group].joint_ms.x;
+  if (swing_phase < 0.0f) swing_phase = 1.0f - duty_;
+  const float frequency = speed > 0.0f ? speed / std::max(stride_, 1e-3f) : 0.0f;
+  const float t_swing = frequency > 0.0f ? swing_phase / frequency : 0.0f;
+  // Land half a stance ahead of where the girdle will be [T 4.4.1].
+  const float girdle_td = girdle_ws(info.group).x + facing_ * speed * t_swing;
+  return girdle_td + facing_ * (0.5f * duty_ * stride_ + contact_dx);
+}
+
+void Animator::set_new_splines(int leg, const Level& level, float swing_phase) {
+  const LegInfo& info = legs_[leg];
+  Foot& f = feet_[foot_of_leg_[leg]];
+  const float x_wanted = landing_x(leg, speed_, swing_phase);
+  glm::vec2 landing;
+  if (!find_landing(leg, x_wanted, level, &landing)) {
+    // No foothold within reach ahead: a wall too tall or a drop too deep. Stop at the edge.
+    blocked_ = true;
+    blocked_leg_ = leg;
+    blocked_dir_ = facing_;
+    blocked_retry_ = 0.5f;
+    return;
+  }
+  f.from_ws = f.pos_ws;
+  f.to_ws = landing;
+  f.swing_x = spline_prototypes_[PrototypeId::kLegSwingX].blended(run_factor_);
+  f.swing_y = spline_prototypes_[PrototypeId::kLegSwingY].blended(run_factor_);
+  f.lift = info.reach;
+  f.raise = 0.0f;
+  f.progress = 0.0f;
+  f.rate = 1.0f / std::max(swing_phase, 0.05f);
+  f.easing = false;
+  f.state = LegState::kSwing;
+
+  // Raise the curve until the whole foot (ankle to toe) clears every box [T 5.1e].
+  const glm::vec2 ankle_rel = -info.foot_offset_ms;
+  const glm::vec2 tip_rel = creature_->contact == ContactMode::kFlat ? glm::vec2(info.foot_length, 0.0f) : glm::vec2(0.0f);
+  for (int iter = 0; iter < 6; ++iter) {
+    float need = 0.0f;
+    const float up = f.to_ws.y - f.from_ws.y;
+    for (int k = 1; k < 24; ++k) {
+      const float s = static_cast<float>(k) / 24.0f;
+      const float ease = up >= 0.0f ? smoothstep(0.0f, 0.55f, s) : smoothstep(0.45f, 1.0f, s);
+      const glm::vec2 p = {f.from_ws.x + f.swing_x.position(s) * (f.to_ws.x - f.from_ws.x),
+                           f.from_ws.y + ease * up + f.lift * f.swing_y.position(s) + f.raise * bump(s)};
+      const glm::vec2 q = p + glm::vec2(facing_ * ankle_rel.x, ankle_rel.y);
+      const glm::vec2 r = p + glm::vec2(facing_ * tip_rel.x, tip_rel.y);
+      const Box foot{glm::min(glm::min(p, q), r) - glm::vec2(0.01f, 0.0f), glm::max(glm::max(p, q), r) + glm::vec2(0.01f, 0.005f)};
+      std::vector<int> hits;
+      level.overlapping(foot, hits);
+      for (int h : hits) {
+        const float depth = level.box(h).top() + 0.01f - foot.min_ws.y;
+        need = std::max(need, depth / std::max(bump(s), 0.2f));
+      }
+    }
+    if (need <= 0.0f) break;
+    f.raise += need;
+  }
+}
+
+void Animator::start_ease(int leg, const Level& level) {
+  Foot& f = feet_[foot_of_leg_[leg]];
+  glm::vec2 landing;
+  if (!find_landing(leg, f.pos_ws.x, level, &landing)) landing = f.to_ws;
+  f.from_ws = f.pos_ws;
+  f.to_ws = landing;
+  f.swing_x = HermiteSpline({{0.0f, 0.0f, 1.0f}, {1.0f, 1.0f, 1.0f}});
+  f.swing_y = HermiteSpline({{0.0f, 0.0f, 0.0f}, {1.0f, 0.0f, 0.0f}});
+  f.lift = 0.0f;
+  f.raise = 0.0f;
+  f.progress = 0.0f;
+  f.rate = 1.0f / std::max(params_.stop_ease_time, 0.01f);
+  f.easing = true;
+}
+
+// [SECTION] body placement ------------------------------------------------------------------
+
+glm::vec2 Animator::girdle_ws(int group) const {
+  const glm::vec2 root(0.0f, root_rest_y_);
+  const glm::vec2 j = glm::vec2(0.0f, root_y_) + rotate(groups_[group].joint_ms - root, pitch_ + lean_);
+  return to_world(j);
+}
+
+void Animator::place_body(float dt, const Level& level) {
+  const float ism = std::max(params_.interpolation_speed_multiplier, 0.01f);
+  const float old_root = root_y_;
+  const glm::vec2 root_rest(0.0f, root_rest_y_);
+  float target_root = root_y_, target_pitch = 0.0f;
+  const float w = run_factor_;
+  const float bob = moving_ ? spline_prototypes_[PrototypeId::kPelvisY].value(frac(2.0f * phase_), w) * hip_height_
+                            : spline_prototypes_[PrototypeId::kIdleY].value(frac(idle_time_ / 2.4f), w) * hip_height_;
+  if (groups_.empty()) {
+    // Legless: follow the highest ground under the body.
+    auto hit = level.ground_height_below(body_x_ - body_half_length_, body_x_ + body_half_length_,
+                                         root_y_ + hip_height_, 100.0f);
+    target_root = (hit ? hit->height_ws : root_y_ - root_rest_y_) + root_rest_y_;
+  } else {
+    std::vector<float> height(groups_.size());
+    for (size_t g = 0; g < groups_.size(); ++g) {
+      float sum = 0.0f;
+      for (int leg : groups_[g].legs) {
+        const Foot& f = feet_[foot_of_leg_[leg]];
+        sum += f.state == LegState::kStance ? f.pos_ws.y
+                                            : f.from_ws.y + std::clamp(f.progress, 0.0f, 1.0f) * (f.to_ws.y - f.from_ws.y);
+      }
+      height[g] = sum / static_cast<float>(groups_[g].legs.size()) + groups_[g].rest_height * params_.stance_height + bob;
+    }
+    const float angle_extra = lean_;
+    if (groups_.size() >= 2) {
+      const glm::vec2 df = groups_.front().joint_ms - root_rest, db = groups_.back().joint_ms - root_rest;
+      const glm::vec2 d = df - db;
+      const float len = std::sqrt(d.x * d.x + d.y * d.y);
+      const float dy = height.front() - height.back();
+      const float total = std::asin(std::clamp(dy / std::max(len, 1e-4f), -0.9f, 0.9f)) - std::atan2(d.y, d.x);
+      target_pitch = std::clamp(wrap_angle(total - angle_extra), -0.7f, 0.7f);
+      const float a = target_pitch + angle_extra;
+      target_root = 0.5f * (height.front() - rotate(df, a).y + height.back() - rotate(db, a).y);
+    } else {
+      const glm::vec2 d = groups_.front().joint_ms - root_rest;
+      target_root = height.front() - rotate(d, angle_extra).y;
+    }
+  }
+  pitch_ = approach(pitch_, target_pitch, 10.0f * ism, dt);
+  root_y_ = approach(root_y_, target_root, 14.0f * ism, dt);
+
+  // Never over-extend a leg on the ground: lower the body (hard clamp, no smoothing).
+  for (int pass = 0; pass < 2; ++pass) {
+    float lower = 0.0f;
+    for (size_t i = 0; i < legs_.size(); ++i) {
+      const LegInfo& info = legs_[i];
+      const Foot& f = feet_[foot_of_leg_[i]];
+      if (f.state != LegState::kStance) continue;
+      const glm::vec2 joint = to_model(girdle_ws(info.group));
+      const glm::vec2 ankle = to_model(f.pos_ws) - info.foot_offset_ms;
+      const float r = kReachLimit * info.reach;
+      const float dx = std::fabs(ankle.x - joint.x);
+      if (dx >= r) continue;
+      const float allowed = ankle.y + std::sqrt(r * r - dx * dx);
+      lower = std::max(lower, joint.y - allowed);
+    }
+    root_y_ -= lower;
+  }
+  root_vy_ = dt > 0.0f ? (root_y_ - old_root) / dt : 0.0f;
+}
+
+// [SECTION] pose: spine, IK, arms, tail ------------------------------------------------------
+
+void Animator::build_pose(float dt) {
+  const Creature& c = *creature_;
+  const Skeleton& sk = c.skeleton;
+  pose_.locals = c.rest_pose.locals;
+  const float body_angle = pitch_ + lean_;
+  pose_.locals[c.root].offset_ls = {0.0f, root_y_};
+  pose_.locals[c.root].angle_ls += body_angle;
+  if (c.skull >= 0) pose_.locals[c.skull].angle_ls -= body_angle;  // the head stays level
+
+  // Tail: damped spring driven by the body's bob and pitch.
+  if (!c.tail.empty()) {
+    const float target = std::clamp(-0.25f * root_vy_ / std::max(hip_height_, 0.05f), -0.4f, 0.4f) - 0.5f * body_angle;
+    if (dt > 0.0f) {
+      const float k = params_.tail_stiffness;
+      const float damping = 2.0f * params_.tail_damping * std::sqrt(k);
+      tail_rate_ += (k * (target - tail_angle_) - damping * tail_rate_) * dt;
+      tail_angle_ += tail_rate_ * dt;
+      tail_angle_ = std::clamp(tail_angle_, -0.8f, 0.8f);
+    }
+    const float n = static_cast<float>(c.tail.size());
+    for (size_t i = 0; i < c.tail.size(); ++i) pose_.locals[c.tail[i]].angle_ls += tail_angle_ * 2.0f / n;
+  }
+  // Legless bodies: a travelling wave down the spine.
+  if (legs_.empty() && params_.crawl_amplitude > 0.0f) {
+    std::vector<int> chain;
+    chain.insert(chain.end(), c.back.begin(), c.back.end());
+    chain.insert(chain.end(), c.tail.begin(), c.tail.end());
+    const float n = static_cast<float>(chain.size());
+    const float amp = params_.crawl_amplitude * std::min(speed_ / std::max(walk_speed(), 1e-3f), 1.0f);
+    for (size_t i = 0; i < chain.size(); ++i) {
+      pose_.locals[chain[i]].angle_ls += amp * std::sin(kTwoPi * (crawl_phase_ - params_.crawl_waves * static_cast<float>(i) / n));
+    }
+  }
+  model_.resize(sk.bone_count());
+  ForwardKinematicsJob fk;
+  fk.skeleton = &sk;
+  fk.locals = pose_.locals;
+  fk.model = model_;
+  fk.run();
+
+  // Legs: two-bone IK in model space (the creature always faces +x there, so knees bend the
+  // right way whichever way it faces in the world).
+  for (size_t i = 0; i < legs_.size(); ++i) {
+    const LegInfo& info = legs_[i];
+    const Limb& limb = c.limbs[info.limb];
+    const Foot& f = feet_[foot_of_leg_[i]];
+    const glm::vec2 joint = bone_start(model_[limb.bones[0]]);
+    const glm::vec2 ankle = to_model(f.pos_ws) - info.foot_offset_ms;
+    const TwoBoneIkResult ik = solve_two_bone_ik(joint, sk.length(limb.bones[0]), sk.length(limb.bones[1]), ankle,
+                                                 static_cast<float>(limb.bend_sign));
+    const float girdle_angle = bone_angle(model_[limb.girdle_bone]);
+    pose_.locals[limb.bones[0]].angle_ls = wrap_angle(ik.upper_angle - girdle_angle);
+    pose_.locals[limb.bones[1]].angle_ls = ik.lower_angle;
+    pose_.locals[limb.bones[2]].angle_ls = wrap_angle(info.foot_angle_ms - (ik.upper_angle + ik.lower_angle));
+  }
+  // Arms swing counter to the same-side leg; fins trail with a slow beat.
+  const float motion = std::min(speed_ / std::max(walk_speed(), 1e-3f), 1.0f);
+  for (int a : arms_) {
+    const Limb& arm = c.limbs[a];
+    float p = phase_;
+    for (size_t i = 0; i < legs_.size(); ++i) {
+      if (c.limbs[legs_[i].limb].side == arm.side) p = frac(phase_ + feet_[foot_of_leg_[i]].offset);
+    }
+    const float t = frac(p + 0.5f);
+    pose_.locals[arm.bones[0]].angle_ls += motion * spline_prototypes_[PrototypeId::kArmSwing].value(t, run_factor_);
+    pose_.locals[arm.bones[1]].angle_ls += motion * spline_prototypes_[PrototypeId::kArmBend].value(t, run_factor_);
+  }
+  for (int fin : fins_) {
+    const Limb& limb = c.limbs[fin];
+    pose_.locals[limb.bones[0]].angle_ls += 0.12f * motion * std::sin(kTwoPi * (crawl_phase_ + phase_));
+  }
+  fk.run();
+  world_.resize(model_.size());
+  const Mat2x3 to_world_m = model_to_world();
+  for (size_t i = 0; i < model_.size(); ++i) world_[i] = to_world_m * model_[i];
+}
+
+}  // namespace ossa

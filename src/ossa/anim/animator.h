@@ -1,0 +1,185 @@
+#pragma once
+// Animator — procedural walking and running for any generated creature on a box level
+// ([T 4.4] generalised to any number of limbs, DESIGN.md §7).
+//
+// Each fixed step (update):
+//   1. turn: a command against the facing mirrors the creature in place; the feet keep their
+//      world positions (leg pairs swap which feet they stand on), knees keep bending the
+//      right way because all IK runs in model space, where the creature always faces +x;
+//   2. gait clock: one phase φ advancing at f = v/λ (stride λ from Alexander's relation
+//      λ ≈ 2.3·h·Fr^0.3 × step_distance_multiplier); each leg is in stance while its local
+//      phase φ + offset is below the duty factor β; offsets follow the gait (biped
+//      alternation, quadruped walk/trot/gallop by Froude number, metachronal waves for more
+//      pairs); β falls from walk to run, below 0.5 giving a flight phase;
+//   3. legs: at lift-off set_new_splines plans the swing — landing half a stance ahead of
+//      where the girdle will be, ground looked up there, the blended walk/run prototype
+//      mapped onto it and raised until the foot clears every box; stance feet stay fixed in
+//      the world; a leg with no foothold ahead stops the creature at the edge;
+//   4. body: each girdle's height = mean ground under its feet + its rest height + bob; the
+//      spine pitches between girdles and leans into speed, clamped so no stance leg
+//      over-extends; the head stays level, the tail swings with damped secondary motion;
+//   5. pose: two-bone IK for every leg, arm swing counter to the same-side leg, folded wings,
+//      trailing fins, a travelling wave for legless bodies.
+//
+// Everything is deterministic: the same inputs give bit-identical poses.
+
+#include <vector>
+
+#include "ossa/anim/animator_params.h"
+#include "ossa/anim/spline_prototypes.h"
+#include "ossa/gen/creature.h"
+#include "ossa/level/level.h"
+#include "ossa/math/hermite.h"
+#include "ossa/skeleton/pose.h"
+
+namespace ossa {
+
+enum class LegState : uint8_t { kStance, kSwing };
+enum class Gait : uint8_t { kIdle, kWalk, kRun, kTrot, kGallop, kCrawl };
+const char* gait_name(Gait gait);
+
+class Animator {
+ public:
+  Animator(const Creature& creature, SplinePrototypes prototypes, AnimatorParams params = {});
+
+  // Stands the creature on the ground below `position_ws` (x, and a height to search down
+  // from), feet under their girdles, facing +x (facing = 1) or -x (-1).
+  void reset(glm::vec2 position_ws, const Level& level, int facing = 1);
+
+  // One fixed step of dt seconds towards `desired_velocity` (m/s, signed along x).
+  void update(float dt, float desired_velocity, const Level& level);
+
+  // ---- [T] tuning -------------------------------------------------------------------------
+  const SplinePrototypes& spline_prototypes() const { return spline_prototypes_; }
+  // New prototypes take effect at each leg's next lift-off (set_new_splines).
+  void set_spline_prototypes(const SplinePrototypes& prototypes) { spline_prototypes_ = prototypes; }
+  AnimatorParams& params() { return params_; }
+  const AnimatorParams& params() const { return params_; }
+
+  // ---- Output -----------------------------------------------------------------------------
+  const Creature& creature() const { return *creature_; }
+  const Pose& pose() const { return pose_; }
+  Mat2x3 model_to_world() const;
+  // World matrices of the current pose (computed by update/reset).
+  const std::vector<Mat2x3>& world_matrices() const { return world_; }
+
+  // ---- State ------------------------------------------------------------------------------
+  float x() const { return body_x_; }                 // world x of the root
+  float velocity() const { return facing_ * speed_; } // m/s, signed
+  int facing() const { return facing_; }
+  Gait gait() const { return gait_; }
+  float froude() const { return froude_; }
+  float stride_length() const { return stride_; }     // metres per cycle
+  float duty_factor() const { return duty_; }
+  float cycle_frequency() const { return frequency_; } // cycles per second
+  float run_factor() const { return run_factor_; }     // walk→run blend in [0, 1]
+  bool blocked() const { return blocked_; }
+  int steps() const { return steps_; }                 // touch-downs so far
+  float hip_height() const { return hip_height_; }     // h of the Froude number, metres
+  // Speeds at the walk and run reference Froude numbers (0.5 and 2.5), m/s.
+  float walk_speed() const;
+  float run_speed() const;
+
+  int leg_count() const { return static_cast<int>(legs_.size()); }
+  // [T] leg_state: stance or swing of leg i.
+  LegState leg_state(int leg) const { return feet_[foot_of_leg_[leg]].state; }
+  const Limb& leg_limb(int leg) const { return creature_->limbs[legs_[leg].limb]; }
+  // Where leg i's contact point (tip, or heel for flat contact) is meant to be, world space.
+  glm::vec2 foot_target_ws(int leg) const { return feet_[foot_of_leg_[leg]].pos_ws; }
+  // The contact point the pose actually reaches (from the world matrices).
+  glm::vec2 foot_ws(int leg) const;
+  // Progress of leg i's swing in [0, 1] (0 while in stance).
+  float swing_progress(int leg) const {
+    const Foot& f = feet_[foot_of_leg_[leg]];
+    return f.state == LegState::kSwing ? f.progress : 0.0f;
+  }
+  // True while the leg sets down after a stop (a short eased swing, not a step).
+  bool easing(int leg) const { return feet_[foot_of_leg_[leg]].easing; }
+
+ private:
+  struct LegInfo {
+    int limb = 0;
+    int group = 0;
+    float reach = 0.0f;              // upper + lower, metres
+    float foot_length = 0.0f;
+    glm::vec2 foot_offset_ms{0.0f};  // ankle → contact point in the rest pose (model space)
+    float foot_angle_ms = 0.0f;      // rest absolute angle of the foot bone (model space)
+  };
+  struct Group {                     // a girdle slot carrying a leg pair
+    glm::vec2 joint_ms{0.0f};        // rest girdle joint, model space
+    float rest_height = 0.0f;        // joint height above the rest ground, metres
+    std::vector<int> legs;           // leg indices (near first)
+  };
+  struct Foot {                      // per foot: moves between legs when the creature turns
+    LegState state = LegState::kStance;
+    glm::vec2 pos_ws{0.0f};          // contact point target
+    glm::vec2 from_ws{0.0f}, to_ws{0.0f};
+    HermiteSpline swing_x, swing_y;  // blended prototypes of this swing (set_new_splines)
+    float lift = 0.0f;               // metres per unit of swing_y
+    float raise = 0.0f;              // extra clearance bump, metres
+    float progress = 0.0f;           // swing progress s in [0, 1]
+    float rate = 0.0f;               // ds per unit of phase (or per second when easing)
+    bool easing = false;             // a stop: progress runs on time, not on phase
+    float offset = 0.0f;             // phase offset (eases toward the owning leg's target)
+    float phase_prev = 0.0f;
+  };
+
+  void set_new_splines(int leg, const Level& level, float swing_phase);  // [T] name: plans a swing
+  void start_ease(int leg, const Level& level);
+  void reverse(const Level& level);
+  void update_gait(float dt);
+  float leg_target_offset(int leg) const;
+  bool find_landing(int leg, float x_wanted, const Level& level, glm::vec2* landing) const;
+  // Where leg i would land if it lifted now at `speed` (swing_phase < 0: a full swing).
+  float landing_x(int leg, float speed, float swing_phase = -1.0f) const;
+  glm::vec2 girdle_ws(int group) const;  // from the current body placement
+  void place_body(float dt, const Level& level);
+  void build_pose(float dt);
+  glm::vec2 to_model(glm::vec2 p_ws) const { return {(p_ws.x - body_x_) * facing_, p_ws.y}; }
+  glm::vec2 to_world(glm::vec2 p_ms) const { return {body_x_ + facing_ * p_ms.x, p_ms.y}; }
+
+  const Creature* creature_;
+  SplinePrototypes spline_prototypes_;
+  AnimatorParams params_;
+
+  std::vector<LegInfo> legs_;
+  std::vector<Group> groups_;        // sorted front (largest x) to back
+  std::vector<Foot> feet_;
+  std::vector<int> foot_of_leg_;
+  std::vector<int> arms_, fins_;     // limb indices
+  float hip_height_ = 1.0f;
+  float root_rest_y_ = 0.0f;         // model-space y of the root in the rest pose
+  float body_half_length_ = 0.5f;
+
+  Pose pose_;
+  std::vector<Mat2x3> model_rest_, model_, world_;
+
+  // Body and gait state.
+  float body_x_ = 0.0f;
+  float root_y_ = 0.0f;              // world y of the root
+  float pitch_ = 0.0f;               // model-space root rotation from terrain
+  float lean_ = 0.0f;
+  int facing_ = 1;
+  float speed_ = 0.0f;
+  float phase_ = 0.0f;
+  float frequency_ = 0.0f;
+  float stride_ = 0.0f;
+  float duty_ = 0.65f;
+  float froude_ = 0.0f;
+  float run_factor_ = 0.0f;
+  float gallop_factor_ = 0.0f;
+  float trot_factor_ = 0.0f;
+  Gait gait_ = Gait::kIdle;
+  bool moving_ = false;
+  bool blocked_ = false;
+  int blocked_dir_ = 0;
+  int blocked_leg_ = 0;
+  float blocked_retry_ = 0.0f;
+  float idle_time_ = 0.0f;
+  float crawl_phase_ = 0.0f;
+  float tail_angle_ = 0.0f, tail_rate_ = 0.0f;
+  float root_vy_ = 0.0f;
+  int steps_ = 0;
+};
+
+}  // namespace ossa

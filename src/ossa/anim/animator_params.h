@@ -1,0 +1,49 @@
+#pragma once
+// AnimatorParams — everything a designer tunes about how a creature moves (tuning panel).
+// Definition struct with defaults (Box2D style): every field states its unit and range.
+// Names marked [T] are kept from the source thesis.
+
+namespace ossa {
+
+enum class GaitOverride : int { kAuto = -1, kWalk = 0, kTrot = 1, kGallop = 2 };
+
+struct AnimatorParams {
+  // [T] Scales the stride from Alexander's relation λ = 2.3·h·Fr^0.3. Range [0.3, 2].
+  float step_distance_multiplier = 1.0f;
+  // [T] Scales how fast the animator eases towards new targets (lean, height, gait blend).
+  // Range [0.1, 5].
+  float interpolation_speed_multiplier = 1.0f;
+  // [T] Largest forward lean of the spine into the motion at full run, radians. [0, 0.6].
+  float max_spine_rotation = 0.18f;
+
+  // Duty factor (fraction of a cycle a foot is on the ground) at a walk and at a full run.
+  // A running duty below 0.5 gives a flight phase. Ranges [0.5, 0.85] and [0.2, 0.6].
+  float duty_walk = 0.65f;
+  float duty_run = 0.36f;
+  // Froude numbers Fr = v²/(g·h) where the walk→run blend starts and ends. [0.05, 3].
+  float run_froude_start = 0.35f;
+  float run_froude_end = 1.4f;
+  // Froude numbers of the quadruped gait changes walk→trot and trot→gallop [DESIGN.md §7].
+  float trot_froude = 0.5f;
+  float gallop_froude = 2.5f;
+  GaitOverride gait_override = GaitOverride::kAuto;
+
+  // Highest step up and deepest step down a foot may take, as fractions of the girdle's
+  // standing height. Walls taller and drops deeper stop the creature at the edge. [0.05, 1].
+  float max_step_up = 0.45f;
+  float max_step_down = 0.7f;
+  // Standing height of the girdles as a fraction of their rest height. [0.7, 1.05].
+  float stance_height = 0.97f;
+  // Time for swinging feet to set down after a stop, seconds. [0.05, 0.3].
+  float stop_ease_time = 0.18f;
+  // Tail: spring stiffness (1/s²) and damping ratio of the tail's secondary motion.
+  float tail_stiffness = 60.0f;
+  float tail_damping = 0.35f;
+  // Travelling wave of legless bodies: amplitude (radians per vertebra) and waves per body.
+  float crawl_amplitude = 0.035f;
+  float crawl_waves = 1.5f;
+  // Gravity for the Froude number, m/s².
+  float gravity = 9.81f;
+};
+
+}  // namespace ossa

@@ -1,0 +1,64 @@
+#pragma once
+// SplinePrototypes — the normalised Hermite splines that shape every step [T 4.4.1]: leg
+// swing, pelvis bob, arm swing and idle, each in a walk and a run version that the animator
+// blends by the walk→run factor. Designers edit them live (spline editor) and save them as
+// assets/animation/prototypes.json:
+//
+//   { "format": "ossa.prototypes", "version": 1,
+//     "prototypes": {
+//       "leg_swing_x": { "walk": [ {"t": 0, "p": 0, "m": 0}, ... ], "run": [ ... ] },
+//       "leg_swing_y": { ... }, "pelvis_y": { ... }, "arm_swing": { ... },
+//       "arm_bend": { ... }, "idle_y": { ... } } }
+//
+// Every spline runs over normalised time t in [0, 1]; keys are {t, p, m} (time, value,
+// tangent dp/dt). A walk/run pair must have the same number of keys (the animator blends key
+// by key, HermiteSpline::blend). What each value means:
+//   leg_swing_x  fraction of the step covered by the swinging foot (0 → 1) over the swing;
+//   leg_swing_y  foot lift above the line from lift-off to touch-down, in leg lengths;
+//   pelvis_y     girdle bob over one step, in leg lengths (added to the standing height);
+//   arm_swing    upper-arm angle offset (radians, + forward) over one stride;
+//   arm_bend     extra elbow flexion (radians) over one stride;
+//   idle_y       body bob over one idle breath cycle, in leg lengths.
+
+#include <array>
+#include <string>
+#include <string_view>
+
+#include "ossa/io/json.h"
+#include "ossa/io/result.h"
+#include "ossa/math/hermite.h"
+
+namespace ossa {
+
+struct PrototypePair {
+  HermiteSpline walk;
+  HermiteSpline run;
+
+  // The spline blended by the walk→run factor w in [0, 1] (key-wise).
+  HermiteSpline blended(float w) const { return HermiteSpline::blend(walk, run, w); }
+  // Value of the blended spline at t without building it.
+  float value(float t, float w) const { return (1.0f - w) * walk.position(t) + w * run.position(t); }
+};
+
+enum class PrototypeId : int { kLegSwingX, kLegSwingY, kPelvisY, kArmSwing, kArmBend, kIdleY, kCount };
+constexpr int kPrototypeCount = static_cast<int>(PrototypeId::kCount);
+const char* prototype_name(PrototypeId id);
+
+struct SplinePrototypes {
+  std::array<PrototypePair, kPrototypeCount> pairs;
+
+  PrototypePair& operator[](PrototypeId id) { return pairs[static_cast<int>(id)]; }
+  const PrototypePair& operator[](PrototypeId id) const { return pairs[static_cast<int>(id)]; }
+
+  // The tuned defaults (the same values as the shipped prototypes.json).
+  static SplinePrototypes defaults();
+  // Every spline valid, t within [0, 1], walk/run key counts equal.
+  bool is_valid() const;
+};
+
+Json prototypes_to_json(const SplinePrototypes& prototypes);
+Result<SplinePrototypes> prototypes_from_json(const Json& doc, std::string_view file);
+Result<SplinePrototypes> load_prototypes(const std::string& path);
+Status save_prototypes(const std::string& path, const SplinePrototypes& prototypes);  // atomic
+
+}  // namespace ossa

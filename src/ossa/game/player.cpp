@@ -1,0 +1,32 @@
+#include "ossa/game/player.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace ossa {
+
+Entity::Entity(std::shared_ptr<const Creature> creature, const SplinePrototypes& prototypes,
+               const AnimatorParams& params)
+    : creature_(std::move(creature)), animator_(*creature_, prototypes, params) {}
+
+float Entity::desired_velocity(const Controls& controls) const {
+  const float s = std::clamp(std::isfinite(controls.move_x) ? controls.move_x : 0.0f, -1.0f, 1.0f);
+  const float a = std::fabs(s);
+  const float walk = animator_.walk_speed(), run = animator_.run_speed();
+  float speed;
+  if (controls.run) {
+    speed = a * run;
+  } else if (a <= 0.5f) {
+    speed = 2.0f * a * walk;
+  } else {
+    speed = walk + (2.0f * a - 1.0f) * (run - walk);
+  }
+  return std::copysign(speed, s);
+}
+
+void Entity::step(float dt, const Controls& controls, const Level& level) {
+  controls_ = controls;
+  animator_.update(dt, desired_velocity(controls), level);
+}
+
+}  // namespace ossa

@@ -1,0 +1,121 @@
+#include "ossa/game/sim.h"
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+#include "ossa/game/world.h"
+
+namespace ossa {
+
+Result<std::vector<ScriptSegment>> parse_script(std::string_view text) {
+  std::vector<ScriptSegment> out;
+  std::string item;
+  std::stringstream ss{std::string(text)};
+  int index = 0;
+  while (std::getline(ss, item, ',')) {
+    const std::string where = "segment " + std::to_string(index) + " \"" + item + "\"";
+    std::vector<std::string> parts;
+    std::string part;
+    std::stringstream ps(item);
+    while (std::getline(ps, part, ':')) parts.push_back(part);
+    ScriptSegment seg;
+    if (parts.empty()) return Error::at("--script", where, "expected mode:stick:seconds");
+    seg.mode = parts[0];
+    auto number = [&](const std::string& s, float* v) {
+      try {
+        size_t used = 0;
+        *v = std::stof(s, &used);
+        return used == s.size() && std::isfinite(*v);
+      } catch (...) {
+        return false;
+      }
+    };
+    if (seg.mode == "stop") {
+      if (parts.size() != 2 || !number(parts[1], &seg.seconds)) {
+        return Error::at("--script", where, "expected stop:seconds");
+      }
+    } else if (seg.mode == "walk" || seg.mode == "run") {
+      if (parts.size() != 3 || !number(parts[1], &seg.stick) || !number(parts[2], &seg.seconds)) {
+        return Error::at("--script", where, "expected " + seg.mode + ":stick:seconds with numbers");
+      }
+      if (seg.stick < -1.0f || seg.stick > 1.0f) return Error::at("--script", where, "expected a stick in [-1, 1]");
+    } else {
+      return Error::at("--script", where, "expected the mode walk, run or stop");
+    }
+    if (!(seg.seconds > 0.0f) || seg.seconds > 86400.0f) {
+      return Error::at("--script", where, "expected seconds in (0, 86400]");
+    }
+    out.push_back(seg);
+    ++index;
+  }
+  if (out.empty()) return Error::at("--script", "", "expected at least one segment");
+  return out;
+}
+
+float penetration_depth(const Level& level, glm::vec2 p) {
+  std::vector<int> hits;
+  level.overlapping(Box{p - glm::vec2(1e-6f), p + glm::vec2(1e-6f)}, hits);
+  float depth = 0.0f;
+  for (int h : hits) {
+    const Box& b = level.box(h);
+    const float d = std::min({p.x - b.min_ws.x, b.max_ws.x - p.x, p.y - b.min_ws.y, b.max_ws.y - p.y});
+    depth = std::max(depth, d);
+  }
+  return depth;
+}
+
+void SimProbe::observe(const Animator& a, const Level& level) {
+  const Creature& c = a.creature();
+  const Skeleton& sk = c.skeleton;
+  const std::vector<Mat2x3>& world = a.world_matrices();
+  pose_hash = ossa::pose_hash(world, pose_hash);
+  for (const Mat2x3& m : world) {
+    for (float v : m.m) nan_count += std::isfinite(v) ? 0 : 1;
+  }
+  // Limb bones must stay out of colliders (sampled along each bone).
+  for (const Limb& limb : c.limbs) {
+    for (int b : limb.bones) {
+      const glm::vec2 p = bone_start(world[b]), q = bone_end(world[b], sk.length(b));
+      for (int k = 0; k <= 4; ++k) {
+        max_penetration_m = std::max(max_penetration_m, penetration_depth(level, p + (q - p) * (k / 4.0f)));
+      }
+    }
+  }
+  const int legs = a.leg_count();
+  if (static_cast<int>(stance_anchor_.size()) != legs) {
+    stance_anchor_.assign(legs, glm::vec2(0.0f));
+    stance_since_.assign(legs, -1);
+    last_foot_.assign(legs, glm::vec2(0.0f));
+  }
+  const bool turned = last_facing_ != 0 && a.facing() != last_facing_;
+  bool any_down = false, all_down = true;
+  for (int i = 0; i < legs; ++i) {
+    const glm::vec2 foot = a.foot_ws(i);
+    if (ticks_ > 0) max_foot_jump_m = std::max(max_foot_jump_m, glm::length(foot - last_foot_[i]));
+    last_foot_[i] = foot;
+    if (a.leg_state(i) == LegState::kStance) {
+      any_down = true;
+      if (stance_since_[i] < 0 || turned) {
+        stance_anchor_[i] = foot;
+        stance_since_[i] = static_cast<int>(ticks_);
+      } else {
+        max_stance_slip_m = std::max(max_stance_slip_m, glm::length(foot - stance_anchor_[i]));
+      }
+    } else {
+      all_down = false;
+      stance_since_[i] = -1;
+      const float s = a.swing_progress(i);
+      if (!a.easing(i) && s > 0.25f && s < 0.75f) {
+        auto ground = level.ground_height_below(foot.x, foot.y + 1e-4f, 100.0f);
+        if (ground) min_swing_clearance_m = std::min(min_swing_clearance_m, foot.y - ground->height_ws);
+      }
+    }
+  }
+  if (legs > 0 && !any_down && std::fabs(a.velocity()) > 0.0f) flight_seen = true;
+  all_feet_down_ticks = all_down ? all_feet_down_ticks + 1 : 0;
+  last_facing_ = a.facing();
+  ++ticks_;
+}
+
+}  // namespace ossa

@@ -1,0 +1,65 @@
+#pragma once
+// Headless simulation with the measurements ossa-sim reports and the animation tests check:
+// a script of control segments ("walk:0.5:10,run:1:6,stop:2,walk:-0.5:5") drives one or more
+// creatures over a level; a SimProbe watches every tick for stance slip, penetration of
+// limbs into colliders, swing clearance, non-finite values and the pose hash.
+
+#include <cstdint>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "ossa/anim/animator.h"
+#include "ossa/game/controls.h"
+#include "ossa/io/result.h"
+
+namespace ossa {
+
+struct ScriptSegment {
+  std::string mode;        // "walk", "run" or "stop"
+  float stick = 0.0f;      // [-1, 1]
+  float seconds = 0.0f;    // > 0
+  Controls controls() const { return {mode == "stop" ? 0.0f : stick, mode == "run"}; }
+};
+// Parses "mode:stick:seconds" segments separated by commas ("stop:seconds" for stops).
+Result<std::vector<ScriptSegment>> parse_script(std::string_view text);
+
+struct SegmentMetrics {
+  std::string command;        // the segment's text
+  float commanded_speed = 0;  // m/s, signed
+  float mean_speed = 0;       // m/s, signed, after the segment's first second
+  float speed_error = 0;      // |mean - commanded| / |commanded| (0 for stops)
+  float stride_length = 0;    // m, mean over the measured window
+  float cycle_frequency = 0;  // Hz
+  float duty_factor = 0;
+  float froude = 0;
+  std::string gait;           // most frequent gait in the window
+  bool flight_phase = false;  // a tick with every foot in the air (moving segments)
+};
+
+// Watches an animator tick by tick.
+class SimProbe {
+ public:
+  void observe(const Animator& animator, const Level& level);
+
+  float max_stance_slip_m = 0.0f;
+  float max_penetration_m = 0.0f;
+  float min_swing_clearance_m = 1e9f;
+  int nan_count = 0;
+  uint64_t pose_hash = 1469598103934665603ull;
+  float max_foot_jump_m = 0.0f;   // largest per-tick move of a reached contact point
+  bool flight_seen = false;       // a tick where no foot was on the ground while moving
+  int all_feet_down_ticks = 0;    // consecutive ticks so far with every foot in stance
+
+ private:
+  std::vector<glm::vec2> stance_anchor_;
+  std::vector<int> stance_since_;
+  std::vector<glm::vec2> last_foot_;
+  int last_facing_ = 0;
+  uint64_t ticks_ = 0;
+};
+
+// Deepest a point lies inside any collider (0 when outside or on a surface), metres.
+float penetration_depth(const Level& level, glm::vec2 p_ws);
+
+}  // namespace ossa

@@ -1,0 +1,65 @@
+#pragma once
+// World — the level, the player and NPC walkers, stepped together at one fixed rate
+// (default 120 Hz, up to 480 Hz; DESIGN.md §2). NPCs wander: they pick a direction and a
+// speed for a few seconds, pause now and then, and turn around when blocked. Stepping is
+// deterministic: the same level, creatures, seeds and player controls give the same poses.
+
+#include <cstdint>
+#include <memory>
+#include <vector>
+
+#include "ossa/game/player.h"
+#include "ossa/math/rng.h"
+
+namespace ossa {
+
+class World {
+ public:
+  // tick_hz in [30, 480].
+  World(Level level, SplinePrototypes prototypes, AnimatorParams params = {}, int tick_hz = 120);
+
+  Player& spawn_player(std::shared_ptr<const Creature> creature, glm::vec2 at_ws, int facing = 1);
+  Entity& spawn_npc(std::shared_ptr<const Creature> creature, glm::vec2 at_ws, uint64_t seed);
+  void remove_npcs();
+  // Replaces the player's creature, standing where the old one stood.
+  void set_player_creature(std::shared_ptr<const Creature> creature);
+
+  // One fixed tick of 1 / tick_hz seconds.
+  void step(const Controls& player_controls);
+
+  const Level& level() const { return level_; }
+  Level& level() { return level_; }
+  Player* player() { return player_.get(); }
+  const Player* player() const { return player_.get(); }
+  int npc_count() const { return static_cast<int>(npcs_.size()); }
+  Entity& npc(int i) { return *npcs_[i].entity; }
+  const Entity& npc(int i) const { return *npcs_[i].entity; }
+  int tick_hz() const { return tick_hz_; }
+  float dt() const { return 1.0f / static_cast<float>(tick_hz_); }
+  uint64_t tick() const { return tick_; }
+  const SplinePrototypes& prototypes() const { return prototypes_; }
+  // New prototypes / params for every creature (live editing).
+  void set_prototypes(const SplinePrototypes& prototypes);
+  void set_params(const AnimatorParams& params);
+  const AnimatorParams& params() const { return params_; }
+
+ private:
+  struct Npc {
+    std::unique_ptr<Entity> entity;
+    Rng rng;
+    Controls controls;
+    float timer = 0.0f;
+  };
+  Level level_;
+  SplinePrototypes prototypes_;
+  AnimatorParams params_;
+  int tick_hz_;
+  uint64_t tick_ = 0;
+  std::unique_ptr<Player> player_;
+  std::vector<Npc> npcs_;
+};
+
+// FNV-1a over the bits of every matrix: equal poses hash equal, bit for bit.
+uint64_t pose_hash(const std::vector<Mat2x3>& matrices, uint64_t hash = 1469598103934665603ull);
+
+}  // namespace ossa

@@ -1,0 +1,330 @@
+// ossa-sim — runs creatures headless over a level with a script of control segments and
+// reports how they walked (speed, stride, gait, stance slip, penetration, clearance...).
+//
+//   ossa-sim --example horse --level levels/default.json
+//            --script "walk:0.5:10,run:1:6,stop:2,walk:-0.5:5" --json --svg out/horse.svg
+//
+// Every failure prints one line naming what was wrong and exits with status 1.
+
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <fstream>
+#include <map>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "ossa/anim/spline_prototypes.h"
+#include "ossa/gen/generator.h"
+#include "ossa/gen/skeleton_builder.h"
+#include "ossa/game/sim.h"
+#include "ossa/game/world.h"
+#include "ossa/io/file.h"
+#include "ossa/level/level_io.h"
+
+using namespace ossa;
+
+namespace {
+
+const char* kUsage = R"(usage: ossa-sim (--example NAME | --creature F.creature.json | --random --seed N)
+                [--level F] --script "mode:stick:seconds,..." [--hz 120] [--count N]
+                [--prototypes F] [--json] [--trace F.csv] [--svg F.svg]
+  --example NAME   one of the 44 example animals (English or German name)
+  --creature F     a saved genome (.creature.json)
+  --random         a random creature (with --seed N, default 1)
+  --level F        level file (default: levels/default.json)
+  --script S       segments: walk:STICK:SECONDS, run:STICK:SECONDS, stop:SECONDS
+  --hz N           simulation rate, 30..480 (default 120)
+  --count N        N creatures at once (reports update_us_per_creature)
+  --prototypes F   spline prototypes (default: assets/animation/prototypes.json)
+  --json           print the metrics as JSON
+  --trace F.csv    per-tick foot and girdle positions
+  --svg F.svg      a strobe of the creature over the level
+)";
+
+std::string source_dir() {
+  const char* env = std::getenv("OSSA_SOURCE_DIR");
+  return env && *env ? env : OSSA_SOURCE_DIR;
+}
+
+[[noreturn]] void fail(const std::string& message) {
+  std::fprintf(stderr, "ossa-sim: %s\n", message.c_str());
+  std::exit(1);
+}
+
+struct Args {
+  std::optional<std::string> example, creature, level, script, prototypes, trace, svg;
+  bool random = false, json = false;
+  uint64_t seed = 1;
+  int hz = 120, count = 1;
+};
+
+long long parse_int(const std::string& flag, const char* text, long long lo, long long hi) {
+  char* end = nullptr;
+  errno = 0;
+  const long long v = std::strtoll(text, &end, 10);
+  if (errno || end == text || *end || v < lo || v > hi) {
+    fail(flag + ": expected an integer in [" + std::to_string(lo) + ", " + std::to_string(hi) + "], got \"" + text + "\"");
+  }
+  return v;
+}
+
+Args parse_args(int argc, char** argv) {
+  Args a;
+  for (int i = 1; i < argc; ++i) {
+    const std::string f = argv[i];
+    auto value = [&]() -> std::string {
+      if (i + 1 >= argc) fail(f + ": missing value");
+      return argv[++i];
+    };
+    if (f == "--help" || f == "-h") {
+      std::fputs(kUsage, stdout);
+      std::exit(0);
+    } else if (f == "--example") a.example = value();
+    else if (f == "--creature") a.creature = value();
+    else if (f == "--random") a.random = true;
+    else if (f == "--seed") a.seed = static_cast<uint64_t>(parse_int(f, value().c_str(), 0, 1LL << 62));
+    else if (f == "--level") a.level = value();
+    else if (f == "--script") a.script = value();
+    else if (f == "--hz") a.hz = static_cast<int>(parse_int(f, value().c_str(), 30, 480));
+    else if (f == "--count") a.count = static_cast<int>(parse_int(f, value().c_str(), 1, 100000));
+    else if (f == "--prototypes") a.prototypes = value();
+    else if (f == "--json") a.json = true;
+    else if (f == "--trace") a.trace = value();
+    else if (f == "--svg") a.svg = value();
+    else fail("unknown option " + f + " (see --help)");
+  }
+  if (static_cast<int>(a.example.has_value()) + a.creature.has_value() + a.random != 1) {
+    fail("give exactly one of --example NAME, --creature F or --random");
+  }
+  if (!a.script) fail("--script: missing (e.g. --script \"walk:0.5:10,stop:2\")");
+  return a;
+}
+
+struct Snapshot {
+  std::vector<Mat2x3> world;
+};
+
+std::string strobe_svg(const Creature& c, const Level& level, const std::vector<Snapshot>& shots) {
+  glm::vec2 lo(1e30f), hi(-1e30f);
+  for (const Snapshot& s : shots) {
+    for (int b = 0; b < c.skeleton.bone_count(); ++b) {
+      const glm::vec2 p = bone_start(s.world[b]), q = bone_end(s.world[b], c.skeleton.length(b));
+      lo = glm::min(lo, glm::min(p, q));
+      hi = glm::max(hi, glm::max(p, q));
+    }
+  }
+  lo -= glm::vec2(0.5f, 0.6f);
+  hi += glm::vec2(0.5f, 0.4f);
+  const float scale = 200.0f;  // px per metre
+  const float w = (hi.x - lo.x) * scale, h = (hi.y - lo.y) * scale;
+  std::string out;
+  char buf[512];
+  std::snprintf(buf, sizeof buf,
+                "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"%.0f\" height=\"%.0f\" viewBox=\"0 0 %.1f %.1f\">\n"
+                "<rect width=\"100%%\" height=\"100%%\" fill=\"#eef3f7\"/>\n<g transform=\"translate(%.2f %.2f) scale(%.2f %.2f)\">\n",
+                w, h, w, h, -lo.x * scale, hi.y * scale, scale, -scale);
+  out += buf;
+  for (const Box& b : level.colliders()) {
+    if (b.max_ws.x < lo.x || b.min_ws.x > hi.x || b.max_ws.y < lo.y || b.min_ws.y > hi.y) continue;
+    const Box v{glm::max(b.min_ws, lo), glm::min(b.max_ws, hi)};
+    std::snprintf(buf, sizeof buf, "<rect x=\"%.4f\" y=\"%.4f\" width=\"%.4f\" height=\"%.4f\" fill=\"#8a7f6e\" stroke=\"#5b5346\" stroke-width=\"0.01\"/>\n",
+                  v.min_ws.x, v.min_ws.y, v.width(), v.height());
+    out += buf;
+  }
+  for (size_t i = 0; i < shots.size(); ++i) {
+    const float opacity = 0.25f + 0.75f * static_cast<float>(i + 1) / static_cast<float>(shots.size());
+    std::snprintf(buf, sizeof buf, "<g opacity=\"%.2f\" stroke-linecap=\"round\">\n", opacity);
+    out += buf;
+    for (int layer = 0; layer < kLayerCount; ++layer) {
+      for (int b = 0; b < c.skeleton.bone_count(); ++b) {
+        if (static_cast<int>(c.skeleton.layer(b)) != layer || c.skeleton.length(b) <= 0.0f) continue;
+        const glm::vec2 p = bone_start(shots[i].world[b]), q = bone_end(shots[i].world[b], c.skeleton.length(b));
+        const char* colour = layer == 0 ? "#7d7565" : layer == 1 ? "#c9b98f" : "#e9dcb8";
+        std::snprintf(buf, sizeof buf, "<line x1=\"%.4f\" y1=\"%.4f\" x2=\"%.4f\" y2=\"%.4f\" stroke=\"%s\" stroke-width=\"%.4f\"/>\n",
+                      p.x, p.y, q.x, q.y, colour, std::max(0.35f * c.skeleton.width(b), 0.008f));
+        out += buf;
+      }
+    }
+    out += "</g>\n";
+  }
+  out += "</g>\n</svg>\n";
+  return out;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  const Args args = parse_args(argc, argv);
+  Result<std::vector<ScriptSegment>> script = parse_script(*args.script);
+  if (!script) fail(script.message());
+
+  const std::string level_path = args.level ? *args.level : source_dir() + "/levels/default.json";
+  Result<Level> level = load_level(level_path);
+  if (!level) fail(level.message());
+
+  SplinePrototypes prototypes = SplinePrototypes::defaults();
+  const std::string proto_path = args.prototypes ? *args.prototypes : source_dir() + "/assets/animation/prototypes.json";
+  if (args.prototypes || std::ifstream(proto_path).good()) {
+    Result<SplinePrototypes> p = load_prototypes(proto_path);
+    if (!p) fail(p.message());
+    prototypes = *p;
+  }
+
+  Genome genome;
+  if (args.creature) {
+    Result<Genome> g = load_genome(*args.creature);
+    if (!g) fail(g.message());
+    genome = *g;
+  } else {
+    Result<Generator> gen = Generator::load(source_dir() + "/assets/creatures/examples.json");
+    if (!gen) fail(gen.message());
+    if (args.example) {
+      Result<Genome> g = gen->example(*args.example);
+      if (!g) fail(g.message());
+      genome = *g;
+    } else {
+      genome = gen->random(args.seed);
+    }
+  }
+  Result<Creature> built = build_creature(genome);
+  if (!built) fail((args.creature ? *args.creature + ": " : std::string()) + built.message());
+  auto creature = std::make_shared<const Creature>(std::move(*built));
+
+  World world(*level, prototypes, AnimatorParams{}, args.hz);
+  const glm::vec2 spawn = level->spawn_ws + glm::vec2(0.0f, 1.0f);
+  world.spawn_player(creature, spawn);
+  // Extra creatures for --count walk the same script in lock-step, spread out behind.
+  std::vector<std::unique_ptr<Entity>> extra;
+  for (int i = 1; i < args.count; ++i) {
+    extra.push_back(std::make_unique<Entity>(creature, prototypes));
+    extra.back()->animator().reset(spawn + glm::vec2(-0.01f * i, 0.0f), world.level());
+  }
+
+  std::ofstream trace;
+  if (args.trace) {
+    trace.open(*args.trace);
+    if (!trace) fail(*args.trace + ": cannot open for writing");
+    trace << "t,x,root_y,gait";
+    for (int i = 0; i < world.player()->animator().leg_count(); ++i) {
+      trace << ",foot" << i << "_x,foot" << i << "_y,foot" << i << "_stance";
+    }
+    trace << "\n";
+  }
+
+  const float dt = world.dt();
+  SimProbe probe;
+  std::vector<SegmentMetrics> segments;
+  std::vector<Snapshot> shots;
+  double update_seconds = 0.0;
+  long long updates = 0;
+  long long tick = 0;
+  int total_ticks = 0;
+  for (const ScriptSegment& s : *script) total_ticks += static_cast<int>(std::lround(s.seconds * args.hz));
+  const int shot_every = std::max(1, total_ticks / 60);
+
+  for (const ScriptSegment& seg : *script) {
+    const Controls controls = seg.controls();
+    SegmentMetrics m;
+    m.command = seg.mode == "stop" ? "stop:" + std::to_string(seg.seconds)
+                                   : seg.mode + ":" + std::to_string(seg.stick) + ":" + std::to_string(seg.seconds);
+    m.commanded_speed = world.player()->desired_velocity(controls);
+    const int ticks = static_cast<int>(std::lround(seg.seconds * args.hz));
+    const int warmup = std::min(ticks / 2, args.hz);  // measure after the first second
+    float x_start = 0.0f;
+    double stride = 0, freq = 0, duty = 0, froude = 0;
+    int measured = 0;
+    std::map<std::string, int> gaits;
+    bool flight = false;
+    for (int t = 0; t < ticks; ++t) {
+      const auto start = std::chrono::steady_clock::now();
+      world.step(controls);
+      for (auto& e : extra) e->step(dt, controls, world.level());
+      update_seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+      updates += 1 + static_cast<long long>(extra.size());
+      const Animator& a = world.player()->animator();
+      probe.observe(a, world.level());
+      if (t == warmup) x_start = a.x();
+      if (t > warmup) {
+        stride += a.stride_length();
+        freq += a.cycle_frequency();
+        duty += a.duty_factor();
+        froude += a.froude();
+        ++gaits[gait_name(a.gait())];
+        ++measured;
+        bool any_down = false;
+        for (int i = 0; i < a.leg_count(); ++i) any_down |= a.leg_state(i) == LegState::kStance;
+        flight |= a.leg_count() > 0 && !any_down;
+      }
+      if (trace.is_open()) {
+        trace << tick * dt << "," << a.x() << "," << bone_start(a.world_matrices()[a.creature().root]).y << ","
+              << gait_name(a.gait());
+        for (int i = 0; i < a.leg_count(); ++i) {
+          const glm::vec2 f = a.foot_ws(i);
+          trace << "," << f.x << "," << f.y << "," << (a.leg_state(i) == LegState::kStance ? 1 : 0);
+        }
+        trace << "\n";
+      }
+      if (tick % shot_every == 0) shots.push_back({a.world_matrices()});
+      ++tick;
+    }
+    const Animator& a = world.player()->animator();
+    const float window = static_cast<float>(ticks - 1 - warmup) * dt;
+    m.mean_speed = window > 0.0f ? (a.x() - x_start) / window : 0.0f;
+    m.speed_error = m.commanded_speed != 0.0f ? std::fabs(m.mean_speed - m.commanded_speed) / std::fabs(m.commanded_speed) : std::fabs(m.mean_speed);
+    if (measured > 0) {
+      m.stride_length = static_cast<float>(stride / measured);
+      m.cycle_frequency = static_cast<float>(freq / measured);
+      m.duty_factor = static_cast<float>(duty / measured);
+      m.froude = static_cast<float>(froude / measured);
+      int best = -1;
+      for (const auto& [name, n] : gaits) {
+        if (n > best) {
+          best = n;
+          m.gait = name;
+        }
+      }
+    }
+    m.flight_phase = flight;
+    segments.push_back(m);
+  }
+
+  const Animator& a = world.player()->animator();
+  if (args.svg) {
+    if (Status s = write_file_atomic(*args.svg, strobe_svg(*creature, world.level(), shots)); !s) fail(s.message());
+  }
+  if (args.json) {
+    Json out;
+    out["creature"] = creature->name;
+    out["level"] = level_path;
+    out["hz"] = args.hz;
+    Json segs = Json::array();
+    for (const SegmentMetrics& m : segments) {
+      segs.push_back({{"command", m.command},       {"commanded_speed", m.commanded_speed},
+                      {"mean_speed", m.mean_speed}, {"speed_error", m.speed_error},
+                      {"stride_length", m.stride_length}, {"cycle_frequency", m.cycle_frequency},
+                      {"duty_factor", m.duty_factor}, {"froude", m.froude},
+                      {"gait", m.gait},             {"flight_phase", m.flight_phase}});
+    }
+    out["segments"] = segs;
+    out["max_stance_slip_m"] = probe.max_stance_slip_m;
+    out["max_penetration_m"] = probe.max_penetration_m;
+    out["min_swing_clearance_m"] = probe.min_swing_clearance_m > 1e8f ? 0.0f : probe.min_swing_clearance_m;
+    out["steps"] = a.steps();
+    out["x_reached"] = a.x();
+    out["hip_height_m"] = a.hip_height();
+    out["nan_count"] = probe.nan_count;
+    char hash[32];
+    std::snprintf(hash, sizeof hash, "%016llx", static_cast<unsigned long long>(probe.pose_hash));
+    out["pose_hash"] = hash;
+    if (args.count > 1) {
+      out["count"] = args.count;
+      out["update_us_per_creature"] = 1e6 * update_seconds / static_cast<double>(updates);
+    }
+    std::printf("%s\n", out.dump(2).c_str());
+  }
+  return 0;
+}
