@@ -66,7 +66,7 @@ struct Scene {
     atlas = std::make_unique<Atlas>(Atlas::build(set.ok() ? set.value() : default_sprite_set(), dir));
     auto gen = Generator::load(source_dir() + "/assets/creatures/examples.json");
     if (!gen.ok()) return;
-    for (const char* name : {"horse", "kangaroo", "giraffe", "cat", "dog"}) {
+    for (const char* name : {"horse", "kangaroo", "giraffe", "pig", "red deer"}) {
       if (auto g = gen->example(name, 1); g.ok()) {
         if (auto c = build_creature(g.value()); c.ok()) kinds.push_back(std::move(c.value()));
       }

@@ -218,6 +218,8 @@ int run(const Args& a) {
   const glm::vec4 ground_fill{0.42f, 0.36f, 0.27f, 1.0f}, ground_edge{0.25f, 0.20f, 0.14f, 1.0f};
   Camera2D& camera = renderer->camera;
   camera.fit(view, static_cast<float>(a.width) / static_cast<float>(a.height), 0.08f);
+  // Keep the ground near the bottom edge (a long row would otherwise float mid-frame).
+  camera.center_ws.y = view.min_ws.y - 0.12f * view.height() + camera.half_height;
   const Box visible = camera.visible_box();
   if (level) {
     debug.add_level(*level, ground_fill, ground_edge);
