@@ -243,6 +243,21 @@ void Animator::update(float dt, float desired_velocity, const Level& level) {
       blocked_retry_ = 0.5f;
     }
   }
+  // The body never outruns a foot on the ground, nor where a swinging foot will land (steps
+  // shortened by stairs or a ledge): it waits for its legs.
+  if (dx != 0.0f) {
+    for (size_t i = 0; i < legs_.size(); ++i) {
+      const Foot& f = feet_[foot_of_leg_[i]];
+      const LegInfo& info = legs_[i];
+      const glm::vec2 joint = to_model(girdle_ws(info.group));
+      const glm::vec2 ankle = to_model(f.state == LegState::kStance ? f.pos_ws : f.to_ws) - info.foot_offset_ms;
+      const float r = kReachLimit * info.reach;
+      const float h = joint.y - ankle.y;
+      // How far forward the joint may go with this foot still in reach (model x).
+      const float ahead = ankle.x + std::sqrt(std::max(r * r - h * h, 0.0f)) - joint.x;
+      dx = facing_ * std::min(std::fabs(dx), std::max(ahead, 0.0f));
+    }
+  }
   body_x_ += dx;
 
   if (legs_.empty()) {
@@ -299,6 +314,19 @@ void Animator::update(float dt, float desired_velocity, const Level& level) {
     Foot& f = feet_[foot_of_leg_[i]];
     if (f.state != LegState::kSwing) continue;
     if (f.easing) f.progress += f.rate * dt;
+    if (!f.easing && f.progress < 0.9f && moving_) {
+      // Re-aim a swinging foot when the body has been held back (legs behind it slowed on
+      // stairs): the landing stays half a stance ahead of where the girdle will be.
+      const float remaining = (1.0f - f.progress) / std::max(f.rate, 1e-3f);
+      const float wanted = landing_x(static_cast<int>(i), speed_, remaining);
+      if (facing_ * (f.to_ws.x - wanted) > 0.08f * stride_) {
+        glm::vec2 landing;
+        if (find_landing(static_cast<int>(i), wanted, level, &landing) && facing_ * (landing.x - f.to_ws.x) < 0.0f) {
+          f.to_ws = landing;
+          raise_for_clearance(static_cast<int>(i), level);
+        }
+      }
+    }
     if (f.progress >= 1.0f) {
       f.state = LegState::kStance;
       f.pos_ws = f.to_ws;
@@ -338,7 +366,7 @@ void Animator::update_gait(float dt) {
   for (const LegInfo& leg : legs_) {
     const float h = groups_[leg.group].rest_height * params_.stance_height - std::max(0.0f, -leg.foot_offset_ms.y);
     const float reach_x = std::sqrt(std::max(kReachLimit * kReachLimit * leg.reach * leg.reach - h * h, 0.0f));
-    max_stride = std::min(max_stride, 2.0f * 0.8f * (reach_x + std::fabs(leg.foot_offset_ms.x)) / std::max(duty_, 0.2f));
+    max_stride = std::min(max_stride, 2.0f * 0.9f * reach_x / std::max(duty_, 0.2f));
   }
   stride_ = std::clamp(stride, 0.25f * hip_height_, std::max(max_stride, 0.25f * hip_height_));
   frequency_ = speed_ > 0.0f ? speed_ / stride_ : 0.0f;
@@ -419,12 +447,14 @@ bool Animator::find_landing(int leg, float x_wanted, const Level& level, glm::ve
   // just ahead of where the foot is now, at most 25% longer.
   const float stepx = std::max(0.025f * stride_, 0.005f);
   const float shortest = facing_ * (x_wanted - f.pos_ws.x) - 0.05f * stride_;
-  for (int k = 0; k <= 100; ++k) {
+  for (int k = 0; k <= 600; ++k) {
     const int n = (k + 1) / 2;
     const float d = k % 2 == 1 ? -stepx * static_cast<float>(n) : 0.25f * stepx * static_cast<float>(n);
     if (-d > shortest) {
       if (k % 2 == 1) continue;
       if (d > 0.25f * stride_) break;
+    } else if (k % 2 == 0 && d > 0.25f * stride_) {
+      continue;
     }
     if (d > 0.25f * stride_) continue;
     const float x = x_wanted + facing_ * d;
@@ -441,9 +471,9 @@ bool Animator::find_landing(int leg, float x_wanted, const Level& level, glm::ve
 
 float Animator::landing_x(int leg, float speed, float swing_phase) const {
   const LegInfo& info = legs_[leg];
-  const Limb& limb = creature_->limbs[info.limb];
-  const glm::vec2 ankle = bone_end(model_rest_[limb.bones[1]], creature_->skeleton.length(limb.bones[1]));
-  const float contact_dx = (ankle + info.foot_offset_ms).x - groups_[info.group].joint_ms.x;
+  // The stance is centred with the ankle under the girdle joint, so the foot passes right
+  // below the hip half-way through it.
+  const float contact_dx = info.foot_offset_ms.x;
   if (swing_phase < 0.0f) swing_phase = 1.0f - duty_;
   const float frequency = speed > 0.0f ? speed / std::max(stride_, 1e-3f) : 0.0f;
   const float t_swing = frequency > 0.0f ? swing_phase / frequency : 0.0f;
@@ -476,25 +506,32 @@ void Animator::set_new_splines(int leg, const Level& level, float swing_phase) {
   f.easing = false;
   f.state = LegState::kSwing;
 
+  raise_for_clearance(leg, level);
+}
+
+void Animator::raise_for_clearance(int leg, const Level& level) {
   // Raise the curve until the whole foot (ankle to toe) clears every box [T 5.1e].
+  const LegInfo& info = legs_[leg];
+  Foot& f = feet_[foot_of_leg_[leg]];
   const glm::vec2 ankle_rel = -info.foot_offset_ms;
   const glm::vec2 tip_rel = creature_->contact == ContactMode::kFlat ? glm::vec2(info.foot_length, 0.0f) : glm::vec2(0.0f);
-  for (int iter = 0; iter < 6; ++iter) {
+  std::vector<int> hits;
+  for (int iter = 0; iter < 8; ++iter) {
     float need = 0.0f;
     const float up = f.to_ws.y - f.from_ws.y;
-    for (int k = 1; k < 24; ++k) {
-      const float s = static_cast<float>(k) / 24.0f;
+    for (int k = 1; k < 40; ++k) {
+      const float s = static_cast<float>(k) / 40.0f;
       const float ease = up >= 0.0f ? smoothstep(0.0f, 0.55f, s) : smoothstep(0.45f, 1.0f, s);
       const glm::vec2 p = {f.from_ws.x + f.swing_x.position(s) * (f.to_ws.x - f.from_ws.x),
                            f.from_ws.y + ease * up + f.lift * f.swing_y.position(s) + f.raise * bump(s)};
       const glm::vec2 q = p + glm::vec2(facing_ * ankle_rel.x, ankle_rel.y);
       const glm::vec2 r = p + glm::vec2(facing_ * tip_rel.x, tip_rel.y);
       const Box foot{glm::min(glm::min(p, q), r) - glm::vec2(0.01f, 0.0f), glm::max(glm::max(p, q), r) + glm::vec2(0.01f, 0.005f)};
-      std::vector<int> hits;
+      hits.clear();
       level.overlapping(foot, hits);
       for (int h : hits) {
         const float depth = level.box(h).top() + 0.01f - foot.min_ws.y;
-        need = std::max(need, depth / std::max(bump(s), 0.2f));
+        need = std::max(need, depth / std::max(bump(s), 0.1f));
       }
     }
     if (need <= 0.0f) break;
@@ -515,6 +552,7 @@ void Animator::start_ease(int leg, const Level& level) {
   f.progress = 0.0f;
   f.rate = 1.0f / std::max(params_.stop_ease_time, 0.01f);
   f.easing = true;
+  raise_for_clearance(leg, level);
 }
 
 // [SECTION] body placement ------------------------------------------------------------------
@@ -547,7 +585,16 @@ void Animator::place_body(float dt, const Level& level) {
         sum += f.state == LegState::kStance ? f.pos_ws.y
                                             : f.from_ws.y + std::clamp(f.progress, 0.0f, 1.0f) * (f.to_ws.y - f.from_ws.y);
       }
-      height[g] = sum / static_cast<float>(groups_[g].legs.size()) + groups_[g].rest_height * params_.stance_height + bob;
+      float ground = sum / static_cast<float>(groups_[g].legs.size());
+      // On stairs the feet straddle steps; a girdle over a higher step rises with it, so the
+      // knees stay clear of the step they pass over.
+      const float gx = girdle_ws(static_cast<int>(g)).x;
+      const float half = 0.2f * groups_[g].rest_height;
+      if (auto below = level.ground_height_below(gx - half, gx + half, ground + params_.max_step_up * groups_[g].rest_height,
+                                                 params_.max_step_up * groups_[g].rest_height)) {
+        ground = std::max(ground, 0.5f * (ground + below->height_ws));
+      }
+      height[g] = ground + groups_[g].rest_height * params_.stance_height + bob;
     }
     const float angle_extra = lean_;
     if (groups_.size() >= 2) {

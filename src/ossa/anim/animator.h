@@ -126,6 +126,7 @@ class Animator {
 
   void set_new_splines(int leg, const Level& level, float swing_phase);  // [T] name: plans a swing
   void start_ease(int leg, const Level& level);
+  void raise_for_clearance(int leg, const Level& level);
   void reverse(const Level& level);
   void update_gait(float dt);
   float leg_target_offset(int leg) const;
