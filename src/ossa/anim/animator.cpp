@@ -327,19 +327,29 @@ void Animator::update(float dt, float desired_velocity, const Level& level) {
         }
       }
     }
+    if (f.progress >= 1.0f && !f.easing && moving_) {
+      // A foot stepping down further than the leg reaches from the still-high body waits
+      // above its landing point while the body comes down to it (see build_pose).
+      const LegInfo& info = legs_[i];
+      const glm::vec2 joint = to_model(girdle_ws(info.group));
+      const glm::vec2 ankle = to_model(f.to_ws) - info.foot_offset_ms;
+      const float r = kReachLimit * info.reach;
+      if (glm::length(ankle - joint) > r && std::fabs(ankle.x - joint.x) < r && f.hover < 0.5f) {
+        f.hover += dt;
+        f.progress = 1.0f;
+        f.pos_ws = f.to_ws;
+        continue;
+      }
+    }
     if (f.progress >= 1.0f) {
+      f.hover = 0.0f;
       f.state = LegState::kStance;
       f.pos_ws = f.to_ws;
       f.easing = false;
       ++steps_;
       continue;
     }
-    const float s = std::clamp(f.progress, 0.0f, 1.0f);
-    const float up = f.to_ws.y - f.from_ws.y;
-    // Rise early when stepping up, descend late when stepping down.
-    const float ease = up >= 0.0f ? smoothstep(0.0f, 0.55f, s) : smoothstep(0.45f, 1.0f, s);
-    f.pos_ws.x = f.from_ws.x + f.swing_x.position(s) * (f.to_ws.x - f.from_ws.x);
-    f.pos_ws.y = f.from_ws.y + ease * up + f.lift * f.swing_y.position(s) + f.raise * bump(s);
+    f.pos_ws = swing_point(f, std::clamp(f.progress, 0.0f, 1.0f));
   }
   place_body(dt, level);
   build_pose(dt);
@@ -509,6 +519,17 @@ void Animator::set_new_splines(int leg, const Level& level, float swing_phase) {
   raise_for_clearance(leg, level);
 }
 
+glm::vec2 Animator::swing_point(const Foot& f, float s) {
+  // The blended prototype shapes the step [T 4.4.1]; on steps the foot rises before it moves
+  // forward (up) or moves over before it descends (down), so it never clips a riser's corner.
+  const float up = f.to_ws.y - f.from_ws.y;
+  const float sx = up > 0.0f ? std::clamp((s - 0.12f) / 0.88f, 0.0f, 1.0f)
+                 : up < 0.0f ? std::clamp(s / 0.85f, 0.0f, 1.0f) : s;
+  const float ease = up >= 0.0f ? smoothstep(0.0f, 0.55f, s) : smoothstep(0.45f, 1.0f, s);
+  return {f.from_ws.x + f.swing_x.position(sx) * (f.to_ws.x - f.from_ws.x),
+          f.from_ws.y + ease * up + f.lift * f.swing_y.position(s) + f.raise * bump(s)};
+}
+
 void Animator::raise_for_clearance(int leg, const Level& level) {
   // Raise the curve until the whole foot (ankle to toe) clears every box [T 5.1e].
   const LegInfo& info = legs_[leg];
@@ -518,12 +539,9 @@ void Animator::raise_for_clearance(int leg, const Level& level) {
   std::vector<int> hits;
   for (int iter = 0; iter < 8; ++iter) {
     float need = 0.0f;
-    const float up = f.to_ws.y - f.from_ws.y;
-    for (int k = 1; k < 40; ++k) {
-      const float s = static_cast<float>(k) / 40.0f;
-      const float ease = up >= 0.0f ? smoothstep(0.0f, 0.55f, s) : smoothstep(0.45f, 1.0f, s);
-      const glm::vec2 p = {f.from_ws.x + f.swing_x.position(s) * (f.to_ws.x - f.from_ws.x),
-                           f.from_ws.y + ease * up + f.lift * f.swing_y.position(s) + f.raise * bump(s)};
+    for (int k = 1; k < 48; ++k) {
+      const float s = static_cast<float>(k) / 48.0f;
+      const glm::vec2 p = swing_point(f, s);
       const glm::vec2 q = p + glm::vec2(facing_ * ankle_rel.x, ankle_rel.y);
       const glm::vec2 r = p + glm::vec2(facing_ * tip_rel.x, tip_rel.y);
       const Box foot{glm::min(glm::min(p, q), r) - glm::vec2(0.01f, 0.0f), glm::max(glm::max(p, q), r) + glm::vec2(0.01f, 0.005f)};
@@ -683,7 +701,16 @@ void Animator::build_pose(float dt) {
     const Limb& limb = c.limbs[info.limb];
     const Foot& f = feet_[foot_of_leg_[i]];
     const glm::vec2 joint = bone_start(model_[limb.bones[0]]);
-    const glm::vec2 ankle = to_model(f.pos_ws) - info.foot_offset_ms;
+    glm::vec2 ankle = to_model(f.pos_ws) - info.foot_offset_ms;
+    if (f.state == LegState::kSwing) {
+      // A swinging foot out of reach below stays at the lowest point the leg reaches, right
+      // above its path, instead of being dragged along the line to it (into a step's corner).
+      const float r = kReachLimit * info.reach;
+      const float dx = ankle.x - joint.x;
+      if (glm::length(ankle - joint) > r && std::fabs(dx) < r && ankle.y < joint.y) {
+        ankle.y = joint.y - std::sqrt(r * r - dx * dx);
+      }
+    }
     const TwoBoneIkResult ik = solve_two_bone_ik(joint, sk.length(limb.bones[0]), sk.length(limb.bones[1]), ankle,
                                                  static_cast<float>(limb.bend_sign));
     const float girdle_angle = bone_angle(model_[limb.girdle_bone]);

@@ -122,11 +122,13 @@ class Animator {
     bool easing = false;             // a stop: progress runs on time, not on phase
     float offset = 0.0f;             // phase offset (eases toward the owning leg's target)
     float phase_prev = 0.0f;
+    float hover = 0.0f;              // seconds spent waiting above the landing point
   };
 
   void set_new_splines(int leg, const Level& level, float swing_phase);  // [T] name: plans a swing
   void start_ease(int leg, const Level& level);
   void raise_for_clearance(int leg, const Level& level);
+  static glm::vec2 swing_point(const Foot& f, float s);
   void reverse(const Level& level);
   void update_gait(float dt);
   float leg_target_offset(int leg) const;
