@@ -219,7 +219,7 @@ int run(const Args& a) {
   Camera2D& camera = renderer->camera;
   camera.fit(view, static_cast<float>(a.width) / static_cast<float>(a.height), 0.08f);
   // Keep the ground near the bottom edge (a long row would otherwise float mid-frame).
-  camera.center_ws.y = view.min_ws.y - 0.12f * view.height() + camera.half_height;
+  camera.center_ws.y = view.min_ws.y - 0.2f * camera.half_height + camera.half_height;
   const Box visible = camera.visible_box();
   if (level) {
     debug.add_level(*level, ground_fill, ground_edge);
