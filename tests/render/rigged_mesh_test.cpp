@@ -293,7 +293,7 @@ TEST_CASE("malformed model files give errors naming the file", "[render]") {
     t.replace(at, 12, "missing0.bin");
     require_error(load_rigged_mesh(write("nobin.gltf", t)), "nobin.gltf");
   }
-  SECTION("a mesh without bones") {
+  SECTION("a mesh without bones, and formats other than glTF, FBX, DAE") {
     const std::string obj = "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n";
     require_error(load_rigged_mesh(write("plain.obj", obj)), "plain.obj");
   }

@@ -388,34 +388,56 @@ Result<RiggedMesh> convert(const aiScene* scene, const std::string& file, const 
   return out;
 }
 
-// Guards against inputs that crash Assimp 5.2 itself (found by tests/fuzz/mesh_fuzz.cpp):
+// Guards against inputs that crash Assimp 5.2 itself (found by tests/fuzz/mesh_fuzz.cpp).
 // - a glTF skin without "inverseBindMatrices" (optional in the spec, identity by default)
 //   makes its importer dereference a null accessor.
 // glTF (JSON) and GLB (JSON chunk) are pre-parsed for that; anything unparsable is left to
 // Assimp, which reports it.
 Status precheck(std::string_view bytes, const std::string& file) {
+  // Only glTF, FBX and DAE reach Assimp: its other ~40 importers are not needed here and
+  // some crash or allocate terabytes on garbage (e.g. a 27-byte "quick3ds..." file).
+  const std::string_view head = bytes.substr(0, 4096);
+  const bool fbx = bytes.substr(0, 18) == "Kaydara FBX Binary" ||
+                   head.find("FBXHeaderExtension") != std::string_view::npos;
+  const bool dae = head.find("<COLLADA") != std::string_view::npos;
+  if (fbx || dae) return {};
   std::string_view json;
   if (bytes.size() >= 20 && bytes.substr(0, 4) == "glTF") {
     uint32_t length = 0;
     std::memcpy(&length, bytes.data() + 12, 4);
-    if (bytes.substr(16, 4) != "JSON" || length > bytes.size() - 20) return {};
+    if (bytes.substr(16, 4) != "JSON" || length > bytes.size() - 20) {
+      return Error::at(file, "", "is a broken GLB file (no JSON chunk)");
+    }
     json = bytes.substr(20, length);
   } else {
     const size_t first = bytes.find_first_not_of(" \t\r\n");
-    if (first == std::string_view::npos || bytes[first] != '{') return {};
+    if (first == std::string_view::npos || bytes[first] != '{') {
+      return Error::at(file, "", "is not a glTF 2.0, FBX or DAE (COLLADA) file");
+    }
     json = bytes;
   }
-  const Json doc = Json::parse(json, nullptr, false);
-  if (doc.is_discarded() || !doc.is_object()) return {};
+  // glTF is UTF-8 JSON; Assimp's parser accepts some invalid input (e.g. bad UTF-8 in a key,
+  // which hides "inverseBindMatrices" from it), so what nlohmann rejects is rejected here.
+  Result<Json> parsed = parse_json(json, file);
+  if (!parsed.ok()) return parsed.error();
+  const Json& doc = *parsed;
+  if (!doc.is_object()) return {};
   auto skins = doc.find("skins");
   if (skins == doc.end() || !skins->is_array()) return {};
+  auto accessors = doc.find("accessors");
   for (size_t i = 0; i < skins->size(); ++i) {
     const Json& skin = (*skins)[i];
-    if (!skin.is_object() || !skin.contains("inverseBindMatrices") ||
-        !skin["inverseBindMatrices"].is_number_unsigned()) {
+    const Json* ibm = skin.is_object() && skin.contains("inverseBindMatrices")
+                          ? &skin["inverseBindMatrices"] : nullptr;
+    const bool valid = ibm && ibm->is_number_unsigned() && accessors != doc.end() &&
+                       accessors->is_array() && ibm->get<size_t>() < accessors->size() &&
+                       (*accessors)[ibm->get<size_t>()].is_object() &&
+                       (*accessors)[ibm->get<size_t>()].contains("type") &&
+                       (*accessors)[ibm->get<size_t>()]["type"] == Json("MAT4");
+    if (!valid) {
       return Error::at(file, json_path("skins", i),
-                       "expected \"inverseBindMatrices\" (an accessor index); Assimp 5.2 cannot "
-                       "import a skin without them");
+                       "expected \"inverseBindMatrices\" (the index of a MAT4 accessor); Assimp "
+                       "5.2 cannot import a skin without them");
     }
   }
   return {};

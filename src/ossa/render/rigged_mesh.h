@@ -30,7 +30,9 @@
 // REJECTED, with an Error naming the file and the bone: a matrix that couples z with x or y
 // (rotation about another axis, beyond 1e-3 of its scale), non-uniform x/y scale or shear
 // (beyond 1e-3), a singular or non-finite matrix.
-// Also rejected: a file Assimp cannot read, no mesh with bones, more than kMaxRiggedBones
+// Also rejected: any format but glTF 2.0 (.gltf/.glb), FBX and DAE (sniffed from the content,
+// before Assimp sees it), a glTF skin without inverseBindMatrices (Assimp 5.2 crashes on
+// those), a file Assimp cannot read, no mesh with bones, more than kMaxRiggedBones
 // bones, two meshes that bind one bone differently, non-finite positions, UVs or weights,
 // negative weights, and indices out of range. No input, however malformed, crashes.
 
