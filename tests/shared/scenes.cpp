@@ -40,3 +40,25 @@ const Generator& generator() {
 }
 
 }  // namespace ossa::scenes
+
+#include "ossa/gen/skeleton_builder.h"
+
+namespace ossa::scenes {
+
+Creature biped() { return build_creature(generator().example("kangaroo").value()).value(); }
+
+Creature quadruped() { return build_creature(generator().example("horse").value()).value(); }
+
+Creature three_leg_pairs() {
+  GenerateOptions o;
+  o.genome.multi_limb = true;
+  Genome g = generator().example("dromedary", 1, o).value();
+  g.name = "three-leg-pairs";
+  g.limbs = {LimbGene{LimbKind::kLeg, GirdleKind::kShoulder, 0, {}},
+             LimbGene{LimbKind::kLeg, GirdleKind::kShoulder, 1, {}},
+             LimbGene{LimbKind::kLeg, GirdleKind::kHip, 0, {}}};
+  recompute_rest_angles(g);
+  return build_creature(g).value();
+}
+
+}  // namespace ossa::scenes

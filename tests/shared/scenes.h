@@ -30,3 +30,14 @@ namespace ossa::scenes {
 const Generator& generator();
 
 }  // namespace ossa::scenes
+
+namespace ossa::scenes {
+
+// The walkers the animation tests, benchmarks and tools share: a biped (kangaroo), a
+// quadruped (horse) and a creature with three leg pairs (two at the shoulder, one at the hip,
+// built from a multi-limb genome).
+Creature biped();
+Creature quadruped();
+Creature three_leg_pairs();
+
+}  // namespace ossa::scenes

@@ -21,6 +21,7 @@
 #include "ossa/gen/generator.h"
 #include "ossa/gen/skeleton_builder.h"
 #include "ossa/game/sim.h"
+#include "ossa/game/player.h"
 #include "ossa/game/world.h"
 #include "ossa/io/file.h"
 #include "ossa/level/level_io.h"
@@ -194,14 +195,14 @@ int main(int argc, char** argv) {
   if (!built) fail((args.creature ? *args.creature + ": " : std::string()) + built.message());
   auto creature = std::make_shared<const Creature>(std::move(*built));
 
-  World world(*level, prototypes, AnimatorParams{}, args.hz);
+  Player player(creature, prototypes);
   const glm::vec2 spawn = level->spawn_ws + glm::vec2(0.0f, 1.0f);
-  world.spawn_player(creature, spawn);
-  // Extra creatures for --count walk the same script in lock-step, spread out behind.
+  player.animator().reset(spawn, *level);
+  // Extra creatures for --count walk the same script in lock-step beside the first.
   std::vector<std::unique_ptr<Entity>> extra;
   for (int i = 1; i < args.count; ++i) {
     extra.push_back(std::make_unique<Entity>(creature, prototypes));
-    extra.back()->animator().reset(spawn + glm::vec2(-0.01f * i, 0.0f), world.level());
+    extra.back()->animator().reset(spawn, *level);
   }
 
   std::ofstream trace;
@@ -209,92 +210,45 @@ int main(int argc, char** argv) {
     trace.open(*args.trace);
     if (!trace) fail(*args.trace + ": cannot open for writing");
     trace << "t,x,root_y,gait";
-    for (int i = 0; i < world.player()->animator().leg_count(); ++i) {
+    for (int i = 0; i < player.animator().leg_count(); ++i) {
       trace << ",foot" << i << "_x,foot" << i << "_y,foot" << i << "_stance";
     }
     trace << "\n";
   }
-
-  const float dt = world.dt();
-  SimProbe probe;
-  std::vector<SegmentMetrics> segments;
-  std::vector<Snapshot> shots;
-  double update_seconds = 0.0;
-  long long updates = 0;
-  long long tick = 0;
   int total_ticks = 0;
   for (const ScriptSegment& s : *script) total_ticks += static_cast<int>(std::lround(s.seconds * args.hz));
-  const int shot_every = std::max(1, total_ticks / 60);
-
-  for (const ScriptSegment& seg : *script) {
-    const Controls controls = seg.controls();
-    SegmentMetrics m;
-    m.command = seg.mode == "stop" ? "stop:" + std::to_string(seg.seconds)
-                                   : seg.mode + ":" + std::to_string(seg.stick) + ":" + std::to_string(seg.seconds);
-    m.commanded_speed = world.player()->desired_velocity(controls);
-    const int ticks = static_cast<int>(std::lround(seg.seconds * args.hz));
-    const int warmup = std::min(ticks / 2, args.hz);  // measure after the first second
-    float x_start = 0.0f;
-    double stride = 0, freq = 0, duty = 0, froude = 0;
-    int measured = 0;
-    std::map<std::string, int> gaits;
-    bool flight = false;
-    for (int t = 0; t < ticks; ++t) {
+  const int shot_every = std::max(1, static_cast<int>(0.4f * args.hz));
+  std::vector<Snapshot> shots;
+  double extra_seconds = 0.0;
+  const float dt = 1.0f / static_cast<float>(args.hz);
+  // Controls of the extra creatures follow the player's script tick by tick.
+  std::vector<Controls> per_tick;
+  for (const ScriptSegment& s : *script) per_tick.insert(per_tick.end(), static_cast<size_t>(std::lround(s.seconds * args.hz)), s.controls());
+  const SimResult result = run_script(player, *level, *script, args.hz, [&](long long tick) {
+    const Animator& a = player.animator();
+    if (!extra.empty()) {
       const auto start = std::chrono::steady_clock::now();
-      world.step(controls);
-      for (auto& e : extra) e->step(dt, controls, world.level());
-      update_seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-      updates += 1 + static_cast<long long>(extra.size());
-      const Animator& a = world.player()->animator();
-      probe.observe(a, world.level());
-      if (t == warmup) x_start = a.x();
-      if (t > warmup) {
-        stride += a.stride_length();
-        freq += a.cycle_frequency();
-        duty += a.duty_factor();
-        froude += a.froude();
-        ++gaits[gait_name(a.gait())];
-        ++measured;
-        bool any_down = false;
-        for (int i = 0; i < a.leg_count(); ++i) any_down |= a.leg_state(i) == LegState::kStance;
-        flight |= a.leg_count() > 0 && !any_down;
-      }
-      if (trace.is_open()) {
-        trace << tick * dt << "," << a.x() << "," << bone_start(a.world_matrices()[a.creature().root]).y << ","
-              << gait_name(a.gait());
-        for (int i = 0; i < a.leg_count(); ++i) {
-          const glm::vec2 f = a.foot_ws(i);
-          trace << "," << f.x << "," << f.y << "," << (a.leg_state(i) == LegState::kStance ? 1 : 0);
-        }
-        trace << "\n";
-      }
-      if (tick % shot_every == 0) shots.push_back({a.world_matrices()});
-      ++tick;
+      for (auto& e : extra) e->step(dt, per_tick[static_cast<size_t>(tick)], *level);
+      extra_seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     }
-    const Animator& a = world.player()->animator();
-    const float window = static_cast<float>(ticks - 1 - warmup) * dt;
-    m.mean_speed = window > 0.0f ? (a.x() - x_start) / window : 0.0f;
-    m.speed_error = m.commanded_speed != 0.0f ? std::fabs(m.mean_speed - m.commanded_speed) / std::fabs(m.commanded_speed) : std::fabs(m.mean_speed);
-    if (measured > 0) {
-      m.stride_length = static_cast<float>(stride / measured);
-      m.cycle_frequency = static_cast<float>(freq / measured);
-      m.duty_factor = static_cast<float>(duty / measured);
-      m.froude = static_cast<float>(froude / measured);
-      int best = -1;
-      for (const auto& [name, n] : gaits) {
-        if (n > best) {
-          best = n;
-          m.gait = name;
-        }
+    if (trace.is_open()) {
+      trace << tick * dt << "," << a.x() << "," << bone_start(a.world_matrices()[a.creature().root]).y << ","
+            << gait_name(a.gait());
+      for (int i = 0; i < a.leg_count(); ++i) {
+        const glm::vec2 f = a.foot_ws(i);
+        trace << "," << f.x << "," << f.y << "," << (a.leg_state(i) == LegState::kStance ? 1 : 0);
       }
+      trace << "\n";
     }
-    m.flight_phase = flight;
-    segments.push_back(m);
-  }
-
-  const Animator& a = world.player()->animator();
+    if (tick % shot_every == 0) shots.push_back({a.world_matrices()});
+  });
+  const SimProbe& probe = result.probe;
+  const std::vector<SegmentMetrics>& segments = result.segments;
+  const Animator& a = player.animator();
+  const double update_seconds = result.update_seconds + extra_seconds;
+  const long long updates = static_cast<long long>(total_ticks) * args.count;
   if (args.svg) {
-    if (Status s = write_file_atomic(*args.svg, strobe_svg(*creature, world.level(), shots)); !s) fail(s.message());
+    if (Status s = write_file_atomic(*args.svg, strobe_svg(*creature, *level, shots)); !s) fail(s.message());
   }
   if (args.json) {
     Json out;

@@ -231,6 +231,9 @@ void Animator::update(float dt, float desired_velocity, const Level& level) {
     for (int b : creature_->back) add(b);
     for (int b : creature_->neck) add(b);
     if (creature_->skull >= 0) add(creature_->skull);
+    // Arms, wings and fins travel with the body: they must not run into walls either.
+    for (int a : arms_) for (int b : creature_->limbs[a].bones) add(b);
+    for (int a : fins_) for (int b : creature_->limbs[a].bones) add(b);
     // Low obstacles are the legs' business (steps); the body only meets walls.
     const float support = root_y_ - root_rest_y_ * params_.stance_height;
     lo.y = std::max(lo.y + 0.3f * hip_height_, support + params_.max_step_up * hip_height_);
@@ -437,6 +440,7 @@ void Animator::reverse(const Level& level) {
   }
   facing_ = -facing_;
   lean_ = 0.0f;
+  snap_body_ = true;  // the body takes its new height and pitch at once (feet must not jump)
 }
 
 // [SECTION] swing planning (set_new_splines) and footholds ----------------------------------
@@ -629,8 +633,10 @@ void Animator::place_body(float dt, const Level& level) {
       target_root = height.front() - rotate(d, angle_extra).y;
     }
   }
-  pitch_ = approach(pitch_, target_pitch, 10.0f * ism, dt);
-  root_y_ = approach(root_y_, target_root, 14.0f * ism, dt);
+  const float smooth_dt = snap_body_ ? 0.0f : dt;
+  snap_body_ = false;
+  pitch_ = approach(pitch_, target_pitch, 10.0f * ism, smooth_dt);
+  root_y_ = approach(root_y_, target_root, 14.0f * ism, smooth_dt);
 
   // Never over-extend a leg on the ground: lower the body (hard clamp, no smoothing).
   for (int pass = 0; pass < 2; ++pass) {

@@ -174,6 +174,7 @@ class Animator {
   float trot_factor_ = 0.0f;
   Gait gait_ = Gait::kIdle;
   bool moving_ = false;
+  bool snap_body_ = false;
   bool blocked_ = false;
   int blocked_dir_ = 0;
   int blocked_leg_ = 0;

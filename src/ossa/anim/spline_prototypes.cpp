@@ -15,7 +15,9 @@ HermiteSpline spline(std::initializer_list<HermiteKey> keys) { return HermiteSpl
 
 Json spline_to_json(const HermiteSpline& s) {
   Json keys = Json::array();
-  for (const HermiteKey& k : s.keys) keys.push_back({{"t", k.t}, {"p", k.p}, {"m", k.m}});
+  for (const HermiteKey& k : s.keys) {
+    keys.push_back({{"t", json_float(k.t)}, {"p", json_float(k.p)}, {"m", json_float(k.m)}});
+  }
   return keys;
 }
 

@@ -1,9 +1,13 @@
 #include "ossa/game/sim.h"
 
 #include <algorithm>
+#include <chrono>
+#include <map>
 #include <cmath>
+#include <cstdio>
 #include <sstream>
 
+#include "ossa/game/player.h"
 #include "ossa/game/world.h"
 
 namespace ossa {
@@ -53,6 +57,73 @@ Result<std::vector<ScriptSegment>> parse_script(std::string_view text) {
   return out;
 }
 
+SimResult run_script(Entity& entity, const Level& level, const std::vector<ScriptSegment>& script, int tick_hz,
+                     const std::function<void(long long)>& on_tick) {
+  SimResult result;
+  const float dt = 1.0f / static_cast<float>(tick_hz);
+  long long tick = 0;
+  for (const ScriptSegment& seg : script) {
+    const Controls controls = seg.controls();
+    SegmentMetrics m;
+    char text[96];
+    if (seg.mode == "stop") {
+      std::snprintf(text, sizeof text, "stop:%g", seg.seconds);
+    } else {
+      std::snprintf(text, sizeof text, "%s:%g:%g", seg.mode.c_str(), seg.stick, seg.seconds);
+    }
+    m.command = text;
+    m.commanded_speed = entity.desired_velocity(controls);
+    const int ticks = static_cast<int>(std::lround(seg.seconds * tick_hz));
+    const int warmup = std::min(ticks / 2, tick_hz);  // measure after the first second
+    float x_start = entity.animator().x();
+    double stride = 0, freq = 0, duty = 0, froude = 0;
+    int measured = 0;
+    std::map<std::string, int> gaits;
+    for (int t = 0; t < ticks; ++t) {
+      const auto start = std::chrono::steady_clock::now();
+      entity.step(dt, controls, level);
+      result.update_seconds += std::chrono::duration<float>(std::chrono::steady_clock::now() - start).count();
+      const Animator& a = entity.animator();
+      result.probe.observe(a, level);
+      if (t == warmup) x_start = a.x();
+      if (t > warmup) {
+        stride += a.stride_length();
+        freq += a.cycle_frequency();
+        duty += a.duty_factor();
+        froude += a.froude();
+        ++gaits[gait_name(a.gait())];
+        ++measured;
+        bool any_down = false;
+        for (int i = 0; i < a.leg_count(); ++i) any_down |= a.leg_state(i) == LegState::kStance;
+        m.flight_phase |= a.leg_count() > 0 && !any_down;
+      }
+      if (on_tick) on_tick(tick);
+      ++tick;
+    }
+    const float window = static_cast<float>(ticks - 1 - warmup) * dt;
+    m.mean_speed = window > 0.0f ? (entity.animator().x() - x_start) / window : 0.0f;
+    m.speed_error = m.commanded_speed != 0.0f ? std::fabs(m.mean_speed - m.commanded_speed) / std::fabs(m.commanded_speed)
+                                              : std::fabs(m.mean_speed);
+    if (measured > 0) {
+      m.stride_length = static_cast<float>(stride / measured);
+      m.cycle_frequency = static_cast<float>(freq / measured);
+      m.duty_factor = static_cast<float>(duty / measured);
+      m.froude = static_cast<float>(froude / measured);
+      int best = -1;
+      for (const auto& [name, n] : gaits) {
+        if (n > best) {
+          best = n;
+          m.gait = name;
+        }
+      }
+    }
+    result.segments.push_back(m);
+  }
+  result.x_reached = entity.animator().x();
+  result.steps = entity.animator().steps();
+  return result;
+}
+
 float penetration_depth(const Level& level, glm::vec2 p) {
   std::vector<int> hits;
   level.overlapping(Box{p - glm::vec2(1e-6f), p + glm::vec2(1e-6f)}, hits);
@@ -90,9 +161,19 @@ void SimProbe::observe(const Animator& a, const Level& level) {
   }
   const bool turned = last_facing_ != 0 && a.facing() != last_facing_;
   bool any_down = false, all_down = true;
+  // How far the feet moved this tick: each foot to the nearest foot of the last tick (when
+  // the creature turns, legs take over each other's feet; the feet themselves stay put).
+  std::vector<glm::vec2> feet(legs);
+  for (int i = 0; i < legs; ++i) feet[i] = a.foot_ws(i);
+  if (ticks_ > 0) {
+    for (int i = 0; i < legs; ++i) {
+      float nearest = 1e30f;
+      for (int j = 0; j < legs; ++j) nearest = std::min(nearest, glm::length(feet[i] - last_foot_[j]));
+      max_foot_jump_m = std::max(max_foot_jump_m, nearest);
+    }
+  }
   for (int i = 0; i < legs; ++i) {
-    const glm::vec2 foot = a.foot_ws(i);
-    if (ticks_ > 0) max_foot_jump_m = std::max(max_foot_jump_m, glm::length(foot - last_foot_[i]));
+    const glm::vec2 foot = feet[i];
     last_foot_[i] = foot;
     if (a.leg_state(i) == LegState::kStance) {
       any_down = true;

@@ -5,6 +5,7 @@
 // limbs into colliders, swing clearance, non-finite values and the pose hash.
 
 #include <cstdint>
+#include <functional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -14,6 +15,8 @@
 #include "ossa/io/result.h"
 
 namespace ossa {
+
+class Entity;
 
 struct ScriptSegment {
   std::string mode;        // "walk", "run" or "stop"
@@ -58,6 +61,19 @@ class SimProbe {
   int last_facing_ = 0;
   uint64_t ticks_ = 0;
 };
+
+struct SimResult {
+  std::vector<SegmentMetrics> segments;
+  SimProbe probe;
+  float x_reached = 0.0f;
+  int steps = 0;
+  float update_seconds = 0.0f;  // wall time spent in Entity::step
+};
+
+// Runs `script` on `entity` (already placed with Animator::reset) over `level` at `tick_hz`.
+// `on_tick` (optional) is called after every tick with the tick index.
+SimResult run_script(Entity& entity, const Level& level, const std::vector<ScriptSegment>& script,
+                     int tick_hz, const std::function<void(long long)>& on_tick = {});
 
 // Deepest a point lies inside any collider (0 when outside or on a surface), metres.
 float penetration_depth(const Level& level, glm::vec2 p_ws);

@@ -45,7 +45,7 @@ Json genome_to_json(const Genome& g) {
     limbs.push_back({{"kind", limb_kind_name(l.kind)},
                      {"girdle", girdle_kind_name(l.girdle)},
                      {"slot", l.slot},
-                     {"angles", {l.angles[0], l.angles[1], l.angles[2]}}});
+                     {"angles", {json_float(l.angles[0]), json_float(l.angles[1]), json_float(l.angles[2])}}});
   }
   return Json{{"format", kFormat},
               {"version", Genome::kVersion},
@@ -53,11 +53,11 @@ Json genome_to_json(const Genome& g) {
               {"seed", g.seed},
               {"pca", pca},
               {"vertebrae", {{"neck", g.neck_vertebrae}, {"back", g.back_vertebrae}, {"tail", g.tail_vertebrae}}},
-              {"rib_interval", g.rib_interval},
+              {"rib_interval", json_float(g.rib_interval)},
               {"limbs", limbs},
               {"contact", contact_mode_name(g.contact)},
               {"skull", g.skull_variant},
-              {"scale", g.scale},
+              {"scale", json_float(g.scale)},
               {"options",
                {{"arc_length_vertebrae", g.options.arc_length_vertebrae},
                 {"neck_girdle", g.options.neck_girdle},

@@ -1,6 +1,8 @@
 #include "ossa/io/json.h"
 
+#include <charconv>
 #include <cmath>
+#include <cstdlib>
 
 #include "ossa/io/file.h"
 
@@ -28,6 +30,14 @@ Result<Json> read_json_file(const std::string& path) {
   Result<std::string> text = read_file(path);
   if (!text) return text.error();
   return parse_json(*text, path);
+}
+
+double json_float(float value) {
+  if (!std::isfinite(value)) return static_cast<double>(value);
+  char buf[32];
+  const auto result = std::to_chars(buf, buf + sizeof buf, value);
+  *result.ptr = '\0';
+  return std::strtod(buf, nullptr);
 }
 
 std::string json_path(std::string_view parent, std::string_view key) {

@@ -25,6 +25,10 @@ Result<Json> read_json_file(const std::string& path);
 std::string json_path(std::string_view parent, std::string_view key);
 std::string json_path(std::string_view parent, size_t index);
 
+// The double whose shortest decimal form equals the float's shortest form, so JSON files
+// show 0.9 rather than 0.8999999761581421 and still load back to the same float.
+double json_float(float value);
+
 // A short description of a value for messages: `a string "abc"`, `-2`, `an array`.
 std::string describe_json(const Json& value);
 

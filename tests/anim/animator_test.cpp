@@ -1,0 +1,234 @@
+#include "ossa/anim/animator.h"
+
+#include <catch2/catch.hpp>
+
+#include <cmath>
+#include <memory>
+
+#include "ossa/game/player.h"
+#include "ossa/gen/skeleton_builder.h"
+#include "ossa/game/sim.h"
+#include "ossa/level/level_io.h"
+#include "ossa/math/rng.h"
+#include "shared/level_scenes.h"
+#include "shared/scenes.h"
+
+using namespace ossa;
+
+namespace {
+
+struct Walker {
+  std::shared_ptr<const Creature> creature;
+  std::unique_ptr<Player> player;
+};
+
+Walker make_walker(Creature c, const Level& level, glm::vec2 at) {
+  Walker w{std::make_shared<const Creature>(std::move(c)), nullptr};
+  w.player = std::make_unique<Player>(w.creature, SplinePrototypes::defaults());
+  w.player->animator().reset(at, level);
+  return w;
+}
+
+Level shipped(const char* name) { return load_level(scenes::source_path(std::string("levels/") + name)).value(); }
+
+std::vector<ScriptSegment> script(const char* text) { return parse_script(text).value(); }
+
+}  // namespace
+
+TEST_CASE("walkers keep the commanded speed, plant their feet and stay out of the ground on flat", "[anim]") {
+  const Level flat = scenes::flat_level(400.0f);
+  for (Creature c : {scenes::biped(), scenes::quadruped(), scenes::three_leg_pairs()}) {
+    INFO(c.name);
+    Walker w = make_walker(c, flat, {2.0f, 1.0f});
+    const SimResult r = run_script(*w.player, flat, script("walk:0.3:6,walk:0.5:8,run:0.8:6,run:1:6,walk:-0.5:6"), 120);
+    for (const SegmentMetrics& s : r.segments) {
+      INFO(s.command);
+      CHECK(s.speed_error <= 0.02f);
+    }
+    CHECK(r.probe.max_stance_slip_m <= 0.001f);
+    CHECK(r.probe.max_penetration_m <= 0.001f);
+    CHECK(r.probe.nan_count == 0);
+    CHECK(r.steps > 20);
+    CHECK(r.probe.min_swing_clearance_m > 0.0f);
+  }
+}
+
+TEST_CASE("walkers climb stairs up and down and cross rough ground without sliding or sinking", "[anim]") {
+  const Level level = shipped("default.json");  // stairs up to a 1 m landing and down again
+  const Level rough = shipped("rough.json");
+  const Level stairs = shipped("stairs.json");  // 30 cm treads: for the quadruped only (below)
+  struct Case { Creature creature; const Level* level; float must_reach; };
+  // Not yet met (issue 5 stays open): the three-leg-pair walker on the default stairs and
+  // the kangaroo's 40 cm flat feet on stairs and rough ground (5-10 mm into a step or bump).
+  const Creature magpie = build_creature(scenes::generator().example("magpie").value()).value();
+  for (const Case& k : {Case{magpie, &level, 21.0f}, Case{scenes::quadruped(), &level, 21.0f},
+                        Case{scenes::quadruped(), &stairs, 30.0f}, Case{scenes::quadruped(), &rough, 40.0f},
+                        Case{scenes::three_leg_pairs(), &rough, 40.0f}}) {
+    INFO(k.creature.name << " on " << (k.level == &rough ? "rough" : k.level == &stairs ? "stairs" : "default"));
+    Walker w = make_walker(k.creature, *k.level, k.level->spawn_ws + glm::vec2(0.0f, 1.0f));
+    const SimResult r = run_script(*w.player, *k.level, script("walk:0.6:30"), 120);
+    CHECK(r.x_reached > k.must_reach);
+    CHECK(r.probe.max_stance_slip_m <= 0.001f);
+    CHECK(r.probe.max_penetration_m <= 0.001f);
+    CHECK(r.probe.nan_count == 0);
+  }
+}
+
+TEST_CASE("after a stop every foot is on the ground within 0.3 s", "[anim]") {
+  const Level flat = scenes::flat_level(200.0f);
+  for (Creature c : {scenes::biped(), scenes::quadruped(), scenes::three_leg_pairs()}) {
+    INFO(c.name);
+    for (float stop_at : {1.03f, 1.21f, 1.37f, 2.5f}) {
+      Walker w = make_walker(c, flat, {2.0f, 1.0f});
+      Animator& a = w.player->animator();
+      const float dt = 1.0f / 120.0f;
+      for (int t = 0; t < static_cast<int>(stop_at * 120); ++t) w.player->step(dt, {0.7f, true}, flat);
+      const float x_stop = a.x();
+      int ticks = 0;
+      bool all_down = false;
+      for (; ticks < 36 && !all_down; ++ticks) {
+        w.player->step(dt, {}, flat);
+        all_down = true;
+        for (int i = 0; i < a.leg_count(); ++i) all_down &= a.leg_state(i) == LegState::kStance;
+        CHECK(a.x() == x_stop);  // the body halts at once
+      }
+      CHECK(all_down);
+      for (int i = 0; i < a.leg_count(); ++i) CHECK(std::fabs(a.foot_ws(i).y) <= 0.001f);
+    }
+  }
+}
+
+TEST_CASE("a biped turning around moves no foot more than 5 cm and keeps its knees bending the right way", "[anim]") {
+  // Quadrupeds and more leg pairs swap feet between girdles when they turn; with unequal
+  // front and hind legs a foot can still shift by up to ~30 cm on that tick (issue 5 open).
+  const Level flat = scenes::flat_level(200.0f);
+  for (Creature c : {scenes::biped()}) {
+    INFO(c.name);
+    for (float turn_at : {2.0f, 2.13f, 2.29f}) {
+      Walker w = make_walker(c, flat, {20.0f, 1.0f});
+      Animator& a = w.player->animator();
+      const float dt = 1.0f / 120.0f;
+      for (int t = 0; t < static_cast<int>(turn_at * 120); ++t) w.player->step(dt, {0.3f, false}, flat);
+      std::vector<glm::vec2> before;
+      for (int i = 0; i < a.leg_count(); ++i) before.push_back(a.foot_ws(i));
+      w.player->step(dt, {-0.3f, false}, flat);
+      REQUIRE(a.facing() == -1);
+      for (int i = 0; i < a.leg_count(); ++i) {
+        float nearest = 1e9f;
+        for (const glm::vec2& b : before) nearest = std::min(nearest, glm::length(a.foot_ws(i) - b));
+        CHECK(nearest <= 0.05f);
+      }
+      // Knees (hind legs) point the way the creature faces, elbows (front legs) away from it.
+      const auto& world = a.world_matrices();
+      for (int i = 0; i < a.leg_count(); ++i) {
+        const Limb& limb = a.leg_limb(i);
+        const glm::vec2 hip = bone_start(world[limb.bones[0]]);
+        const glm::vec2 knee = bone_start(world[limb.bones[1]]);
+        const glm::vec2 ankle = bone_end(world[limb.bones[1]], c.skeleton.length(limb.bones[1]));
+        const float side = (knee.x - 0.5f * (hip.x + ankle.x)) * static_cast<float>(a.facing());
+        if (std::fabs(side) > 0.01f) CHECK((side > 0.0f) == (limb.bend_sign > 0));
+      }
+    }
+  }
+}
+
+TEST_CASE("bipeds running have a flight phase; walking has none", "[anim]") {
+  const Level flat = scenes::flat_level(300.0f);
+  Walker w = make_walker(scenes::biped(), flat, {2.0f, 1.0f});
+  const SimResult r = run_script(*w.player, flat, script("walk:0.4:6,run:1:6"), 120);
+  CHECK_FALSE(r.segments[0].flight_phase);
+  CHECK(r.segments[1].flight_phase);
+  CHECK(r.segments[1].duty_factor < 0.5f);
+  CHECK(r.segments[1].gait == "run");
+}
+
+TEST_CASE("quadrupeds walk, trot and gallop by Froude number", "[anim]") {
+  const Level flat = scenes::flat_level(400.0f);
+  Walker w = make_walker(scenes::quadruped(), flat, {2.0f, 1.0f});
+  Animator& a = w.player->animator();
+  const float h = a.hip_height(), g = a.params().gravity;
+  auto settle = [&](float froude) {
+    const float v = std::sqrt(froude * g * h);
+    for (int t = 0; t < 360; ++t) a.update(1.0f / 120.0f, v, flat);
+    return a.gait();
+  };
+  CHECK(settle(0.2f) == Gait::kWalk);
+  CHECK(settle(1.5f) == Gait::kTrot);
+  const float walk_stride = [&] { settle(0.2f); return a.stride_length(); }();
+  CHECK(settle(3.5f) == Gait::kGallop);
+  CHECK(a.stride_length() > 1.5f * walk_stride);
+}
+
+TEST_CASE("a wall stops the walker at its face; a gap too wide stops it at the edge", "[anim]") {
+  Level wall_level = scenes::flat_level(60.0f);
+  wall_level.add_box(Box::from_corner(12.0f, 0.0f, 0.5f, 3.0f));
+  Walker w = make_walker(scenes::quadruped(), wall_level, {2.0f, 1.0f});
+  SimResult r = run_script(*w.player, wall_level, script("walk:0.6:15"), 120);
+  CHECK(w.player->animator().blocked());
+  CHECK(r.x_reached < 12.0f);
+  CHECK(r.x_reached > 9.0f);
+  CHECK(r.probe.max_penetration_m <= 0.001f);
+
+  Level gap;
+  gap.add_box(Box::from_corner(-5.0f, -3.0f, 20.0f, 3.0f));
+  gap.add_box(Box::from_corner(19.0f, -3.0f, 20.0f, 3.0f));  // a 4 m gap
+  Walker v = make_walker(scenes::biped(), gap, {2.0f, 1.0f});
+  r = run_script(*v.player, gap, script("walk:0.6:15"), 120);
+  CHECK(v.player->animator().blocked());
+  for (int i = 0; i < v.player->animator().leg_count(); ++i) CHECK(v.player->animator().foot_ws(i).x < 15.0f);
+  CHECK(r.x_reached < 17.0f);
+}
+
+TEST_CASE("the same inputs give bit-identical poses", "[anim]") {
+  const Level rough = shipped("rough.json");
+  uint64_t hashes[2];
+  for (uint64_t& h : hashes) {
+    Walker w = make_walker(scenes::quadruped(), rough, rough.spawn_ws + glm::vec2(0.0f, 1.0f));
+    h = run_script(*w.player, rough, script("walk:0.5:4,run:1:3,stop:1,walk:-0.4:3"), 120).probe.pose_hash;
+  }
+  CHECK(hashes[0] == hashes[1]);
+}
+
+TEST_CASE("an hour of random input on random levels gives finite poses", "[anim][long]") {
+  // Ten random creatures on ten random levels of steps and ledges, driven by random sticks.
+  // (Issue 5 also asks for no penetration above 1 mm here; random bodies still push knees,
+  // arms and toes up to decimetres into ledges, so that bar is not claimed yet.)
+  // Under sanitizers the simulated time is cut to a tenth.
+#if defined(__SANITIZE_ADDRESS__)
+  const int seconds_each = 36;
+#else
+  const int seconds_each = 360;
+#endif
+  for (uint64_t seed = 1; seed <= 10; ++seed) {
+    INFO("seed " << seed);
+    Rng rng(seed);
+    Level level;
+    level.add_box(Box::from_corner(-2.0f, -3.0f, 2.0f, 10.0f));
+    level.add_box(Box::from_corner(200.0f, -3.0f, 2.0f, 10.0f));
+    float x = 0.0f, y = 0.0f;
+    while (x < 200.0f) {
+      const float w = static_cast<float>(rng.uniform(0.6, 4.0));
+      y = std::clamp(y + static_cast<float>(rng.uniform(-0.15, 0.15)), -1.0f, 1.0f);
+      level.add_box(Box::from_corner(x, -3.0f, std::min(w, 200.0f - x), y + 3.0f));
+      x += w;
+    }
+    level.spawn_ws = {5.0f, 3.0f};
+    const Genome g = scenes::generator().random(seed * 7919);
+    Walker walker = make_walker(build_creature(g).value(), level, level.spawn_ws);
+    SimProbe probe;
+    Controls c;
+    const float dt = 1.0f / 120.0f;
+    float x_min = 1e9f, x_max = -1e9f;
+    for (int t = 0; t < seconds_each * 120; ++t) {
+      if (t % 180 == 0) c = {static_cast<float>(rng.uniform(-1.0, 1.0)), rng.chance(0.3)};
+      walker.player->step(dt, c, level);
+      probe.observe(walker.player->animator(), level);
+      x_min = std::min(x_min, walker.player->animator().x());
+      x_max = std::max(x_max, walker.player->animator().x());
+    }
+    CHECK(probe.nan_count == 0);
+    CHECK(x_max - x_min > 1.0f);  // it did get around
+    CHECK(x_min > -2.0f);
+    CHECK(x_max < 200.0f);
+  }
+}
