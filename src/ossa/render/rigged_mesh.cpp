@@ -390,7 +390,8 @@ Result<RiggedMesh> convert(const aiScene* scene, const std::string& file, const 
 
 // Guards against inputs that crash Assimp 5.2 itself (found by tests/fuzz/mesh_fuzz.cpp).
 // - a glTF skin without "inverseBindMatrices" (optional in the spec, identity by default)
-//   makes its importer dereference a null accessor.
+//   makes its importer dereference a null accessor;
+// - inverse bind matrices reaching past their buffer view are read out of bounds.
 // glTF (JSON) and GLB (JSON chunk) are pre-parsed for that; anything unparsable is left to
 // Assimp, which reports it.
 Status precheck(std::string_view bytes, const std::string& file) {
@@ -434,6 +435,32 @@ Status precheck(std::string_view bytes, const std::string& file) {
                        (*accessors)[ibm->get<size_t>()].is_object() &&
                        (*accessors)[ibm->get<size_t>()].contains("type") &&
                        (*accessors)[ibm->get<size_t>()]["type"] == Json("MAT4");
+    // Assimp 5.2 copies count · 64 bytes without checking the buffer view: check it here.
+    bool in_bounds = false;
+    if (valid) {
+      const Json& acc = (*accessors)[ibm->get<size_t>()];
+      auto views = doc.find("bufferViews");
+      const Json* joints = skin.contains("joints") ? &skin["joints"] : nullptr;
+      const Json* view_index = acc.contains("bufferView") ? &acc["bufferView"] : nullptr;
+      if (joints && joints->is_array() && view_index && view_index->is_number_unsigned() &&
+          views != doc.end() && views->is_array() && view_index->get<size_t>() < views->size() &&
+          acc.contains("count") && acc["count"].is_number_unsigned() &&
+          acc.contains("componentType") && acc["componentType"] == Json(5126)) {
+        const Json& view = (*views)[view_index->get<size_t>()];
+        const Json offset = acc.contains("byteOffset") ? acc["byteOffset"] : Json(uint64_t{0});
+        const uint64_t count = acc["count"].get<uint64_t>();
+        if (view.is_object() && view.contains("byteLength") && view["byteLength"].is_number_unsigned() &&
+            offset.is_number_unsigned() && count >= joints->size() && count < (1u << 24) &&
+            offset.get<uint64_t>() < (1ull << 40)) {
+          in_bounds = offset.get<uint64_t>() + count * 64 <= view["byteLength"].get<uint64_t>();
+        }
+      }
+    }
+    if (valid && !in_bounds) {
+      return Error::at(file, json_path(json_path("skins", i), "inverseBindMatrices"),
+                       "expected a float MAT4 accessor with one matrix per joint inside its "
+                       "buffer view");
+    }
     if (!valid) {
       return Error::at(file, json_path("skins", i),
                        "expected \"inverseBindMatrices\" (the index of a MAT4 accessor); Assimp "
