@@ -23,6 +23,7 @@
 #include "ossa/render/debug_draw.h"
 #include "ossa/render/gl.h"
 #include "ossa/render/renderer.h"
+#include "ossa/render/rigged_batch.h"
 #include "ossa/render/sprite_mesh.h"
 #include "ossa/render/texture.h"
 
@@ -38,6 +39,7 @@ source (one of):
   --example NAME          one of the 44 example animals (English or German name)
   --random                a random creature (with --seed N, default 1)
   --creature F            a saved genome (.creature.json)
+  --mesh F                a rigged sprite character made in another tool (glTF, FBX, DAE)
 options:
   --seed N                seed of the random choices (default 1)
   --level F               stand on this level's ground under its spawn point
@@ -50,7 +52,7 @@ options:
 )";
 
 struct Args {
-  std::optional<std::string> example, creature, level, png;
+  std::optional<std::string> example, creature, mesh, level, png;
   bool random = false, stats = false, bones = false;
   uint64_t seed = 1;
   int width = 1024, height = 576, count = 1;
@@ -90,6 +92,8 @@ Args parse_args(int argc, char** argv) {
       std::exit(0);
     } else if (flag == "--example") {
       a.example = value();
+    } else if (flag == "--mesh") {
+      a.mesh = value();
     } else if (flag == "--creature") {
       a.creature = value();
     } else if (flag == "--random") {
@@ -114,9 +118,9 @@ Args parse_args(int argc, char** argv) {
       fail("unknown argument \"" + flag + "\" (see --help)");
     }
   }
-  const int sources = (a.example ? 1 : 0) + (a.creature ? 1 : 0) + (a.random ? 1 : 0);
-  if (sources == 0) fail("nothing to render: give --example NAME, --random or --creature F");
-  if (sources > 1) fail("give only one of --example, --random, --creature");
+  const int sources = (a.example ? 1 : 0) + (a.creature ? 1 : 0) + (a.random ? 1 : 0) + (a.mesh ? 1 : 0);
+  if (sources == 0) fail("nothing to render: give --example NAME, --random, --creature F or --mesh F");
+  if (sources > 1) fail("give only one of --example, --random, --creature, --mesh");
   if (!a.png && !a.stats) fail("nothing to do: give --png OUT and/or --stats");
   return a;
 }
@@ -159,8 +163,26 @@ Box rest_bounds(const Creature& c) {
   return b;
 }
 
+// A rigged character as a "creature" for this tool: its skeleton, rest pose and name.
+Creature creature_from_rig(const Skeleton& skeleton, const std::string& name) {
+  Creature c;
+  c.skeleton = skeleton;
+  c.rest_pose = Pose::rest(skeleton);
+  c.name = name;
+  return c;
+}
+
 int run(const Args& a) {
-  Creature creature = make_creature(a);
+  std::optional<RiggedMesh> rig;
+  if (a.mesh) {
+    auto m = load_rigged_mesh(*a.mesh);
+    if (!m.ok()) fail(m.message());
+    rig = std::move(m.value());
+    if (rig->texture_rgba.empty() && !rig->texture_path.empty()) {
+      if (auto t = load_rigged_texture(*rig); !t.ok()) render_log(t.message() + " (drawing with the checker texture)");
+    }
+  }
+  Creature creature = rig ? creature_from_rig(rigged_skeleton(*rig), *a.mesh) : make_creature(a);
 
   std::optional<Level> level;
   if (a.level) {
@@ -189,10 +211,27 @@ int run(const Args& a) {
   Atlas atlas = Atlas::build(sprites, sprite_dir);
 
   // Side by side, 15 % of a body length apart, on the ground under each creature.
-  const Box body = rest_bounds(creature);
+  Box body = rest_bounds(creature);
+  float lift = 0.0f;  // model y that stands on the ground: 0 for creatures, the feet for rigs
+  if (rig) {
+    body = Box{{1e9f, 1e9f}, {-1e9f, -1e9f}};
+    for (const RiggedVertex& v : rig->vertices) {
+      body.min_ws = glm::min(body.min_ws, v.position);
+      body.max_ws = glm::max(body.max_ws, v.position);
+    }
+    lift = -body.min_ws.y;
+    body = body.translated({0.0f, lift});
+  }
   const float spacing = body.width() * 1.15f;
   const glm::vec2 start = level ? level->spawn_ws : glm::vec2(0.0f);
-  const SpriteMesh mesh = build_sprite_mesh(creature, atlas.sprites);
+  const SpriteMesh mesh = rig ? rigged_sprite_mesh(*rig) : build_sprite_mesh(creature, atlas.sprites);
+  Texture rig_texture;
+  if (rig) {
+    rig_texture = rig->texture_rgba.empty()
+                      ? Texture::checker()
+                      : Texture::from_image(Image{rig->texture_width, rig->texture_height, rig->texture_rgba});
+  }
+  const Texture& texture = rig ? rig_texture : atlas.texture;
   CreatureBatch batch;
   Box view{{1e9f, 1e9f}, {-1e9f, -1e9f}};
   for (int i = 0; i < a.count; ++i) {
@@ -207,7 +246,7 @@ int run(const Args& a) {
     }
     const int id = batch.add(mesh, creature.skeleton);
     Transform2D place;
-    place.translation = {x, ground};
+    place.translation = {x, ground + lift};
     batch.set_pose(id, creature.skeleton, creature.rest_pose.locals, place.to_mat2x3());
     view = view.united(body.translated({x, ground}));
   }
@@ -234,7 +273,7 @@ int run(const Args& a) {
   renderer->begin_frame(window->width(), window->height(), sky);
   renderer->draw_debug(debug);
   const int calls_before = renderer->stats.draw_calls;
-  renderer->draw_batch(batch, atlas.texture);
+  renderer->draw_batch(batch, texture);
   const int creature_calls = renderer->stats.draw_calls - calls_before;
   if (a.bones) renderer->draw_bones(batch, {0.9f, 0.1f, 0.1f, 1.0f});
   if (!check_gl("ossa-render")) fail("OpenGL reported an error while drawing (see above)");
