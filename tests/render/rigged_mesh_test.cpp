@@ -3,6 +3,8 @@
 
 #include "ossa/render/rigged_mesh.h"
 
+#include "shared/scenes.h"
+
 #include <catch2/catch.hpp>
 
 #include <assimp/Exporter.hpp>
@@ -400,4 +402,13 @@ TEST_CASE("out-of-plane bones and too many bones are rejected", "[render]") {
   } else {
     CHECK_THAT(many.message(), Catch::Contains("tiny.gltf") && Catch::Contains("255"));
   }
+}
+
+TEST_CASE("a DAE that crashes Assimp's COLLADA parser is reported, not fatal", "[render]") {
+  // Found by tests/fuzz/mesh_fuzz.cpp: Assimp 5.2 dereferences a null pointer on this file.
+  const std::string path = ossa::scenes::source_path("tests/fuzz/seeds/mesh/crash_collada_parser.dae");
+  ossa::Result<ossa::RiggedMesh> mesh = ossa::load_rigged_mesh(path);
+  REQUIRE_FALSE(mesh.ok());
+  CHECK_THAT(mesh.message(), Catch::Contains("crash_collada_parser.dae"));
+  CHECK_THAT(mesh.message(), Catch::Contains("malformed DAE"));
 }
