@@ -1,0 +1,166 @@
+#include "ossa/editor/creature_panel_model.h"
+
+#include <algorithm>
+
+#include "ossa/gen/export_svg.h"
+#include "ossa/gen/skeleton_builder.h"
+#include "ossa/io/file.h"
+#include "ossa/math/rng.h"
+
+namespace ossa {
+
+const char* creature_part_name(CreaturePart part) {
+  switch (part) {
+    case CreaturePart::kLimbs: return "limbs";
+    case CreaturePart::kRibs: return "ribs";
+    case CreaturePart::kTail: return "tail";
+    case CreaturePart::kSkull: return "skull";
+  }
+  return "?";
+}
+
+namespace {
+PcaVector to_pca_vector(const std::array<double, kPcaDims>& a) {
+  PcaVector v;
+  for (int i = 0; i < kPcaDims; ++i) v[i] = a[i];
+  return v;
+}
+}  // namespace
+
+CreaturePanelModel::CreaturePanelModel(const Generator& generator, UndoStack& undo,
+                                       const std::string& start_example)
+    : generator_(&generator), undo_(&undo) {
+  for (const Animal& a : generator.dataset().animals) example_names_.push_back(a.name);
+  std::string name = start_example;
+  if (!generator.dataset().find(name) && !example_names_.empty()) name = example_names_.front();
+  auto g = generator.example(name, seed, conditions);
+  assign(g.ok() ? g.value() : generator.random(seed, conditions));
+  undo.clear(EditorDocument::kGenome);
+}
+
+void CreaturePanelModel::assign(const Genome& g) {
+  genome_ = g;
+  auto built = build_creature(genome_);
+  if (built.ok()) {
+    creature_ = std::make_shared<const Creature>(std::move(built.value()));
+  } else {
+    creature_.reset();
+    error_ = built.message();
+  }
+}
+
+void CreaturePanelModel::set_genome(Genome g, const std::string& label) {
+  if (editing_) {
+    assign(g);
+    return;
+  }
+  const Genome before = genome_;
+  undo_->push({label, EditorDocument::kGenome, [this, g] { assign(g); },
+               [this, before] { assign(before); }});
+}
+
+Status CreaturePanelModel::pick_example(const std::string& name) {
+  auto g = generator_->example(name, seed, conditions);
+  if (!g.ok()) return fail(Error{g.message()});
+  set_genome(g.value(), "example " + name);
+  return {};
+}
+
+void CreaturePanelModel::random() { set_genome(generator_->random(seed, conditions), "random creature"); }
+
+void CreaturePanelModel::set_conditions(const GenerateOptions& options) {
+  conditions = options;
+  random();
+}
+
+void CreaturePanelModel::variation(double sigma) {
+  set_genome(generator_->variation(genome_, seed, sigma), "variation");
+}
+
+void CreaturePanelModel::regenerate(CreaturePart part) {
+  // Complete the same PCA point again from a new seed, then take only the chosen part:
+  // the rest of the genome (and so the rest of the skeleton) is untouched [Z 8.3].
+  Rng rng(seed);
+  GenerateOptions o = conditions;
+  o.genome = genome_.options;
+  const Genome fresh = generator_->complete(genome_.pca, rng, o, genome_.name, seed);
+  Genome g = genome_;
+  switch (part) {
+    case CreaturePart::kLimbs:
+      g.limbs = fresh.limbs;
+      g.contact = fresh.contact;
+      break;
+    case CreaturePart::kRibs: g.rib_interval = fresh.rib_interval; break;
+    case CreaturePart::kTail: g.tail_vertebrae = fresh.tail_vertebrae; break;
+    case CreaturePart::kSkull: g.skull_variant = fresh.skull_variant; break;
+  }
+  set_genome(g, std::string("regenerate ") + creature_part_name(part));
+}
+
+double CreaturePanelModel::sigma(int i) const {
+  if (i < 0 || i >= kPcaDims) return 0.0;
+  return generator_->model().to_sigma(to_pca_vector(genome_.pca))[i];
+}
+
+void CreaturePanelModel::set_sigma(int i, double value) {
+  if (i < 0 || i >= kSliderCount) return;
+  const PcaModel& model = generator_->model();
+  PcaVector s = model.to_sigma(to_pca_vector(genome_.pca));
+  s[i] = std::clamp(value, -double(kSigmaRange), double(kSigmaRange));
+  const PcaVector raw = model.from_sigma(s);
+  Genome g = genome_;
+  for (int d = 0; d < kPcaDims; ++d) {
+    if (d == kWings || d == kLegPairs) continue;  // discrete choices stay as generated
+    g.pca[d] = raw[d];
+  }
+  recompute_rest_angles(g);
+  set_genome(g, "PC" + std::to_string(i + 1));
+}
+
+void CreaturePanelModel::begin_edit(const std::string& label) {
+  if (editing_) return;
+  editing_ = true;
+  edit_before_ = genome_;
+  edit_label_ = label;
+}
+
+void CreaturePanelModel::end_edit() {
+  if (!editing_) return;
+  editing_ = false;
+  const Genome before = edit_before_;
+  const Genome after = genome_;
+  if (genome_to_json(before) == genome_to_json(after)) return;
+  undo_->push({edit_label_, EditorDocument::kGenome, [this, after] { assign(after); },
+               [this, before] { assign(before); }},
+              true);
+}
+
+Status CreaturePanelModel::save_genome(const std::string& path) {
+  Status s = ossa::save_genome(path, genome_);
+  if (!s.ok()) return fail(s);
+  path_ = path;
+  undo_->mark_saved(EditorDocument::kGenome);
+  error_.clear();
+  note_ = "saved " + path;
+  return s;
+}
+
+Status CreaturePanelModel::load_genome(const std::string& path) {
+  auto g = ossa::load_genome(path);
+  if (!g.ok()) return fail(Error{g.message()});
+  set_genome(g.value(), "load genome");
+  path_ = path;
+  undo_->mark_saved(EditorDocument::kGenome);
+  error_.clear();
+  note_ = "loaded " + path;
+  return {};
+}
+
+Status CreaturePanelModel::export_svg(const std::string& path) const {
+  if (!creature_) return fail(Error{"no creature to export"});
+  SvgOptions o;
+  o.skull_variant = genome_.skull_variant;
+  return fail(write_file_atomic(path, creature_svg(*creature_, o)));
+}
+
+}  // namespace ossa

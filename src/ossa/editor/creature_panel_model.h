@@ -1,0 +1,108 @@
+#pragma once
+// CreaturePanelModel — the creature panel without any UI (DESIGN.md §10, [Z 8.3]): pick an
+// example or draw a random creature with a seed under conditions (wings, leg pairs, weight,
+// neck girdle, several limbs per girdle), move the first 8 principal components in σ units,
+// draw variations with a σ, regenerate one part (limbs, ribs, tail, skull) keeping the rest,
+// save / load the genome, export SVG, and hand the creature to the game (apply to the player,
+// spawn as an NPC) through callbacks.
+//
+// Step-wise generation [Z 8.3]: every change of the genome is one UndoStack step (document
+// kGenome); a slider drag (begin_edit … set_sigma … end_edit) is one step.
+//
+// Exports: SVG only. glTF export needs Assimp, which lives in tools/ossa-gen, not in the
+// core or editor libraries; PNG is not offered by the panel either (the game's screenshot key
+// captures the viewport).
+#include <array>
+#include <functional>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "ossa/editor/undo_stack.h"
+#include "ossa/gen/creature.h"
+#include "ossa/gen/generator.h"
+#include "ossa/io/result.h"
+
+namespace ossa {
+
+enum class CreaturePart : int { kLimbs, kRibs, kTail, kSkull };
+const char* creature_part_name(CreaturePart part);
+
+class CreaturePanelModel {
+ public:
+  static constexpr int kSliderCount = 8;      // principal components shown as sliders
+  static constexpr float kSigmaRange = 3.0f;  // slider range ±3 σ
+
+  using CreatureFn = std::function<void(std::shared_ptr<const Creature>)>;
+  // `generator` and `undo` must outlive the model. Starts with example `start_example`
+  // (or the first example when that name is unknown).
+  CreaturePanelModel(const Generator& generator, UndoStack& undo,
+                     const std::string& start_example = "horse");
+
+  CreatureFn on_apply_to_player;   // called by apply_to_player()
+  CreatureFn on_spawn_npc;         // called by spawn_npc()
+
+  const Genome& genome() const { return genome_; }
+  // The creature built from genome() (nullptr with error() set if the build failed).
+  std::shared_ptr<const Creature> creature() const { return creature_; }
+  const std::vector<std::string>& example_names() const { return example_names_; }
+
+  // Conditions for random creatures (and the options of examples).
+  GenerateOptions conditions;
+  uint64_t seed = 1;
+
+  // ---- Generation (each one undo step) -------------------------------------------------
+  Status pick_example(const std::string& name);
+  void random();                   // Generator::random(seed, conditions)
+  // Changes the conditions and regenerates: the σ sliders follow the new genome.
+  void set_conditions(const GenerateOptions& options);
+  // A variation of the current genome with `sigma` (σ units) from `seed`.
+  void variation(double sigma);
+  // Redraws one part from `seed` keeping everything else.
+  void regenerate(CreaturePart part);
+
+  // ---- σ sliders -------------------------------------------------------------------------
+  // Coordinate of the current genome along principal component i (0 <= i < kSliderCount),
+  // in standard deviations.
+  double sigma(int i) const;
+  // Moves component i to `value` σ (clamped to ±kSigmaRange); the other components stay.
+  // Wings and leg pairs keep their values (the limbs are discrete choices already made);
+  // rest angles are recomputed. One undo step unless inside begin_edit/end_edit.
+  void set_sigma(int i, double value);
+  void begin_edit(const std::string& label);
+  void end_edit();
+
+  // ---- Files -----------------------------------------------------------------------------
+  bool dirty() const { return undo_->is_dirty(EditorDocument::kGenome); }
+  const std::string& path() const { return path_; }
+  Status save_genome(const std::string& path);
+  Status load_genome(const std::string& path);   // one undo step; keeps the genome on error
+  Status export_svg(const std::string& path) const;
+
+  void apply_to_player() const { if (creature_ && on_apply_to_player) on_apply_to_player(creature_); }
+  void spawn_npc() const { if (creature_ && on_spawn_npc) on_spawn_npc(creature_); }
+
+  const std::string& last_error() const { return error_; }
+  const std::string& last_note() const { return note_; }
+
+  // Replaces the genome as one undo step labelled `label`.
+  void set_genome(Genome genome, const std::string& label);
+
+ private:
+  void assign(const Genome& g);   // set + rebuild the creature
+  Status fail(const Status& s) const { if (!s.ok()) error_ = s.message(); return s; }
+
+  const Generator* generator_;
+  UndoStack* undo_;
+  Genome genome_;
+  std::shared_ptr<const Creature> creature_;
+  std::vector<std::string> example_names_;
+  std::string path_;
+  mutable std::string error_;
+  std::string note_;
+  bool editing_ = false;
+  Genome edit_before_;
+  std::string edit_label_;
+};
+
+}  // namespace ossa

@@ -1,0 +1,174 @@
+// EditorSuite: the creature panel window — example picker, random with seed and conditions,
+// σ sliders of the first principal components, variations, part regeneration, genome files,
+// SVG export, apply / spawn — with a rest-pose preview of the skeleton.
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <limits>
+
+#include "ossa/editor/editor_suite.h"
+#include "ossa/editor/editor_suite_internal.h"
+#include "ossa/skeleton/pose.h"
+
+#include <glm/common.hpp>
+
+namespace ossa {
+
+namespace {
+// The creature's bones in its rest pose, fitted into a box on the panel.
+void draw_creature_preview(const Creature& creature, ImVec2 size) {
+  const ImVec2 o = ImGui::GetCursorScreenPos();
+  ImGui::Dummy(size);
+  ImDrawList* dl = ImGui::GetWindowDrawList();
+  dl->AddRectFilled(o, ImVec2(o.x + size.x, o.y + size.y), IM_COL32(28, 30, 36, 255));
+  const auto mats = model_matrices(creature.skeleton, creature.rest_pose.locals);
+  glm::vec2 lo(std::numeric_limits<float>::max()), hi(-std::numeric_limits<float>::max());
+  std::vector<std::pair<glm::vec2, glm::vec2>> segs;
+  for (int b = 0; b < creature.skeleton.bone_count(); ++b) {
+    const glm::vec2 a = bone_start(mats[b]), e = bone_end(mats[b], creature.skeleton.length(b));
+    if (!std::isfinite(a.x + a.y + e.x + e.y)) continue;
+    segs.push_back({a, e});
+    lo = glm::min(lo, glm::min(a, e));
+    hi = glm::max(hi, glm::max(a, e));
+  }
+  lo.y = std::min(lo.y, 0.0f);
+  if (segs.empty()) return;
+  const glm::vec2 ext = glm::max(hi - lo, glm::vec2(1e-3f));
+  const float k = 0.9f * std::min(size.x / ext.x, size.y / ext.y);
+  const glm::vec2 mid = 0.5f * (lo + hi);
+  auto to_px = [&](glm::vec2 p) {
+    return ImVec2(o.x + 0.5f * size.x + (p.x - mid.x) * k, o.y + 0.5f * size.y - (p.y - mid.y) * k);
+  };
+  dl->AddLine(to_px({lo.x - ext.x, 0.0f}), to_px({hi.x + ext.x, 0.0f}), IM_COL32(120, 100, 70, 255));
+  for (const auto& [a, e] : segs) dl->AddLine(to_px(a), to_px(e), IM_COL32(235, 225, 200, 255), 2.0f);
+}
+
+bool optional_int(const char* label, std::optional<int>& v, int lo, int hi, int fallback) {
+  bool on = v.has_value();
+  bool changed = ImGui::Checkbox(label, &on);
+  if (changed) v = on ? std::optional<int>(fallback) : std::nullopt;
+  if (on) {
+    ImGui::SameLine();
+    ImGui::SetNextItemWidth(90);
+    int x = *v;
+    ImGui::PushID(label);
+    if (ImGui::SliderInt("##v", &x, lo, hi)) {
+      v = x;
+      changed = true;
+    }
+    ImGui::PopID();
+  }
+  return changed;
+}
+}  // namespace
+
+void EditorSuite::draw_creature_window() {
+  const std::string dirty = creature_ && creature_->dirty() ? " *" : "";
+  const std::string title = "Creature: " + (creature_ ? creature_->genome().name : std::string("-")) +
+                            dirty + "###creature";
+  ImGui::SetNextWindowPos(ImVec2(920, 30), ImGuiCond_FirstUseEver);
+  ImGui::SetNextWindowSize(ImVec2(350, 680), ImGuiCond_FirstUseEver);
+  if (!ImGui::Begin(title.c_str(), &show_creature)) {
+    ImGui::End();
+    return;
+  }
+  if (!creature_) {
+    ImGui::TextWrapped("No creature dataset loaded (assets/creatures/examples.json): the creature panel is unavailable.");
+    ImGui::End();
+    return;
+  }
+  CreaturePanelModel& m = *creature_;
+  if (auto c = m.creature()) draw_creature_preview(*c, ImVec2(ImGui::GetContentRegionAvail().x, 130));
+
+  // Example picker and random.
+  const auto& names = m.example_names();
+  creature_example_ = std::clamp(creature_example_, 0, std::max(0, static_cast<int>(names.size()) - 1));
+  ImGui::SetNextItemWidth(150);
+  if (!names.empty() && ImGui::BeginCombo("example", names[creature_example_].c_str())) {
+    for (int i = 0; i < static_cast<int>(names.size()); ++i) {
+      if (ImGui::Selectable(names[i].c_str(), i == creature_example_)) {
+        creature_example_ = i;
+        (void)m.pick_example(names[i]);
+      }
+    }
+    ImGui::EndCombo();
+  }
+  int seed = static_cast<int>(m.seed);
+  ImGui::SetNextItemWidth(110);
+  if (ImGui::InputInt("seed", &seed)) m.seed = static_cast<uint64_t>(std::max(seed, 0));
+  ImGui::SameLine();
+  if (ImGui::Button("Random")) m.random();
+
+  // Conditions: any change regenerates, and the σ sliders follow the new genome.
+  if (ImGui::TreeNodeEx("Conditions", ImGuiTreeNodeFlags_DefaultOpen)) {
+    GenerateOptions o = m.conditions;
+    bool changed = optional_int("wings", o.wings, 0, 1, 1);
+    changed |= optional_int("leg pairs", o.leg_pairs, 0, 2, 2);
+    bool w_on = o.weight_kg.has_value();
+    if (ImGui::Checkbox("weight", &w_on)) {
+      o.weight_kg = w_on ? std::optional<double>(50.0) : std::nullopt;
+      changed = true;
+    }
+    if (w_on) {
+      ImGui::SameLine();
+      ImGui::SetNextItemWidth(120);
+      float kg = static_cast<float>(*o.weight_kg);
+      // The value follows the slider; the creature regenerates when the slider is released.
+      if (ImGui::SliderFloat("kg", &kg, 0.01f, 10000.0f, "%.2f", ImGuiSliderFlags_Logarithmic)) o.weight_kg = kg;
+      if (ImGui::IsItemDeactivatedAfterEdit()) changed = true;
+    }
+    changed |= ImGui::Checkbox("neck girdle", &o.genome.neck_girdle);
+    ImGui::SameLine();
+    changed |= ImGui::Checkbox("several limbs per girdle", &o.genome.multi_limb);
+    if (changed) m.set_conditions(o); else m.conditions = o;
+    ImGui::TreePop();
+  }
+
+  // σ sliders: one drag = one undo step.
+  if (ImGui::TreeNodeEx("Principal components (σ)", ImGuiTreeNodeFlags_DefaultOpen)) {
+    for (int i = 0; i < CreaturePanelModel::kSliderCount; ++i) {
+      float v = static_cast<float>(m.sigma(i));
+      const std::string label = "PC" + std::to_string(i + 1);
+      ImGui::SetNextItemWidth(200);
+      const bool moved = ImGui::SliderFloat(label.c_str(), &v, -CreaturePanelModel::kSigmaRange,
+                                            CreaturePanelModel::kSigmaRange, "%+.2f σ");
+      if (ImGui::IsItemActivated()) m.begin_edit(label);
+      if (moved) m.set_sigma(i, v);
+      if (ImGui::IsItemDeactivated()) m.end_edit();
+    }
+    ImGui::TreePop();
+  }
+
+  ImGui::SetNextItemWidth(120);
+  ImGui::SliderFloat("σ##var", &variation_sigma_, 0.05f, 2.0f, "%.2f");
+  ImGui::SameLine();
+  if (ImGui::Button("Variation")) m.variation(variation_sigma_);
+  ImGui::TextUnformatted("Regenerate:");
+  for (CreaturePart p : {CreaturePart::kLimbs, CreaturePart::kRibs, CreaturePart::kTail, CreaturePart::kSkull}) {
+    ImGui::SameLine();
+    if (ImGui::Button(creature_part_name(p))) m.regenerate(p);
+  }
+  ImGui::Separator();
+  ImGui::SetNextItemWidth(-1);
+  ImGui::InputText("##genome", genome_path_buf_, sizeof genome_path_buf_);
+  if (ImGui::Button("Save genome")) (void)m.save_genome(genome_path_buf_);
+  ImGui::SameLine();
+  if (ImGui::Button("Load genome")) {
+    const std::string path = genome_path_buf_;
+    confirm_discard(EditorDocument::kGenome, [this, path] { (void)creature_->load_genome(path); });
+  }
+  ImGui::SetNextItemWidth(-1);
+  ImGui::InputText("##svg", svg_path_buf_, sizeof svg_path_buf_);
+  if (ImGui::Button("Export SVG")) {
+    if (m.export_svg(svg_path_buf_).ok()) creature_message_ = std::string("exported ") + svg_path_buf_;
+  }
+  ImGui::SameLine();
+  ImGui::TextDisabled("(glTF: ossa-gen)");
+  if (ImGui::Button("Apply to player")) m.apply_to_player();
+  ImGui::SameLine();
+  if (ImGui::Button("Spawn NPC")) m.spawn_npc();
+  show_messages(m.last_error(), m.last_note().empty() ? creature_message_ : m.last_note());
+  ImGui::End();
+}
+
+}  // namespace ossa

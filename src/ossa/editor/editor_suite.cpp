@@ -1,0 +1,244 @@
+#include "ossa/editor/editor_suite.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "ossa/editor/editor_suite_internal.h"
+#include "ossa/game/world.h"
+#include "ossa/render/debug_draw.h"
+
+namespace ossa {
+
+namespace {
+constexpr float kPollInterval = 0.5f;    // seconds between file polls (hot reload)
+constexpr float kPickRadiusPx = 7.0f;    // handle / spawn pick tolerance in pixels
+
+// Pixel (x right, y down) → world, the inverse of Camera2D::world_to_pixel.
+glm::vec2 pixel_to_world(const Camera2D& c, glm::vec2 px, glm::vec2 viewport) {
+  const glm::vec2 ndc{px.x / viewport.x * 2.0f - 1.0f, 1.0f - px.y / viewport.y * 2.0f};
+  return c.center_ws + glm::vec2(ndc.x * c.half_height * c.aspect, ndc.y * c.half_height);
+}
+}  // namespace
+
+EditorSuite::EditorSuite(World& world, const Generator* generator, EditorPaths paths)
+    : world_(&world), generator_(generator), paths_(std::move(paths)),
+      canvases_(new Canvas[3]) {
+  level_ = std::make_unique<LevelEditorModel>(world.level(), undo_);
+  if (!paths_.level_file.empty()) level_->set_path(paths_.level_file);
+  World* w = world_;
+  spline_ = std::make_unique<SplineEditorModel>(
+      world.prototypes(), undo_, [w](const SplinePrototypes& p) { w->set_prototypes(p); });
+  if (!paths_.prototypes_file.empty()) spline_->set_path(paths_.prototypes_file);
+  tuning_ = std::make_unique<TuningModel>(world.params(), undo_,
+                                          [w](const AnimatorParams& p) { w->set_params(p); });
+  if (generator_) {
+    creature_ = std::make_unique<CreaturePanelModel>(*generator_, undo_);
+    creature_->on_apply_to_player = [w](std::shared_ptr<const Creature> c) {
+      if (w->player()) {
+        w->set_player_creature(std::move(c));
+      } else {
+        w->spawn_player(std::move(c), w->level().spawn_ws);
+      }
+    };
+    creature_->on_spawn_npc = [w](std::shared_ptr<const Creature> c) {
+      // Beside the player (ground search starts a metre above its feet), else at the spawn.
+      glm::vec2 at = w->level().spawn_ws;
+      if (const Player* p = w->player())
+        at = {p->animator().x() + 1.0f, p->animator().model_to_world().m[5] + 1.0f};
+      w->spawn_npc(std::move(c), at, 1000u + static_cast<uint64_t>(w->npc_count()));
+    };
+  }
+  copy_to_buffer(level_path_buf_, sizeof level_path_buf_,
+                 paths_.level_file.empty() ? paths_.levels_dir + "/new.json" : paths_.level_file);
+  copy_to_buffer(tiled_path_buf_, sizeof tiled_path_buf_, paths_.export_dir + "/level.tiled.json");
+  copy_to_buffer(proto_path_buf_, sizeof proto_path_buf_,
+                 paths_.prototypes_file.empty() ? "prototypes.json" : paths_.prototypes_file);
+  copy_to_buffer(genome_path_buf_, sizeof genome_path_buf_, paths_.genome_file);
+  copy_to_buffer(svg_path_buf_, sizeof svg_path_buf_, paths_.export_dir + "/creature.svg");
+  undo_.clear();
+}
+
+EditorSuite::~EditorSuite() = default;
+
+void EditorSuite::update(float dt) {
+  if (const Player* p = world_->player()) tuning_->sample(p->animator(), dt);
+  level_files_age_ += dt;
+  poll_timer_ += dt;
+  if (poll_timer_ >= kPollInterval) {
+    poll_timer_ = 0.0f;
+    level_->poll_file();
+    spline_->poll_file();
+  }
+}
+
+bool EditorSuite::wants_keyboard() const {
+  return ImGui::GetCurrentContext() != nullptr && ImGui::GetIO().WantCaptureKeyboard;
+}
+
+bool EditorSuite::has_unsaved_changes() const {
+  return undo_.is_dirty(EditorDocument::kLevel) || undo_.is_dirty(EditorDocument::kPrototypes) ||
+         undo_.is_dirty(EditorDocument::kGenome);
+}
+
+bool EditorSuite::request_quit() {
+  if (!has_unsaved_changes()) return true;
+  pending_discard_ = [this] { quit_confirmed_ = true; };
+  open_discard_popup_ = true;
+  return false;
+}
+
+void EditorSuite::confirm_discard(EditorDocument document, std::function<void()> action) {
+  if (!undo_.is_dirty(document)) {
+    action();
+    return;
+  }
+  pending_discard_ = std::move(action);
+  open_discard_popup_ = true;
+}
+
+bool EditorSuite::handle_mouse(glm::vec2 mouse_px, bool down, float /*wheel*/,
+                               const Camera2D& camera, glm::vec2 viewport_px) {
+  last_camera_ = camera;
+  last_viewport_px_ = viewport_px;
+  const bool pressed = down && !mouse_was_down_;
+  const bool released = !down && mouse_was_down_;
+  mouse_was_down_ = down;
+  const glm::vec2 p_ws = pixel_to_world(camera, mouse_px, viewport_px);
+  const float radius_ws = kPickRadiusPx * 2.0f * camera.half_height / viewport_px.y;
+
+  if (mouse_drag_) {  // a drag that started in the viewport owns the mouse until release
+    if (released) {
+      level_->end_drag();
+      mouse_drag_ = false;
+    } else {
+      level_->drag_to(p_ws);
+    }
+    return true;
+  }
+  const bool imgui_has_mouse = ImGui::GetCurrentContext() && ImGui::GetIO().WantCaptureMouse;
+  if (!level_edit_mode || imgui_has_mouse) {
+    hovered_box_.reset();
+    return false;
+  }
+  const LevelHit hover = level_->hit_test(p_ws, radius_ws);
+  hovered_box_ = hover.kind == LevelHit::Kind::kBox ? std::optional<int>(hover.box) : std::nullopt;
+  if (pressed) {
+    const LevelHit hit = level_->begin_drag(p_ws, radius_ws);
+    mouse_drag_ = hit.kind != LevelHit::Kind::kNone;
+    if (!mouse_drag_) level_->end_drag();
+    return mouse_drag_;
+  }
+  return false;
+}
+
+void EditorSuite::draw_viewport(DebugDraw& debug) const {
+  if (!level_edit_mode) return;
+  const Level& level = level_->level();
+  const Box view = last_camera_.visible_box();
+  // Grid: only when it is not denser than ~8 px per cell.
+  const float g = level_->options.grid_size;
+  const float px_per_m = last_viewport_px_.y / (2.0f * last_camera_.half_height);
+  if (level_->options.snap && g > 0.0f && g * px_per_m >= 8.0f) {
+    const glm::vec4 c{1.0f, 1.0f, 1.0f, 0.08f};
+    for (float x = std::floor(view.min_ws.x / g) * g; x <= view.max_ws.x; x += g)
+      debug.add_line({x, view.min_ws.y}, {x, view.max_ws.y}, c);
+    for (float y = std::floor(view.min_ws.y / g) * g; y <= view.max_ws.y; y += g)
+      debug.add_line({view.min_ws.x, y}, {view.max_ws.x, y}, c);
+  }
+  if (hovered_box_ && *hovered_box_ < level.size() && hovered_box_ != level_->selected())
+    debug.add_box(level.box(*hovered_box_), {1.0f, 1.0f, 0.6f, 0.9f});
+  if (auto s = level_->selected(); s && *s < level.size()) {
+    const Box& b = level.box(*s);
+    debug.add_box(b, {1.0f, 0.75f, 0.1f, 0.25f}, true);
+    debug.add_box(b, {1.0f, 0.75f, 0.1f, 1.0f});
+    const float h = 4.0f / px_per_m;  // 8 px handles
+    for (int i = 0; i < static_cast<int>(BoxHandle::kCount); ++i) {
+      const glm::vec2 q = handle_position(b, static_cast<BoxHandle>(i));
+      debug.add_box(Box::from_center(q, glm::vec2(h)), {1.0f, 1.0f, 1.0f, 1.0f}, true);
+      debug.add_box(Box::from_center(q, glm::vec2(h)), {0.1f, 0.1f, 0.1f, 1.0f});
+    }
+  }
+  // Spawn: a green flag pole with a cross at its foot.
+  const glm::vec2 s = level.spawn_ws;
+  const float r = kPickRadiusPx / px_per_m;
+  debug.add_line(s, s + glm::vec2(0.0f, 4.0f * r), {0.2f, 1.0f, 0.3f, 1.0f});
+  debug.add_triangle(s + glm::vec2(0.0f, 4.0f * r), s + glm::vec2(0.0f, 2.6f * r),
+                     s + glm::vec2(2.0f * r, 3.3f * r), {0.2f, 1.0f, 0.3f, 1.0f});
+  debug.add_cross(s, r, {0.2f, 1.0f, 0.3f, 1.0f});
+}
+
+void EditorSuite::handle_shortcuts() {
+  const ImGuiIO& io = ImGui::GetIO();
+  if (io.WantTextInput) return;
+  if (io.KeyCtrl && ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Z), false)) {
+    if (io.KeyShift) undo_.redo(); else undo_.undo();
+  }
+  if (io.KeyCtrl && ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Y), false)) undo_.redo();
+  if (!io.WantCaptureKeyboard && level_edit_mode &&
+      ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Delete), false))
+    level_->delete_selected();
+}
+
+void EditorSuite::draw_ui() {
+  handle_shortcuts();
+  if (ImGui::BeginMainMenuBar()) {
+    if (ImGui::BeginMenu("Edit")) {
+      const std::string u = "Undo " + undo_.undo_label(), r = "Redo " + undo_.redo_label();
+      if (ImGui::MenuItem(u.c_str(), "Ctrl+Z", false, undo_.can_undo())) undo_.undo();
+      if (ImGui::MenuItem(r.c_str(), "Ctrl+Y", false, undo_.can_redo())) undo_.redo();
+      ImGui::EndMenu();
+    }
+    if (ImGui::BeginMenu("Windows")) {
+      ImGui::MenuItem("Level editor", nullptr, &show_level);
+      ImGui::MenuItem("Spline prototypes", nullptr, &show_splines);
+      ImGui::MenuItem("Creature", nullptr, &show_creature);
+      ImGui::MenuItem("Tuning", nullptr, &show_tuning);
+      ImGui::MenuItem("Edit level in viewport", nullptr, &level_edit_mode);
+      ImGui::EndMenu();
+    }
+    if (has_unsaved_changes()) ImGui::TextColored(ImVec4(1.0f, 0.8f, 0.3f, 1.0f), "  unsaved changes");
+    ImGui::EndMainMenuBar();
+  }
+  if (show_level) draw_level_window();
+  if (show_splines) draw_spline_window();
+  if (show_creature) draw_creature_window();
+  if (show_tuning) draw_tuning_window();
+  draw_popups();
+}
+
+void EditorSuite::draw_popups() {
+  if (open_discard_popup_) {
+    ImGui::OpenPopup("Discard unsaved changes?");
+    open_discard_popup_ = false;
+  }
+  if (ImGui::BeginPopupModal("Discard unsaved changes?", nullptr, ImGuiWindowFlags_AlwaysAutoResize)) {
+    ImGui::TextUnformatted("There are unsaved changes. They will be lost.");
+    for (int d = 0; d < kEditorDocumentCount; ++d) {
+      static const char* kNames[] = {"level", "spline prototypes", "creature genome", "tuning"};
+      if (d != static_cast<int>(EditorDocument::kTuning) && undo_.is_dirty(static_cast<EditorDocument>(d)))
+        ImGui::BulletText("%s", kNames[d]);
+    }
+    if (ImGui::Button("Discard")) {
+      auto action = std::move(pending_discard_);
+      pending_discard_ = nullptr;
+      if (action) action();
+      ImGui::CloseCurrentPopup();
+    }
+    ImGui::SameLine();
+    if (ImGui::Button("Cancel")) {
+      pending_discard_ = nullptr;
+      ImGui::CloseCurrentPopup();
+    }
+    ImGui::EndPopup();
+  }
+}
+
+std::optional<glm::vec2> EditorSuite::spline_key_screen_px(SplineVersion version, int key) const {
+  const Canvas& c = canvases_[static_cast<int>(version)];
+  const auto& keys = spline_->spline(version).keys;
+  if (!c.drawn || key < 0 || key >= static_cast<int>(keys.size())) return std::nullopt;
+  const ImVec2 s = c.to_screen(spline_->key_position(version, key));
+  return glm::vec2(s.x, s.y);
+}
+
+}  // namespace ossa

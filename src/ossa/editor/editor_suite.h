@@ -1,0 +1,172 @@
+#pragma once
+// EditorSuite — the single entry point the game calls for all editors (DESIGN.md §10,
+// [T 4.3, 4.4.2], [Z 8.3]): spline prototypes, level, creature panel and tuning panel, one
+// shared UndoStack (Ctrl+Z / Ctrl+Y), unsaved-change markers in the window titles, a
+// confirmation before unsaved work is discarded, and hot reload of the level and prototype
+// files. The models (level_editor_model.h, spline_editor_model.h, creature_panel_model.h,
+// tuning_model.h) hold all logic and are usable without ImGui; this class draws them.
+//
+// Integration, once per frame of the game loop (ImGui context and backends are the game's):
+//
+//   EditorSuite editors(world, &generator, paths);      // after the World has its player
+//   ...
+//   editors.update(frame_dt);                           // footfall sampling, hot reload
+//   bool used = editors.handle_mouse(mouse_px, left_down, wheel, camera, viewport_px);
+//   if (!used && !ImGui::GetIO().WantCaptureMouse) { /* game mouse: pan, zoom */ }
+//   if (!editors.wants_keyboard()) { /* game keys */ }
+//   ImGui_ImplOpenGL3_NewFrame(); ImGui_ImplSDL2_NewFrame(); ImGui::NewFrame();
+//   editors.draw_ui();                                  // all editor windows and popups
+//   ImGui::Render();
+//   debug.clear(); editors.draw_viewport(debug);        // selection, handles, grid, spawn
+//   renderer.draw_debug(debug); ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
+//   if (user_closed_window && editors.request_quit()) break;   // else a popup asks first
+//   if (editors.quit_confirmed()) break;
+//
+// Space: handle_mouse takes the mouse in viewport pixels (x right, y down, origin top-left)
+// and the Camera2D the game drew with; picking happens in world metres.
+// Live: level edits change World::level() in place; spline and tuning edits reach the World
+// at once (set_prototypes / set_params); the creature panel applies to the player or spawns
+// NPCs on request. The world keeps stepping while you edit.
+#include <functional>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <glm/vec2.hpp>
+
+#include "ossa/editor/creature_panel_model.h"
+#include "ossa/editor/level_editor_model.h"
+#include "ossa/editor/spline_editor_model.h"
+#include "ossa/editor/tuning_model.h"
+#include "ossa/editor/undo_stack.h"
+#include "ossa/render/renderer.h"
+
+namespace ossa {
+
+class DebugDraw;
+class World;
+
+struct EditorPaths {
+  std::string levels_dir = "levels";               // listed in the level editor (*.json)
+  std::string level_file;                          // the file World::level() came from ("" = none)
+  std::string prototypes_file;                     // the file the prototypes came from ("" = none)
+  std::string genome_file = "creature.json";       // default path of genome save / load
+  std::string export_dir = ".";                    // SVG exports and Tiled exports go here
+};
+
+class EditorSuite {
+ public:
+  // `world` and `generator` must outlive the suite. `generator` may be null: the creature
+  // panel then says so and stays empty. Nothing is loaded: the World's current level and
+  // prototypes are what is edited, with paths.level_file / paths.prototypes_file as their files.
+  EditorSuite(World& world, const Generator* generator, EditorPaths paths);
+  ~EditorSuite();
+
+  // Which windows draw_ui shows (the game may bind keys to these).
+  bool show_level = true, show_splines = true, show_creature = true, show_tuning = true;
+  // Level editing in the viewport (handle_mouse picks boxes only while this is on).
+  bool level_edit_mode = true;
+
+  // Per frame: samples the player's legs for the footfall diagram and polls the level and
+  // prototype files about twice a second (hot reload; a file that fails to parse keeps the
+  // current state and shows the error). dt in seconds.
+  void update(float dt);
+
+  // Draws every editor window and the popups; handles Ctrl+Z / Ctrl+Y (and Delete for the
+  // selected box) when no text field has the keyboard. Call between ImGui::NewFrame() and
+  // ImGui::Render().
+  void draw_ui();
+
+  // Adds the level editor's overlay in world space: grid around the view, the selected box
+  // with its eight resize handles, the hovered box, and the spawn marker.
+  void draw_viewport(DebugDraw& debug) const;
+
+  // Level editing in the game viewport. Call once per frame with the current mouse state:
+  // mouse_px in viewport pixels, `down` = left button held, wheel = scroll this frame
+  // (unused by the editor: returned false so the game can zoom), the camera the scene was
+  // drawn with and the viewport size in pixels. A press starts a drag (handle, spawn or box;
+  // empty space deselects), moves drag, a release ends it as one undo step. Returns true
+  // when the editor used the mouse (the game should not also use it). Ignored while ImGui
+  // has the mouse (io.WantCaptureMouse) or level_edit_mode is off.
+  bool handle_mouse(glm::vec2 mouse_px, bool down, float wheel, const Camera2D& camera,
+                    glm::vec2 viewport_px);
+
+  // True while an ImGui text field or window wants the keyboard (the game should then
+  // ignore its keys).
+  bool wants_keyboard() const;
+
+  // Any document (level, prototypes, genome) changed since its last save or load.
+  bool has_unsaved_changes() const;
+  // The user wants to quit: true when nothing is unsaved (quit now); otherwise opens the
+  // "discard unsaved changes?" popup and returns false — quit_confirmed() turns true once
+  // the user chose to discard.
+  bool request_quit();
+  bool quit_confirmed() const { return quit_confirmed_; }
+
+  // ---- Models (for the game and tests) ---------------------------------------------------
+  UndoStack& undo() { return undo_; }
+  LevelEditorModel& level_editor() { return *level_; }
+  SplineEditorModel& spline_editor() { return *spline_; }
+  CreaturePanelModel* creature_panel() { return creature_.get(); }   // null without generator
+  TuningModel& tuning() { return *tuning_; }
+
+  // Screen position (ImGui pixels) of a key of the spline canvas as drawn in the last frame
+  // (nullopt before the first frame or when the window is hidden). For tests and tooling.
+  std::optional<glm::vec2> spline_key_screen_px(SplineVersion version, int key) const;
+
+  // Runs `action` at once, or — when `document` has unsaved changes — after the user
+  // confirmed discarding them in a popup.
+  void confirm_discard(EditorDocument document, std::function<void()> action);
+
+ private:
+  struct Canvas;       // a spline canvas's screen rectangle and value range
+  void draw_level_window();
+  void draw_spline_window();
+  void draw_creature_window();
+  void draw_tuning_window();
+  void draw_popups();
+  void handle_shortcuts();
+  void draw_spline_canvas(int slot, SplineVersion version, float width, float height);
+  void draw_preview_canvas(float width, float height);
+  void refresh_level_files();
+
+  World* world_;
+  const Generator* generator_;
+  EditorPaths paths_;
+  UndoStack undo_;
+  std::unique_ptr<LevelEditorModel> level_;
+  std::unique_ptr<SplineEditorModel> spline_;
+  std::unique_ptr<CreaturePanelModel> creature_;
+  std::unique_ptr<TuningModel> tuning_;
+
+  // Viewport state.
+  bool mouse_was_down_ = false;
+  bool mouse_drag_ = false;
+  std::optional<int> hovered_box_;
+  Camera2D last_camera_;
+  glm::vec2 last_viewport_px_{1.0f};
+
+  // Spline canvases: walk, run, preview.
+  std::unique_ptr<Canvas[]> canvases_;
+  float preview_w_ = 0.0f;
+  bool preview_follow_player_ = true;
+
+  // Files and popups.
+  std::vector<std::string> level_files_;
+  float level_files_age_ = 1e9f;
+  float poll_timer_ = 0.0f;
+  char level_path_buf_[512] = {};
+  char tiled_path_buf_[512] = {};
+  char proto_path_buf_[512] = {};
+  char genome_path_buf_[512] = {};
+  char svg_path_buf_[512] = {};
+  std::function<void()> pending_discard_;
+  bool open_discard_popup_ = false;
+  bool quit_confirmed_ = false;
+  std::string creature_message_;
+  float variation_sigma_ = 0.5f;
+  int creature_example_ = 0;
+};
+
+}  // namespace ossa

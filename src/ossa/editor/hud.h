@@ -1,0 +1,45 @@
+#pragma once
+// Hud — the playtester's overlay (Dear ImGui, DESIGN.md §8): the player's speed, gait and
+// Froude number, the frame rate and a graph of recent frame times, plus the key help.
+// Needs a current ImGui frame (NewFrame called); draws one small window in a corner.
+
+#include <array>
+#include <string>
+
+namespace ossa {
+
+// What the HUD shows this frame.
+struct HudInfo {
+  std::string creature;        // the player's creature name
+  float speed = 0.0f;          // m/s, signed (+ right)
+  float walk_speed = 0.0f;     // m/s at Froude 0.5, for reference
+  float run_speed = 0.0f;      // m/s at Froude 2.5
+  std::string gait;            // gait_name(animator.gait())
+  float froude = 0.0f;         // v² / (g·h)
+  int tick_hz = 120;           // simulation rate
+  std::string input;           // "keyboard", the gamepad's name, "replay", "demo"
+  std::string status;          // a transient message ("screenshot out/shot-0001.png"), or ""
+  bool recording = false;      // a replay is being recorded
+  bool gif = false;            // a GIF is being captured
+};
+
+class Hud {
+ public:
+  static constexpr int kHistory = 240;  // frame times kept for the graph
+
+  // Adds one frame's wall time (seconds) to the FPS average and the graph.
+  void add_frame_time(float seconds);
+  // Frames per second over the kept history (0 before the first frame).
+  float fps() const;
+  // Draws the overlay when visible.
+  void draw(const HudInfo& info);
+
+  bool visible = true;
+
+ private:
+  std::array<float, kHistory> frame_ms_{};  // ring buffer, milliseconds
+  int next_ = 0;
+  int count_ = 0;
+};
+
+}  // namespace ossa

@@ -1,0 +1,115 @@
+#include "ossa/editor/tuning_model.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstring>
+
+namespace ossa {
+
+std::span<const TuningField> tuning_fields() {
+  using P = AnimatorParams;
+  // Ranges as documented in animator_params.h; the tail and crawl fields have none there,
+  // so these are wide bounds around the defaults.
+  static const std::array<TuningField, 18> kFields = {{
+      {"step_distance_multiplier", "× stride", 0.3f, 2.0f, &P::step_distance_multiplier, "[T] scales the stride λ = 2.3·h·Fr^0.3"},
+      {"interpolation_speed_multiplier", "×", 0.1f, 5.0f, &P::interpolation_speed_multiplier, "[T] how fast lean, height and gait blend ease"},
+      {"max_spine_rotation", "rad", 0.0f, 0.6f, &P::max_spine_rotation, "[T] largest forward lean at full run"},
+      {"duty_walk", "of cycle", 0.5f, 0.85f, &P::duty_walk, "fraction of a cycle a foot is down, walking"},
+      {"duty_run", "of cycle", 0.2f, 0.6f, &P::duty_run, "same at a full run; < 0.5 gives a flight phase"},
+      {"run_froude_start", "Fr", 0.05f, 3.0f, &P::run_froude_start, "Froude number where walk→run starts"},
+      {"run_froude_end", "Fr", 0.05f, 3.0f, &P::run_froude_end, "Froude number where the blend reaches run"},
+      {"trot_froude", "Fr", 0.05f, 3.0f, &P::trot_froude, "quadrupeds: walk→trot"},
+      {"gallop_froude", "Fr", 0.05f, 5.0f, &P::gallop_froude, "quadrupeds: trot→gallop"},
+      {"max_step_up", "× height", 0.05f, 1.0f, &P::max_step_up, "highest step up, of the standing height"},
+      {"max_step_down", "× height", 0.05f, 1.0f, &P::max_step_down, "deepest step down, of the standing height"},
+      {"stance_height", "× rest", 0.7f, 1.05f, &P::stance_height, "girdle height, of its rest height"},
+      {"stop_ease_time", "s", 0.05f, 0.3f, &P::stop_ease_time, "time for swinging feet to set down after a stop"},
+      {"tail_stiffness", "1/s²", 1.0f, 400.0f, &P::tail_stiffness, "spring stiffness of the tail's follow-through"},
+      {"tail_damping", "ratio", 0.0f, 2.0f, &P::tail_damping, "damping ratio of the tail"},
+      {"crawl_amplitude", "rad/vertebra", 0.0f, 0.2f, &P::crawl_amplitude, "travelling wave of legless bodies"},
+      {"crawl_waves", "waves/body", 0.25f, 4.0f, &P::crawl_waves, "waves along a legless body"},
+      {"gravity", "m/s²", 1.0f, 30.0f, &P::gravity, "gravity of the Froude number"},
+  }};
+  return kFields;
+}
+
+TuningModel::TuningModel(AnimatorParams params, UndoStack& undo, ChangeFn on_change)
+    : params_(params), undo_(&undo), on_change_(std::move(on_change)) {}
+
+void TuningModel::push(const AnimatorParams& before, const char* label) {
+  const AnimatorParams after = params_;
+  undo_->push({label, EditorDocument::kTuning,
+               [this, after] { params_ = after; if (on_change_) on_change_(params_); },
+               [this, before] { params_ = before; if (on_change_) on_change_(params_); }},
+              true);
+}
+
+void TuningModel::set_value(int field, float v) {
+  const auto fields = tuning_fields();
+  if (field < 0 || field >= static_cast<int>(fields.size()) || !std::isfinite(v)) return;
+  const TuningField& f = fields[field];
+  const AnimatorParams before = params_;
+  params_.*(f.member) = std::clamp(v, f.min, f.max);
+  if (params_.*(f.member) == before.*(f.member)) return;
+  if (on_change_) on_change_(params_);
+  if (!editing_) push(before, f.name);
+}
+
+void TuningModel::set_gait_override(GaitOverride gait) {
+  if (params_.gait_override == gait) return;
+  const AnimatorParams before = params_;
+  params_.gait_override = gait;
+  if (on_change_) on_change_(params_);
+  if (!editing_) push(before, "gait override");
+}
+
+void TuningModel::reset() {
+  const AnimatorParams before = params_;
+  params_ = AnimatorParams{};
+  if (on_change_) on_change_(params_);
+  push(before, "reset tuning");
+}
+
+void TuningModel::begin_edit(const std::string& label) {
+  if (editing_) return;
+  editing_ = true;
+  edit_before_ = params_;
+  edit_label_ = label;
+}
+
+void TuningModel::end_edit() {
+  if (!editing_) return;
+  editing_ = false;
+  if (std::memcmp(&edit_before_, &params_, sizeof params_) == 0) return;
+  const AnimatorParams before = edit_before_;
+  const AnimatorParams after = params_;
+  const std::string label = edit_label_;
+  undo_->push({label, EditorDocument::kTuning,
+               [this, after] { params_ = after; if (on_change_) on_change_(params_); },
+               [this, before] { params_ = before; if (on_change_) on_change_(params_); }},
+              true);
+}
+
+void TuningModel::sample(const Animator& animator, float dt) {
+  if (dt > 0.0f) dt_ = dt;
+  capacity_ = std::max(1, static_cast<int>(std::ceil(history_seconds / dt_)));
+  gait_ = animator.gait();
+  const int n = animator.leg_count();
+  if (n != leg_count()) legs_.assign(n, {});
+  for (int i = 0; i < n; ++i) {
+    auto& h = legs_[i];
+    h.push_back(animator.leg_state(i) == LegState::kStance);
+    while (static_cast<int>(h.size()) > capacity_) h.pop_front();
+  }
+}
+
+void TuningModel::clear_history() { legs_.clear(); }
+
+float TuningModel::stance_fraction(int leg) const {
+  const auto& h = legs_[leg];
+  if (h.empty()) return 0.0f;
+  return static_cast<float>(std::count(h.begin(), h.end(), true)) / static_cast<float>(h.size());
+}
+
+}  // namespace ossa
