@@ -1,0 +1,117 @@
+#pragma once
+// Game — the playable runtime (DESIGN.md §8, [T 4.3]): a window, a World stepped at a fixed
+// rate with interpolated rendering, gamepad and keyboard input, a following camera, the
+// parallax background and the level, the player and NPC walkers, the HUD, screenshots, GIFs
+// and replays.
+//
+//   GameOptions options;              // or parse_game_args(argc, argv) (options.h)
+//   Game game;
+//   if (auto s = game.init(options); !s.ok()) { report(s.message()); return 1; }
+//   return game.run();                // until Escape, the window closes or --frames ran out
+//
+// Timing: the simulation advances in fixed ticks of 1/tick_hz; each frame adds its wall time
+// (a fixed 1/60 s when headless, so headless runs are deterministic) to an accumulator, runs
+// whole ticks (at most max_steps_per_frame — the guard against the spiral of death: a slow
+// frame drops time instead of demanding ever more ticks) and renders every creature blended
+// between its last two poses by the accumulator's remainder.
+
+#include <cstdint>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "ossa/game/controls.h"
+#include "ossa/game/replay.h"
+#include "ossa/game/world.h"
+#include "ossa/io/result.h"
+
+namespace ossa {
+
+class Gamepad;
+class MouseKeyboardInput;
+
+struct GameOptions {
+  std::string level = "levels/default.json";  // level file (relative paths: cwd, then the source tree)
+  // Player creature: a genome file, an example name or a random seed (at most one set;
+  // none → kDefaultExample).
+  std::string creature_file;
+  std::string example;
+  std::optional<uint64_t> seed;
+  int npcs = 3;                 // NPC walkers, [0, 64]
+  std::string replay;           // play this replay file back
+  std::string record;           // record the session's controls to this replay file
+  bool headless = false;        // offscreen driver, fixed 1/60 s frames
+  int frames = 0;               // stop after this many frames (0: run until quit / replay end)
+  std::string png;              // screenshot of the last frame
+  std::string gif;              // GIF of the whole run (headless) or the first gif_seconds
+  std::string state;            // JSON state written on exit
+  int tick_hz = 120;            // [30, 480]
+  bool vsync = true;
+  int fps_cap = 0;              // frames per second when vsync is off (0 = uncapped); [0, 1000]
+  int width = 1280, height = 720;
+  float gif_seconds = 5.0f;     // length of a G-key GIF, seconds
+  std::string out_dir = "out";  // where key-triggered screenshots, GIFs and replays go
+  // Drive the player with the built-in demo script (walk right, run, stop, walk). Set by
+  // main for headless runs without a replay.
+  bool demo = false;
+  bool hud = true;              // the HUD starts visible
+  int max_steps_per_frame = 8;  // the spiral-of-death guard, >= 1
+};
+
+inline constexpr const char* kDefaultExample = "horse";
+// The demo script (sim.h's segment syntax), 10 seconds long.
+inline constexpr const char* kDemoScript = "walk:0.5:2.5,run:1:3,stop:1.5,walk:0.5:3";
+
+class Game {
+ public:
+  Game();
+  ~Game();
+  Game(const Game&) = delete;
+  Game& operator=(const Game&) = delete;
+
+  // Loads everything and opens the window. Every bad file or option gives an Error naming it.
+  Status init(const GameOptions& options);
+  // The main loop; returns the process exit code (0, or 1 when writing an output failed).
+  int run();
+
+  // ---- One frame (run() calls these; tests drive them directly) ---------------------------
+  // Polls SDL events, then advances the simulation by `dt_seconds` of wall time and renders.
+  // Returns false once the game should quit.
+  bool frame(double dt_seconds);
+  // Writes --png / --gif / --record / --state outputs; run() calls it at the end.
+  Status finish();
+
+  // ---- Introspection ----------------------------------------------------------------------
+  World& world() { return *world_; }
+  const World& world() const { return *world_; }
+  Gamepad& gamepad() { return *gamepad_; }
+  MouseKeyboardInput& keyboard() { return *keyboard_; }
+  const GameOptions& options() const { return options_; }
+  long long frames() const { return frames_; }
+  // The controls used in the last tick.
+  const Controls& last_controls() const { return last_controls_; }
+  // Name of the player's creature.
+  std::string creature_name() const;
+  // Switches the player's creature: the next example (cycling the 44) / a new random one.
+  void next_example();
+  void random_creature();
+  bool replay_finished() const;
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+  GameOptions options_;
+  std::unique_ptr<World> world_;
+  std::unique_ptr<Gamepad> gamepad_;
+  std::unique_ptr<MouseKeyboardInput> keyboard_;
+  Controls last_controls_;
+  long long frames_ = 0;
+};
+
+// Path resolution shared with main: `path` as given when it exists, else relative to the
+// source tree ($OSSA_SOURCE_DIR or the compiled-in one).
+std::string resolve_data_path(const std::string& path);
+std::string ossa_source_dir();
+
+}  // namespace ossa

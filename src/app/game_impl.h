@@ -1,0 +1,103 @@
+#pragma once
+// Game's private state, shared by game.cpp (loop, input, outputs) and game_render.cpp
+// (camera, background, creatures, HUD, captures). Not part of the public interface.
+
+#include <memory>
+#include <optional>
+#include <string>
+#include <unordered_map>
+#include <vector>
+
+#include <SDL.h>
+
+#include "app/game.h"
+#include "ossa/editor/hud.h"
+#include "ossa/game/sim.h"
+#include "ossa/gen/generator.h"
+#include "ossa/math/transform2d.h"
+#include "ossa/platform/window.h"
+#include "ossa/render/capture.h"
+#include "ossa/render/creature_batch.h"
+#include "ossa/render/renderer.h"
+#include "ossa/render/texture.h"
+
+namespace ossa {
+
+struct Game::Impl {
+  // Loading.
+  std::unique_ptr<Generator> generator;
+  Genome genome;                 // the player's
+  int example_index = 0;         // into the dataset, for cycling
+  uint64_t random_seed = 1000;
+  std::string level_path;
+  std::string out_dir = "out";
+  glm::vec2 spawn{0.0f};         // where the player was placed (the replay's spawn)
+
+  // Platform and GL.
+  Window window;
+  std::optional<Renderer> renderer;
+  std::optional<Atlas> atlas;
+  std::unique_ptr<CreatureBatch> batch;
+  bool imgui = false;
+  bool batch_dirty = true;
+  std::unordered_map<const Creature*, SpriteMesh> meshes;  // built once per creature
+  std::unordered_map<std::string, Texture> images;         // level background images
+
+  // Interpolation: per creature (0 = player, 1.. = NPCs) the world matrices of the last two ticks.
+  std::vector<std::vector<Mat2x3>> prev, curr;
+  std::vector<Mat2x3> blended;
+  double accumulator = 0.0;      // seconds not yet simulated
+
+  // Camera.
+  glm::vec2 camera_ws{0.0f};
+  float look_ahead = 0.0f;       // metres, smoothed
+  float zoom = 1.0f;             // wheel factor on the base view height
+  float base_half_height = 2.5f; // metres, from the player's size
+
+  // Input sources.
+  std::optional<Replay> playback;
+  size_t playback_tick = 0;
+  std::vector<ScriptSegment> demo;
+  std::string input_name = "keyboard";
+
+  // Outputs.
+  Hud hud;
+  std::string status;
+  float status_timer = 0.0f;
+  std::optional<GifWriter> gif;
+  std::string gif_path;
+  float gif_remaining = 0.0f;    // seconds
+  float gif_clock = 0.0f;        // seconds since the last GIF frame
+  bool capture_all_frames = false;
+  bool recording = false;
+  bool last_record_failed = false;
+  Replay record;
+
+  // game_render.cpp
+  Status open_window(const GameOptions& o);
+  void release_gl();
+  void shutdown_imgui();
+  void process_imgui_event(const SDL_Event& e);
+  void reset_camera(const World& world);
+  void update_camera(const World& world, float alpha, float dt);
+  void render(Game& game, float alpha);
+  Status start_gif(const std::string& path, float seconds);
+  void capture_gif_frame(float dt);
+  Status finish_gif();
+
+  // game.cpp / game_render.cpp
+  void snapshot_all(const World& world, bool both);  // prev = curr (both: also curr = now)
+  void after_step(const World& world);               // curr = now
+  bool switch_creature(World& world, const Genome& g);
+  void start_recording(World& world, const std::string& level, bool respawn);
+  std::string stop_recording(const std::string& path);
+  std::string next_free_replay_path();
+  Controls demo_controls(uint64_t tick, int tick_hz) const;
+  void say(const std::string& message) {
+    status = message;
+    status_timer = 4.0f;
+  }
+  glm::vec2 player_root(float alpha) const;
+};
+
+}  // namespace ossa

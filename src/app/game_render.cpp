@@ -1,0 +1,391 @@
+// Game — window and ImGui set-up, interpolation, camera, drawing, captures and replays.
+
+#include <imgui.h>
+#include <backends/imgui_impl_opengl3.h>
+#include <backends/imgui_impl_sdl.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+
+#include "app/game_impl.h"
+#include "ossa/gen/skeleton_builder.h"
+#include "ossa/render/background.h"
+#include "ossa/render/debug_draw.h"
+#include "ossa/render/gl.h"
+#include "ossa/render/sprite_mesh.h"
+
+namespace ossa {
+namespace {
+
+// Per-component blend of two bone matrices. Between two ticks a bone turns by a small angle,
+// so the linear blend is visually indistinguishable from a proper one; a mirror flip (the
+// creature turned around this tick) has no in-between, so the newer matrix is used.
+Mat2x3 blend(const Mat2x3& a, const Mat2x3& b, float t) {
+  const float det_a = a.m[0] * a.m[3] - a.m[1] * a.m[2];
+  const float det_b = b.m[0] * b.m[3] - b.m[1] * b.m[2];
+  if ((det_a < 0.0f) != (det_b < 0.0f)) return b;
+  Mat2x3 r;
+  for (int i = 0; i < 6; ++i) r.m[i] = a.m[i] + (b.m[i] - a.m[i]) * t;
+  return r;
+}
+
+const Entity& entity_at(const World& w, int i) {
+  return i == 0 ? static_cast<const Entity&>(*w.player()) : w.npc(i - 1);
+}
+
+// Halves an image (2×2 box filter) for GIFs: a quarter of the pixels to quantise and store.
+Image half_size(const Image& src) {
+  Image out;
+  out.width = std::max(1, src.width / 2);
+  out.height = std::max(1, src.height / 2);
+  out.rgba.resize(static_cast<size_t>(out.width) * out.height * 4);
+  for (int y = 0; y < out.height; ++y) {
+    for (int x = 0; x < out.width; ++x) {
+      for (int c = 0; c < 4; ++c) {
+        const int sx = std::min(2 * x, src.width - 1), sy = std::min(2 * y, src.height - 1);
+        const int sx1 = std::min(sx + 1, src.width - 1), sy1 = std::min(sy + 1, src.height - 1);
+        const int sum = src.pixel(sx, sy)[c] + src.pixel(sx1, sy)[c] + src.pixel(sx, sy1)[c] + src.pixel(sx1, sy1)[c];
+        out.pixel(x, y)[c] = static_cast<uint8_t>((sum + 2) / 4);
+      }
+    }
+  }
+  return out;
+}
+
+}  // namespace
+
+// ---- Window and ImGui -----------------------------------------------------------------------
+
+Status Game::Impl::open_window(const GameOptions& o) {
+  WindowDesc desc;
+  desc.title = "ossa — " + (genome.name.empty() ? std::string("creature") : genome.name);
+  desc.width = o.width;
+  desc.height = o.height;
+  desc.vsync = o.vsync;
+  desc.offscreen = o.headless;
+  auto w = Window::create(desc);
+  if (!w.ok()) return w.error();
+  window = std::move(w.value());
+  auto r = Renderer::create(default_shader_dir());
+  if (!r.ok()) return r.error();
+  renderer.emplace(std::move(r.value()));
+  const std::string sprite_dir = resolve_data_path("assets/sprites/bones");
+  SpriteSet sprites = default_sprite_set();
+  if (auto s = load_sprite_set(sprite_dir + "/sprites.json"); s.ok()) {
+    sprites = std::move(s.value());
+  } else {
+    std::fprintf(stderr, "ossa: %s (using the built-in sprite anchors)\n", s.message().c_str());
+  }
+  atlas.emplace(Atlas::build(sprites, sprite_dir));
+  batch = std::make_unique<CreatureBatch>();
+
+  IMGUI_CHECKVERSION();
+  ImGui::CreateContext();
+  ImGuiIO& io = ImGui::GetIO();
+  io.IniFilename = nullptr;  // no imgui.ini next to the player's files
+  ImGui::StyleColorsDark();
+  SDL_Window* sdl_window = SDL_GL_GetCurrentWindow();
+  if (!sdl_window || !ImGui_ImplSDL2_InitForOpenGL(sdl_window, SDL_GL_GetCurrentContext())) {
+    ImGui::DestroyContext();
+    return Error{"ImGui: SDL2 backend failed to start"};
+  }
+  if (!ImGui_ImplOpenGL3_Init("#version 330 core")) {
+    ImGui_ImplSDL2_Shutdown();
+    ImGui::DestroyContext();
+    return Error{"ImGui: OpenGL 3 backend failed to start"};
+  }
+  imgui = true;
+  return {};
+}
+
+void Game::Impl::shutdown_imgui() {
+  if (!imgui) return;
+  ImGui_ImplOpenGL3_Shutdown();
+  ImGui_ImplSDL2_Shutdown();
+  ImGui::DestroyContext();
+  imgui = false;
+}
+
+void Game::Impl::release_gl() {
+  gif.reset();
+  images.clear();
+  batch.reset();
+  atlas.reset();
+  renderer.reset();
+}
+
+void Game::Impl::process_imgui_event(const SDL_Event& e) {
+  if (imgui) ImGui_ImplSDL2_ProcessEvent(&e);
+}
+
+// ---- Interpolation and creatures ------------------------------------------------------------
+
+void Game::Impl::snapshot_all(const World& world, bool both) {
+  const int n = 1 + world.npc_count();
+  if (static_cast<int>(curr.size()) != n || both) {
+    curr.assign(n, {});
+    for (int i = 0; i < n; ++i) curr[i] = entity_at(world, i).animator().world_matrices();
+    prev = curr;
+    return;
+  }
+  prev.swap(curr);
+}
+
+void Game::Impl::after_step(const World& world) {
+  const int n = 1 + world.npc_count();
+  curr.resize(n);
+  prev.resize(n);
+  for (int i = 0; i < n; ++i) {
+    curr[i] = entity_at(world, i).animator().world_matrices();
+    if (prev[i].size() != curr[i].size()) prev[i] = curr[i];
+  }
+}
+
+glm::vec2 Game::Impl::player_root(float alpha) const {
+  if (curr.empty() || curr[0].empty()) return glm::vec2(0.0f);
+  const Mat2x3 m = prev[0].empty() ? curr[0][0] : blend(prev[0][0], curr[0][0], alpha);
+  return {m.m[4], m.m[5]};
+}
+
+bool Game::Impl::switch_creature(World& world, const Genome& g) {
+  auto c = build_creature(g);
+  if (!c.ok()) {
+    say(c.message());
+    return false;
+  }
+  if (recording) say(stop_recording(next_free_replay_path()));
+  genome = g;
+  world.set_player_creature(std::make_shared<Creature>(std::move(c.value())));
+  batch_dirty = true;
+  snapshot_all(world, true);
+  base_half_height = std::clamp(1.8f * world.player()->animator().hip_height() + 0.9f, 1.5f, 8.0f);
+  say(world.player()->creature().name);
+  return true;
+}
+
+// ---- Camera ---------------------------------------------------------------------------------
+
+void Game::Impl::reset_camera(const World& world) {
+  base_half_height = std::clamp(1.8f * world.player()->animator().hip_height() + 0.9f, 1.5f, 8.0f);
+  const glm::vec2 root = player_root(1.0f);
+  const float ground = root.y - world.player()->animator().hip_height();
+  camera_ws = {root.x, ground + 0.55f * base_half_height * zoom};
+  look_ahead = 0.0f;
+}
+
+void Game::Impl::update_camera(const World& world, float alpha, float dt) {
+  const Animator& a = world.player()->animator();
+  const float half_height = base_half_height * zoom;
+  const float aspect = static_cast<float>(window.width()) / static_cast<float>(std::max(1, window.height()));
+  // Look ahead in the walking direction: up to a third of the half-width, reached in ~1 s.
+  const float max_ahead = 0.35f * half_height * aspect;
+  const float want_ahead = std::clamp(a.velocity() * 0.8f, -max_ahead, max_ahead);
+  look_ahead += (want_ahead - look_ahead) * (1.0f - std::exp(-1.5f * dt));
+  const glm::vec2 root = player_root(alpha);
+  const float ground = root.y - a.hip_height();
+  // The ground sits in the lower third of the screen.
+  const glm::vec2 target{root.x + look_ahead, ground + 0.55f * half_height};
+  // Critically damped-ish follow: fast horizontally so the creature never leaves the view,
+  // slower vertically so steps do not shake the picture.
+  camera_ws.x += (target.x - camera_ws.x) * (1.0f - std::exp(-5.0f * dt));
+  camera_ws.y += (target.y - camera_ws.y) * (1.0f - std::exp(-3.0f * dt));
+  // Never let the player leave the inner 80 % of the view.
+  const float limit = 0.8f * half_height * aspect;
+  camera_ws.x = std::clamp(camera_ws.x, root.x - limit, root.x + limit);
+}
+
+// ---- Drawing --------------------------------------------------------------------------------
+
+void Game::Impl::render(Game& game, float alpha) {
+  World& world = game.world();
+  Renderer& r = *renderer;
+  r.camera.center_ws = camera_ws;
+  r.camera.half_height = base_half_height * zoom;
+
+  const Level& level = world.level();
+  BackgroundStyle style;
+  if (level.background) {
+    style.sky_bottom = level.background->colour;
+    style.sky_top = level.background->colour * glm::vec3(0.62f, 0.75f, 0.95f);
+    style.parallax = level.background->parallax;
+  }
+  style.horizon_ws = level.spawn_ws.y;
+  r.begin_frame(window.width(), window.height(), style.sky_bottom);
+  DebugDraw scene;
+  add_background(scene, r.camera, style);
+  r.draw_debug(scene);
+  if (level.background && !level.background->image.empty()) {
+    // The level's image behind the hills' place, tiled horizontally and scrolled by its
+    // parallax: a tile's world x is camera.x·(1 − parallax) + k·tile width.
+    auto it = images.find(level.background->image);
+    if (it == images.end()) {
+      it = images.emplace(level.background->image,
+                          Texture::load(resolve_data_path("assets/" + level.background->image))).first;
+    }
+    if (it->second.is_valid()) {
+      const Box view = r.camera.visible_box();
+      const float tile_h = view.height();
+      const float tile_w = tile_h * static_cast<float>(it->second.width()) / std::max(1, it->second.height());
+      const float origin = camera_ws.x * (1.0f - level.background->parallax);
+      const float k0 = std::floor((view.min_ws.x - origin) / tile_w);
+      for (float k = k0; origin + k * tile_w < view.max_ws.x; k += 1.0f) {
+        const float x = origin + k * tile_w;
+        r.draw_textured_box(it->second, {{x, view.min_ws.y}, {x + tile_w, view.max_ws.y}});
+      }
+    }
+  }
+  DebugDraw ground;
+  add_level_scenery(ground, level, r.camera.visible_box());
+  r.draw_debug(ground);
+
+  // Creatures: rebuild the batch when the cast changed, then one palette upload per frame.
+  const int n = 1 + world.npc_count();
+  if (batch_dirty || batch->creature_count() != n) {
+    batch->clear();
+    meshes.clear();  // creatures may have been replaced (an address can be reused)
+    for (int i = 0; i < n; ++i) {
+      const Creature& c = entity_at(world, i).creature();
+      auto it = meshes.find(&c);
+      if (it == meshes.end()) it = meshes.emplace(&c, build_sprite_mesh(c, atlas->sprites)).first;
+      batch->add(it->second, c.skeleton);
+    }
+    batch_dirty = false;
+  }
+  // NPCs first in the batch order would draw them over the player; the player is instance 0,
+  // drawn first in each layer, so NPCs pass in front — background walkers are drawn dimmer
+  // by the far layer anyway. Good enough for a playground.
+  for (int i = 0; i < n && i < static_cast<int>(curr.size()); ++i) {
+    const auto& b = curr[i];
+    const auto& a = prev[i].size() == b.size() ? prev[i] : b;
+    blended.resize(b.size());
+    for (size_t k = 0; k < b.size(); ++k) blended[k] = blend(a[k], b[k], alpha);
+    if (!blended.empty()) batch->set_world(i, blended);
+  }
+  batch->upload_palettes();
+  r.draw_batch(*batch, atlas->texture);
+
+  // HUD.
+  if (imgui) {
+    ImGui_ImplOpenGL3_NewFrame();
+    ImGui_ImplSDL2_NewFrame();
+    ImGui::NewFrame();
+    const Animator& an = world.player()->animator();
+    HudInfo info;
+    info.creature = world.player()->creature().name;
+    info.speed = an.velocity();
+    info.walk_speed = an.walk_speed();
+    info.run_speed = an.run_speed();
+    info.gait = gait_name(an.gait());
+    info.froude = an.froude();
+    info.tick_hz = world.tick_hz();
+    info.input = input_name;
+    info.status = status;
+    info.recording = recording;
+    info.gif = gif.has_value();
+    hud.draw(info);
+    ImGui::Render();
+    ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
+  }
+  check_gl("ossa frame");
+}
+
+// ---- GIF ------------------------------------------------------------------------------------
+
+Status Game::Impl::start_gif(const std::string& path, float seconds) {
+  std::error_code ec;
+  const auto parent = std::filesystem::path(path).parent_path();
+  if (!parent.empty()) std::filesystem::create_directories(parent, ec);
+  auto g = GifWriter::open(path, std::max(1, window.width() / 2), std::max(1, window.height() / 2), 4);
+  if (!g.ok()) return g.error();
+  gif.emplace(std::move(g.value()));
+  gif_path = path;
+  gif_remaining = seconds;
+  gif_clock = 1.0f;  // the first frame right away
+  return {};
+}
+
+void Game::Impl::capture_gif_frame(float dt) {
+  if (!gif) return;
+  gif_clock += dt;
+  if (gif_clock >= 0.04f - 1e-4f) {  // 25 frames per second, the GIF's 4 cs delay
+    gif_clock = std::fmod(gif_clock, 0.04f);
+    const Status s = gif->add_frame(half_size(read_framebuffer(window.width(), window.height())));
+    if (!s.ok()) {
+      say(s.message());
+      gif.reset();
+      return;
+    }
+  }
+  gif_remaining -= dt;
+  if (gif_remaining <= 0.0f) {
+    const Status s = finish_gif();
+    say(s.ok() ? "GIF written: " + gif_path : s.message());
+  }
+}
+
+Status Game::Impl::finish_gif() {
+  if (!gif) return {};
+  Status s = gif->close();
+  gif.reset();
+  if (s.ok()) std::fprintf(stderr, "ossa: GIF written: %s\n", gif_path.c_str());
+  return s;
+}
+
+// ---- Replays and the demo -------------------------------------------------------------------
+
+std::string Game::Impl::next_free_replay_path() {
+  std::error_code ec;
+  std::filesystem::create_directories(out_dir, ec);
+  for (int i = 1;; ++i) {
+    char name[64];
+    std::snprintf(name, sizeof(name), "/replay-%04d.replay.json", i);
+    if (!std::filesystem::exists(out_dir + name, ec)) return out_dir + name;
+  }
+}
+
+void Game::Impl::start_recording(World& world, const std::string& level, bool respawn) {
+  // A replay starts from a freshly placed creature so playback can rebuild the exact state.
+  if (respawn) {
+    const Player& p = *world.player();
+    const glm::vec2 at{p.animator().x(), player_root(1.0f).y + 0.5f};
+    const int facing = p.animator().facing();
+    world.spawn_player(p.creature_ptr(), at, facing);
+    spawn = at;
+    snapshot_all(world, true);
+  }
+  record = Replay{};
+  record.tick_hz = world.tick_hz();
+  record.level = level;
+  record.creature = genome_to_json(genome);
+  record.spawn_ws = spawn;
+  record.facing = world.player()->animator().facing();
+  recording = true;
+}
+
+std::string Game::Impl::stop_recording(const std::string& path) {
+  recording = false;
+  std::error_code ec;
+  const auto parent = std::filesystem::path(path).parent_path();
+  if (!parent.empty()) std::filesystem::create_directories(parent, ec);
+  const Status s = save_replay(path, record);
+  last_record_failed = !s.ok();
+  const std::string msg = s.ok() ? "replay written: " + path : s.message();
+  std::fprintf(stderr, "ossa: %s\n", msg.c_str());
+  return msg;
+}
+
+Controls Game::Impl::demo_controls(uint64_t tick, int tick_hz) const {
+  // The script loops: walk right, run, stop, walk.
+  float total = 0.0f;
+  for (const ScriptSegment& s : demo) total += s.seconds;
+  float t = std::fmod(static_cast<float>(static_cast<double>(tick) / tick_hz), std::max(total, 1e-3f));
+  for (const ScriptSegment& s : demo) {
+    if (t < s.seconds) return s.controls();
+    t -= s.seconds;
+  }
+  return {};
+}
+
+}  // namespace ossa

@@ -1,0 +1,160 @@
+#include "app/options.h"
+
+#include <cerrno>
+#include <cstdlib>
+
+namespace ossa {
+
+const char* const kGameUsage = R"(usage: ossa [--level F] [--creature F | --example NAME | --seed N] [--npcs N]
+            [--replay F] [--record F] [--headless --frames N] [--png F] [--gif F]
+            [--state F] [--hz N] [options]
+
+Walk a generated creature over a box level with a gamepad or the keyboard.
+
+  --level F         level file (default levels/default.json)
+  --creature F      the player's creature: a saved genome (.creature.json)
+  --example NAME    ... or one of the 44 example animals (default horse)
+  --seed N          ... or a random creature drawn with seed N
+  --npcs N          NPC walkers roaming the level, 0-64 (default 3)
+  --replay F        play a replay file back (its creature, spawn and tick rate)
+  --record F        record the player's controls to a replay file (written on exit)
+  --headless        no window: SDL's offscreen driver, fixed 1/60 s frames, and a
+                    demo script driving the player (unless --replay)
+  --frames N        stop after N frames (headless default: 600, or the replay's end)
+  --png F           write the last frame as PNG on exit
+  --gif F           record a GIF (headless: the whole run; else the first --gif-seconds)
+  --gif-seconds S   length of a GIF, 0.5-60 seconds (default 5)
+  --state F         write JSON on exit: frames, player {x, y, speed, creature}, spawn {x, y}
+  --hz N            simulation ticks per second, 30-480 (default 120)
+  --no-vsync        do not wait for the display's refresh
+  --fps-cap N       frames per second limit without vsync, 0-1000 (0 = none)
+  --size WxH        window size in pixels (default 1280x720)
+  --no-hud          start with the HUD hidden
+  --out DIR         folder for key-triggered screenshots, GIFs and replays (default out)
+  --help            this text
+
+keys: A/D or arrows walk, Shift runs, N next example, M random creature, H HUD,
+      F12/P screenshot, G GIF of the next seconds, R start/stop a replay, wheel zoom, Esc quits
+gamepad: left stick walks (half throw = walk speed, full = run), A/RB/RT run, Y next example,
+      X random creature, Back HUD, Start replay
+)";
+
+namespace {
+
+Result<long> parse_int(const std::string& flag, const std::string& text, long lo, long hi) {
+  char* end = nullptr;
+  errno = 0;
+  const long v = std::strtol(text.c_str(), &end, 10);
+  if (text.empty() || *end != '\0' || errno != 0 || v < lo || v > hi) {
+    return Error{flag + ": expected an integer in [" + std::to_string(lo) + ", " + std::to_string(hi) +
+                 "], got \"" + text + "\""};
+  }
+  return v;
+}
+
+}  // namespace
+
+Result<ParsedArgs> parse_game_args(const std::vector<std::string>& args) {
+  ParsedArgs p;
+  GameOptions& o = p.options;
+  o.level.clear();  // empty = default (or the replay's level)
+  bool frames_set = false;
+  for (size_t i = 0; i < args.size(); ++i) {
+    const std::string& flag = args[i];
+    std::string v;
+    auto value = [&]() -> bool {
+      if (i + 1 >= args.size() || args[i + 1].empty()) return false;
+      v = args[++i];
+      return true;
+    };
+    auto number = [&](long lo, long hi, auto& out) -> Status {
+      if (!value()) return Error{flag + ": missing value"};
+      auto n = parse_int(flag, v, lo, hi);
+      if (!n.ok()) return n.error();
+      out = static_cast<std::remove_reference_t<decltype(out)>>(n.value());
+      return {};
+    };
+    auto text = [&](std::string& out) -> Status {
+      if (!value()) return Error{flag + ": missing value"};
+      out = v;
+      return {};
+    };
+    Status s;
+    if (flag == "--help" || flag == "-h") {
+      p.help = true;
+      return p;
+    } else if (flag == "--level") {
+      s = text(o.level);
+    } else if (flag == "--creature") {
+      s = text(o.creature_file);
+    } else if (flag == "--example") {
+      s = text(o.example);
+    } else if (flag == "--seed") {
+      long seed = 0;
+      s = number(0, 2147483647L, seed);
+      if (s.ok()) o.seed = static_cast<uint64_t>(seed);
+    } else if (flag == "--npcs") {
+      s = number(0, 64, o.npcs);
+    } else if (flag == "--replay") {
+      s = text(o.replay);
+    } else if (flag == "--record") {
+      s = text(o.record);
+    } else if (flag == "--headless") {
+      o.headless = true;
+    } else if (flag == "--frames") {
+      s = number(1, 10000000, o.frames);
+      frames_set = true;
+    } else if (flag == "--png") {
+      s = text(o.png);
+    } else if (flag == "--gif") {
+      s = text(o.gif);
+    } else if (flag == "--gif-seconds") {
+      long secs = 0;
+      if (!value()) {
+        s = Error{flag + ": missing value"};
+      } else {
+        char* end = nullptr;
+        const double d = std::strtod(v.c_str(), &end);
+        if (*end != '\0' || !(d >= 0.5 && d <= 60.0)) s = Error{flag + ": expected seconds in [0.5, 60], got \"" + v + "\""};
+        else o.gif_seconds = static_cast<float>(d);
+      }
+      (void)secs;
+    } else if (flag == "--state") {
+      s = text(o.state);
+    } else if (flag == "--hz") {
+      s = number(30, 480, o.tick_hz);
+    } else if (flag == "--no-vsync") {
+      o.vsync = false;
+    } else if (flag == "--fps-cap") {
+      s = number(0, 1000, o.fps_cap);
+    } else if (flag == "--size") {
+      if (!value()) {
+        s = Error{flag + ": missing value"};
+      } else {
+        const size_t x = v.find('x');
+        auto w = parse_int(flag + " width", x == std::string::npos ? v : v.substr(0, x), 16, 8192);
+        auto h = parse_int(flag + " height", x == std::string::npos ? "" : v.substr(x + 1), 16, 8192);
+        if (!w.ok() || !h.ok()) s = Error{flag + ": expected WIDTHxHEIGHT with sides in [16, 8192], got \"" + v + "\""};
+        else o.width = static_cast<int>(w.value()), o.height = static_cast<int>(h.value());
+      }
+    } else if (flag == "--no-hud") {
+      o.hud = false;
+    } else if (flag == "--out") {
+      s = text(o.out_dir);
+    } else {
+      s = Error{"unknown argument \"" + flag + "\" (see --help)"};
+    }
+    if (!s.ok()) return s.error();
+  }
+  const int sources = (o.creature_file.empty() ? 0 : 1) + (o.example.empty() ? 0 : 1) + (o.seed ? 1 : 0);
+  if (sources > 1) return Error{"give only one of --creature, --example, --seed"};
+  if (!o.replay.empty() && sources > 0) return Error{"--replay brings its own creature: drop --creature/--example/--seed"};
+  if (frames_set && !o.headless && o.frames <= 0) return Error{"--frames: expected an integer >= 1"};
+  if (o.headless) {
+    o.demo = o.replay.empty();
+    if (!frames_set && o.replay.empty()) o.frames = 600;
+  }
+  return p;
+}
+
+}  // namespace ossa
