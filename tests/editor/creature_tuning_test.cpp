@@ -1,0 +1,147 @@
+#include <catch2/catch.hpp>
+
+#include <filesystem>
+
+#include "ossa/editor/creature_panel_model.h"
+#include "ossa/editor/tuning_model.h"
+#include "ossa/gen/genome.h"
+#include "ossa/io/file.h"
+#include "shared/scenes.h"
+
+namespace ossa {
+namespace {
+
+namespace fs = std::filesystem;
+
+std::string genome_text(const Genome& g) { return genome_to_json(g).dump(); }
+
+TEST_CASE("creature panel: examples, random, conditions and undo steps", "[editor]") {
+  UndoStack undo;
+  CreaturePanelModel m(scenes::generator(), undo, "horse");
+  REQUIRE(m.creature());
+  REQUIRE(m.genome().name == "horse");
+  REQUIRE(m.example_names().size() == 44);
+  REQUIRE_FALSE(m.dirty());
+  const std::string horse = genome_text(m.genome());
+  REQUIRE(m.pick_example("kangaroo").ok());
+  REQUIRE_FALSE(m.pick_example("no such animal").ok());
+  REQUIRE_FALSE(m.last_error().empty());
+  m.seed = 9;
+  GenerateOptions o;
+  o.wings = 1;
+  o.leg_pairs = 1;
+  m.set_conditions(o);
+  REQUIRE(m.genome().pca[kWings] == Approx(1.0).margin(0.5));
+  REQUIRE(m.creature()->count(LimbKind::kWing) == 2);
+  REQUIRE(undo.size() == 2);
+  undo.undo();
+  undo.undo();
+  REQUIRE(genome_text(m.genome()) == horse);
+  REQUIRE_FALSE(m.dirty());
+}
+
+TEST_CASE("creature panel: sigma sliders move one component, a drag is one step", "[editor]") {
+  UndoStack undo;
+  CreaturePanelModel m(scenes::generator(), undo, "horse");
+  const Genome before = m.genome();
+  const double s1 = m.sigma(1);
+  m.begin_edit("PC1");
+  for (int i = 0; i <= 10; ++i) m.set_sigma(0, -1.0 + 0.2 * i);
+  m.end_edit();
+  REQUIRE(undo.size() == 1);
+  REQUIRE(m.sigma(0) == Approx(1.0).margin(0.05));
+  REQUIRE(m.sigma(1) == Approx(s1).margin(0.05));  // the other components stay
+  REQUIRE(m.genome().pca[kWings] == before.pca[kWings]);
+  REQUIRE(m.genome().limbs.size() == before.limbs.size());
+  REQUIRE(m.creature());
+  m.set_sigma(0, 99.0);  // clamped
+  REQUIRE(m.sigma(0) == Approx(CreaturePanelModel::kSigmaRange).margin(0.05));
+  undo.undo();
+  undo.undo();
+  REQUIRE(genome_text(m.genome()) == genome_text(before));
+}
+
+TEST_CASE("creature panel: regenerating one part keeps the rest", "[editor]") {
+  UndoStack undo;
+  CreaturePanelModel m(scenes::generator(), undo, "horse");
+  for (uint64_t seed = 1; seed <= 12; ++seed) {
+    m.seed = seed;
+    for (CreaturePart part : {CreaturePart::kLimbs, CreaturePart::kRibs, CreaturePart::kTail, CreaturePart::kSkull}) {
+      const Genome a = m.genome();
+      m.regenerate(part);
+      const Genome& b = m.genome();
+      REQUIRE(b.pca == a.pca);
+      REQUIRE(b.neck_vertebrae == a.neck_vertebrae);
+      REQUIRE(b.back_vertebrae == a.back_vertebrae);
+      if (part != CreaturePart::kTail) REQUIRE(b.tail_vertebrae == a.tail_vertebrae);
+      if (part != CreaturePart::kRibs) REQUIRE(b.rib_interval == a.rib_interval);
+      if (part != CreaturePart::kSkull) REQUIRE(b.skull_variant == a.skull_variant);
+      if (part != CreaturePart::kLimbs) REQUIRE(genome_to_json(b)["limbs"] == genome_to_json(a)["limbs"]);
+      REQUIRE(m.creature());
+    }
+  }
+  REQUIRE(undo.size() <= 48);
+  while (undo.undo()) {
+  }
+  REQUIRE(m.genome().name == "horse");
+}
+
+TEST_CASE("creature panel: genome save/load, SVG export, variation and callbacks", "[editor]") {
+  UndoStack undo;
+  CreaturePanelModel m(scenes::generator(), undo, "horse");
+  const fs::path dir = fs::temp_directory_path() / "ossa_editor_test_creature";
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  m.variation(0.8);
+  REQUIRE(m.dirty());
+  const std::string varied = genome_text(m.genome());
+  REQUIRE(m.save_genome((dir / "g.json").string()).ok());
+  REQUIRE_FALSE(m.dirty());
+  REQUIRE(m.pick_example("kangaroo").ok());
+  REQUIRE(m.load_genome((dir / "g.json").string()).ok());
+  REQUIRE(genome_text(m.genome()) == varied);
+  REQUIRE_FALSE(m.dirty());
+  REQUIRE_FALSE(m.load_genome((dir / "none.json").string()).ok());
+  REQUIRE(genome_text(m.genome()) == varied);
+  REQUIRE(m.export_svg((dir / "c.svg").string()).ok());
+  REQUIRE(read_file((dir / "c.svg").string()).value().find("<svg") != std::string::npos);
+  REQUIRE_FALSE(m.save_genome((dir / "missing" / "g.json").string()).ok());
+  int applied = 0, spawned = 0;
+  m.on_apply_to_player = [&](std::shared_ptr<const Creature> c) { applied += c != nullptr; };
+  m.on_spawn_npc = [&](std::shared_ptr<const Creature> c) { spawned += c != nullptr; };
+  m.apply_to_player();
+  m.spawn_npc();
+  REQUIRE((applied == 1 && spawned == 1));
+}
+
+TEST_CASE("tuning: every field has a unit and a range holding its default; edits clamp and undo", "[editor]") {
+  const AnimatorParams defaults;
+  const auto fields = tuning_fields();
+  REQUIRE(fields.size() == 18);
+  for (const TuningField& f : fields) {
+    INFO(f.name);
+    REQUIRE(std::string(f.unit).size() > 0);
+    REQUIRE(f.min < f.max);
+    REQUIRE(defaults.*(f.member) >= f.min);
+    REQUIRE(defaults.*(f.member) <= f.max);
+  }
+  UndoStack undo;
+  AnimatorParams seen;
+  TuningModel m(defaults, undo, [&](const AnimatorParams& p) { seen = p; });
+  m.set_value(0, 100.0f);
+  REQUIRE(m.params().step_distance_multiplier == fields[0].max);
+  REQUIRE(seen.step_distance_multiplier == fields[0].max);
+  m.begin_edit("duty");
+  for (int i = 0; i < 10; ++i) m.set_value(3, 0.6f + 0.01f * i);
+  m.end_edit();
+  m.set_gait_override(GaitOverride::kTrot);
+  REQUIRE(undo.size() == 3);
+  while (undo.undo()) {
+  }
+  REQUIRE(seen.step_distance_multiplier == defaults.step_distance_multiplier);
+  REQUIRE(seen.duty_walk == defaults.duty_walk);
+  REQUIRE(seen.gait_override == GaitOverride::kAuto);
+}
+
+}  // namespace
+}  // namespace ossa
