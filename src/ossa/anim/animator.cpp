@@ -49,6 +49,17 @@ glm::vec2 rotate(glm::vec2 v, float a) {
   return {c * v.x - s * v.y, s * v.x + c * v.y};
 }
 float bone_angle(const Mat2x3& m) { return std::atan2(m.m[1], m.m[0]); }
+Mat2x3 local_matrix(const BoneLocal& l) {
+  const float c = std::cos(l.angle_ls), s = std::sin(l.angle_ls);
+  Mat2x3 m;
+  m.m[0] = c;
+  m.m[1] = s;
+  m.m[2] = -s;
+  m.m[3] = c;
+  m.m[4] = l.offset_ls.x;
+  m.m[5] = l.offset_ls.y;
+  return m;
+}
 float bump(float s) { return std::pow(std::max(0.0f, std::sin(kPi * s)), 0.7f); }
 
 }  // namespace
@@ -71,9 +82,9 @@ Animator::Animator(const Creature& creature, SplinePrototypes prototypes, Animat
     : creature_(&creature), spline_prototypes_(std::move(prototypes)), params_(params) {
   const Skeleton& sk = creature.skeleton;
   pose_ = creature.rest_pose;
-  model_rest_ = model_matrices(sk, pose_.locals);
+  model_rest_ = ossa::model_matrices(sk, pose_.locals);
   model_ = model_rest_;
-  world_ = model_rest_;
+  world_dirty_ = true;
   root_rest_y_ = bone_start(model_rest_[creature.root]).y;
 
   // Leg groups: one per girdle slot carrying legs, front first.
@@ -131,6 +142,32 @@ Animator::Animator(const Creature& creature, SplinePrototypes prototypes, Animat
   }
   body_half_length_ = std::max(0.5f * (x_max - x_min), 0.05f);
   for (size_t i = 0; i < legs_.size(); ++i) feet_[i].offset = leg_target_offset(static_cast<int>(i));
+
+  // FK caches: rest local matrices, the bones the animator moves, the limb chains.
+  rest_local_m_.resize(sk.bone_count());
+  for (int b = 0; b < sk.bone_count(); ++b) rest_local_m_[b] = local_matrix(pose_.locals[b]);
+  dynamic_bone_.assign(sk.bone_count(), 0);
+  limb_bone_.assign(sk.bone_count(), 0);
+  dynamic_bone_[creature.root] = 1;
+  if (creature.skull >= 0) dynamic_bone_[creature.skull] = 1;
+  for (int b : creature.tail) dynamic_bone_[b] = 1;
+  for (const Limb& limb : creature.limbs) {
+    for (int b : limb.bones) limb_bone_[b] = 1;
+  }
+  for (int b = 0; b < sk.bone_count(); ++b) {
+    if (limb_bone_[b]) limb_bones_.push_back(b);
+  }
+  needed_bone_.assign(sk.bone_count(), 0);
+  for (const Limb& limb : creature.limbs) {
+    for (int b = limb.girdle_bone; b >= 0; b = sk.parent(b)) needed_bone_[b] = 1;
+  }
+  needed_bone_[creature.root] = 1;
+  // The neck and head take part in the wall sweep.
+  for (int b : creature.neck) needed_bone_[b] = 1;
+  if (creature.skull >= 0) needed_bone_[creature.skull] = 1;
+  for (int b = 0; b < sk.bone_count(); ++b) {
+    if (needed_bone_[b]) needed_bones_.push_back(b);
+  }
 }
 
 float Animator::walk_speed() const { return std::sqrt(0.5f * params_.gravity * hip_height_); }
@@ -147,7 +184,32 @@ glm::vec2 Animator::foot_ws(int leg) const {
   const Limb& limb = leg_limb(leg);
   const Skeleton& sk = creature_->skeleton;
   const int b = creature_->contact == ContactMode::kFlat ? limb.bones[1] : limb.bones[2];
-  return bone_end(world_[b], sk.length(b));
+  return to_world(bone_end(model_[b], sk.length(b)));
+}
+
+const std::vector<Mat2x3>& Animator::model_matrices() const {
+  if (model_dirty_) {
+    const Skeleton& sk = creature_->skeleton;
+    const std::vector<int>& parents = sk.parents();
+    for (int b = 0; b < sk.bone_count(); ++b) {
+      if (needed_bone_[b] || limb_bone_[b]) continue;
+      const Mat2x3 local = dynamic_bone_[b] || legs_.empty() ? local_matrix(pose_.locals[b]) : rest_local_m_[b];
+      model_[b] = parents[b] < 0 ? local : model_[parents[b]] * local;
+    }
+    model_dirty_ = false;
+  }
+  return model_;
+}
+
+const std::vector<Mat2x3>& Animator::world_matrices() const {
+  model_matrices();
+  if (world_dirty_) {
+    world_.resize(model_.size());
+    const Mat2x3 m = model_to_world();
+    for (size_t i = 0; i < model_.size(); ++i) world_[i] = m * model_[i];
+    world_dirty_ = false;
+  }
+  return world_;
 }
 
 void Animator::reset(glm::vec2 position_ws, const Level& level, int facing) {
@@ -220,10 +282,11 @@ void Animator::update(float dt, float desired_velocity, const Level& level) {
   // Body motion, stopped by walls the body would run into.
   float dx = facing_ * speed_ * dt;
   if (dx != 0.0f) {
+    // The back, neck, head, arms and fins as they are now.
     const Skeleton& sk = creature_->skeleton;
     glm::vec2 lo(1e30f), hi(-1e30f);
     auto add = [&](int b) {
-      const glm::vec2 p = bone_start(world_[b]), q = bone_end(world_[b], sk.length(b));
+      const glm::vec2 p = to_world(bone_start(model_[b])), q = to_world(bone_end(model_[b], sk.length(b)));
       lo = glm::min(lo, glm::min(p, q));
       hi = glm::max(hi, glm::max(p, q));
     };
@@ -231,7 +294,6 @@ void Animator::update(float dt, float desired_velocity, const Level& level) {
     for (int b : creature_->back) add(b);
     for (int b : creature_->neck) add(b);
     if (creature_->skull >= 0) add(creature_->skull);
-    // Arms, wings and fins travel with the body: they must not run into walls either.
     for (int a : arms_) for (int b : creature_->limbs[a].bones) add(b);
     for (int a : fins_) for (int b : creature_->limbs[a].bones) add(b);
     // Low obstacles are the legs' business (steps); the body only meets walls.
@@ -693,12 +755,14 @@ void Animator::build_pose(float dt) {
       pose_.locals[chain[i]].angle_ls += amp * std::sin(kTwoPi * (crawl_phase_ - params_.crawl_waves * static_cast<float>(i) / n));
     }
   }
+  // Forward kinematics in two passes: the body first (bones whose joint values did not change
+  // reuse their rest matrices), then, after IK, the limb chains alone (leaves of the tree).
   model_.resize(sk.bone_count());
-  ForwardKinematicsJob fk;
-  fk.skeleton = &sk;
-  fk.locals = pose_.locals;
-  fk.model = model_;
-  fk.run();
+  const std::vector<int>& parents = sk.parents();
+  for (int b : needed_bones_) {
+    const Mat2x3 local = dynamic_bone_[b] || legs_.empty() ? local_matrix(pose_.locals[b]) : rest_local_m_[b];
+    model_[b] = parents[b] < 0 ? local : model_[parents[b]] * local;
+  }
 
   // Legs: two-bone IK in model space (the creature always faces +x there, so knees bend the
   // right way whichever way it faces in the world).
@@ -706,7 +770,7 @@ void Animator::build_pose(float dt) {
     const LegInfo& info = legs_[i];
     const Limb& limb = c.limbs[info.limb];
     const Foot& f = feet_[foot_of_leg_[i]];
-    const glm::vec2 joint = bone_start(model_[limb.bones[0]]);
+    const glm::vec2 joint = model_[limb.girdle_bone].apply(pose_.locals[limb.bones[0]].offset_ls);
     glm::vec2 ankle = to_model(f.pos_ws) - info.foot_offset_ms;
     if (f.state == LegState::kSwing) {
       // A swinging foot out of reach below stays at the lowest point the leg reaches, right
@@ -740,10 +804,9 @@ void Animator::build_pose(float dt) {
     const Limb& limb = c.limbs[fin];
     pose_.locals[limb.bones[0]].angle_ls += 0.12f * motion * std::sin(kTwoPi * (crawl_phase_ + phase_));
   }
-  fk.run();
-  world_.resize(model_.size());
-  const Mat2x3 to_world_m = model_to_world();
-  for (size_t i = 0; i < model_.size(); ++i) world_[i] = to_world_m * model_[i];
+  for (int b : limb_bones_) model_[b] = model_[parents[b]] * local_matrix(pose_.locals[b]);
+  world_dirty_ = true;
+  model_dirty_ = true;
 }
 
 }  // namespace ossa

@@ -60,8 +60,13 @@ class Animator {
   const Creature& creature() const { return *creature_; }
   const Pose& pose() const { return pose_; }
   Mat2x3 model_to_world() const;
-  // World matrices of the current pose (computed by update/reset).
-  const std::vector<Mat2x3>& world_matrices() const { return world_; }
+  // Model-space matrices of the current pose. update() computes the bones it needs (spine to
+  // the girdles, limbs); the rest (ribs, neck, skull, tail...) on first use after an update,
+  // so headless simulation and ticks between rendered frames do not pay for them.
+  const std::vector<Mat2x3>& model_matrices() const;
+  // World matrices of the current pose: model_to_world() · model, computed on first use after
+  // an update (renderers that fold the placement into their palette never pay for it).
+  const std::vector<Mat2x3>& world_matrices() const;
 
   // ---- State ------------------------------------------------------------------------------
   float x() const { return body_x_; }                 // world x of the root
@@ -155,7 +160,17 @@ class Animator {
   float body_half_length_ = 0.5f;
 
   Pose pose_;
-  std::vector<Mat2x3> model_rest_, model_, world_;
+  std::vector<Mat2x3> model_rest_;
+  mutable std::vector<Mat2x3> model_;
+  mutable std::vector<Mat2x3> world_;
+  mutable bool world_dirty_ = true;
+  mutable bool model_dirty_ = true;       // bones outside needed_bones_ / limb_bones_ are stale
+  std::vector<int> needed_bones_;         // the root and the spine chains up to the girdles
+  std::vector<uint8_t> needed_bone_;
+  std::vector<Mat2x3> rest_local_m_;      // rest local matrix per bone
+  std::vector<uint8_t> dynamic_bone_;     // joint values the animator changes (spine, skull, tail)
+  std::vector<uint8_t> limb_bone_;        // bones of limb chains (recomputed after IK)
+  std::vector<int> limb_bones_;           // their indices, parents first
 
   // Body and gait state.
   float body_x_ = 0.0f;

@@ -17,17 +17,6 @@ glm::mat3 Mat2x3::to_glm() const {
   return glm::mat3(m[0], m[1], 0.0f, m[2], m[3], 0.0f, m[4], m[5], 1.0f);
 }
 
-Mat2x3 operator*(const Mat2x3& a, const Mat2x3& b) {
-  Mat2x3 r;
-  r.m[0] = a.m[0] * b.m[0] + a.m[2] * b.m[1];
-  r.m[1] = a.m[1] * b.m[0] + a.m[3] * b.m[1];
-  r.m[2] = a.m[0] * b.m[2] + a.m[2] * b.m[3];
-  r.m[3] = a.m[1] * b.m[2] + a.m[3] * b.m[3];
-  r.m[4] = a.m[0] * b.m[4] + a.m[2] * b.m[5] + a.m[4];
-  r.m[5] = a.m[1] * b.m[4] + a.m[3] * b.m[5] + a.m[5];
-  return r;
-}
-
 glm::vec2 Transform2D::apply_vector(glm::vec2 v) const {
   if (mirror_x) v.x = -v.x;
   return scale * rotate(v, std::cos(rotation), std::sin(rotation));

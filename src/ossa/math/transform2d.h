@@ -29,8 +29,18 @@ struct Mat2x3 {
   glm::mat3 to_glm() const;
 };
 
-/// a * b applies b first, then a (like matrices acting on column vectors).
-Mat2x3 operator*(const Mat2x3& a, const Mat2x3& b);
+/// a * b applies b first, then a (like matrices acting on column vectors). Inline: forward
+/// kinematics and palettes do one per bone per tick.
+inline Mat2x3 operator*(const Mat2x3& a, const Mat2x3& b) {
+  Mat2x3 r;
+  r.m[0] = a.m[0] * b.m[0] + a.m[2] * b.m[1];
+  r.m[1] = a.m[1] * b.m[0] + a.m[3] * b.m[1];
+  r.m[2] = a.m[0] * b.m[2] + a.m[2] * b.m[3];
+  r.m[3] = a.m[1] * b.m[2] + a.m[3] * b.m[3];
+  r.m[4] = a.m[0] * b.m[4] + a.m[2] * b.m[5] + a.m[4];
+  r.m[5] = a.m[1] * b.m[4] + a.m[3] * b.m[5] + a.m[5];
+  return r;
+}
 
 /// p ↦ translation + scale · R(rotation) · Mx(p), where Mx negates x when mirror_x is set.
 /// Mirror is applied first, in the local frame, so a mirrored bone chain bends the other way

@@ -34,10 +34,6 @@ bool ForwardKinematicsJob::run() const {
   return true;
 }
 
-glm::vec2 bone_start(const Mat2x3& b) { return {b.m[4], b.m[5]}; }
-
-glm::vec2 bone_end(const Mat2x3& b, float length) { return b.apply({length, 0.0f}); }
-
 bool PaletteJob::validate() const {
   return palette.size() == world.size() &&
          (inverse_bind.empty() || inverse_bind.size() == world.size());

@@ -34,8 +34,8 @@ struct ForwardKinematicsJob {
 };
 
 // The world-space joint positions of a pose: start (joint with parent) and end of each bone.
-glm::vec2 bone_start(const Mat2x3& bone_matrix);
-glm::vec2 bone_end(const Mat2x3& bone_matrix, float length);
+inline glm::vec2 bone_start(const Mat2x3& b) { return {b.m[4], b.m[5]}; }
+inline glm::vec2 bone_end(const Mat2x3& b, float length) { return b.apply({length, 0.0f}); }
 
 // Skinning palette: palette_i = world_i · inverse_bind_i, where inverse_bind maps a vertex from
 // the space it was authored in (model space of the bind pose) to the bone frame. Sprite meshes
