@@ -1,0 +1,134 @@
+// Animator update for 1 000 walking quadrupeds (the horse: 102 bones, 4 legs) per tick.
+//   animator_1000:ossa       Animator::update for every creature (gait, swing planning, body,
+//                            IK, FK of the bones the update needs)
+//   animator_1000:reference  the bare kinematics a naive animator does per creature and tick:
+//                            full FK with glm::mat3 (trig per bone) before and after IK, and a
+//                            naive acos/atan2 two-bone IK per leg
+//   anim_ik_fk_1000:ossa     our share of the update spent in IK and FK alone
+//   anim_ik_fk_1000:reference  the naive IK + FK again (for the ratio of the shares)
+#include <benchmark/benchmark.h>
+
+#define GLM_ENABLE_EXPERIMENTAL
+#include <glm/gtx/matrix_transform_2d.hpp>
+
+#include <cmath>
+#include <memory>
+#include <vector>
+
+#include "ossa/anim/animator.h"
+#include "ossa/math/two_bone_ik.h"
+#include "shared/level_scenes.h"
+#include "shared/scenes.h"
+
+namespace {
+
+using namespace ossa;
+
+constexpr int kCreatures = 1000;
+
+struct Herd {
+  Level level = scenes::flat_level(5000.0f);
+  std::shared_ptr<const Creature> creature = std::make_shared<const Creature>(scenes::quadruped());
+  std::vector<std::unique_ptr<Animator>> animators;
+  Herd() {
+    for (int i = 0; i < kCreatures; ++i) {
+      animators.push_back(std::make_unique<Animator>(*creature, SplinePrototypes::defaults()));
+      animators.back()->reset({2.0f + 0.37f * static_cast<float>(i % 100), 1.0f}, level);
+      // Desynchronise: each creature starts some ticks into its walk.
+      for (int t = 0; t < i % 120; ++t) animators.back()->update(1.0f / 120.0f, 1.8f, level);
+    }
+  }
+};
+
+Herd& herd() {
+  static Herd h;
+  return h;
+}
+
+void animator_ossa(benchmark::State& state) {
+  Herd& h = herd();
+  for (auto _ : state) {
+    for (auto& a : h.animators) a->update(1.0f / 120.0f, 1.8f, h.level);
+    benchmark::ClobberMemory();
+  }
+  state.SetItemsProcessed(state.iterations() * kCreatures);
+  state.counters["us_per_tick"] = benchmark::Counter(static_cast<double>(state.iterations()) * 1e-6,
+                                                     benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
+}
+BENCHMARK(animator_ossa)->Name("animator_1000:ossa")->Unit(benchmark::kMicrosecond);
+
+// Naive kinematics of one creature: FK twice (glm::mat3, trig per bone) and one acos IK per leg.
+float naive_kinematics(const Creature& c, const std::vector<BoneLocal>& locals, std::vector<glm::mat3>& model,
+                       bool fk, bool ik) {
+  const Skeleton& sk = c.skeleton;
+  float sink = 0.0f;
+  auto run_fk = [&] {
+    for (int b = 0; b < sk.bone_count(); ++b) {
+      glm::mat3 local = glm::rotate(glm::translate(glm::mat3(1.0f), locals[b].offset_ls), locals[b].angle_ls);
+      model[b] = sk.parent(b) < 0 ? local : model[sk.parent(b)] * local;
+    }
+  };
+  if (fk) run_fk();
+  if (ik) {
+    for (const Limb& limb : c.limbs) {
+      if (limb.kind != LimbKind::kLeg) continue;
+      const glm::vec2 root(model[limb.girdle_bone][2]);
+      const glm::vec2 target = root + glm::vec2(0.1f, -0.6f);
+      const float l1 = sk.length(limb.bones[0]), l2 = sk.length(limb.bones[1]);
+      const glm::vec2 d = target - root;
+      const float r = std::clamp(std::sqrt(d.x * d.x + d.y * d.y), std::fabs(l1 - l2), l1 + l2);
+      const float a = std::acos(std::clamp((l1 * l1 + r * r - l2 * l2) / (2.0f * l1 * r), -1.0f, 1.0f));
+      const float b = std::acos(std::clamp((l1 * l1 + l2 * l2 - r * r) / (2.0f * l1 * l2), -1.0f, 1.0f));
+      sink += std::atan2(d.y, d.x) + a + b;
+    }
+  }
+  if (fk) run_fk();
+  return sink + model.back()[2][0];
+}
+
+void animator_reference(benchmark::State& state) {
+  Herd& h = herd();
+  std::vector<glm::mat3> model(h.creature->skeleton.bone_count());
+  for (auto _ : state) {
+    for (auto& a : h.animators) benchmark::DoNotOptimize(naive_kinematics(*h.creature, a->pose().locals, model, true, true));
+  }
+  state.SetItemsProcessed(state.iterations() * kCreatures);
+}
+BENCHMARK(animator_reference)->Name("animator_1000:reference")->Unit(benchmark::kMicrosecond);
+
+// Our IK + FK alone: two-bone IK per leg and FK of the bones the update computes.
+void ik_fk_ossa(benchmark::State& state) {
+  Herd& h = herd();
+  const Creature& c = *h.creature;
+  std::vector<Mat2x3> model(c.skeleton.bone_count());
+  for (auto _ : state) {
+    for (auto& a : h.animators) {
+      ForwardKinematicsJob fk;
+      fk.skeleton = &c.skeleton;
+      fk.locals = a->pose().locals;
+      fk.model = model;
+      fk.run();
+      for (const Limb& limb : c.limbs) {
+        if (limb.kind != LimbKind::kLeg) continue;
+        const glm::vec2 root = bone_start(model[limb.bones[0]]);
+        benchmark::DoNotOptimize(solve_two_bone_ik(root, c.skeleton.length(limb.bones[0]), c.skeleton.length(limb.bones[1]),
+                                                   root + glm::vec2(0.1f, -0.6f), 1.0f));
+      }
+    }
+    benchmark::ClobberMemory();
+  }
+  state.SetItemsProcessed(state.iterations() * kCreatures);
+}
+BENCHMARK(ik_fk_ossa)->Name("anim_ik_fk_1000:ossa")->Unit(benchmark::kMicrosecond);
+
+void ik_fk_reference(benchmark::State& state) {
+  Herd& h = herd();
+  std::vector<glm::mat3> model(h.creature->skeleton.bone_count());
+  for (auto _ : state) {
+    for (auto& a : h.animators) benchmark::DoNotOptimize(naive_kinematics(*h.creature, a->pose().locals, model, true, true));
+  }
+  state.SetItemsProcessed(state.iterations() * kCreatures);
+}
+BENCHMARK(ik_fk_reference)->Name("anim_ik_fk_1000:reference")->Unit(benchmark::kMicrosecond);
+
+}  // namespace
