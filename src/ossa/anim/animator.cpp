@@ -245,7 +245,7 @@ void Animator::reset(glm::vec2 position_ws, const Level& level, int facing) {
     f.pos_ws = {x, ground_at(x - 0.02f, x + 0.02f, position_ws.y)};
   }
   place_body(0.0f, level);
-  build_pose(0.0f);
+  build_pose(0.0f, level);
 }
 
 // [SECTION] update: turn, gait clock, legs ------------------------------------------------
@@ -331,7 +331,7 @@ void Animator::update(float dt, float desired_velocity, const Level& level) {
     gait_ = speed_ > 0.0f ? Gait::kCrawl : Gait::kIdle;
     idle_time_ += dt;
     place_body(dt, level);
-    build_pose(dt);
+    build_pose(dt, level);
     return;
   }
 
@@ -417,7 +417,7 @@ void Animator::update(float dt, float desired_velocity, const Level& level) {
     f.pos_ws = swing_point(f, std::clamp(f.progress, 0.0f, 1.0f));
   }
   place_body(dt, level);
-  build_pose(dt);
+  build_pose(dt, level);
 }
 
 void Animator::update_gait(float dt) {
@@ -585,6 +585,39 @@ void Animator::set_new_splines(int leg, const Level& level, float swing_phase) {
   raise_for_clearance(leg, level);
 }
 
+void Animator::keep_arm_above_ground(const Limb& arm, const Level& level) {
+  // Long arms of a low body would reach into the ground (or a ledge): lift the wrist with
+  // two-bone IK until elbow, wrist and hand clear the highest ground under the arm.
+  const Skeleton& sk = creature_->skeleton;
+  const float l1 = sk.length(arm.bones[0]), l2 = sk.length(arm.bones[1]), l3 = sk.length(arm.bones[2]);
+  for (int pass = 0; pass < 3; ++pass) {
+    const Mat2x3 upper = model_[arm.girdle_bone] * local_matrix(pose_.locals[arm.bones[0]]);
+    const Mat2x3 lower = upper * local_matrix(pose_.locals[arm.bones[1]]);
+    const Mat2x3 hand = lower * local_matrix(pose_.locals[arm.bones[2]]);
+    const glm::vec2 shoulder = bone_start(upper), elbow = bone_start(lower), wrist = bone_start(hand);
+    const glm::vec2 tip = bone_end(hand, l3);
+    float x0 = 1e30f, x1 = -1e30f, low = 1e30f;
+    for (glm::vec2 q : {elbow, wrist, tip}) {
+      const float xw = to_world(q).x;
+      x0 = std::min(x0, xw);
+      x1 = std::max(x1, xw);
+      low = std::min(low, q.y);
+    }
+    const auto ground = level.ground_height_below(x0, x1, shoulder.y, 100.0f);
+    const float margin = 0.01f + 0.02f * hip_height_;
+    if (!ground || low >= ground->height_ws + margin) return;
+    const float lift = ground->height_ws + margin - low;
+    const glm::vec2 target = wrist + glm::vec2(0.0f, lift);
+    const glm::vec2 a = elbow - shoulder, b = wrist - shoulder;
+    const float bend = a.x * b.y - a.y * b.x > 0.0f ? 1.0f : -1.0f;  // keep the elbow's side
+    const float hand_abs = bone_angle(hand);
+    const TwoBoneIkResult ik = solve_two_bone_ik(shoulder, l1, l2, target, bend);
+    pose_.locals[arm.bones[0]].angle_ls = wrap_angle(ik.upper_angle - bone_angle(model_[arm.girdle_bone]));
+    pose_.locals[arm.bones[1]].angle_ls = ik.lower_angle;
+    pose_.locals[arm.bones[2]].angle_ls = wrap_angle(hand_abs - (ik.upper_angle + ik.lower_angle));
+  }
+}
+
 glm::vec2 Animator::swing_point(const Foot& f, float s) {
   // The blended prototype shapes the step [T 4.4.1]; on steps the foot rises before it moves
   // forward (up) or moves over before it descends (down), so it never clips a riser's corner.
@@ -722,7 +755,7 @@ void Animator::place_body(float dt, const Level& level) {
 
 // [SECTION] pose: spine, IK, arms, tail ------------------------------------------------------
 
-void Animator::build_pose(float dt) {
+void Animator::build_pose(float dt, const Level& level) {
   const Creature& c = *creature_;
   const Skeleton& sk = c.skeleton;
   pose_.locals = c.rest_pose.locals;
@@ -799,6 +832,7 @@ void Animator::build_pose(float dt) {
     const float t = frac(p + 0.5f);
     pose_.locals[arm.bones[0]].angle_ls += motion * spline_prototypes_[PrototypeId::kArmSwing].value(t, run_factor_);
     pose_.locals[arm.bones[1]].angle_ls += motion * spline_prototypes_[PrototypeId::kArmBend].value(t, run_factor_);
+    keep_arm_above_ground(arm, level);
   }
   for (int fin : fins_) {
     const Limb& limb = c.limbs[fin];

@@ -142,7 +142,8 @@ class Animator {
   float landing_x(int leg, float speed, float swing_phase = -1.0f) const;
   glm::vec2 girdle_ws(int group) const;  // from the current body placement
   void place_body(float dt, const Level& level);
-  void build_pose(float dt);
+  void build_pose(float dt, const Level& level);
+  void keep_arm_above_ground(const Limb& arm, const Level& level);
   glm::vec2 to_model(glm::vec2 p_ws) const { return {(p_ws.x - body_x_) * facing_, p_ws.y}; }
   glm::vec2 to_world(glm::vec2 p_ms) const { return {body_x_ + facing_ * p_ms.x, p_ms.y}; }
 
