@@ -66,8 +66,9 @@ void EditorSuite::draw_creature_window() {
   const std::string dirty = creature_ && creature_->dirty() ? " *" : "";
   const std::string title = "Creature: " + (creature_ ? creature_->genome().name : std::string("-")) +
                             dirty + "###creature";
-  ImGui::SetNextWindowPos(ImVec2(920, 30), ImGuiCond_FirstUseEver);
-  ImGui::SetNextWindowSize(ImVec2(350, 680), ImGuiCond_FirstUseEver);
+  const ImVec2 display = ImGui::GetIO().DisplaySize;
+  ImGui::SetNextWindowPos(ImVec2(std::max(340.0f, display.x - 370.0f), 30), ImGuiCond_FirstUseEver);
+  ImGui::SetNextWindowSize(ImVec2(360, 660), ImGuiCond_FirstUseEver);
   if (!ImGui::Begin(title.c_str(), &show_creature)) {
     ImGui::End();
     return;
@@ -82,6 +83,9 @@ void EditorSuite::draw_creature_window() {
 
   // Example picker and random.
   const auto& names = m.example_names();
+  // The combo shows the genome's example when it is one (after undo, load, ...).
+  for (int i = 0; i < static_cast<int>(names.size()); ++i)
+    if (names[i] == m.genome().name) creature_example_ = i;
   creature_example_ = std::clamp(creature_example_, 0, std::max(0, static_cast<int>(names.size()) - 1));
   ImGui::SetNextItemWidth(150);
   if (!names.empty() && ImGui::BeginCombo("example", names[creature_example_].c_str())) {
@@ -125,13 +129,13 @@ void EditorSuite::draw_creature_window() {
   }
 
   // σ sliders: one drag = one undo step.
-  if (ImGui::TreeNodeEx("Principal components (σ)", ImGuiTreeNodeFlags_DefaultOpen)) {
+  if (ImGui::TreeNodeEx("Principal components (sd)", ImGuiTreeNodeFlags_DefaultOpen)) {
     for (int i = 0; i < CreaturePanelModel::kSliderCount; ++i) {
       float v = static_cast<float>(m.sigma(i));
       const std::string label = "PC" + std::to_string(i + 1);
       ImGui::SetNextItemWidth(200);
       const bool moved = ImGui::SliderFloat(label.c_str(), &v, -CreaturePanelModel::kSigmaRange,
-                                            CreaturePanelModel::kSigmaRange, "%+.2f σ");
+                                            CreaturePanelModel::kSigmaRange, "%+.2f sd");
       if (ImGui::IsItemActivated()) m.begin_edit(label);
       if (moved) m.set_sigma(i, v);
       if (ImGui::IsItemDeactivated()) m.end_edit();
@@ -140,7 +144,7 @@ void EditorSuite::draw_creature_window() {
   }
 
   ImGui::SetNextItemWidth(120);
-  ImGui::SliderFloat("σ##var", &variation_sigma_, 0.05f, 2.0f, "%.2f");
+  ImGui::SliderFloat("sd##var", &variation_sigma_, 0.05f, 2.0f, "%.2f");
   ImGui::SameLine();
   if (ImGui::Button("Variation")) m.variation(variation_sigma_);
   ImGui::TextUnformatted("Regenerate:");

@@ -11,10 +11,10 @@
 //   EditorSuite editors(world, &generator, paths);      // after the World has its player
 //   ...
 //   editors.update(frame_dt);                           // footfall sampling, hot reload
+//   ImGui_ImplOpenGL3_NewFrame(); ImGui_ImplSDL2_NewFrame(); ImGui::NewFrame();
 //   bool used = editors.handle_mouse(mouse_px, left_down, wheel, camera, viewport_px);
 //   if (!used && !ImGui::GetIO().WantCaptureMouse) { /* game mouse: pan, zoom */ }
 //   if (!editors.wants_keyboard()) { /* game keys */ }
-//   ImGui_ImplOpenGL3_NewFrame(); ImGui_ImplSDL2_NewFrame(); ImGui::NewFrame();
 //   editors.draw_ui();                                  // all editor windows and popups
 //   ImGui::Render();
 //   debug.clear(); editors.draw_viewport(debug);        // selection, handles, grid, spawn
@@ -64,7 +64,9 @@ class EditorSuite {
   ~EditorSuite();
 
   // Which windows draw_ui shows (the game may bind keys to these).
-  bool show_level = true, show_splines = true, show_creature = true, show_tuning = true;
+  // The creature and tuning windows start closed so the viewport stays visible; the Windows
+  // menu opens them.
+  bool show_level = true, show_splines = true, show_creature = false, show_tuning = false;
   // Level editing in the viewport (handle_mouse picks boxes only while this is on).
   bool level_edit_mode = true;
 
@@ -88,7 +90,8 @@ class EditorSuite {
   // drawn with and the viewport size in pixels. A press starts a drag (handle, spawn or box;
   // empty space deselects), moves drag, a release ends it as one undo step. Returns true
   // when the editor used the mouse (the game should not also use it). Ignored while ImGui
-  // has the mouse (io.WantCaptureMouse) or level_edit_mode is off.
+  // has the mouse (io.WantCaptureMouse, so call this after ImGui::NewFrame()) or
+  // level_edit_mode is off.
   bool handle_mouse(glm::vec2 mouse_px, bool down, float wheel, const Camera2D& camera,
                     glm::vec2 viewport_px);
 

@@ -25,7 +25,7 @@ void EditorSuite::draw_level_window() {
                                             : std::filesystem::path(m.path()).filename().string();
   const std::string title = "Level: " + name + (m.dirty() ? " *" : "") + "###level";
   ImGui::SetNextWindowPos(ImVec2(10, 30), ImGuiCond_FirstUseEver);
-  ImGui::SetNextWindowSize(ImVec2(330, 520), ImGuiCond_FirstUseEver);
+  ImGui::SetNextWindowSize(ImVec2(320, 450), ImGuiCond_FirstUseEver);
   if (!ImGui::Begin(title.c_str(), &show_level)) {
     ImGui::End();
     return;

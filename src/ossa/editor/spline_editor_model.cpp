@@ -23,7 +23,8 @@ glm::vec2 SplineEditorModel::key_position(SplineVersion v, int key) const {
 
 glm::vec2 SplineEditorModel::tangent_position(SplineVersion v, int key) const {
   const HermiteKey& k = spline(v).keys[key];
-  return {k.t + kTangentDt, k.p + k.m * kTangentDt};
+  const float dt = tangent_side(v, key) * kTangentDt;
+  return {k.t + dt, k.p + k.m * dt};
 }
 
 void SplineEditorModel::apply(const SplinePrototypes& p) {
@@ -71,8 +72,9 @@ void SplineEditorModel::drag_to(glm::vec2 tp) {
     }
     k.p = tp.y;
   } else {
-    // The handle stays right of its key, so the slope never flips through a vertical line.
-    const float dt = std::max(tp.x - k.t, 0.01f);
+    // The handle stays on its side of the key, so the slope never flips through a vertical.
+    const float side = tangent_side(drag_->handle.version, i);
+    const float dt = side * std::max(side * (tp.x - k.t), 0.01f);
     k.m = (tp.y - k.p) / dt;
   }
   if (on_change_) on_change_(prototypes_);

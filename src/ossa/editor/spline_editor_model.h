@@ -7,8 +7,8 @@
 // so the walking creature uses it in the next tick.
 //
 // Canvas coordinates are the spline's own (t, p). A tangent handle sits at
-// key + (kTangentDt, m·kTangentDt) to the right of its key; dragging it to (t, p) sets
-// m = (p − p_key)/(t − t_key).
+// key + s·(kTangentDt, m·kTangentDt), s = tangent_side() (right of its key, left for the last
+// key); dragging it to (t, p) sets m = (p − p_key)/(t − t_key).
 #include <functional>
 #include <optional>
 #include <string>
@@ -49,6 +49,11 @@ class SplineEditorModel {
   // Canvas position of a key / its tangent handle.
   glm::vec2 key_position(SplineVersion v, int key) const;
   glm::vec2 tangent_position(SplineVersion v, int key) const;
+  // +1: the handle is drawn right of its key; -1 for the last key (at t = 1, so it stays on
+  // the canvas).
+  float tangent_side(SplineVersion v, int key) const {
+    return key + 1 == static_cast<int>(spline(v).keys.size()) && key > 0 ? -1.0f : 1.0f;
+  }
 
   // ---- Drags (one undo step each) --------------------------------------------------------
   void begin_drag(const SplineHandle& handle);

@@ -56,11 +56,11 @@ void EditorSuite::draw_spline_canvas(int slot, SplineVersion version, float widt
   // drag is under way.
   if (!m.dragging()) {
     float lo = 0.0f, hi = 0.0f;
-    for (const HermiteSpline* s : {&m.pair().walk, &m.pair().run}) {
-      for (size_t i = 0; i < s->keys.size(); ++i) {
-        const HermiteKey& k = s->keys[i];
-        lo = std::min({lo, k.p, k.p + k.m * SplineEditorModel::kTangentDt});
-        hi = std::max({hi, k.p, k.p + k.m * SplineEditorModel::kTangentDt});
+    for (SplineVersion v : {SplineVersion::kWalk, SplineVersion::kRun}) {
+      for (int i = 0; i < static_cast<int>(m.spline(v).keys.size()); ++i) {
+        const float p = m.key_position(v, i).y, h = m.tangent_position(v, i).y;
+        lo = std::min({lo, p, h});
+        hi = std::max({hi, p, h});
       }
     }
     const float pad = std::max(0.15f * (hi - lo), 0.05f);
@@ -73,6 +73,7 @@ void EditorSuite::draw_spline_canvas(int slot, SplineVersion version, float widt
   const ImVec2 mouse = ImGui::GetIO().MousePos;
   ImDrawList* dl = ImGui::GetWindowDrawList();
   draw_frame(dl, c);
+  dl->PushClipRect(c.origin, ImVec2(c.origin.x + c.size.x, c.origin.y + c.size.y), true);
 
   const HermiteSpline& s = m.spline(version);
   const int n = static_cast<int>(s.keys.size());
@@ -121,6 +122,7 @@ void EditorSuite::draw_spline_canvas(int slot, SplineVersion version, float widt
                       sel ? IM_COL32(255, 230, 80, 255) : col);
     dl->AddRect(ImVec2(k.x - 4.5f, k.y - 4.5f), ImVec2(k.x + 4.5f, k.y + 4.5f), IM_COL32(0, 0, 0, 255));
   }
+  dl->PopClipRect();
   ImGui::PopID();
   ImGui::EndGroup();
 }
@@ -146,9 +148,13 @@ void EditorSuite::draw_spline_window() {
   const std::string name = m.path().empty() ? std::string("(unsaved)")
                                             : std::filesystem::path(m.path()).filename().string();
   const std::string title = "Spline prototypes: " + name + (m.dirty() ? " *" : "") + "###splines";
-  ImGui::SetNextWindowPos(ImVec2(350, 30), ImGuiCond_FirstUseEver);
-  ImGui::SetNextWindowSize(ImVec2(560, 560), ImGuiCond_FirstUseEver);
-  if (!ImGui::Begin(title.c_str(), &show_splines)) {
+  // Top right, leaving the middle of the viewport free.
+  const ImVec2 display = ImGui::GetIO().DisplaySize;
+  ImGui::SetNextWindowPos(ImVec2(std::max(340.0f, display.x - 510.0f), 30), ImGuiCond_FirstUseEver);
+  ImGui::SetNextWindowSize(ImVec2(500, 520), ImGuiCond_FirstUseEver);
+  // A permanent scrollbar: the canvases must not change width (and keys jump under the
+  // mouse) when the numeric fields of a selected key make the content taller.
+  if (!ImGui::Begin(title.c_str(), &show_splines, ImGuiWindowFlags_AlwaysVerticalScrollbar)) {
     ImGui::End();
     for (int i = 0; i < 3; ++i) canvases_[i].drawn = false;
     return;
@@ -180,7 +186,7 @@ void EditorSuite::draw_spline_window() {
   if (preview_follow_player_ && player) preview_w_ = player->animator().run_factor();
   ImGui::SetNextItemWidth(200);
   ImGui::BeginDisabled(preview_follow_player_ && player);
-  ImGui::SliderFloat("walk → run", &preview_w_, 0.0f, 1.0f, "%.2f");
+  ImGui::SliderFloat("walk-run", &preview_w_, 0.0f, 1.0f, "%.2f");
   ImGui::EndDisabled();
   draw_preview_canvas(avail, 110.0f);
 

@@ -12,8 +12,8 @@ std::span<const TuningField> tuning_fields() {
   // Ranges as documented in animator_params.h; the tail and crawl fields have none there,
   // so these are wide bounds around the defaults.
   static const std::array<TuningField, 18> kFields = {{
-      {"step_distance_multiplier", "× stride", 0.3f, 2.0f, &P::step_distance_multiplier, "[T] scales the stride λ = 2.3·h·Fr^0.3"},
-      {"interpolation_speed_multiplier", "×", 0.1f, 5.0f, &P::interpolation_speed_multiplier, "[T] how fast lean, height and gait blend ease"},
+      {"step_distance_multiplier", "x stride", 0.3f, 2.0f, &P::step_distance_multiplier, "[T] scales the stride λ = 2.3·h·Fr^0.3"},
+      {"interpolation_speed_multiplier", "x", 0.1f, 5.0f, &P::interpolation_speed_multiplier, "[T] how fast lean, height and gait blend ease"},
       {"max_spine_rotation", "rad", 0.0f, 0.6f, &P::max_spine_rotation, "[T] largest forward lean at full run"},
       {"duty_walk", "of cycle", 0.5f, 0.85f, &P::duty_walk, "fraction of a cycle a foot is down, walking"},
       {"duty_run", "of cycle", 0.2f, 0.6f, &P::duty_run, "same at a full run; < 0.5 gives a flight phase"},
@@ -21,15 +21,15 @@ std::span<const TuningField> tuning_fields() {
       {"run_froude_end", "Fr", 0.05f, 3.0f, &P::run_froude_end, "Froude number where the blend reaches run"},
       {"trot_froude", "Fr", 0.05f, 3.0f, &P::trot_froude, "quadrupeds: walk→trot"},
       {"gallop_froude", "Fr", 0.05f, 5.0f, &P::gallop_froude, "quadrupeds: trot→gallop"},
-      {"max_step_up", "× height", 0.05f, 1.0f, &P::max_step_up, "highest step up, of the standing height"},
-      {"max_step_down", "× height", 0.05f, 1.0f, &P::max_step_down, "deepest step down, of the standing height"},
-      {"stance_height", "× rest", 0.7f, 1.05f, &P::stance_height, "girdle height, of its rest height"},
+      {"max_step_up", "x height", 0.05f, 1.0f, &P::max_step_up, "highest step up, of the standing height"},
+      {"max_step_down", "x height", 0.05f, 1.0f, &P::max_step_down, "deepest step down, of the standing height"},
+      {"stance_height", "x rest", 0.7f, 1.05f, &P::stance_height, "girdle height, of its rest height"},
       {"stop_ease_time", "s", 0.05f, 0.3f, &P::stop_ease_time, "time for swinging feet to set down after a stop"},
-      {"tail_stiffness", "1/s²", 1.0f, 400.0f, &P::tail_stiffness, "spring stiffness of the tail's follow-through"},
+      {"tail_stiffness", "1/s^2", 1.0f, 400.0f, &P::tail_stiffness, "spring stiffness of the tail's follow-through"},
       {"tail_damping", "ratio", 0.0f, 2.0f, &P::tail_damping, "damping ratio of the tail"},
       {"crawl_amplitude", "rad/vertebra", 0.0f, 0.2f, &P::crawl_amplitude, "travelling wave of legless bodies"},
       {"crawl_waves", "waves/body", 0.25f, 4.0f, &P::crawl_waves, "waves along a legless body"},
-      {"gravity", "m/s²", 1.0f, 30.0f, &P::gravity, "gravity of the Froude number"},
+      {"gravity", "m/s^2", 1.0f, 30.0f, &P::gravity, "gravity of the Froude number"},
   }};
   return kFields;
 }

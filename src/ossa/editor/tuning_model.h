@@ -20,7 +20,7 @@ namespace ossa {
 // One tunable float of AnimatorParams.
 struct TuningField {
   const char* name;                 // the member's name
-  const char* unit;                 // "m/s²", "rad", "× stride", ...
+  const char* unit;                 // "m/s^2", "rad", "x stride", ... (ASCII: ImGui's default font)
   float min, max;                   // slider range (values are clamped to it)
   float AnimatorParams::*member;
   const char* help;                 // one line for the tooltip

@@ -1,5 +1,7 @@
 // EditorSuite: the tuning panel window — every AnimatorParams field with its unit, the gait
 // override, and the live footfall diagram (stance bars per leg over the last seconds).
+#include <algorithm>
+#include <cstdio>
 #include <string>
 
 #include "ossa/editor/editor_suite.h"
@@ -52,8 +54,8 @@ void draw_footfalls(const TuningModel& t, float width) {
 
 void EditorSuite::draw_tuning_window() {
   TuningModel& m = *tuning_;
-  ImGui::SetNextWindowPos(ImVec2(10, 560), ImGuiCond_FirstUseEver);
-  ImGui::SetNextWindowSize(ImVec2(420, 600), ImGuiCond_FirstUseEver);
+  ImGui::SetNextWindowPos(ImVec2(340, 30), ImGuiCond_FirstUseEver);
+  ImGui::SetNextWindowSize(ImVec2(440, 640), ImGuiCond_FirstUseEver);
   if (!ImGui::Begin("Tuning###tuning", &show_tuning)) {
     ImGui::End();
     return;
