@@ -22,6 +22,10 @@ glm::vec2 radial_dead_zone(glm::vec2 stick, float dead_zone) {
 // ---- Gamepad ------------------------------------------------------------------------------
 
 Gamepad::Gamepad(const std::string& mapping_file) {
+  // SDL ignores joystick input while none of the app's windows has focus; an offscreen or
+  // freshly mapped window may never get it, and a playtester glancing at another window
+  // should not lose the stick either.
+  SDL_SetHint(SDL_HINT_JOYSTICK_ALLOW_BACKGROUND_EVENTS, "1");
   if (!SDL_WasInit(SDL_INIT_GAMECONTROLLER) && SDL_InitSubSystem(SDL_INIT_GAMECONTROLLER) != 0) {
     std::fprintf(stderr, "ossa: gamepad support unavailable: %s\n", SDL_GetError());
     return;

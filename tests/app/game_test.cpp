@@ -1,0 +1,364 @@
+// The playable game under SDL's offscreen driver: a virtual gamepad and pushed keyboard
+// events drive the player, unplugging keeps the game alive, replays play back to the same
+// state, and the `ossa` binary renders the creature on the level and rejects bad arguments.
+
+#include <catch2/catch.hpp>
+
+#include <SDL.h>
+
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <random>
+#include <sstream>
+#include <sys/wait.h>
+#include <unistd.h>
+#include <string>
+
+#include "app/game.h"
+#include "app/options.h"
+#include "ossa/io/json.h"
+#include "ossa/platform/image.h"
+#include "ossa/platform/input.h"
+
+namespace {
+
+using namespace ossa;
+
+constexpr double kFrame = 1.0 / 60.0;
+
+void use_offscreen() { setenv("SDL_VIDEODRIVER", "offscreen", 1); }
+
+std::string temp_dir() {
+  const auto dir = std::filesystem::temp_directory_path() / ("ossa_app_test_" + std::to_string(getpid()));
+  std::filesystem::create_directories(dir);
+  return dir.string();
+}
+
+GameOptions quiet_options() {
+  GameOptions o;
+  o.headless = true;
+  o.npcs = 0;
+  o.width = 320;
+  o.height = 180;
+  o.out_dir = temp_dir();
+  o.level = resolve_data_path("levels/default.json");
+  return o;
+}
+
+void run_frames(Game& game, int n) {
+  for (int i = 0; i < n; ++i) REQUIRE(game.frame(kFrame));
+}
+
+void push_key(SDL_Scancode code, bool down) {
+  SDL_Event e{};
+  e.type = down ? SDL_KEYDOWN : SDL_KEYUP;
+  e.key.state = down ? SDL_PRESSED : SDL_RELEASED;
+  e.key.keysym.scancode = code;
+  e.key.keysym.sym = SDL_GetKeyFromScancode(code);
+  REQUIRE(SDL_PushEvent(&e) == 1);
+}
+
+int attach_virtual_pad() {
+  const int index = SDL_JoystickAttachVirtual(SDL_JOYSTICK_TYPE_GAMECONTROLLER, 6, 15, 0);
+  REQUIRE(index >= 0);
+  return index;
+}
+
+std::string bin_dir() {
+  // CTest sets OSSA_BIN_DIR; run by hand, `ossa` sits next to this test executable.
+  const char* d = std::getenv("OSSA_BIN_DIR");
+  if (d && *d) return d;
+  std::error_code ec;
+  return std::filesystem::read_symlink("/proc/self/exe", ec).parent_path().string();
+}
+
+// Runs a command with stderr to a file; returns the exit status and the message.
+int run_command(const std::string& cmd, std::string* err) {
+  const std::string err_file = temp_dir() + "/stderr.txt";
+  const int rc = std::system((cmd + " >/dev/null 2>" + err_file).c_str());
+  std::ifstream f(err_file);
+  std::stringstream ss;
+  ss << f.rdbuf();
+  if (err) *err = ss.str();
+  return WIFEXITED(rc) ? WEXITSTATUS(rc) : -1;
+}
+
+}  // namespace
+
+TEST_CASE("radial dead zone: zero inside, continuous at the edge, full throw stays 1", "[app]") {
+  std::mt19937 rng(6);
+  std::uniform_real_distribution<float> u(-1.0f, 1.0f);
+  for (int i = 0; i < 2000; ++i) {
+    const glm::vec2 s{u(rng), u(rng)};
+    const float dz = 0.5f * (u(rng) + 1.0f) * 0.4f;
+    const glm::vec2 out = radial_dead_zone(s, dz);
+    const float m = std::hypot(s.x, s.y);
+    if (m <= dz) {
+      CHECK(out == glm::vec2(0.0f));
+    } else {
+      const float om = std::hypot(out.x, out.y);
+      CHECK(om == Approx(std::min((m - dz) / (1.0f - dz), 1.0f)).margin(1e-5));
+      CHECK(out.x * s.x >= 0.0f);  // direction kept
+      CHECK(out.y * s.y >= 0.0f);
+    }
+  }
+  CHECK(radial_dead_zone({1.0f, 0.0f}, 0.15f).x == Approx(1.0f));
+  CHECK(radial_dead_zone({0.1f, 0.1f}, 0.15f) == glm::vec2(0.0f));
+}
+
+TEST_CASE("a virtual gamepad drives the player: half stick walks, full stick runs", "[app]") {
+  use_offscreen();
+  Game game;
+  REQUIRE(game.init(quiet_options()).ok());
+  const int index = attach_virtual_pad();
+  SDL_Joystick* joy = SDL_JoystickOpen(index);
+  REQUIRE(joy != nullptr);
+  run_frames(game, 2);
+  REQUIRE(game.gamepad().connected());
+
+  const Animator& a = game.world().player()->animator();
+  const float x0 = a.x();
+  REQUIRE(SDL_JoystickSetVirtualAxis(joy, SDL_CONTROLLER_AXIS_LEFTX, 16384) == 0);
+  run_frames(game, 180);  // 3 s
+  CHECK(game.last_controls().move_x == Approx(radial_dead_zone({16384.0f / 32767.0f, 0.0f}, 0.15f).x));
+  CHECK(a.gait() == Gait::kWalk);
+  CHECK(a.velocity() > 0.6f * a.walk_speed());
+  CHECK(a.velocity() <= 1.01f * a.walk_speed());
+  CHECK(a.velocity() == Approx(game.world().player()->desired_velocity(game.last_controls())).epsilon(0.05));
+  CHECK(a.x() > x0 + 1.0f);
+
+  REQUIRE(SDL_JoystickSetVirtualAxis(joy, SDL_CONTROLLER_AXIS_LEFTX, 32767) == 0);
+  run_frames(game, 240);  // 4 s
+  CHECK(game.last_controls().move_x == Approx(1.0f));
+  CHECK(a.gait() != Gait::kWalk);
+  CHECK(a.gait() != Gait::kIdle);
+  CHECK(a.velocity() == Approx(a.run_speed()).epsilon(0.05));
+
+  // Left, half throw: walks left.
+  REQUIRE(SDL_JoystickSetVirtualAxis(joy, SDL_CONTROLLER_AXIS_LEFTX, -16384) == 0);
+  run_frames(game, 240);
+  CHECK(a.velocity() < -0.6f * a.walk_speed());
+  CHECK(a.facing() == -1);
+
+  SDL_JoystickClose(joy);
+  SDL_JoystickDetachVirtual(index);
+  run_frames(game, 2);
+}
+
+TEST_CASE("keyboard events pushed through SDL walk and run the player", "[app]") {
+  use_offscreen();
+  Game game;
+  REQUIRE(game.init(quiet_options()).ok());
+  const Animator& a = game.world().player()->animator();
+  const float x0 = a.x();
+  push_key(SDL_SCANCODE_D, true);
+  run_frames(game, 180);
+  CHECK(game.last_controls().move_x == 0.5f);
+  CHECK_FALSE(game.last_controls().run);
+  CHECK(a.velocity() == Approx(a.walk_speed()).epsilon(0.05));
+  CHECK(a.gait() == Gait::kWalk);
+  CHECK(a.x() > x0 + 2.0f);
+
+  push_key(SDL_SCANCODE_LSHIFT, true);
+  run_frames(game, 240);
+  CHECK(game.last_controls().move_x == 1.0f);
+  CHECK(game.last_controls().run);
+  CHECK(a.velocity() == Approx(a.run_speed()).epsilon(0.05));
+
+  push_key(SDL_SCANCODE_LSHIFT, false);
+  push_key(SDL_SCANCODE_D, false);
+  run_frames(game, 240);
+  CHECK(game.last_controls().move_x == 0.0f);
+  CHECK(std::abs(a.velocity()) < 0.05f);
+
+  push_key(SDL_SCANCODE_LEFT, true);
+  run_frames(game, 120);
+  CHECK(a.velocity() < 0.0f);
+  push_key(SDL_SCANCODE_LEFT, false);
+
+  // Escape quits.
+  push_key(SDL_SCANCODE_ESCAPE, true);
+  CHECK_FALSE(game.frame(kFrame));
+}
+
+TEST_CASE("unplugging the gamepad mid-game keeps running and hands control to the keyboard", "[app]") {
+  use_offscreen();
+  Game game;
+  REQUIRE(game.init(quiet_options()).ok());
+  const int index = attach_virtual_pad();
+  SDL_Joystick* joy = SDL_JoystickOpen(index);
+  REQUIRE(joy != nullptr);
+  run_frames(game, 2);
+  REQUIRE(game.gamepad().connected());
+  REQUIRE(SDL_JoystickSetVirtualAxis(joy, SDL_CONTROLLER_AXIS_LEFTX, 32767) == 0);
+  run_frames(game, 60);
+  CHECK(game.world().player()->animator().velocity() > 0.5f);
+
+  SDL_JoystickClose(joy);
+  REQUIRE(SDL_JoystickDetachVirtual(index) == 0);
+  run_frames(game, 120);  // no crash, no stale stick
+  CHECK_FALSE(game.gamepad().connected());
+  CHECK(game.last_controls().move_x == 0.0f);
+  CHECK(std::abs(game.world().player()->animator().velocity()) < 0.05f);
+
+  const float x0 = game.world().player()->animator().x();
+  push_key(SDL_SCANCODE_D, true);
+  run_frames(game, 120);
+  CHECK(game.last_controls().move_x == 0.5f);
+  CHECK(game.world().player()->animator().x() > x0 + 1.0f);
+  push_key(SDL_SCANCODE_D, false);
+
+  // Plug a new one in: it is picked up again.
+  const int again = attach_virtual_pad();
+  run_frames(game, 2);
+  CHECK(game.gamepad().connected());
+  SDL_JoystickDetachVirtual(again);
+  run_frames(game, 2);
+  CHECK_FALSE(game.gamepad().connected());
+}
+
+TEST_CASE("a recorded replay plays back to the same player state", "[app]") {
+  use_offscreen();
+  const std::string replay = temp_dir() + "/demo.replay.json";
+  float x_recorded = 0.0f;
+  uint64_t hash_recorded = 0;
+  uint64_t ticks_recorded = 0;
+  {
+    GameOptions o = quiet_options();
+    o.demo = true;
+    o.npcs = 2;
+    o.record = replay;
+    Game game;
+    REQUIRE(game.init(o).ok());
+    run_frames(game, 420);  // 7 s: walk, run, stop
+    REQUIRE(game.finish().ok());
+    x_recorded = game.world().player()->animator().x();
+    hash_recorded = pose_hash(game.world().player()->animator().world_matrices());
+    ticks_recorded = game.world().tick();
+  }
+  REQUIRE(std::filesystem::exists(replay));
+  GameOptions o = quiet_options();
+  o.replay = replay;
+  o.level.clear();  // the replay's level
+  Game game;
+  REQUIRE(game.init(o).ok());
+  int frames = 0;
+  while (game.frame(kFrame) && frames < 10000) ++frames;
+  CHECK(game.replay_finished());
+  CHECK(game.world().tick() == ticks_recorded);
+  CHECK(game.world().player()->animator().x() == x_recorded);
+  CHECK(pose_hash(game.world().player()->animator().world_matrices()) == hash_recorded);
+  CHECK(x_recorded > game.world().level().spawn_ws.x + 3.0f);
+}
+
+TEST_CASE("creatures cycle through the examples and random ones build", "[app]") {
+  use_offscreen();
+  Game game;
+  REQUIRE(game.init(quiet_options()).ok());
+  CHECK(game.creature_name() == kDefaultExample);
+  game.next_example();
+  const std::string second = game.creature_name();
+  CHECK(second != kDefaultExample);
+  run_frames(game, 10);
+  game.random_creature();
+  run_frames(game, 10);
+  CHECK(game.creature_name() != second);
+}
+
+TEST_CASE("ossa --headless --frames 600 --png shows the creature on the level", "[app]") {
+  const std::string dir = temp_dir();
+  const std::string png = dir + "/headless.png", state = dir + "/state.json";
+  std::string err;
+  const int rc = run_command(bin_dir() + "/ossa --headless --frames 600 --no-hud --png " + png + " --state " + state, &err);
+  INFO(err);
+  REQUIRE(rc == 0);
+  auto doc = read_json_file(state);
+  REQUIRE(doc.ok());
+  CHECK(doc.value()["frames"] == 600);
+  CHECK(doc.value()["player"]["creature"] == "horse");
+  CHECK(doc.value()["player"]["x"].get<double>() > doc.value()["spawn"]["x"].get<double>() + 5.0);
+  CHECK(doc.value()["spawn"]["x"] == 2.0);
+
+  auto image = load_image(png);
+  REQUIRE(image.ok());
+  const Image& img = image.value();
+  REQUIRE(img.width == 1280);
+  // Bone-coloured pixels (cream: bright, red above blue, unlike sky, hills, grass or earth)
+  // in the middle of the frame, where the camera keeps the player, with earth below them.
+  int bone_pixels = 0, grounded_columns = 0;
+  for (int x = img.width / 5; x < img.width * 4 / 5; ++x) {
+    int lowest_bone = -1;
+    for (int y = 0; y < img.height; ++y) {
+      const uint8_t* p = img.pixel(x, y);
+      if (p[0] > 170 && p[1] > 150 && p[0] > p[2] + 20 && p[0] - p[1] < 40) {
+        ++bone_pixels;
+        lowest_bone = y;
+      }
+    }
+    if (lowest_bone < 0) continue;
+    for (int y = lowest_bone + 1; y < img.height; ++y) {
+      const uint8_t* p = img.pixel(x, y);
+      if (p[0] > 90 && p[0] < 150 && p[1] > 60 && p[1] < 110 && p[2] < 80) {  // earth brown
+        ++grounded_columns;
+        break;
+      }
+    }
+  }
+  CHECK(bone_pixels > 2000);
+  CHECK(grounded_columns > 100);
+}
+
+TEST_CASE("ossa rejects bad arguments and files with a message", "[app]") {
+  const std::string ossa = bin_dir() + "/ossa";
+  const std::string dir = temp_dir();
+  {
+    std::ofstream bad(dir + "/bad_level.json");
+    bad << R"({"format": "ossa.level", "version": 1, "spawn": {"x": 0, "y": 0}, "colliders": [{"x": 0}]})";
+  }
+  const struct {
+    std::string args, expect;
+  } cases[] = {
+      {"--frames abc --headless", "--frames"},
+      {"--hz 1000 --headless", "--hz"},
+      {"--npcs -1 --headless", "--npcs"},
+      {"--bogus", "unknown argument"},
+      {"--level", "missing value"},
+      {"--headless --level /nonexistent/level.json", "nonexistent"},
+      {"--headless --level " + dir + "/bad_level.json", "colliders"},
+      {"--headless --example unicorn", "unicorn"},
+      {"--headless --creature /nonexistent.creature.json", "nonexistent"},
+      {"--headless --replay /nonexistent.replay.json", "nonexistent"},
+      {"--headless --example horse --seed 3", "only one"},
+      {"--headless --size 5x5", "--size"},
+  };
+  for (const auto& c : cases) {
+    std::string err;
+    const int rc = run_command(ossa + " " + c.args, &err);
+    INFO(c.args << " -> " << err);
+    CHECK(rc != 0);
+    CHECK(err.find(c.expect) != std::string::npos);
+    CHECK(err.find("ossa:") == 0);
+  }
+  std::string err;
+  CHECK(run_command(ossa + " --help", &err) == 0);
+}
+
+TEST_CASE("command line parsing", "[app]") {
+  auto p = parse_game_args({"--headless", "--example", "dromedary", "--npcs", "5", "--hz", "240"});
+  REQUIRE(p.ok());
+  CHECK(p->options.headless);
+  CHECK(p->options.demo);
+  CHECK(p->options.frames == 600);
+  CHECK(p->options.example == "dromedary");
+  CHECK(p->options.npcs == 5);
+  CHECK(p->options.tick_hz == 240);
+  auto r = parse_game_args({"--headless", "--replay", "x.json"});
+  REQUIRE(r.ok());
+  CHECK_FALSE(r->options.demo);
+  CHECK(r->options.frames == 0);
+  CHECK_FALSE(parse_game_args({"--seed", "-3"}).ok());
+  CHECK(parse_game_args({"--help"})->help);
+}
