@@ -145,3 +145,43 @@ TEST_CASE("tuning: every field has a unit and a range holding its default; edits
 
 }  // namespace
 }  // namespace ossa
+
+namespace ossa {
+namespace {
+
+TEST_CASE("tuning: footfall history samples every leg per tick over the last seconds", "[editor]") {
+  const Creature horse = scenes::quadruped();
+  Level level({Box::from_corner(-10.0f, -1.0f, 200.0f, 1.0f)});
+  Animator animator(horse, SplinePrototypes::defaults());
+  animator.reset({0.0f, 1.0f}, level);
+  UndoStack undo;
+  TuningModel m(AnimatorParams{}, undo);
+  m.history_seconds = 2.0f;
+  const float dt = 1.0f / 120.0f;
+  const float speed = 0.8f * animator.walk_speed();
+  for (int i = 0; i < 6 * 120; ++i) {
+    animator.update(dt, speed, level);
+    m.sample(animator, dt);
+  }
+  REQUIRE(m.leg_count() == animator.leg_count());
+  REQUIRE(m.sample_capacity() == 240);
+  for (int leg = 0; leg < m.leg_count(); ++leg) {
+    REQUIRE(static_cast<int>(m.leg_history(leg).size()) == 240);
+    // The newest sample is the animator's current state.
+    REQUIRE(m.leg_history(leg).back() == (animator.leg_state(leg) == LegState::kStance));
+    // Walking: every leg both stands and swings within two seconds, mostly standing.
+    const float f = m.stance_fraction(leg);
+    REQUIRE(f > 0.4f);
+    REQUIRE(f < 0.95f);
+  }
+  // Another creature (different leg count) restarts the history.
+  const Creature biped = scenes::biped();
+  Animator two(biped, SplinePrototypes::defaults());
+  two.reset({0.0f, 1.0f}, level);
+  m.sample(two, dt);
+  REQUIRE(m.leg_count() == two.leg_count());
+  REQUIRE(m.leg_history(0).size() == 1);
+}
+
+}  // namespace
+}  // namespace ossa

@@ -163,3 +163,27 @@ TEST_CASE("spline editor: save, revert, load errors and a failing save", "[edito
 
 }  // namespace
 }  // namespace ossa
+
+namespace ossa {
+namespace {
+
+TEST_CASE("spline editor: the last key's tangent handle sits left of it and stays on its side", "[editor]") {
+  UndoStack undo;
+  SplineEditorModel m(SplinePrototypes::defaults(), undo);
+  m.pick(PrototypeId::kLegSwingY);
+  const int last = static_cast<int>(m.spline(SplineVersion::kWalk).keys.size()) - 1;
+  REQUIRE(m.tangent_side(SplineVersion::kWalk, last) == -1.0f);
+  REQUIRE(m.tangent_position(SplineVersion::kWalk, last).x < 1.0f);
+  const glm::vec2 k = m.key_position(SplineVersion::kWalk, last);
+  m.begin_drag({SplineHandle::Part::kTangent, SplineVersion::kWalk, last});
+  m.drag_to(k + glm::vec2(-0.1f, 0.05f));
+  REQUIRE(m.spline(SplineVersion::kWalk).keys[last].m == Approx(-0.5f));
+  m.drag_to(k + glm::vec2(0.2f, 0.05f));  // crossing to the other side: clamped
+  REQUIRE(std::isfinite(m.spline(SplineVersion::kWalk).keys[last].m));
+  REQUIRE(m.spline(SplineVersion::kWalk).keys[last].m < 0.0f);
+  m.end_drag();
+  REQUIRE(undo.size() == 1);
+}
+
+}  // namespace
+}  // namespace ossa
