@@ -23,18 +23,6 @@ aiMatrix4x4 to_ai(const Mat2x3& m) {
                      0.0f, 0.0f, 0.0f, 1.0f);
 }
 
-Mat2x3 local_matrix(const BoneLocal& l) {
-  Mat2x3 m;
-  const float c = std::cos(l.angle_ls), s = std::sin(l.angle_ls);
-  m.m[0] = c;
-  m.m[1] = s;
-  m.m[2] = -s;
-  m.m[3] = c;
-  m.m[4] = l.offset_ls.x;
-  m.m[5] = l.offset_ls.y;
-  return m;
-}
-
 template <class T>
 T* new_array(size_t n) {
   return n ? new T[n] : nullptr;

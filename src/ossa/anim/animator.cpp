@@ -49,17 +49,6 @@ glm::vec2 rotate(glm::vec2 v, float a) {
   return {c * v.x - s * v.y, s * v.x + c * v.y};
 }
 float bone_angle(const Mat2x3& m) { return std::atan2(m.m[1], m.m[0]); }
-Mat2x3 local_matrix(const BoneLocal& l) {
-  const float c = std::cos(l.angle_ls), s = std::sin(l.angle_ls);
-  Mat2x3 m;
-  m.m[0] = c;
-  m.m[1] = s;
-  m.m[2] = -s;
-  m.m[3] = c;
-  m.m[4] = l.offset_ls.x;
-  m.m[5] = l.offset_ls.y;
-  return m;
-}
 float bump(float s) { return std::pow(std::max(0.0f, std::sin(kPi * s)), 0.7f); }
 
 }  // namespace

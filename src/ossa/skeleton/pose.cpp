@@ -15,16 +15,7 @@ bool ForwardKinematicsJob::run() const {
   const int n = skeleton->bone_count();
   const std::vector<int>& parents = skeleton->parents();
   for (int i = 0; i < n; ++i) {
-    const BoneLocal& l = locals[i];
-    const float c = std::cos(l.angle_ls);
-    const float s = std::sin(l.angle_ls);
-    Mat2x3 local;
-    local.m[0] = c;
-    local.m[1] = s;
-    local.m[2] = -s;
-    local.m[3] = c;
-    local.m[4] = l.offset_ls.x;
-    local.m[5] = l.offset_ls.y;
+    const Mat2x3 local = local_matrix(locals[i]);
     const int p = parents[i];
     model[i] = p < 0 ? local : model[p] * local;
   }

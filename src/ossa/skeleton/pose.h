@@ -4,6 +4,7 @@
 // skinning palette. Jobs follow STYLE.md (ozz IKTwoBoneJob style): documented input fields,
 // outputs passed in, validate() / run(), no allocation inside run().
 
+#include <cmath>
 #include <span>
 #include <vector>
 
@@ -11,6 +12,19 @@
 #include "ossa/skeleton/skeleton.h"
 
 namespace ossa {
+
+// The matrix of one joint: T(offset) · R(angle), bone frame → parent frame.
+inline Mat2x3 local_matrix(const BoneLocal& l) {
+  const float c = std::cos(l.angle_ls), s = std::sin(l.angle_ls);
+  Mat2x3 m;
+  m.m[0] = c;
+  m.m[1] = s;
+  m.m[2] = -s;
+  m.m[3] = c;
+  m.m[4] = l.offset_ls.x;
+  m.m[5] = l.offset_ls.y;
+  return m;
+}
 
 // Per-creature joint values, one BoneLocal per bone of its Skeleton.
 struct Pose {
