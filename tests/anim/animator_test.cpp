@@ -98,11 +98,12 @@ TEST_CASE("after a stop every foot is on the ground within 0.3 s", "[anim]") {
   }
 }
 
-TEST_CASE("a biped turning around moves no foot more than 5 cm and keeps its knees bending the right way", "[anim]") {
-  // Quadrupeds and more leg pairs swap feet between girdles when they turn; with unequal
-  // front and hind legs a foot can still shift by up to ~30 cm on that tick (issue 5 open).
+TEST_CASE("turning around moves no foot more than 5 cm and keeps knees bending the right way", "[anim]") {
+  // Leg pairs swap feet between girdles when the body mirrors. With three leg pairs the middle
+  // girdle has no partner to swap with and a foot can still shift by up to ~15 cm on the turn
+  // tick (issue 5 open), so that walker is not in this list yet.
   const Level flat = scenes::flat_level(200.0f);
-  for (Creature c : {scenes::biped()}) {
+  for (Creature c : {scenes::biped(), scenes::quadruped()}) {
     INFO(c.name);
     for (float turn_at : {2.0f, 2.13f, 2.29f}) {
       Walker w = make_walker(c, flat, {20.0f, 1.0f});

@@ -717,7 +717,8 @@ void Animator::place_body(float dt, const Level& level) {
       target_root = height.front() - rotate(d, angle_extra).y;
     }
   }
-  const float smooth_dt = snap_body_ ? 0.0f : dt;
+  const bool turning = snap_body_;
+  const float smooth_dt = turning ? 0.0f : dt;
   snap_body_ = false;
   pitch_ = approach(pitch_, target_pitch, 10.0f * ism, smooth_dt);
   root_y_ = approach(root_y_, target_root, 14.0f * ism, smooth_dt);
@@ -728,7 +729,8 @@ void Animator::place_body(float dt, const Level& level) {
     for (size_t i = 0; i < legs_.size(); ++i) {
       const LegInfo& info = legs_[i];
       const Foot& f = feet_[foot_of_leg_[i]];
-      if (f.state != LegState::kStance) continue;
+      // On the turn tick, swinging feet (taken over by other legs) must stay in reach too.
+      if (f.state != LegState::kStance && !(turning && !f.easing)) continue;
       const glm::vec2 joint = to_model(girdle_ws(info.group));
       const glm::vec2 ankle = to_model(f.pos_ws) - info.foot_offset_ms;
       const float r = kReachLimit * info.reach;
