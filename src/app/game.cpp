@@ -43,7 +43,7 @@ std::string resolve_data_path(const std::string& path) {
 namespace {
 
 // An NPC cast that walks well on box levels; they cycle when there are more NPCs.
-constexpr const char* kNpcExamples[] = {"red deer", "kangaroo", "ostrich", "pig", "dromedary", "triceratops"};
+constexpr const char* kNpcExamples[] = {"red deer", "ostrich", "pig", "dromedary", "wildebeest", "triceratops"};
 
 Result<std::shared_ptr<const Creature>> make_creature(const Genome& genome) {
   auto c = build_creature(genome);
@@ -157,8 +157,11 @@ Status Game::init(const GameOptions& o) {
     if (!g.ok()) return g.error();
     auto c = make_creature(g.value());
     if (!c.ok()) return c.error();
-    const float side = (i % 2 == 0) ? 1.0f : -1.0f;
-    const glm::vec2 at = world_->level().spawn_ws + glm::vec2(side * (4.0f + 3.0f * static_cast<float>(i / 2)), 2.0f);
+    // Ahead of the player, a few metres apart, inside the level.
+    const Box bounds = world_->level().bounds();
+    const float x = std::clamp(world_->level().spawn_ws.x + 4.0f + 3.5f * static_cast<float>(i),
+                               bounds.min_ws.x + 2.0f, std::max(bounds.min_ws.x + 2.0f, bounds.max_ws.x - 2.0f));
+    const glm::vec2 at{x, world_->level().spawn_ws.y + 2.0f};
     world_->spawn_npc(c.value(), at, 0x9e3779b97f4a7c15ull * static_cast<uint64_t>(i + 1));
   }
   if (o.demo) {

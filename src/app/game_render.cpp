@@ -245,23 +245,23 @@ void Game::Impl::render(Game& game, float alpha) {
   if (batch_dirty || batch->creature_count() != n) {
     batch->clear();
     meshes.clear();  // creatures may have been replaced (an address can be reused)
-    for (int i = 0; i < n; ++i) {
-      const Creature& c = entity_at(world, i).creature();
+    // NPCs first, the player last: within each layer instances draw in order, so the
+    // player's creature stays in front of the walkers it passes.
+    for (int k = 0; k < n; ++k) {
+      const Creature& c = entity_at(world, k == n - 1 ? 0 : k + 1).creature();
       auto it = meshes.find(&c);
       if (it == meshes.end()) it = meshes.emplace(&c, build_sprite_mesh(c, atlas->sprites)).first;
       batch->add(it->second, c.skeleton);
     }
     batch_dirty = false;
   }
-  // NPCs first in the batch order would draw them over the player; the player is instance 0,
-  // drawn first in each layer, so NPCs pass in front — background walkers are drawn dimmer
-  // by the far layer anyway. Good enough for a playground.
   for (int i = 0; i < n && i < static_cast<int>(curr.size()); ++i) {
+    const int instance = i == 0 ? n - 1 : i - 1;
     const auto& b = curr[i];
     const auto& a = prev[i].size() == b.size() ? prev[i] : b;
     blended.resize(b.size());
     for (size_t k = 0; k < b.size(); ++k) blended[k] = blend(a[k], b[k], alpha);
-    if (!blended.empty()) batch->set_world(i, blended);
+    if (!blended.empty()) batch->set_world(instance, blended);
   }
   batch->upload_palettes();
   r.draw_batch(*batch, atlas->texture);

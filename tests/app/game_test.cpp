@@ -362,3 +362,23 @@ TEST_CASE("command line parsing", "[app]") {
   CHECK_FALSE(parse_game_args({"--seed", "-3"}).ok());
   CHECK(parse_game_args({"--help"})->help);
 }
+
+TEST_CASE("a slow frame runs at most max_steps_per_frame ticks and drops the rest", "[app]") {
+  use_offscreen();
+  GameOptions o = quiet_options();
+  o.max_steps_per_frame = 8;
+  o.tick_hz = 240;
+  Game game;
+  REQUIRE(game.init(o).ok());
+  uint64_t t0 = game.world().tick();
+  REQUIRE(game.frame(0.2));  // 48 ticks due
+  CHECK(game.world().tick() - t0 == 8);
+  t0 = game.world().tick();
+  REQUIRE(game.frame(1.0 / 60.0));  // the backlog was dropped: 4 ticks, not 44
+  CHECK(game.world().tick() - t0 <= 5);
+  CHECK(game.world().tick() - t0 >= 3);
+  // Steady frames: ticks follow wall time exactly on average.
+  t0 = game.world().tick();
+  for (int i = 0; i < 120; ++i) REQUIRE(game.frame(1.0 / 60.0));
+  CHECK(static_cast<double>(game.world().tick() - t0) == Approx(480.0).margin(1.0));
+}
