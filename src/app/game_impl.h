@@ -41,7 +41,8 @@ struct Game::Impl {
   bool imgui = false;
   bool batch_dirty = true;
   std::unordered_map<const Creature*, SpriteMesh> meshes;  // built once per creature
-  std::unordered_map<std::string, Texture> images;         // level background images
+  std::unordered_map<std::string, Texture> images;
+  std::vector<const Creature*> batch_creatures;            // what the batch was built from         // level background images
 
   // Interpolation: per creature (0 = player, 1.. = NPCs) the world matrices of the last two ticks.
   std::vector<std::vector<Mat2x3>> prev, curr;

@@ -241,8 +241,14 @@ void Game::Impl::render(Game& game, float alpha) {
   r.draw_debug(ground);
 
   // Creatures: rebuild the batch when the cast changed, then one palette upload per frame.
+  // Someone else (the editors' creature panel) may have replaced a creature: compare.
   const int n = 1 + world.npc_count();
-  if (batch_dirty || batch->creature_count() != n) {
+  bool changed = batch_dirty || static_cast<int>(batch_creatures.size()) != n;
+  for (int i = 0; i < n && !changed; ++i) changed = batch_creatures[i] != &entity_at(world, i).creature();
+  if (changed) {
+    batch_creatures.resize(n);
+    for (int i = 0; i < n; ++i) batch_creatures[i] = &entity_at(world, i).creature();
+    snapshot_all(world, true);
     batch->clear();
     meshes.clear();  // creatures may have been replaced (an address can be reused)
     // NPCs first, the player last: within each layer instances draw in order, so the
@@ -261,7 +267,7 @@ void Game::Impl::render(Game& game, float alpha) {
     const auto& a = prev[i].size() == b.size() ? prev[i] : b;
     blended.resize(b.size());
     for (size_t k = 0; k < b.size(); ++k) blended[k] = blend(a[k], b[k], alpha);
-    if (!blended.empty()) batch->set_world(instance, blended);
+    if (!blended.empty() && static_cast<int>(blended.size()) == batch->bone_count(instance)) batch->set_world(instance, blended);
   }
   batch->upload_palettes();
   r.draw_batch(*batch, atlas->texture);
