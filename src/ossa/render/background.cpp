@@ -16,14 +16,16 @@ constexpr int kHillSamples = 96;
 
 glm::vec4 rgba(glm::vec3 c, float a = 1.0f) { return {c, a}; }
 
-// Rolling hills: a few incommensurate sines, metres above the horizon.
-float hill_height(float u, float scale, float seed) {
-  return scale * (0.55f + 0.30f * std::sin(u * 0.11f + seed) + 0.18f * std::sin(u * 0.27f + 2.1f * seed) +
-                  0.08f * std::sin(u * 0.63f + 0.7f * seed));
+// Rolling hills: a few incommensurate sines of the layer coordinate u (metres), scaled in
+// width by `freq`, metres above the horizon.
+float hill_height(float u, float scale, float freq, float seed) {
+  u *= freq;
+  return scale * (0.55f + 0.30f * std::sin(u * 0.35f + seed) + 0.18f * std::sin(u * 0.83f + 2.1f * seed) +
+                  0.08f * std::sin(u * 1.9f + 0.7f * seed));
 }
 
 void add_hills(DebugDraw& draw, const Camera2D& camera, float parallax, float base_ws, float scale,
-               float seed, glm::vec3 colour) {
+               float freq, float seed, glm::vec3 colour) {
   const Box view = camera.visible_box();
   // A layer at parallax p moves p times as fast as the level: layer coordinate u = x − (1−p)·cx,
   // and its base rises with the camera by the same factor.
@@ -34,8 +36,8 @@ void add_hills(DebugDraw& draw, const Camera2D& camera, float parallax, float ba
   for (int i = 0; i < kHillSamples; ++i) {
     const float x0 = view.min_ws.x + step * static_cast<float>(i);
     const float x1 = x0 + step;
-    const float y0 = base + hill_height((x0 - shift_x) / std::max(parallax, 0.05f), scale, seed);
-    const float y1 = base + hill_height((x1 - shift_x) / std::max(parallax, 0.05f), scale, seed);
+    const float y0 = base + hill_height(x0 - shift_x, scale, freq, seed);
+    const float y1 = base + hill_height(x1 - shift_x, scale, freq, seed);
     const glm::vec4 c = rgba(colour);
     draw.add_triangle({x0, bottom}, {x1, bottom}, {x1, y1}, c);
     draw.add_triangle({x0, bottom}, {x1, y1}, {x0, y0}, c);
@@ -55,9 +57,9 @@ void add_background(DebugDraw& draw, const Camera2D& camera, const BackgroundSty
   }
   const float p = std::clamp(style.parallax, 0.05f, 1.0f);
   const glm::vec3 haze = style.sky_bottom;
-  add_hills(draw, camera, p / 3.0f, style.horizon_ws + 0.5f, 2.6f, 0.3f,
+  add_hills(draw, camera, p / 3.0f, style.horizon_ws + 0.6f, 1.8f, 0.5f, 0.3f,
             glm::mix(glm::vec3(0.45f, 0.58f, 0.62f), haze, 0.45f));
-  add_hills(draw, camera, p, style.horizon_ws - 0.8f, 2.2f, 1.7f,
+  add_hills(draw, camera, p, style.horizon_ws - 0.6f, 1.3f, 1.0f, 1.7f,
             glm::mix(glm::vec3(0.36f, 0.52f, 0.38f), haze, 0.25f));
 }
 
