@@ -283,14 +283,29 @@ void Animator::update(float dt, float desired_velocity, const Level& level) {
     for (int b : creature_->back) add(b);
     for (int b : creature_->neck) add(b);
     if (creature_->skull >= 0) add(creature_->skull);
-    for (int a : arms_) for (int b : creature_->limbs[a].bones) add(b);
+    // Arms swing: count the whole reach of each arm, forward and back, not just this pose.
+    for (int a : arms_) {
+      const Limb& arm = creature_->limbs[a];
+      const glm::vec2 shoulder = to_world(bone_start(model_[arm.bones[0]]));
+      const float reach = sk.length(arm.bones[0]) + sk.length(arm.bones[1]) + sk.length(arm.bones[2]);
+      lo = glm::min(lo, shoulder - glm::vec2(reach, reach));
+      hi = glm::max(hi, shoulder + glm::vec2(reach, 0.0f));
+    }
     for (int a : fins_) for (int b : creature_->limbs[a].bones) add(b);
     // Low obstacles are the legs' business (steps); the body only meets walls.
     const float support = root_y_ - root_rest_y_ * params_.stance_height;
     lo.y = std::max(lo.y + 0.3f * hip_height_, support + params_.max_step_up * hip_height_);
     lo.y = std::min(lo.y, hi.y);
     Box body{lo, glm::max(hi, lo + glm::vec2(1e-3f))};
-    if (auto hit = level.sweep_box(body, {dx, 0.0f}); hit && hit->t < 1.0f) {
+    auto hit = level.sweep_box(body, {dx, 0.0f});
+    // Walls (reaching above the body) are met a few centimetres early: arms and head
+    // settle forward a little when the body stops.
+    const glm::vec2 margin(0.03f + 0.02f * hip_height_, 0.0f);
+    if (auto wall = level.sweep_box(Box{body.min_ws - margin, body.max_ws + margin}, {dx, 0.0f});
+        wall && wall->t < 1.0f && level.box(wall->index).top() > hi.y) {
+      hit = wall;
+    }
+    if (hit && hit->t < 1.0f) {
       dx = facing_ * std::max(0.0f, hit->t * std::fabs(dx) - 1e-4f);
       blocked_ = true;
       blocked_dir_ = facing_;
