@@ -217,6 +217,11 @@ bool Game::frame(double dt_seconds) {
     gamepad_->handle_event(e, presses);
   }
   if (keyboard_->quit_requested()) return false;
+  m.frame_dt = static_cast<float>(dt_seconds);
+  // A text field or an editor window has the keyboard / mouse: game keys and the wheel wait.
+  if (m.ui_wants_keyboard()) presses = ActionPresses{};
+  const float wheel = keyboard_->take_wheel();
+  if (wheel != 0.0f && !m.ui_wants_mouse()) m.zoom = std::clamp(m.zoom * std::pow(0.88f, wheel), 0.2f, 10.0f);
 
   if (presses[Action::kNextCreature]) next_example();
   if (presses[Action::kRandomCreature]) random_creature();
@@ -235,8 +240,6 @@ bool Game::frame(double dt_seconds) {
       m.say("recording a replay (R to stop)");
     }
   }
-  const float wheel = keyboard_->take_wheel();
-  if (wheel != 0.0f) m.zoom = std::clamp(m.zoom * std::pow(0.88f, wheel), 0.2f, 10.0f);
 
   // Fixed steps; at most max_steps_per_frame of them (spiral-of-death guard).
   const double tick = 1.0 / world_->tick_hz();
@@ -253,7 +256,9 @@ bool Game::frame(double dt_seconds) {
       c = m.demo_controls(world_->tick(), world_->tick_hz());
       m.input_name = "demo";
     } else {
-      c = combine_controls(*keyboard_, *gamepad_);
+      // While an ImGui text field has the keyboard, A/D type letters instead of walking.
+      c = !m.ui_wants_keyboard() ? combine_controls(*keyboard_, *gamepad_)
+          : gamepad_->connected() ? gamepad_->controls() : Controls{};
       m.input_name = keyboard_->active() || !gamepad_->connected() ? "keyboard" : gamepad_->name();
     }
     m.snapshot_all(*world_, false);

@@ -16,6 +16,7 @@
 // between its last two poses by the accumulator's remainder.
 
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <optional>
 #include <string>
@@ -28,8 +29,10 @@
 
 namespace ossa {
 
+class DebugDraw;
 class Gamepad;
 class MouseKeyboardInput;
+struct Camera2D;
 
 struct GameOptions {
   std::string level = "levels/default.json";  // level file (relative paths: cwd, then the source tree)
@@ -97,6 +100,15 @@ class Game {
   void next_example();
   void random_creature();
   bool replay_finished() const;
+  // The camera of the last rendered frame (world metres; for mouse picking).
+  const Camera2D& camera() const;
+
+  // ---- Hooks for the editors (DESIGN.md §10) -----------------------------------------------
+  // Called every frame inside the ImGui frame, after the HUD (dt = the frame's seconds).
+  std::function<void(float dt)> on_ui;
+  // Called every frame after the creatures are drawn: world-space overlays (selection,
+  // handles, grid), drawn on top of the scene.
+  std::function<void(DebugDraw& draw)> on_viewport;
 
  private:
   struct Impl;

@@ -85,6 +85,9 @@ struct Game::Impl {
   Status start_gif(const std::string& path, float seconds);
   void capture_gif_frame(float dt);
   Status finish_gif();
+  bool ui_wants_keyboard() const;
+  bool ui_wants_mouse() const;
+  float frame_dt = 0.0f;         // seconds, the current frame's
 
   // game.cpp / game_render.cpp
   void snapshot_all(const World& world, bool both);  // prev = curr (both: also curr = now)

@@ -116,6 +116,11 @@ void Game::Impl::release_gl() {
   renderer.reset();
 }
 
+bool Game::Impl::ui_wants_keyboard() const { return imgui && ImGui::GetIO().WantCaptureKeyboard; }
+bool Game::Impl::ui_wants_mouse() const { return imgui && ImGui::GetIO().WantCaptureMouse; }
+
+const Camera2D& Game::camera() const { return impl_->renderer->camera; }
+
 void Game::Impl::process_imgui_event(const SDL_Event& e) {
   if (imgui) ImGui_ImplSDL2_ProcessEvent(&e);
 }
@@ -271,6 +276,11 @@ void Game::Impl::render(Game& game, float alpha) {
   }
   batch->upload_palettes();
   r.draw_batch(*batch, atlas->texture);
+  if (game.on_viewport) {
+    DebugDraw overlay;
+    game.on_viewport(overlay);
+    r.draw_debug(overlay);
+  }
 
   // HUD.
   if (imgui) {
@@ -291,6 +301,7 @@ void Game::Impl::render(Game& game, float alpha) {
     info.recording = recording;
     info.gif = gif.has_value();
     hud.draw(info);
+    if (game.on_ui) game.on_ui(frame_dt);
     ImGui::Render();
     ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
   }
