@@ -185,3 +185,45 @@ TEST_CASE("tuning: footfall history samples every leg per tick over the last sec
 
 }  // namespace
 }  // namespace ossa
+
+namespace ossa {
+namespace {
+
+TEST_CASE("tuning: files round trip, bad values are reported, a failing save keeps the file", "[editor]") {
+  const fs::path dir = fs::temp_directory_path() / "ossa_editor_test_tuning";
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  const std::string path = (dir / "t.json").string();
+  UndoStack undo;
+  AnimatorParams seen;
+  TuningModel m(AnimatorParams{}, undo, [&](const AnimatorParams& p) { seen = p; });
+  m.set_value(3, 0.7f);
+  m.set_gait_override(GaitOverride::kGallop);
+  REQUIRE(m.dirty());
+  REQUIRE(m.save_as(path).ok());
+  REQUIRE_FALSE(m.dirty());
+  const std::string text = read_file(path).value();
+  m.reset();
+  REQUIRE(m.load(path).ok());
+  REQUIRE(m.params().duty_walk == 0.7f);
+  REQUIRE(m.params().gait_override == GaitOverride::kGallop);
+  REQUIRE(seen.duty_walk == 0.7f);
+  REQUIRE_FALSE(m.dirty());
+  // Out of range and wrong format: errors name the file and field; params kept.
+  REQUIRE(write_file_atomic((dir / "bad.json").string(),
+                            R"({"format": "ossa.tuning", "version": 1, "params": {"duty_run": 5}})").ok());
+  const Status bad = m.load((dir / "bad.json").string());
+  REQUIRE_FALSE(bad.ok());
+  REQUIRE(bad.message().find("duty_run") != std::string::npos);
+  REQUIRE(m.params().duty_walk == 0.7f);
+  REQUIRE_FALSE(load_params((dir / "missing.json").string()).ok());
+  REQUIRE_FALSE(params_from_json(Json::array(), "x").ok());
+  m.set_value(0, 1.5f);
+  REQUIRE_FALSE(m.save_as((dir / "nope" / "t.json").string()).ok());
+  REQUIRE_FALSE(m.last_error().empty());
+  REQUIRE(read_file(path).value() == text);
+  REQUIRE(m.dirty());
+}
+
+}  // namespace
+}  // namespace ossa

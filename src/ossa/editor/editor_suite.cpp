@@ -55,6 +55,8 @@ EditorSuite::EditorSuite(World& world, const Generator* generator, EditorPaths p
                  paths_.prototypes_file.empty() ? "prototypes.json" : paths_.prototypes_file);
   copy_to_buffer(genome_path_buf_, sizeof genome_path_buf_, paths_.genome_file);
   copy_to_buffer(svg_path_buf_, sizeof svg_path_buf_, paths_.export_dir + "/creature.svg");
+  copy_to_buffer(tuning_path_buf_, sizeof tuning_path_buf_, paths_.tuning_file);
+  tuning_->set_path(paths_.tuning_file);
   undo_.clear();
 }
 
@@ -76,8 +78,7 @@ bool EditorSuite::wants_keyboard() const {
 }
 
 bool EditorSuite::has_unsaved_changes() const {
-  return undo_.is_dirty(EditorDocument::kLevel) || undo_.is_dirty(EditorDocument::kPrototypes) ||
-         undo_.is_dirty(EditorDocument::kGenome);
+  return undo_.any_dirty();
 }
 
 bool EditorSuite::request_quit() {
@@ -215,7 +216,7 @@ void EditorSuite::draw_popups() {
     ImGui::TextUnformatted("There are unsaved changes. They will be lost.");
     for (int d = 0; d < kEditorDocumentCount; ++d) {
       static const char* kNames[] = {"level", "spline prototypes", "creature genome", "tuning"};
-      if (d != static_cast<int>(EditorDocument::kTuning) && undo_.is_dirty(static_cast<EditorDocument>(d)))
+      if (undo_.is_dirty(static_cast<EditorDocument>(d)))
         ImGui::BulletText("%s", kNames[d]);
     }
     if (ImGui::Button("Discard")) {

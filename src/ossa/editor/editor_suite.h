@@ -52,6 +52,7 @@ struct EditorPaths {
   std::string level_file;                          // the file World::level() came from ("" = none)
   std::string prototypes_file;                     // the file the prototypes came from ("" = none)
   std::string genome_file = "creature.json";       // default path of genome save / load
+  std::string tuning_file = "tuning.json";         // default path of tuning save / load
   std::string export_dir = ".";                    // SVG exports and Tiled exports go here
 };
 
@@ -99,7 +100,7 @@ class EditorSuite {
   // ignore its keys).
   bool wants_keyboard() const;
 
-  // Any document (level, prototypes, genome) changed since its last save or load.
+  // Any document (level, prototypes, genome, tuning) changed since its last save or load.
   bool has_unsaved_changes() const;
   // The user wants to quit: true when nothing is unsaved (quit now); otherwise opens the
   // "discard unsaved changes?" popup and returns false — quit_confirmed() turns true once
@@ -164,6 +165,7 @@ class EditorSuite {
   char proto_path_buf_[512] = {};
   char genome_path_buf_[512] = {};
   char svg_path_buf_[512] = {};
+  char tuning_path_buf_[512] = {};
   std::function<void()> pending_discard_;
   bool open_discard_popup_ = false;
   bool quit_confirmed_ = false;

@@ -5,6 +5,8 @@
 #include <cmath>
 #include <cstring>
 
+#include "ossa/io/file.h"
+
 namespace ossa {
 
 std::span<const TuningField> tuning_fields() {
@@ -110,6 +112,87 @@ float TuningModel::stance_fraction(int leg) const {
   const auto& h = legs_[leg];
   if (h.empty()) return 0.0f;
   return static_cast<float>(std::count(h.begin(), h.end(), true)) / static_cast<float>(h.size());
+}
+
+namespace {
+const char* kGaitNames[] = {"auto", "walk", "trot", "gallop"};
+}  // namespace
+
+Json params_to_json(const AnimatorParams& p) {
+  Json doc;
+  doc["format"] = "ossa.tuning";
+  doc["version"] = 1;
+  doc["gait_override"] = kGaitNames[static_cast<int>(p.gait_override) + 1];
+  Json fields = Json::object();
+  for (const TuningField& f : tuning_fields()) fields[f.name] = p.*(f.member);
+  doc["params"] = fields;
+  return doc;
+}
+
+Result<AnimatorParams> params_from_json(const Json& doc, std::string_view file) {
+  JsonReader r{std::string(file)};
+  if (!r.expect_object(doc, "")) return r.error();
+  if (r.string(doc, "", "format") != "ossa.tuning") r.fail("format", "expected \"ossa.tuning\"");
+  r.integer(doc, "", "version", 1, 1);
+  AnimatorParams p;
+  const std::string gait = r.string_or(doc, "", "gait_override", "auto");
+  if (r.failed()) return r.error();
+  bool known = false;
+  for (int i = 0; i < 4; ++i) {
+    if (gait == kGaitNames[i]) {
+      p.gait_override = static_cast<GaitOverride>(i - 1);
+      known = true;
+    }
+  }
+  if (!known) return Error::at(file, "gait_override", "expected auto, walk, trot or gallop, got \"" + gait + "\"");
+  if (r.has(doc, "params")) {
+    const Json* fields = r.object(doc, "", "params");
+    if (!fields) return r.error();
+    for (const TuningField& f : tuning_fields()) {
+      if (!r.has(*fields, f.name)) continue;
+      p.*(f.member) = r.number_f(*fields, "params", f.name, f.min, f.max);
+    }
+  }
+  if (r.failed()) return r.error();
+  return p;
+}
+
+Result<AnimatorParams> load_params(const std::string& path) {
+  auto doc = read_json_file(path);
+  if (!doc.ok()) return doc.error();
+  return params_from_json(doc.value(), path);
+}
+
+Status save_params(const std::string& path, const AnimatorParams& params) {
+  return write_json_atomic(path, params_to_json(params));
+}
+
+Status TuningModel::save_as(const std::string& path) {
+  Status s = save_params(path, params_);
+  if (!s.ok()) {
+    error_ = s.message();
+    return s;
+  }
+  path_ = path;
+  error_.clear();
+  undo_->mark_saved(EditorDocument::kTuning);
+  return s;
+}
+
+Status TuningModel::load(const std::string& path) {
+  auto p = load_params(path);
+  if (!p.ok()) {
+    error_ = p.message();
+    return p.error();
+  }
+  const AnimatorParams before = params_;
+  params_ = p.value();
+  if (on_change_) on_change_(params_);
+  push(before, "load tuning");
+  path_ = path;
+  error_.clear();
+  undo_->mark_saved(EditorDocument::kTuning);
+  return {};
 }
 
 }  // namespace ossa

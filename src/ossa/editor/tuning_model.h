@@ -14,6 +14,8 @@
 #include "ossa/anim/animator.h"
 #include "ossa/anim/animator_params.h"
 #include "ossa/editor/undo_stack.h"
+#include "ossa/io/json.h"
+#include "ossa/io/result.h"
 
 namespace ossa {
 
@@ -27,6 +29,16 @@ struct TuningField {
 };
 // Every float field of AnimatorParams, in declaration order.
 std::span<const TuningField> tuning_fields();
+
+// Tuning files (an editor format; the game may load one at start):
+//   { "format": "ossa.tuning", "version": 1, "gait_override": "auto" | "walk" | "trot" | "gallop",
+//     "params": { "<field name>": number, ... } }
+// Fields left out keep their defaults; values must lie in the field's range; unknown fields
+// are ignored. Errors name the file and the field.
+Json params_to_json(const AnimatorParams& params);
+Result<AnimatorParams> params_from_json(const Json& doc, std::string_view file);
+Result<AnimatorParams> load_params(const std::string& path);
+Status save_params(const std::string& path, const AnimatorParams& params);  // atomic
 
 class TuningModel {
  public:
@@ -44,6 +56,15 @@ class TuningModel {
   void end_edit();
   // Replaces the params without an undo step (e.g. the game changed them).
   void replace(const AnimatorParams& p) { params_ = p; }
+
+  // Files (document kTuning): save marks the tuning saved; load is one undo step and keeps
+  // the params on error. Errors also stay in last_error().
+  const std::string& path() const { return path_; }
+  void set_path(const std::string& path) { path_ = path; }
+  bool dirty() const { return undo_->is_dirty(EditorDocument::kTuning); }
+  Status save_as(const std::string& path);
+  Status load(const std::string& path);
+  const std::string& last_error() const { return error_; }
 
   // ---- Footfall history ------------------------------------------------------------------
   float history_seconds = 4.0f;     // how far back the diagram reaches
@@ -73,6 +94,7 @@ class TuningModel {
   int capacity_ = 0;
   float dt_ = 1.0f / 120.0f;
   Gait gait_ = Gait::kIdle;
+  std::string path_, error_;
 };
 
 }  // namespace ossa

@@ -56,7 +56,8 @@ void EditorSuite::draw_tuning_window() {
   TuningModel& m = *tuning_;
   ImGui::SetNextWindowPos(ImVec2(340, 30), ImGuiCond_FirstUseEver);
   ImGui::SetNextWindowSize(ImVec2(440, 640), ImGuiCond_FirstUseEver);
-  if (!ImGui::Begin("Tuning###tuning", &show_tuning)) {
+  const std::string title = std::string("Tuning") + (m.dirty() ? " *" : "") + "###tuning";
+  if (!ImGui::Begin(title.c_str(), &show_tuning)) {
     ImGui::End();
     return;
   }
@@ -89,6 +90,16 @@ void EditorSuite::draw_tuning_window() {
     if (ImGui::IsItemDeactivated()) m.end_edit();
     if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", f.help);
   }
+  ImGui::Separator();
+  ImGui::SetNextItemWidth(-1);
+  ImGui::InputText("##tuningpath", tuning_path_buf_, sizeof tuning_path_buf_);
+  if (ImGui::Button("Save")) (void)m.save_as(tuning_path_buf_);
+  ImGui::SameLine();
+  if (ImGui::Button("Load")) {
+    const std::string path = tuning_path_buf_;
+    confirm_discard(EditorDocument::kTuning, [this, path] { (void)tuning_->load(path); });
+  }
+  show_messages(m.last_error(), "");
   ImGui::End();
 }
 
