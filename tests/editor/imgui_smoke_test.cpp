@@ -147,6 +147,14 @@ TEST_CASE("imgui smoke: drag a level box in the viewport, undo restores it", "[e
   REQUIRE(s.world.level().box(2) == before);
   REQUIRE_FALSE(s.suite->has_unsaved_changes());
   REQUIRE(s.suite->request_quit());
+  // Switched off, the editors leave the mouse to the game.
+  s.suite->enabled = false;
+  s.frame(start, false);
+  s.frame(start, true);
+  s.frame(start + glm::vec2(50.0f, 0.0f), true);
+  s.frame(start + glm::vec2(50.0f, 0.0f), false);
+  REQUIRE(s.world.level().box(2) == before);
+  REQUIRE(s.suite->undo().size() == 1);
 }
 
 TEST_CASE("imgui smoke: drag a spline key on the canvas, undo restores it", "[editor][imgui]") {

@@ -101,9 +101,26 @@ bool EditorSuite::handle_mouse(glm::vec2 mouse_px, bool down, float /*wheel*/,
                                const Camera2D& camera, glm::vec2 viewport_px) {
   last_camera_ = camera;
   last_viewport_px_ = viewport_px;
+  if (!enabled) {
+    mouse_was_down_ = down;
+    if (mouse_drag_) level_->end_drag();
+    mouse_drag_ = false;
+    hovered_box_.reset();
+    return false;
+  }
   const bool pressed = down && !mouse_was_down_;
   const bool released = !down && mouse_was_down_;
   mouse_was_down_ = down;
+  // ImGui reports a mouse outside the window as -FLT_MAX: hold the drag where it is.
+  const bool mouse_valid = std::abs(mouse_px.x) < 1e6f && std::abs(mouse_px.y) < 1e6f &&
+                           viewport_px.x > 0.0f && viewport_px.y > 0.0f;
+  if (!mouse_valid) {
+    if (released && mouse_drag_) {
+      level_->end_drag();
+      mouse_drag_ = false;
+    }
+    return mouse_drag_;
+  }
   const glm::vec2 p_ws = pixel_to_world(camera, mouse_px, viewport_px);
   const float radius_ws = kPickRadiusPx * 2.0f * camera.half_height / viewport_px.y;
 
@@ -133,7 +150,7 @@ bool EditorSuite::handle_mouse(glm::vec2 mouse_px, bool down, float /*wheel*/,
 }
 
 void EditorSuite::draw_viewport(DebugDraw& debug) const {
-  if (!level_edit_mode) return;
+  if (!enabled || !level_edit_mode) return;
   const Level& level = level_->level();
   const Box view = last_camera_.visible_box();
   // Grid: only when it is not denser than ~8 px per cell.
@@ -181,6 +198,7 @@ void EditorSuite::handle_shortcuts() {
 }
 
 void EditorSuite::draw_ui() {
+  if (!enabled) return;
   handle_shortcuts();
   if (ImGui::BeginMainMenuBar()) {
     if (ImGui::BeginMenu("Edit")) {

@@ -64,6 +64,10 @@ class EditorSuite {
   EditorSuite(World& world, const Generator* generator, EditorPaths paths);
   ~EditorSuite();
 
+  // Master switch (the game binds a key to it): while off, draw_ui draws nothing and handles
+  // no shortcuts, handle_mouse returns false and draw_viewport adds nothing; update() still
+  // samples footfalls and polls files.
+  bool enabled = true;
   // Which windows draw_ui shows (the game may bind keys to these).
   // The creature and tuning windows start closed so the viewport stays visible; the Windows
   // menu opens them.

@@ -95,15 +95,22 @@ LevelHit LevelEditorModel::begin_drag(glm::vec2 p, float r) {
 }
 
 void LevelEditorModel::drag_to(glm::vec2 p) {
+  if (!std::isfinite(p.x) || !std::isfinite(p.y)) return;
   const glm::vec2 d = p - drag_.start_ws;
   switch (drag_.hit.kind) {
     case LevelHit::Kind::kNone: return;
-    case LevelHit::Kind::kSpawn: level_->spawn_ws = snap(drag_.spawn_before + d); return;
+    case LevelHit::Kind::kSpawn: {
+      const glm::vec2 s = snap(drag_.spawn_before + d);
+      if (std::isfinite(s.x) && std::isfinite(s.y)) level_->spawn_ws = s;
+      return;
+    }
     case LevelHit::Kind::kBox: {
       // The corner snaps, so a moved box keeps its size and lands on the grid.
       const Box& b0 = drag_.box_before;
       const glm::vec2 min = snap(b0.min_ws + d);
-      level_->set_box(drag_.hit.box, Box{min, min + b0.size()});
+      // Far from the origin a float cannot hold the size any more: refuse such a move.
+      const Box moved{min, min + b0.size()};
+      if (moved.is_valid()) level_->set_box(drag_.hit.box, moved);
       return;
     }
     case LevelHit::Kind::kHandle: {
