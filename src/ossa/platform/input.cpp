@@ -13,10 +13,10 @@ glm::vec2 radial_dead_zone(glm::vec2 stick, float dead_zone) {
   const float dz = std::clamp(dead_zone, 0.0f, 0.99f);
   const float m = std::sqrt(stick.x * stick.x + stick.y * stick.y);
   if (!(m > dz)) return glm::vec2(0.0f);  // also catches NaN
-  // Rescale (dz, 1] → (0, 1] along the stick's direction: no jump at the zone's edge, and the
-  // full throw still reaches 1 (precise speed, [T 4.1]).
-  const float out = std::min((m - dz) / (1.0f - dz), 1.0f);
-  return stick * (out / m);
+  // Outside the zone the stick passes unchanged (only clamped to the unit circle): the
+  // throw is the speed, so half a throw is exactly the walk speed [T 4.1]. Rescaling the
+  // zone away would make every speed below full throw slightly slower than the stick says.
+  return m > 1.0f ? stick / m : stick;
 }
 
 // ---- Gamepad ------------------------------------------------------------------------------
@@ -92,9 +92,11 @@ std::string Gamepad::name() const {
 
 glm::vec2 Gamepad::stick() const {
   if (!controller_) return glm::vec2(0.0f);
-  // SDL axes are in [-32768, 32767]; divide by 32767 so a full throw is 1 either way.
+  // SDL axes are in [-32768, 32767]: divide by 32768 so the half throw 16384 is exactly 0.5
+  // (the walk speed), and read the positive end as a full 1.
   auto axis = [&](SDL_GameControllerAxis a) {
-    return std::clamp(static_cast<float>(SDL_GameControllerGetAxis(controller_, a)) / 32767.0f, -1.0f, 1.0f);
+    const Sint16 v = SDL_GameControllerGetAxis(controller_, a);
+    return v >= 32767 ? 1.0f : static_cast<float>(v) / 32768.0f;
   };
   return radial_dead_zone({axis(SDL_CONTROLLER_AXIS_LEFTX), axis(SDL_CONTROLLER_AXIS_LEFTY)}, dead_zone);
 }

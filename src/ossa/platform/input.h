@@ -5,8 +5,8 @@
 //     opened, the one in use going away falls back to the next one attached, or to the
 //     keyboard — never a crash. Mappings: SDL's built-in database plus
 //     assets/gamecontrollerdb.txt when present. The left stick passes a radial dead zone
-//     (rescaled, so the output starts at 0 right at the zone's edge) and sets move_x
-//     precisely: half a stick is the walk speed, a full stick the run speed (player.h).
+//     and sets move_x precisely: half a stick is the walk speed, a full stick the run
+//     speed (player.h).
 //   * MouseKeyboardInput: A/D or the arrows walk (move_x ±0.5); with Shift they run (±1 and
 //     run). Key state is tracked from events (so events pushed with SDL_PushEvent count);
 //     the mouse position, buttons and wheel are kept for the editors.
@@ -26,9 +26,10 @@ struct _SDL_GameController;
 
 namespace ossa {
 
-// Radial dead zone on a stick (components in [-1, 1]): magnitudes below `dead_zone` give 0,
-// the rest is rescaled from (dead_zone, 1] to (0, 1] keeping the direction; the result's
-// magnitude is at most 1. dead_zone in [0, 1).
+// Radial dead zone on a stick (components in [-1, 1]): magnitudes up to `dead_zone` give 0
+// (a worn stick's drift, judged on the whole stick so diagonals are not cut off); outside
+// it the stick passes unchanged, clamped to magnitude 1, so the throw sets the speed
+// precisely (half a throw = walk speed). dead_zone in [0, 1).
 glm::vec2 radial_dead_zone(glm::vec2 stick, float dead_zone);
 
 // Buttons the game reacts to, whatever the device.
