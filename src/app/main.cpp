@@ -1,12 +1,19 @@
 // ossa — the playable runtime (DESIGN.md §8). See `ossa --help` (app/options.cpp).
 
 #include <cstdio>
+#include <cstdlib>
 #include <exception>
 #include <string>
 #include <vector>
 
 #include "app/game.h"
 #include "app/options.h"
+
+// Editors (DESIGN.md §10), wired through the Game's on_ui / on_viewport hooks.
+#include <SDL.h>
+#include <imgui.h>
+#include "ossa/editor/editor_suite.h"
+#include "ossa/gen/generator.h"
 
 int main(int argc, char** argv) {
   try {
@@ -25,6 +32,28 @@ int main(int argc, char** argv) {
       std::fprintf(stderr, "ossa: %s\n", s.message().c_str());
       return 1;
     }
+    // ---- Editors: F2 shows / hides them (spline, level, creature and tuning panels). ----
+    const ossa::GameOptions& o = parsed->options;
+    auto generator = ossa::Generator::load(ossa::resolve_data_path("assets/creatures/examples.json"));
+    ossa::EditorPaths paths;
+    paths.levels_dir = ossa::resolve_data_path("levels");
+    paths.level_file = ossa::resolve_data_path(o.level.empty() ? "levels/default.json" : o.level);
+    paths.prototypes_file = ossa::resolve_data_path("assets/animation/prototypes.json");
+    paths.genome_file = o.out_dir + "/creature.json";
+    paths.tuning_file = o.out_dir + "/tuning.json";
+    paths.export_dir = o.out_dir;
+    ossa::EditorSuite editors(game.world(), generator.ok() ? &generator.value() : nullptr, paths);
+    editors.enabled = std::getenv("OSSA_EDITORS") != nullptr;  // start shown with OSSA_EDITORS=1
+    game.on_ui = [&](float dt) {
+      const ImGuiIO& io = ImGui::GetIO();
+      if (ImGui::IsKeyPressed(SDL_SCANCODE_F2, false)) editors.enabled = !editors.enabled;
+      editors.update(dt);
+      editors.handle_mouse({io.MousePos.x, io.MousePos.y}, io.MouseDown[0], io.MouseWheel, game.camera(),
+                           {io.DisplaySize.x, io.DisplaySize.y});
+      editors.draw_ui();
+    };
+    game.on_viewport = [&](ossa::DebugDraw& draw) { editors.draw_viewport(draw); };
+    // ---- end of the editors ----
     return game.run();
   } catch (const std::exception& e) {
     std::fprintf(stderr, "ossa: unexpected error: %s\n", e.what());
