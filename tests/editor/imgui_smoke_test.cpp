@@ -4,9 +4,6 @@
 // canvas. Set OSSA_EDITOR_SHOTS=<folder> to also write screenshots of every editor.
 #include <catch2/catch.hpp>
 
-#include <dlfcn.h>
-#include <link.h>
-
 #include <cstdlib>
 #include <filesystem>
 #include <memory>
@@ -28,22 +25,6 @@ namespace ossa {
 namespace {
 
 constexpr int kW = 1280, kH = 720;
-
-}  // namespace
-}  // namespace ossa
-
-// The GL driver stack (swrast_dri, libGL) is unloaded at exit before LeakSanitizer looks, so
-// the driver's own allocations would show up as leaks of an "<unknown module>" that
-// tests/lsan.supp cannot name. Pinning every loaded library (RTLD_NODELETE) keeps the names.
-namespace {
-int pin_library(struct dl_phdr_info* info, size_t, void*) {
-  if (info->dlpi_name && info->dlpi_name[0]) dlopen(info->dlpi_name, RTLD_LAZY | RTLD_NOLOAD | RTLD_NODELETE);
-  return 0;
-}
-}  // namespace
-
-namespace ossa {
-namespace {
 
 Level test_level() {
   return Level({Box::from_corner(-5.0f, -1.0f, 40.0f, 1.0f), Box::from_corner(5.0f, 0.0f, 2.0f, 0.3f),
@@ -78,7 +59,6 @@ struct Gui {
     ImGui::GetIO().IniFilename = nullptr;
     ImGui::StyleColorsDark();
     if (!ImGui_ImplOpenGL3_Init("#version 330")) error = "ImGui_ImplOpenGL3_Init failed";
-    dl_iterate_phdr(pin_library, nullptr);
   }
 };
 
