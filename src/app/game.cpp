@@ -216,7 +216,11 @@ bool Game::frame(double dt_seconds) {
     keyboard_->handle_event(e, presses);
     gamepad_->handle_event(e, presses);
   }
-  if (keyboard_->quit_requested()) return false;
+  if (keyboard_->quit_requested()) {
+    keyboard_->clear_quit();
+    if (!on_quit || on_quit()) return false;
+  }
+  if (should_quit && should_quit()) return false;
   m.frame_dt = static_cast<float>(dt_seconds);
   // A text field or an editor window has the keyboard / mouse: game keys and the wheel wait.
   if (m.ui_wants_keyboard()) presses = ActionPresses{};

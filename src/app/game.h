@@ -109,6 +109,11 @@ class Game {
   // Called every frame after the creatures are drawn: world-space overlays (selection,
   // handles, grid), drawn on top of the scene.
   std::function<void(DebugDraw& draw)> on_viewport;
+  // Called when the player asks to quit (Escape, closing the window). Return false to keep
+  // running — e.g. unsaved editor work, for which a prompt asks first.
+  std::function<bool()> on_quit;
+  // Polled every frame: true ends the game (e.g. the editors' "discard" was confirmed).
+  std::function<bool()> should_quit;
 
  private:
   struct Impl;

@@ -206,6 +206,7 @@ void Game::Impl::update_camera(const World& world, float alpha, float dt) {
 void Game::Impl::render(Game& game, float alpha) {
   World& world = game.world();
   Renderer& r = *renderer;
+  r.reload_shaders_if_changed();  // edited shader files take effect while the game runs
   r.camera.center_ws = camera_ws;
   r.camera.half_height = base_half_height * zoom;
 

@@ -3,6 +3,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <exception>
+#include <fstream>
 #include <string>
 #include <vector>
 
@@ -13,6 +14,7 @@
 #include <SDL.h>
 #include <imgui.h>
 #include "ossa/editor/editor_suite.h"
+#include "ossa/editor/tuning_model.h"
 #include "ossa/gen/generator.h"
 
 int main(int argc, char** argv) {
@@ -42,6 +44,14 @@ int main(int argc, char** argv) {
     paths.genome_file = o.out_dir + "/creature.json";
     paths.tuning_file = o.out_dir + "/tuning.json";
     paths.export_dir = o.out_dir;
+    // Tuning saved from the tuning panel is loaded again at start.
+    if (std::ifstream(paths.tuning_file).good()) {
+      if (auto params = ossa::load_params(paths.tuning_file); params.ok()) {
+        game.world().set_params(*params);
+      } else {
+        std::fprintf(stderr, "ossa: %s (keeping the default tuning)\n", params.message().c_str());
+      }
+    }
     ossa::EditorSuite editors(game.world(), generator.ok() ? &generator.value() : nullptr, paths);
     editors.enabled = std::getenv("OSSA_EDITORS") != nullptr;  // start shown with OSSA_EDITORS=1
     game.on_ui = [&](float dt) {
@@ -53,6 +63,13 @@ int main(int argc, char** argv) {
       editors.draw_ui();
     };
     game.on_viewport = [&](ossa::DebugDraw& draw) { editors.draw_viewport(draw); };
+    // Quitting with unsaved editor work asks first (the editors show the prompt).
+    game.on_quit = [&] {
+      if (editors.request_quit()) return true;
+      editors.enabled = true;
+      return false;
+    };
+    game.should_quit = [&] { return editors.quit_confirmed(); };
     // ---- end of the editors ----
     return game.run();
   } catch (const std::exception& e) {

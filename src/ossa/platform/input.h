@@ -96,6 +96,8 @@ class MouseKeyboardInput {
   Controls controls() const;
   bool active() const { return left_ || right_; }
   bool quit_requested() const { return quit_; }
+  // Forgets a quit request (the game asked first and the user chose to stay).
+  void clear_quit() { quit_ = false; }
 
   // Mouse for the editors: window pixels (x right, y down), buttons (SDL_BUTTON_* masks),
   // wheel steps accumulated since the last take_wheel().
