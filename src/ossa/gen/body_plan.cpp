@@ -17,8 +17,7 @@ constexpr float kHalfPi = 0.5f * kPi;
 constexpr float kGroundFraction = 0.9f;
 constexpr float kScapulaAngle = -1.05f;  // abs, frame space: down and forward
 constexpr float kPelvisAngle = -2.05f;   // abs: down and back
-constexpr int kBackFront = 13;           // [Z 7.3] vertebrae in front of the root
-constexpr int kBackRear = 12;
+constexpr int kBackFront = 13;           // [Z 7.3] of 25 back vertebrae in front of the root
 constexpr float kMaxPitch = 0.6f;        // radians: the most the body tilts to stand
 constexpr int kSpineTableSamples = 24;
 

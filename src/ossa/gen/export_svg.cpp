@@ -18,7 +18,6 @@
 namespace ossa {
 namespace {
 
-constexpr float kPi = 3.14159265358979f;
 
 // [SECTION] Path builder ---------------------------------------------------------------------
 
