@@ -14,6 +14,7 @@
 #include <stb_image_write.h>
 #pragma GCC diagnostic pop
 
+#include "ossa/io/file.h"
 #include "ossa/render/gl.h"
 
 namespace ossa {
@@ -45,11 +46,15 @@ Image read_framebuffer(int width, int height) {
 
 Status write_png(const std::string& path, const Image& image) {
   if (image.empty()) return Error{path + ": cannot write an empty image"};
-  if (!stbi_write_png(path.c_str(), image.width, image.height, 4, image.rgba.data(),
-                      image.width * 4)) {
-    return Error{path + ": cannot write PNG"};
+  // Encode in memory, then save atomically like every other file ossa writes.
+  std::string bytes;
+  auto append = [](void* context, void* data, int size) {
+    static_cast<std::string*>(context)->append(static_cast<const char*>(data), static_cast<size_t>(size));
+  };
+  if (!stbi_write_png_to_func(append, &bytes, image.width, image.height, 4, image.rgba.data(), image.width * 4)) {
+    return Error{path + ": cannot encode PNG"};
   }
-  return {};
+  return write_file_atomic(path, bytes);
 }
 
 uint32_t gif_palette_colour(int i) {
@@ -84,6 +89,7 @@ uint8_t gif_palette_index(uint8_t r, uint8_t g, uint8_t b) {
 struct GifWriter::Impl {
   GifFileType* gif = nullptr;
   std::string path;
+  std::string bytes;  // the encoded GIF, saved atomically by close()
   int width = 0, height = 0, delay_cs = 4, frames = 0;
   std::string error;
 
@@ -114,8 +120,13 @@ Result<GifWriter> GifWriter::open(const std::string& path, int width, int height
   s.height = height;
   s.delay_cs = std::clamp(delay_cs, 1, 65535);
   int err = 0;
-  s.gif = EGifOpenFileName(path.c_str(), false, &err);
-  if (!s.gif) return Error{path + ": cannot open GIF for writing: " + GifErrorString(err)};
+  // Encode into memory (Impl lives on the heap, so its address is stable across moves).
+  auto append = [](GifFileType* f, const GifByteType* data, int n) {
+    static_cast<Impl*>(f->UserData)->bytes.append(reinterpret_cast<const char*>(data), static_cast<size_t>(n));
+    return n;
+  };
+  s.gif = EGifOpen(&s, append, &err);
+  if (!s.gif) return Error{path + ": cannot start a GIF: " + GifErrorString(err)};
   EGifSetGifVersion(s.gif, true);  // GIF89a: frame delays and looping
 
   GifColorType colours[256];
@@ -180,6 +191,10 @@ Status GifWriter::close() {
     int err = 0;
     if (EGifCloseFile(s.gif, &err) == GIF_ERROR) s.fail("cannot close GIF", err);
     s.gif = nullptr;
+    if (s.error.empty()) {
+      if (Status w = write_file_atomic(s.path, s.bytes); !w.ok()) return w;
+    }
+    s.bytes.clear();
   }
   if (!s.error.empty()) return Error{s.error};
   return {};

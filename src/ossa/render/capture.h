@@ -30,8 +30,9 @@ uint8_t gif_palette_index(uint8_t r, uint8_t g, uint8_t b);
 
 class GifWriter {
  public:
-  // Opens `path` for a looping GIF of width × height frames shown `delay_cs` hundredths of a
-  // second each.
+  // Starts a looping GIF of width × height frames shown `delay_cs` hundredths of a second
+  // each. Frames are encoded in memory; close() saves the file atomically (an unwritable
+  // path is reported there).
   static Result<GifWriter> open(const std::string& path, int width, int height, int delay_cs = 4);
 
   GifWriter();
