@@ -157,26 +157,11 @@ void SimProbe::observe(const Animator& a, const Level& level) {
   if (static_cast<int>(stance_anchor_.size()) != legs) {
     stance_anchor_.assign(legs, glm::vec2(0.0f));
     stance_since_.assign(legs, -1);
-    last_foot_.assign(legs, glm::vec2(0.0f));
   }
   const bool turned = last_facing_ != 0 && a.facing() != last_facing_;
-  bool any_down = false, all_down = true;
-  // How far the feet moved this tick: each foot to the nearest foot of the last tick (when
-  // the creature turns, legs take over each other's feet; the feet themselves stay put).
-  std::vector<glm::vec2> feet(legs);
-  for (int i = 0; i < legs; ++i) feet[i] = a.foot_ws(i);
-  if (ticks_ > 0) {
-    for (int i = 0; i < legs; ++i) {
-      float nearest = 1e30f;
-      for (int j = 0; j < legs; ++j) nearest = std::min(nearest, glm::length(feet[i] - last_foot_[j]));
-      max_foot_jump_m = std::max(max_foot_jump_m, nearest);
-    }
-  }
   for (int i = 0; i < legs; ++i) {
-    const glm::vec2 foot = feet[i];
-    last_foot_[i] = foot;
+    const glm::vec2 foot = a.foot_ws(i);
     if (a.leg_state(i) == LegState::kStance) {
-      any_down = true;
       if (stance_since_[i] < 0 || turned) {
         stance_anchor_[i] = foot;
         stance_since_[i] = static_cast<int>(ticks_);
@@ -184,7 +169,6 @@ void SimProbe::observe(const Animator& a, const Level& level) {
         max_stance_slip_m = std::max(max_stance_slip_m, glm::length(foot - stance_anchor_[i]));
       }
     } else {
-      all_down = false;
       stance_since_[i] = -1;
       const float s = a.swing_progress(i);
       if (!a.easing(i) && s > 0.25f && s < 0.75f) {
@@ -193,8 +177,6 @@ void SimProbe::observe(const Animator& a, const Level& level) {
       }
     }
   }
-  if (legs > 0 && !any_down && std::fabs(a.velocity()) > 0.0f) flight_seen = true;
-  all_feet_down_ticks = all_down ? all_feet_down_ticks + 1 : 0;
   last_facing_ = a.facing();
   ++ticks_;
 }

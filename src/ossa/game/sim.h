@@ -50,14 +50,10 @@ class SimProbe {
   float min_swing_clearance_m = 1e9f;
   int nan_count = 0;
   uint64_t pose_hash = 1469598103934665603ull;
-  float max_foot_jump_m = 0.0f;   // largest per-tick move of a reached contact point
-  bool flight_seen = false;       // a tick where no foot was on the ground while moving
-  int all_feet_down_ticks = 0;    // consecutive ticks so far with every foot in stance
 
  private:
   std::vector<glm::vec2> stance_anchor_;
   std::vector<int> stance_since_;
-  std::vector<glm::vec2> last_foot_;
   int last_facing_ = 0;
   uint64_t ticks_ = 0;
 };
