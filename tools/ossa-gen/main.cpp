@@ -15,13 +15,13 @@
 #include <string_view>
 #include <vector>
 
-#include "gltf_export.h"
 #include "ossa/gen/export_obj.h"
 #include "ossa/gen/export_svg.h"
 #include "ossa/gen/generator.h"
 #include "ossa/gen/skeleton_builder.h"
 #include "ossa/io/file.h"
 #include "ossa/io/json.h"
+#include "ossa/render/gltf_export.h"
 
 namespace {
 
@@ -352,9 +352,9 @@ int run(const Args& a) {
       }
     }
     if (a.gltf) {
-      tools::GltfOptions o;
+      GltfOptions o;
       o.atlas_path = atlas;
-      if (Status st = tools::export_gltf(c, numbered(*a.gltf, k + 1, total), o); !st) {
+      if (Status st = export_gltf(c, numbered(*a.gltf, k + 1, total), o); !st) {
         return fail(st.message());
       }
     }

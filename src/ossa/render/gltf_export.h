@@ -1,6 +1,6 @@
 #pragma once
-// glTF 2.0 export of a Creature through Assimp (DESIGN.md §5.10). Lives in the tool, not in
-// ossa::core, because Assimp is not a core dependency.
+// glTF 2.0 export of a Creature through Assimp (DESIGN.md §5.10). Lives in ossa::render, not
+// in ossa::core, because Assimp is not a core dependency; ossa-gen and the creature panel use it.
 //
 // The file holds:
 //   - a node hierarchy equal to the skeleton: one node per bone, named like the bone, with its
@@ -15,21 +15,24 @@
 //   - one material, referencing the bone sprite atlas as its diffuse/base-colour texture when
 //     `atlas_path` names an existing file (written relative to the output file's folder when
 //     possible), else a plain bone-coloured material.
-// Assimp's "gltf2" exporter writes F.gltf plus F.bin next to it.
+// Assimp's "gltf2" exporter writes F.gltf plus F.bin next to it. Both are encoded in memory
+// first and then saved atomically (F.bin, then F.gltf), like every file ossa writes: a failed
+// export leaves any previous files untouched.
 
 #include <string>
 
 #include "ossa/gen/creature.h"
 #include "ossa/io/result.h"
 
-namespace ossa::tools {
+namespace ossa {
 
 struct GltfOptions {
   std::string atlas_path;  // PNG atlas; empty or missing file: plain material
 };
 
-// Writes `path` (".gltf"). Errors name the path and Assimp's reason.
+// Writes `path` (".gltf") and its ".bin". Errors name the file and the reason (Assimp's, or
+// why the file could not be written).
 Status export_gltf(const Creature& creature, const std::string& path,
                    const GltfOptions& options = {});
 
-}  // namespace ossa::tools
+}  // namespace ossa

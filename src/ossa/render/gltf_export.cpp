@@ -1,18 +1,23 @@
-#include "gltf_export.h"
+#include "ossa/render/gltf_export.h"
 
 #include <assimp/Exporter.hpp>
+#include <assimp/IOStream.hpp>
+#include <assimp/IOSystem.hpp>
 #include <assimp/material.h>
 #include <assimp/scene.h>
 
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <map>
 #include <memory>
+#include <string>
 #include <vector>
 
+#include "ossa/io/file.h"
 #include "ossa/skeleton/pose.h"
 
-namespace ossa::tools {
+namespace ossa {
 namespace {
 
 aiMatrix4x4 to_ai(const Mat2x3& m) {
@@ -27,6 +32,54 @@ template <class T>
 T* new_array(size_t n) {
   return n ? new T[n] : nullptr;
 }
+
+// Assimp writes through an IOSystem; this one keeps every file it is asked to write in memory
+// (path → bytes), so that the files can be saved atomically once the export has succeeded.
+using MemoryFiles = std::map<std::string, std::string>;
+
+class MemoryStream : public Assimp::IOStream {
+ public:
+  MemoryStream(MemoryFiles& files, std::string path) : files_(&files), path_(std::move(path)) {}
+  ~MemoryStream() override { (*files_)[path_] = std::move(bytes_); }
+  size_t Read(void*, size_t, size_t) override { return 0; }
+  size_t Write(const void* data, size_t size, size_t count) override {
+    const size_t n = size * count;
+    if (bytes_.size() < pos_ + n) bytes_.resize(pos_ + n);
+    if (n) bytes_.replace(pos_, n, static_cast<const char*>(data), n);
+    pos_ += n;
+    return count;
+  }
+  aiReturn Seek(size_t offset, aiOrigin origin) override {
+    const size_t base = origin == aiOrigin_CUR ? pos_ : origin == aiOrigin_END ? bytes_.size() : 0;
+    pos_ = base + offset;
+    return aiReturn_SUCCESS;
+  }
+  size_t Tell() const override { return pos_; }
+  size_t FileSize() const override { return bytes_.size(); }
+  void Flush() override {}
+
+ private:
+  MemoryFiles* files_;
+  std::string path_;
+  std::string bytes_;
+  size_t pos_ = 0;
+};
+
+class MemoryIOSystem : public Assimp::IOSystem {
+ public:
+  explicit MemoryIOSystem(MemoryFiles& files) : files_(&files) {}
+  bool Exists(const char* path) const override { return files_->count(path) > 0; }
+  char getOsSeparator() const override { return '/'; }
+  Assimp::IOStream* Open(const char* path, const char* mode) override {
+    // Export only writes; anything else (a read of an existing file) is refused.
+    if (!mode || (mode[0] != 'w' && mode[0] != 'a')) return nullptr;
+    return new MemoryStream(*files_, path);
+  }
+  void Close(Assimp::IOStream* stream) override { delete stream; }
+
+ private:
+  MemoryFiles* files_;
+};
 
 }  // namespace
 
@@ -142,11 +195,21 @@ Status export_gltf(const Creature& creature, const std::string& path, const Gltf
   scene->mNumMaterials = 1;
   scene->mMaterials = new aiMaterial*[1]{material};
 
-  Assimp::Exporter exporter;
-  if (exporter.Export(scene.get(), "gltf2", path) != aiReturn_SUCCESS) {
-    return Error::at(path, "", std::string("glTF export failed: ") + exporter.GetErrorString());
+  MemoryFiles files;
+  {
+    Assimp::Exporter exporter;
+    exporter.SetIOHandler(new MemoryIOSystem(files));  // the exporter owns it
+    if (exporter.Export(scene.get(), "gltf2", path) != aiReturn_SUCCESS) {
+      return Error::at(path, "", std::string("glTF export failed: ") + exporter.GetErrorString());
+    }
   }
-  return {};
+  if (files.count(path) == 0) return Error::at(path, "", "glTF export wrote no file");
+  // The buffers first, the .gltf that refers to them last.
+  for (const auto& [file, bytes] : files) {
+    if (file == path) continue;
+    if (Status s = write_file_atomic(file, bytes); !s.ok()) return s;
+  }
+  return write_file_atomic(path, files[path]);
 }
 
-}  // namespace ossa::tools
+}  // namespace ossa

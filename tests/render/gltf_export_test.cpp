@@ -1,5 +1,5 @@
 // glTF export round trip: export with Assimp, re-import with Assimp, and compare the node
-// hierarchy and the skin with the skeleton (tools/ossa-gen/gltf_export.h).
+// hierarchy and the skin with the skeleton (src/ossa/render/gltf_export.h).
 
 #include <catch2/catch.hpp>
 
@@ -11,9 +11,10 @@
 #include <map>
 #include <string>
 
-#include "gltf_export.h"
 #include "ossa/gen/generator.h"
 #include "ossa/gen/skeleton_builder.h"
+#include "ossa/io/file.h"
+#include "ossa/render/gltf_export.h"
 #include "ossa/skeleton/pose.h"
 #include "shared/scenes.h"
 #include "tools/hand_creature.h"
@@ -88,7 +89,7 @@ TEST_CASE("glTF export of a hand-built creature re-imports with its skeleton", "
   for (bool winged : {false, true}) {
     const Creature c = test::hand_built_creature(winged);
     const std::string path = temp_path(c.name + ".gltf");
-    const Status st = tools::export_gltf(c, path);
+    const Status st = export_gltf(c, path);
     INFO((st.ok() ? std::string() : st.message()));
     REQUIRE(st.ok());
     check_round_trip(c, path);
@@ -104,12 +105,12 @@ TEST_CASE("glTF export references the atlas only when it exists", "[gltf]") {
     std::fputs("not really a png", f);
     std::fclose(f);
   }
-  tools::GltfOptions with;
+  GltfOptions with;
   with.atlas_path = atlas;
-  REQUIRE(tools::export_gltf(c, temp_path("with_atlas.gltf"), with).ok());
-  tools::GltfOptions without;
+  REQUIRE(export_gltf(c, temp_path("with_atlas.gltf"), with).ok());
+  GltfOptions without;
   without.atlas_path = temp_path("missing-atlas.png");
-  REQUIRE(tools::export_gltf(c, temp_path("without_atlas.gltf"), without).ok());
+  REQUIRE(export_gltf(c, temp_path("without_atlas.gltf"), without).ok());
   auto text = [](const std::string& p) {
     std::FILE* f = std::fopen(p.c_str(), "rb");
     std::string s;
@@ -125,8 +126,27 @@ TEST_CASE("glTF export references the atlas only when it exists", "[gltf]") {
 
 TEST_CASE("glTF export fails cleanly on an unwritable path", "[gltf]") {
   const Creature c = test::hand_built_creature();
-  const Status st = tools::export_gltf(c, "/nonexistent-dir/x/y.gltf");
-  CHECK_FALSE(st.ok());
+  const Status st = export_gltf(c, "/nonexistent-dir/x/y.gltf");
+  REQUIRE_FALSE(st.ok());
+  CHECK(st.message().find("/nonexistent-dir/x/y") != std::string::npos);
+}
+
+TEST_CASE("glTF export writes its buffer next to it and replaces files atomically", "[gltf]") {
+  const Creature c = test::hand_built_creature();
+  const std::string path = temp_path("atomic.gltf");
+  const std::string bin = temp_path("atomic.bin");
+  std::filesystem::remove(path);
+  std::filesystem::remove(bin);
+  REQUIRE(export_gltf(c, path).ok());
+  REQUIRE(std::filesystem::is_regular_file(bin));
+  CHECK(read_file(path).value().find("\"atomic.bin\"") != std::string::npos);
+  // A second export over the same files leaves no temporary files behind.
+  REQUIRE(export_gltf(c, path).ok());
+  int files = 0;
+  for (const auto& e : std::filesystem::directory_iterator(std::filesystem::path(path).parent_path())) {
+    files += e.path().filename().string().rfind("atomic", 0) == 0 ? 1 : 0;
+  }
+  CHECK(files == 2);
 }
 
 TEST_CASE("glTF export of generated examples re-imports with their skeletons", "[gltf]") {
@@ -138,7 +158,7 @@ TEST_CASE("glTF export of generated examples re-imports with their skeletons", "
     Result<Creature> c = build_creature(*genome);
     REQUIRE(c.ok());
     const std::string path = temp_path(std::string(name) + ".gltf");
-    REQUIRE(tools::export_gltf(*c, path).ok());
+    REQUIRE(export_gltf(*c, path).ok());
     check_round_trip(*c, path);
   }
 }
