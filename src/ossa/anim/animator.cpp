@@ -40,9 +40,25 @@ bool crossed(float prev, float now, float x) {
   const float to_x = frac(x - prev);
   return to_x > 0.0f && to_x <= d;
 }
-float approach(float value, float target, float rate, float dt) {
-  if (dt <= 0.0f) return target;
-  return target + (value - target) * std::exp(-rate * dt);
+// Exponential approach: value moves towards target, keeping a fraction `keep` = exp(-rate·dt).
+float approach(float value, float target, float keep) { return target + (value - target) * keep; }
+// The convex hull of points (Andrew's monotone chain), counter-clockwise.
+std::vector<glm::vec2> convex_hull(std::vector<glm::vec2> p) {
+  std::sort(p.begin(), p.end(), [](glm::vec2 a, glm::vec2 b) { return a.x < b.x || (a.x == b.x && a.y < b.y); });
+  if (p.size() < 3) return p;
+  auto cross = [](glm::vec2 o, glm::vec2 a, glm::vec2 b) { return (a.x - o.x) * (b.y - o.y) - (a.y - o.y) * (b.x - o.x); };
+  std::vector<glm::vec2> h(2 * p.size());
+  size_t k = 0;
+  for (size_t i = 0; i < p.size(); ++i) {
+    while (k >= 2 && cross(h[k - 2], h[k - 1], p[i]) <= 0.0f) --k;
+    h[k++] = p[i];
+  }
+  for (size_t i = p.size() - 1, t = k + 1; i > 0; --i) {
+    while (k >= t && cross(h[k - 2], h[k - 1], p[i - 1]) <= 0.0f) --k;
+    h[k++] = p[i - 1];
+  }
+  h.resize(k - 1);
+  return h;
 }
 glm::vec2 rotate(glm::vec2 v, float a) {
   const float c = std::cos(a), s = std::sin(a);
@@ -133,30 +149,84 @@ Animator::Animator(const Creature& creature, SplinePrototypes prototypes, Animat
   for (size_t i = 0; i < legs_.size(); ++i) feet_[i].offset = leg_target_offset(static_cast<int>(i));
 
   // FK caches: rest local matrices, the bones the animator moves, the limb chains.
+  const int root = creature.root;
   rest_local_m_.resize(sk.bone_count());
   for (int b = 0; b < sk.bone_count(); ++b) rest_local_m_[b] = local_matrix(pose_.locals[b]);
-  dynamic_bone_.assign(sk.bone_count(), 0);
-  limb_bone_.assign(sk.bone_count(), 0);
-  dynamic_bone_[creature.root] = 1;
+  dynamic_bone_.assign(sk.bone_count(), legs_.empty() ? 1 : 0);  // legless bodies bend all along
+  dynamic_bone_[root] = 1;
   if (creature.skull >= 0) dynamic_bone_[creature.skull] = 1;
   for (int b : creature.tail) dynamic_bone_[b] = 1;
+  std::vector<uint8_t> limb_bone(sk.bone_count(), 0);
   for (const Limb& limb : creature.limbs) {
-    for (int b : limb.bones) limb_bone_[b] = 1;
+    for (int b : limb.bones) limb_bone[b] = 1;
+  }
+  std::vector<uint8_t> leg_ik_bone(sk.bone_count(), 0);
+  leg_foot_dir_.resize(legs_.size());
+  for (size_t i = 0; i < legs_.size(); ++i) {
+    const Limb& limb = creature.limbs[legs_[i].limb];
+    for (int k = 0; k < 3; ++k) leg_ik_bone[limb.bones[k]] = 1;
+    leg_foot_dir_[i] = {std::cos(legs_[i].foot_angle_ms), std::sin(legs_[i].foot_angle_ms)};
   }
   for (int b = 0; b < sk.bone_count(); ++b) {
-    if (limb_bone_[b]) limb_bones_.push_back(b);
+    if (limb_bone[b] && !leg_ik_bone[b]) other_limb_bones_.push_back(b);
   }
-  needed_bone_.assign(sk.bone_count(), 0);
+  // Girdles are rigid to the root unless a bone between bends (legless bodies).
+  bool rigid = sk.parent(root) < 0 && !legs_.empty();
+  std::vector<uint8_t> needed(sk.bone_count(), 0), girdle(sk.bone_count(), 0);
   for (const Limb& limb : creature.limbs) {
-    for (int b = limb.girdle_bone; b >= 0; b = sk.parent(b)) needed_bone_[b] = 1;
+    girdle[limb.girdle_bone] = 1;
+    for (int b = limb.girdle_bone; b >= 0; b = sk.parent(b)) {
+      needed[b] = 1;
+      if (b != root && dynamic_bone_[b]) rigid = false;
+      if (sk.parent(b) < 0 && b != root) rigid = false;
+    }
   }
-  needed_bone_[creature.root] = 1;
-  // The neck and head take part in the wall sweep.
-  for (int b : creature.neck) needed_bone_[b] = 1;
-  if (creature.skull >= 0) needed_bone_[creature.skull] = 1;
+  needed[root] = 1;
+  tick_bone_ = limb_bone;
+  if (rigid) {
+    const Mat2x3 root_inv = inverse(model_rest_[root]);
+    needed_bones_ = {root};
+    tick_bone_[root] = 1;
+    for (int b = 0; b < sk.bone_count(); ++b) {
+      if (!girdle[b] || b == root) continue;
+      girdle_bones_.push_back(b);
+      girdle_rel_.push_back(root_inv * model_rest_[b]);
+      tick_bone_[b] = 1;
+    }
+    for (LegInfo& info : legs_) {
+      const Mat2x3 rel = root_inv * model_rest_[creature.limbs[info.limb].girdle_bone];
+      info.girdle_rel_angle = bone_angle(rel);
+    }
+    // The wall sweep's outline of the body: its joints relative to the root's frame.
+    std::vector<int> body = {root};
+    body.insert(body.end(), creature.back.begin(), creature.back.end());
+    body.insert(body.end(), creature.neck.begin(), creature.neck.end());
+    for (int b : body) {
+      body_points_rel_.push_back(root_inv.apply(bone_start(model_rest_[b])));
+      body_points_rel_.push_back(root_inv.apply(bone_end(model_rest_[b], sk.length(b))));
+    }
+    // A rotated outline's bounds are its hull's bounds.
+    body_points_rel_ = convex_hull(body_points_rel_);
+    if (creature.skull >= 0) {
+      const Mat2x3& skull = model_rest_[creature.skull];
+      skull_rel_ = root_inv.apply(bone_start(skull));
+      skull_span_ = bone_end(skull, sk.length(creature.skull)) - bone_start(skull);
+    }
+  } else {
+    // The neck and head take part in the wall sweep.
+    for (int b : creature.neck) needed[b] = 1;
+    if (creature.skull >= 0) needed[creature.skull] = 1;
+    for (int b = 0; b < sk.bone_count(); ++b) {
+      if (!needed[b]) continue;
+      needed_bones_.push_back(b);
+      tick_bone_[b] = 1;
+    }
+  }
+  // The joints build_pose rewrites each tick (everything else keeps its rest value).
   for (int b = 0; b < sk.bone_count(); ++b) {
-    if (needed_bone_[b]) needed_bones_.push_back(b);
+    if (dynamic_bone_[b] || (limb_bone[b] && !leg_ik_bone[b])) touched_bones_.push_back(b);
   }
+  group_height_.resize(groups_.size());
 }
 
 float Animator::walk_speed() const { return std::sqrt(0.5f * params_.gravity * hip_height_); }
@@ -181,8 +251,8 @@ const std::vector<Mat2x3>& Animator::model_matrices() const {
     const Skeleton& sk = creature_->skeleton;
     const std::vector<int>& parents = sk.parents();
     for (int b = 0; b < sk.bone_count(); ++b) {
-      if (needed_bone_[b] || limb_bone_[b]) continue;
-      const Mat2x3 local = dynamic_bone_[b] || legs_.empty() ? local_matrix(pose_.locals[b]) : rest_local_m_[b];
+      if (tick_bone_[b]) continue;
+      const Mat2x3 local = dynamic_bone_[b] ? local_matrix(pose_.locals[b]) : rest_local_m_[b];
       model_[b] = parents[b] < 0 ? local : model_[parents[b]] * local;
     }
     model_dirty_ = false;
@@ -199,6 +269,48 @@ const std::vector<Mat2x3>& Animator::world_matrices() const {
     world_dirty_ = false;
   }
   return world_;
+}
+
+void Animator::body_bounds(glm::vec2* lo_out, glm::vec2* hi_out) const {
+  // The back, neck, head, arms and fins as they are now.
+  const Skeleton& sk = creature_->skeleton;
+  glm::vec2 lo(1e30f), hi(-1e30f);
+  auto add_point = [&](glm::vec2 p_ms) {
+    const glm::vec2 p = to_world(p_ms);
+    lo = glm::min(lo, p);
+    hi = glm::max(hi, p);
+  };
+  auto add = [&](int b) {
+    add_point(bone_start(model_[b]));
+    add_point(bone_end(model_[b], sk.length(b)));
+  };
+  if (!body_points_rel_.empty()) {
+    const Mat2x3& root = model_[creature_->root];
+    for (glm::vec2 p : body_points_rel_) add_point(root.apply(p));
+    if (creature_->skull >= 0) {
+      const glm::vec2 skull = root.apply(skull_rel_);
+      add_point(skull);
+      add_point(skull + skull_span_);
+    }
+  } else {
+    add(creature_->root);
+    for (int b : creature_->back) add(b);
+    for (int b : creature_->neck) add(b);
+    if (creature_->skull >= 0) add(creature_->skull);
+  }
+  // Arms swing: count the whole reach of each arm, forward and back, not just this pose.
+  for (int a : arms_) {
+    const Limb& arm = creature_->limbs[a];
+    const glm::vec2 shoulder = to_world(bone_start(model_[arm.bones[0]]));
+    const float reach = sk.length(arm.bones[0]) + sk.length(arm.bones[1]) + sk.length(arm.bones[2]);
+    lo = glm::min(lo, shoulder - glm::vec2(reach, reach));
+    hi = glm::max(hi, shoulder + glm::vec2(reach, 0.0f));
+  }
+  for (int a : fins_) {
+    for (int b : creature_->limbs[a].bones) add(b);
+  }
+  *lo_out = lo;
+  *hi_out = hi;
 }
 
 void Animator::reset(glm::vec2 position_ws, const Level& level, int facing) {
@@ -242,6 +354,10 @@ void Animator::reset(glm::vec2 position_ws, const Level& level, int facing) {
 void Animator::update(float dt, float desired_velocity, const Level& level) {
   if (!(dt > 0.0f) || !std::isfinite(desired_velocity)) return;
   const float ism = std::max(params_.interpolation_speed_multiplier, 0.01f);
+  if (dt != decay_.dt || ism != decay_.ism) {
+    decay_ = {dt, ism, std::exp(-6.0f * ism * dt), std::exp(-5.0f * ism * dt), std::exp(-4.0f * ism * dt),
+              std::exp(-10.0f * ism * dt), std::exp(-14.0f * ism * dt)};
+  }
   const int want = desired_velocity > 1e-4f ? 1 : desired_velocity < -1e-4f ? -1 : 0;
   if (want != 0 && want != facing_) reverse(level);
 
@@ -265,33 +381,14 @@ void Animator::update(float dt, float desired_velocity, const Level& level) {
   // The stick sets the speed precisely [T 4.1]; starting and stopping are immediate [T 5.1]
   // (the half-length first step and the eased stop make them read well).
   speed_ = target <= 1e-4f ? 0.0f : target;
-  update_gait(dt);
-  lean_ = approach(lean_, -params_.max_spine_rotation * std::min(speed_ / run_speed(), 1.2f), 6.0f * ism, dt);
+  update_gait();
+  lean_ = approach(lean_, -params_.max_spine_rotation * std::min(speed_ / run_speed(), 1.2f), decay_.lean);
 
   // Body motion, stopped by walls the body would run into.
   float dx = facing_ * speed_ * dt;
   if (dx != 0.0f) {
-    // The back, neck, head, arms and fins as they are now.
-    const Skeleton& sk = creature_->skeleton;
-    glm::vec2 lo(1e30f), hi(-1e30f);
-    auto add = [&](int b) {
-      const glm::vec2 p = to_world(bone_start(model_[b])), q = to_world(bone_end(model_[b], sk.length(b)));
-      lo = glm::min(lo, glm::min(p, q));
-      hi = glm::max(hi, glm::max(p, q));
-    };
-    add(creature_->root);
-    for (int b : creature_->back) add(b);
-    for (int b : creature_->neck) add(b);
-    if (creature_->skull >= 0) add(creature_->skull);
-    // Arms swing: count the whole reach of each arm, forward and back, not just this pose.
-    for (int a : arms_) {
-      const Limb& arm = creature_->limbs[a];
-      const glm::vec2 shoulder = to_world(bone_start(model_[arm.bones[0]]));
-      const float reach = sk.length(arm.bones[0]) + sk.length(arm.bones[1]) + sk.length(arm.bones[2]);
-      lo = glm::min(lo, shoulder - glm::vec2(reach, reach));
-      hi = glm::max(hi, shoulder + glm::vec2(reach, 0.0f));
-    }
-    for (int a : fins_) for (int b : creature_->limbs[a].bones) add(b);
+    glm::vec2 lo, hi;
+    body_bounds(&lo, &hi);
     // Low obstacles are the legs' business (steps); the body only meets walls.
     const float support = root_y_ - root_rest_y_ * params_.stance_height;
     lo.y = std::max(lo.y + 0.3f * hip_height_, support + params_.max_step_up * hip_height_);
@@ -354,8 +451,9 @@ void Animator::update(float dt, float desired_velocity, const Level& level) {
     phase_ = frac(phase_ + dphi);
     for (size_t i = 0; i < legs_.size(); ++i) {
       Foot& f = feet_[foot_of_leg_[i]];
-      f.offset = circular_lerp(f.offset, leg_target_offset(static_cast<int>(i)),
-                               std::min(1.0f, 0.6f * ism * dt / std::max(std::fabs(phase_diff(f.offset, leg_target_offset(static_cast<int>(i)))), 1e-6f)));
+      const float target_offset = leg_target_offset(static_cast<int>(i));
+      f.offset = circular_lerp(f.offset, target_offset,
+                               std::min(1.0f, 0.6f * ism * dt / std::max(std::fabs(phase_diff(f.offset, target_offset)), 1e-6f)));
       const float p = frac(phase_ + f.offset);
       if (f.state == LegState::kStance) {
         bool lift = starting ? p >= duty_ : crossed(f.phase_prev, p, duty_);
@@ -424,23 +522,26 @@ void Animator::update(float dt, float desired_velocity, const Level& level) {
   build_pose(dt, level);
 }
 
-void Animator::update_gait(float dt) {
-  const float ism = std::max(params_.interpolation_speed_multiplier, 0.01f);
+void Animator::update_gait() {
   froude_ = speed_ * speed_ / (params_.gravity * hip_height_);
-  run_factor_ = approach(run_factor_, smoothstep(params_.run_froude_start, params_.run_froude_end, froude_), 5.0f * ism, dt);
+  run_factor_ = approach(run_factor_, smoothstep(params_.run_froude_start, params_.run_froude_end, froude_), decay_.run);
   float trot = smoothstep(0.7f * params_.trot_froude, 1.3f * params_.trot_froude, froude_);
   float gallop = smoothstep(0.85f * params_.gallop_froude, 1.15f * params_.gallop_froude, froude_);
   if (params_.gait_override != GaitOverride::kAuto) {
     trot = params_.gait_override == GaitOverride::kWalk ? 0.0f : 1.0f;
     gallop = params_.gait_override == GaitOverride::kGallop ? 1.0f : 0.0f;
   }
-  trot_factor_ = approach(trot_factor_, trot, 4.0f * ism, dt);
-  gallop_factor_ = approach(gallop_factor_, gallop, 4.0f * ism, dt);
+  trot_factor_ = approach(trot_factor_, trot, decay_.gait);
+  gallop_factor_ = approach(gallop_factor_, gallop, decay_.gait);
   duty_ = params_.duty_walk + (params_.duty_run - params_.duty_walk) * run_factor_;
 
   // Stride: Alexander's relation, limited so that a stance foot half a stance ahead or
   // behind its girdle stays within reach.
-  float stride = 2.3f * hip_height_ * std::pow(std::max(froude_, 1e-4f), 0.3f) * params_.step_distance_multiplier;
+  if (froude_ != stride_froude_) {
+    stride_froude_ = froude_;
+    stride_pow_ = std::pow(std::max(froude_, 1e-4f), 0.3f);
+  }
+  float stride = 2.3f * hip_height_ * stride_pow_ * params_.step_distance_multiplier;
   float max_stride = 1e30f;
   for (const LegInfo& leg : legs_) {
     const float h = groups_[leg.group].rest_height * params_.stance_height - std::max(0.0f, -leg.foot_offset_ms.y);
@@ -630,7 +731,7 @@ glm::vec2 Animator::swing_point(const Foot& f, float s) {
                  : up < 0.0f ? std::clamp(s / 0.85f, 0.0f, 1.0f) : s;
   const float ease = up >= 0.0f ? smoothstep(0.0f, 0.55f, s) : smoothstep(0.45f, 1.0f, s);
   return {f.from_ws.x + f.swing_x.position(sx) * (f.to_ws.x - f.from_ws.x),
-          f.from_ws.y + ease * up + f.lift * f.swing_y.position(s) + f.raise * bump(s)};
+          f.from_ws.y + ease * up + f.lift * f.swing_y.position(s) + (f.raise != 0.0f ? f.raise * bump(s) : 0.0f)};
 }
 
 void Animator::raise_for_clearance(int leg, const Level& level) {
@@ -639,20 +740,30 @@ void Animator::raise_for_clearance(int leg, const Level& level) {
   Foot& f = feet_[foot_of_leg_[leg]];
   const glm::vec2 ankle_rel = -info.foot_offset_ms;
   const glm::vec2 tip_rel = creature_->contact == ContactMode::kFlat ? glm::vec2(info.foot_length, 0.0f) : glm::vec2(0.0f);
-  std::vector<int> hits;
+  constexpr int kSamples = 48;
+  Box foot[kSamples];
+  std::vector<int>& hits = clearance_hits_;
   for (int iter = 0; iter < 8; ++iter) {
-    float need = 0.0f;
-    for (int k = 1; k < 48; ++k) {
-      const float s = static_cast<float>(k) / 48.0f;
+    // The foot's box at each sample, then the colliders near the whole path in one query.
+    Box path{glm::vec2(1e30f), glm::vec2(-1e30f)};
+    for (int k = 1; k < kSamples; ++k) {
+      const float s = static_cast<float>(k) / kSamples;
       const glm::vec2 p = swing_point(f, s);
       const glm::vec2 q = p + glm::vec2(facing_ * ankle_rel.x, ankle_rel.y);
       const glm::vec2 r = p + glm::vec2(facing_ * tip_rel.x, tip_rel.y);
-      const Box foot{glm::min(glm::min(p, q), r) - glm::vec2(0.01f, 0.0f), glm::max(glm::max(p, q), r) + glm::vec2(0.01f, 0.005f)};
-      hits.clear();
-      level.overlapping(foot, hits);
-      for (int h : hits) {
-        const float depth = level.box(h).top() + 0.01f - foot.min_ws.y;
-        need = std::max(need, depth / std::max(bump(s), 0.1f));
+      foot[k] = Box{glm::min(glm::min(p, q), r) - glm::vec2(0.01f, 0.0f), glm::max(glm::max(p, q), r) + glm::vec2(0.01f, 0.005f)};
+      path.min_ws = glm::min(path.min_ws, foot[k].min_ws);
+      path.max_ws = glm::max(path.max_ws, foot[k].max_ws);
+    }
+    hits.clear();
+    level.overlapping(path, hits);
+    float need = 0.0f;
+    for (int h : hits) {
+      const Box& box = level.box(h);
+      for (int k = 1; k < kSamples; ++k) {
+        if (!box.overlaps(foot[k])) continue;
+        const float depth = box.top() + 0.01f - foot[k].min_ws.y;
+        need = std::max(need, depth / std::max(bump(static_cast<float>(k) / kSamples), 0.1f));
       }
     }
     if (need <= 0.0f) break;
@@ -678,14 +789,22 @@ void Animator::start_ease(int leg, const Level& level) {
 
 // [SECTION] body placement ------------------------------------------------------------------
 
+glm::vec2 Animator::rotate_body(glm::vec2 v) const {
+  const float angle = pitch_ + lean_;
+  if (angle != body_angle_cached_) {
+    body_angle_cached_ = angle;
+    body_cs_ = {std::cos(angle), std::sin(angle)};
+  }
+  return {body_cs_.x * v.x - body_cs_.y * v.y, body_cs_.y * v.x + body_cs_.x * v.y};
+}
+
 glm::vec2 Animator::girdle_ws(int group) const {
   const glm::vec2 root(0.0f, root_rest_y_);
-  const glm::vec2 j = glm::vec2(0.0f, root_y_) + rotate(groups_[group].joint_ms - root, pitch_ + lean_);
+  const glm::vec2 j = glm::vec2(0.0f, root_y_) + rotate_body(groups_[group].joint_ms - root);
   return to_world(j);
 }
 
 void Animator::place_body(float dt, const Level& level) {
-  const float ism = std::max(params_.interpolation_speed_multiplier, 0.01f);
   const float old_root = root_y_;
   const glm::vec2 root_rest(0.0f, root_rest_y_);
   float target_root = root_y_, target_pitch = 0.0f;
@@ -698,7 +817,7 @@ void Animator::place_body(float dt, const Level& level) {
                                          root_y_ + hip_height_, 100.0f);
     target_root = (hit ? hit->height_ws : root_y_ - root_rest_y_) + root_rest_y_;
   } else {
-    std::vector<float> height(groups_.size());
+    std::vector<float>& height = group_height_;
     for (size_t g = 0; g < groups_.size(); ++g) {
       float sum = 0.0f;
       for (int leg : groups_[g].legs) {
@@ -733,10 +852,10 @@ void Animator::place_body(float dt, const Level& level) {
     }
   }
   const bool turning = snap_body_;
-  const float smooth_dt = turning ? 0.0f : dt;
+  const bool snap = turning || dt <= 0.0f;
   snap_body_ = false;
-  pitch_ = approach(pitch_, target_pitch, 10.0f * ism, smooth_dt);
-  root_y_ = approach(root_y_, target_root, 14.0f * ism, smooth_dt);
+  pitch_ = approach(pitch_, target_pitch, snap ? 0.0f : decay_.pitch);
+  root_y_ = approach(root_y_, target_root, snap ? 0.0f : decay_.root);
 
   // Never over-extend a leg on the ground: lower the body (hard clamp, no smoothing).
   for (int pass = 0; pass < 2; ++pass) {
@@ -764,7 +883,7 @@ void Animator::place_body(float dt, const Level& level) {
 void Animator::build_pose(float dt, const Level& level) {
   const Creature& c = *creature_;
   const Skeleton& sk = c.skeleton;
-  pose_.locals = c.rest_pose.locals;
+  for (int b : touched_bones_) pose_.locals[b] = c.rest_pose.locals[b];
   const float body_angle = pitch_ + lean_;
   pose_.locals[c.root].offset_ls = {0.0f, root_y_};
   pose_.locals[c.root].angle_ls += body_angle;
@@ -794,14 +913,16 @@ void Animator::build_pose(float dt, const Level& level) {
       pose_.locals[chain[i]].angle_ls += amp * std::sin(kTwoPi * (crawl_phase_ - params_.crawl_waves * static_cast<float>(i) / n));
     }
   }
-  // Forward kinematics in two passes: the body first (bones whose joint values did not change
-  // reuse their rest matrices), then, after IK, the limb chains alone (leaves of the tree).
+  // Forward kinematics in two passes: the body first (the root, then each girdle straight from
+  // it, or the chains to the girdles when the spine bends; bones whose joint values did not
+  // change reuse their rest matrices), then the limb chains after IK (leaves of the tree).
   model_.resize(sk.bone_count());
   const std::vector<int>& parents = sk.parents();
   for (int b : needed_bones_) {
-    const Mat2x3 local = dynamic_bone_[b] || legs_.empty() ? local_matrix(pose_.locals[b]) : rest_local_m_[b];
+    const Mat2x3 local = dynamic_bone_[b] ? local_matrix(pose_.locals[b]) : rest_local_m_[b];
     model_[b] = parents[b] < 0 ? local : model_[parents[b]] * local;
   }
+  for (size_t i = 0; i < girdle_bones_.size(); ++i) model_[girdle_bones_[i]] = model_[c.root] * girdle_rel_[i];
 
   // Legs: two-bone IK in model space (the creature always faces +x there, so knees bend the
   // right way whichever way it faces in the world).
@@ -822,10 +943,22 @@ void Animator::build_pose(float dt, const Level& level) {
     }
     const TwoBoneIkResult ik = solve_two_bone_ik(joint, sk.length(limb.bones[0]), sk.length(limb.bones[1]), ankle,
                                                  static_cast<float>(limb.bend_sign));
-    const float girdle_angle = bone_angle(model_[limb.girdle_bone]);
+    const float girdle_angle = std::isnan(info.girdle_rel_angle) ? bone_angle(model_[limb.girdle_bone])
+                                                                 : pose_.locals[c.root].angle_ls + info.girdle_rel_angle;
     pose_.locals[limb.bones[0]].angle_ls = wrap_angle(ik.upper_angle - girdle_angle);
     pose_.locals[limb.bones[1]].angle_ls = ik.lower_angle;
     pose_.locals[limb.bones[2]].angle_ls = wrap_angle(info.foot_angle_ms - (ik.upper_angle + ik.lower_angle));
+    // The chain's matrices straight from the solution's directions (no trigonometry).
+    auto frame = [](glm::vec2 dir, glm::vec2 origin) {
+      Mat2x3 m;
+      m.m[0] = dir.x, m.m[1] = dir.y, m.m[2] = -dir.y, m.m[3] = dir.x, m.m[4] = origin.x, m.m[5] = origin.y;
+      return m;
+    };
+    const Mat2x3 upper = frame(ik.upper_dir, joint);
+    const Mat2x3 lower = frame(ik.lower_dir, upper.apply(pose_.locals[limb.bones[1]].offset_ls));
+    model_[limb.bones[0]] = upper;
+    model_[limb.bones[1]] = lower;
+    model_[limb.bones[2]] = frame(leg_foot_dir_[i], lower.apply(pose_.locals[limb.bones[2]].offset_ls));
   }
   // Arms swing counter to the same-side leg; fins trail with a slow beat.
   const float motion = std::min(speed_ / std::max(walk_speed(), 1e-3f), 1.0f);
@@ -844,7 +977,7 @@ void Animator::build_pose(float dt, const Level& level) {
     const Limb& limb = c.limbs[fin];
     pose_.locals[limb.bones[0]].angle_ls += 0.12f * motion * std::sin(kTwoPi * (crawl_phase_ + phase_));
   }
-  for (int b : limb_bones_) model_[b] = model_[parents[b]] * local_matrix(pose_.locals[b]);
+  for (int b : other_limb_bones_) model_[b] = model_[parents[b]] * local_matrix(pose_.locals[b]);
   world_dirty_ = true;
   model_dirty_ = true;
 }

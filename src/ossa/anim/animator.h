@@ -23,6 +23,7 @@
 //
 // Everything is deterministic: the same inputs give bit-identical poses.
 
+#include <cmath>
 #include <vector>
 
 #include "ossa/anim/animator_params.h"
@@ -109,6 +110,7 @@ class Animator {
     float foot_length = 0.0f;
     glm::vec2 foot_offset_ms{0.0f};  // ankle → contact point in the rest pose (model space)
     float foot_angle_ms = 0.0f;      // rest absolute angle of the foot bone (model space)
+    float girdle_rel_angle = NAN;    // girdle angle relative to the root (NaN: spine bends)
   };
   struct Group {                     // a girdle slot carrying a leg pair
     glm::vec2 joint_ms{0.0f};        // rest girdle joint, model space
@@ -135,12 +137,14 @@ class Animator {
   void raise_for_clearance(int leg, const Level& level);
   static glm::vec2 swing_point(const Foot& f, float s);
   void reverse(const Level& level);
-  void update_gait(float dt);
+  void update_gait();
   float leg_target_offset(int leg) const;
   bool find_landing(int leg, float x_wanted, const Level& level, glm::vec2* landing) const;
   // Where leg i would land if it lifted now at `speed` (swing_phase < 0: a full swing).
   float landing_x(int leg, float speed, float swing_phase = -1.0f) const;
   glm::vec2 girdle_ws(int group) const;  // from the current body placement
+  glm::vec2 rotate_body(glm::vec2 v) const;  // v rotated by the body angle pitch_ + lean_
+  void body_bounds(glm::vec2* lo, glm::vec2* hi) const;  // back, neck, head, arms, fins (world)
   void place_body(float dt, const Level& level);
   void build_pose(float dt, const Level& level);
   void keep_arm_above_ground(const Limb& arm, const Level& level);
@@ -165,13 +169,32 @@ class Animator {
   mutable std::vector<Mat2x3> model_;
   mutable std::vector<Mat2x3> world_;
   mutable bool world_dirty_ = true;
-  mutable bool model_dirty_ = true;       // bones outside needed_bones_ / limb_bones_ are stale
-  std::vector<int> needed_bones_;         // the root and the spine chains up to the girdles
-  std::vector<uint8_t> needed_bone_;
+  mutable bool model_dirty_ = true;       // bones outside tick_bone_ are stale
+  // Per-tick forward kinematics touches few bones: the root, the girdles (rigid to the root:
+  // one product each, skipping the vertebrae between) and the limb chains. The rest is
+  // computed in model_matrices() on demand.
+  std::vector<int> needed_bones_;         // chain-computed each tick, parents first
+  std::vector<int> girdle_bones_;         // computed directly from the root each tick
+  std::vector<Mat2x3> girdle_rel_;        // their rest matrices relative to the root bone
+  std::vector<uint8_t> tick_bone_;        // bones update() keeps current
   std::vector<Mat2x3> rest_local_m_;      // rest local matrix per bone
   std::vector<uint8_t> dynamic_bone_;     // joint values the animator changes (spine, skull, tail)
-  std::vector<uint8_t> limb_bone_;        // bones of limb chains (recomputed after IK)
-  std::vector<int> limb_bones_;           // their indices, parents first
+  std::vector<int> touched_bones_;        // bones whose joint values build_pose rewrites
+  std::vector<int> other_limb_bones_;     // limb bones not placed by the leg IK, parents first
+  std::vector<glm::vec2> leg_foot_dir_;   // per leg: rest direction of the foot bone (model)
+  // Wall sweep: root, back and neck joints relative to the root bone's frame, and the skull
+  // (kept level) as its joint in that frame plus its rest span. Empty when the spine bends.
+  std::vector<glm::vec2> body_points_rel_;
+  glm::vec2 skull_rel_{0.0f}, skull_span_{0.0f};
+  std::vector<float> group_height_;       // scratch for place_body
+  std::vector<int> clearance_hits_;       // scratch for raise_for_clearance
+  mutable float body_angle_cached_ = 0.0f;
+  mutable glm::vec2 body_cs_{1.0f, 0.0f}; // cos, sin of body_angle_cached_
+  float stride_froude_ = -1.0f, stride_pow_ = 0.0f;  // Fr^0.3 cache
+  struct Decay {                          // exp(-rate·dt) of each smoothed quantity, per (dt, ism)
+    float dt = -1.0f, ism = -1.0f;
+    float lean = 0.0f, run = 0.0f, gait = 0.0f, pitch = 0.0f, root = 0.0f;
+  } decay_;
 
   // Body and gait state.
   float body_x_ = 0.0f;
