@@ -1,5 +1,6 @@
 // Renderer tests under SDL's offscreen driver (no display): shaders, drawing an example, the
-// far/near shading, constant draw calls for a crowd, texture fallback, PNG and GIF capture.
+// far/near shading, constant draw calls for a crowd, texture fallback, PNG and GIF capture,
+// creature images drawn into an offscreen framebuffer.
 
 #include <catch2/catch.hpp>
 
@@ -24,8 +25,10 @@
 #include "ossa/platform/window.h"
 #include "ossa/render/capture.h"
 #include "ossa/render/creature_batch.h"
+#include "ossa/render/creature_image.h"
 #include "ossa/render/debug_draw.h"
 #include "ossa/render/gl.h"
+#include "ossa/render/render_target.h"
 #include "ossa/render/renderer.h"
 #include "ossa/render/shader.h"
 #include "ossa/render/texture.h"
@@ -527,4 +530,106 @@ TEST_CASE("bone lines and debug shapes draw with the bone and debug programs", "
   }
   CHECK(red > 100);    // skeleton lines
   CHECK(green > 100);  // the ground box below the feet
+}
+
+TEST_CASE("a creature image is the window's picture, framed on the sprites, GL state kept", "[render]") {
+  Gl& g = gl();
+  const Creature c = example("horse");
+  const Box sprites = sprite_mesh_bounds(build_sprite_mesh(c, g.atlas->sprites));
+  // The window shows something else; the game's camera looks elsewhere.
+  Camera2D game_camera;
+  game_camera.center_ws = {3.0f, 4.0f};
+  g.renderer->camera = game_camera;
+  g.renderer->begin_frame(kW, kH, {1.0f, 0.0f, 0.0f});
+  g.renderer->stats.draw_calls = 7;
+
+  for (const glm::vec4 bg : {glm::vec4(0.0f), glm::vec4(0.1f, 0.2f, 0.3f, 1.0f)}) {
+    INFO("background alpha " << bg.a);
+    CreatureImageOptions o;
+    o.width = kW;
+    o.height = kH;
+    o.background = bg;
+    o.margin = 0.05f;
+    auto img = render_creature_image(*g.renderer, *g.atlas, c, o);
+    REQUIRE(img.ok());
+    REQUIRE((img->width == kW && img->height == kH));
+
+    // The caller's frame is untouched: window framebuffer bound, viewport, camera, stats, pixels.
+    GLint draw_fb = -1, read_fb = -1, viewport[4] = {};
+    glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &draw_fb);
+    glGetIntegerv(GL_READ_FRAMEBUFFER_BINDING, &read_fb);
+    glGetIntegerv(GL_VIEWPORT, viewport);
+    CHECK((draw_fb == 0 && read_fb == 0));
+    CHECK((viewport[2] == kW && viewport[3] == kH));
+    CHECK(g.renderer->camera.center_ws == game_camera.center_ws);
+    CHECK(g.renderer->stats.draw_calls == 7);
+    const Image window = read_framebuffer(kW, kH);
+    CHECK((window.pixel(kW / 2, kH / 2)[0] == 255 && window.pixel(kW / 2, kH / 2)[1] == 0));
+
+    // Transparent corners (or the background), sprites inside, touching the margin box.
+    CHECK(img->pixel(0, 0)[3] == (bg.a > 0.0f ? 255 : 0));
+    int x0 = kW, x1 = -1, y0 = kH, y1 = -1;
+    for (int y = 0; y < kH; ++y) {
+      for (int x = 0; x < kW; ++x) {
+        const uint8_t* p = img->pixel(x, y);
+        const bool creature = bg.a > 0.0f ? !is_background(p, glm::vec3(bg)) : p[3] > 0;
+        if (!creature) continue;
+        x0 = std::min(x0, x), x1 = std::max(x1, x), y0 = std::min(y0, y), y1 = std::max(y1, y);
+      }
+    }
+    REQUIRE(x1 >= 0);
+    CHECK((x0 > 0 && y0 > 0 && x1 < kW - 1 && y1 < kH - 1));  // fully in frame
+    const float fill_x = float(x1 - x0 + 1) / kW, fill_y = float(y1 - y0 + 1) / kH;
+    CHECK(std::max(fill_x, fill_y) > 0.85f);                  // framed on the creature
+
+    // The same picture as the window path with the same camera (so the right way up).
+    g.renderer->camera.fit(sprites, float(kW) / kH, o.margin);
+    CreatureBatch batch;
+    const int id = batch.add(build_sprite_mesh(c, g.atlas->sprites), c.skeleton);
+    batch.set_pose(id, c.skeleton, c.rest_pose.locals, Mat2x3::identity());
+    batch.upload_palettes();
+    g.renderer->begin_frame(kW, kH, glm::vec3(bg));
+    g.renderer->draw_batch(batch, g.atlas->texture);
+    const Image reference = read_framebuffer(kW, kH);
+    int differ = 0;
+    for (size_t i = 0; i < reference.rgba.size(); i += 4) {
+      const float a = img->rgba[i + 3] / 255.0f;  // straight alpha: over the background again
+      for (size_t k = 0; k < 3; ++k) {
+        const float over = img->rgba[i + k] * a + bg[static_cast<int>(k)] * 255.0f * (1.0f - a);
+        differ += std::abs(over - reference.rgba[i + k]) > 3.0f;
+      }
+    }
+    CHECK(differ == 0);
+    // Back to the game's frame for the next round.
+    g.renderer->camera = game_camera;
+    g.renderer->begin_frame(kW, kH, {1.0f, 0.0f, 0.0f});
+    g.renderer->stats.draw_calls = 7;
+  }
+}
+
+TEST_CASE("creature images refuse bad sizes, and the PNG writer names the file", "[render]") {
+  Gl& g = gl();
+  const Creature c = example("pig");
+  CreatureImageOptions o;
+  o.width = 0;
+  auto img = render_creature_image(*g.renderer, *g.atlas, c, o);
+  REQUIRE_FALSE(img.ok());
+  CHECK(img.message().find("0x600") != std::string::npos);
+  o.width = RenderTarget::kMaxSize + 1;
+  CHECK_FALSE(render_creature_image(*g.renderer, *g.atlas, c, o).ok());
+  o.width = 64;
+  o.height = 48;
+  const std::string path = temp_path("pig.png");
+  REQUIRE(write_creature_png(path, c, o, Gl::shader_dir(), scenes::source_path("assets/sprites/bones")).ok());
+  int w = 0, h = 0, n = 0;
+  unsigned char* data = stbi_load(path.c_str(), &w, &h, &n, 4);
+  REQUIRE(data != nullptr);
+  CHECK((w == 64 && h == 48));
+  stbi_image_free(data);
+  const Status bad = write_creature_png(temp_path("no/such/dir/pig.png"), c, o, Gl::shader_dir());
+  REQUIRE_FALSE(bad.ok());
+  CHECK(bad.message().find("no/such/dir/pig.png") != std::string::npos);
+  const Status no_shaders = write_creature_png(path, c, o, temp_path("no-shaders"));
+  REQUIRE_FALSE(no_shaders.ok());
+  CHECK(no_shaders.message().find("pig.png") != std::string::npos);
 }

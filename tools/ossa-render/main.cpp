@@ -147,22 +147,6 @@ Creature make_creature(const Args& a) {
   return std::move(creature.value());
 }
 
-// Model-space bounds of the rest pose: every joint, padded by the bone widths (sprites are
-// drawn about as thick as the bone is wide).
-Box rest_bounds(const Creature& c) {
-  const auto model = model_matrices(c.skeleton, c.rest_pose.locals);
-  Box b{{1e9f, 1e9f}, {-1e9f, -1e9f}};
-  for (int i = 0; i < c.skeleton.bone_count(); ++i) {
-    const float pad = 0.5f * std::max(c.skeleton.width(i), 0.1f * c.skeleton.length(i));
-    for (glm::vec2 p : {bone_start(model[i]), bone_end(model[i], c.skeleton.length(i))}) {
-      b.min_ws = glm::min(b.min_ws, p - glm::vec2(pad));
-      b.max_ws = glm::max(b.max_ws, p + glm::vec2(pad));
-    }
-  }
-  b.min_ws.y = std::min(b.min_ws.y, 0.0f);
-  return b;
-}
-
 // A rigged character as a "creature" for this tool: its skeleton, rest pose and name.
 Creature creature_from_rig(const Skeleton& skeleton, const std::string& name) {
   Creature c;
@@ -201,30 +185,21 @@ int run(const Args& a) {
   auto renderer = Renderer::create(default_shader_dir());
   if (!renderer.ok()) fail(renderer.message());
 
-  const std::string sprite_dir = source_dir() + "/assets/sprites/bones";
-  SpriteSet sprites = default_sprite_set();
-  if (auto s = load_sprite_set(sprite_dir + "/sprites.json"); s.ok()) {
-    sprites = std::move(s.value());
-  } else {
-    render_log(s.message() + " (using the built-in sprite anchors)");
-  }
-  Atlas atlas = Atlas::build(sprites, sprite_dir);
+  Atlas atlas = Atlas::load(default_sprite_dir());
 
-  // Side by side, 15 % of a body length apart, on the ground under each creature.
-  Box body = rest_bounds(creature);
+  // Side by side, 15 % of a body length apart, on the ground under each creature. The body box
+  // holds every sprite vertex of the rest (bind) pose, and for creatures the ground line y = 0.
+  const SpriteMesh mesh = rig ? rigged_sprite_mesh(*rig) : build_sprite_mesh(creature, atlas.sprites);
+  Box body = sprite_mesh_bounds(mesh);
   float lift = 0.0f;  // model y that stands on the ground: 0 for creatures, the feet for rigs
   if (rig) {
-    body = Box{{1e9f, 1e9f}, {-1e9f, -1e9f}};
-    for (const RiggedVertex& v : rig->vertices) {
-      body.min_ws = glm::min(body.min_ws, v.position);
-      body.max_ws = glm::max(body.max_ws, v.position);
-    }
     lift = -body.min_ws.y;
     body = body.translated({0.0f, lift});
+  } else {
+    body.min_ws.y = std::min(body.min_ws.y, 0.0f);
   }
   const float spacing = body.width() * 1.15f;
   const glm::vec2 start = level ? level->spawn_ws : glm::vec2(0.0f);
-  const SpriteMesh mesh = rig ? rigged_sprite_mesh(*rig) : build_sprite_mesh(creature, atlas.sprites);
   Texture rig_texture;
   if (rig) {
     rig_texture = rig->texture_rgba.empty()

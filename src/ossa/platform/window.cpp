@@ -24,6 +24,8 @@ bool no_display_available() {
   return (!x || !*x) && (!w || !*w);
 }
 
+bool gl_context_is_current() { return SDL_GL_GetCurrentContext() != nullptr; }
+
 Result<Window> Window::create(const WindowDesc& desc) {
   if (desc.width <= 0 || desc.height <= 0) {
     return Error{"window: expected a positive size, got " + std::to_string(desc.width) + "x" +

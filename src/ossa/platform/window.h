@@ -60,4 +60,9 @@ class Window {
 // True when no display server is reachable (DISPLAY and WAYLAND_DISPLAY unset).
 bool no_display_available();
 
+// True when this thread has a current OpenGL context (made by a Window). Code that draws on
+// its own (e.g. the creature panel's PNG export) checks this and reports an error instead of
+// calling GL without a context.
+bool gl_context_is_current();
+
 }  // namespace ossa

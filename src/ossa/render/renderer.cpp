@@ -9,6 +9,7 @@
 #include "ossa/render/creature_batch.h"
 #include "ossa/render/debug_draw.h"
 #include "ossa/render/gl.h"
+#include "ossa/render/render_target.h"
 #include "ossa/render/texture.h"
 #include "ossa/render/vertex_array.h"
 
@@ -75,10 +76,19 @@ Result<Renderer> Renderer::create(const std::string& dir) {
 }
 
 void Renderer::begin_frame(int width, int height, glm::vec3 clear_rgb) {
-  glBindFramebuffer(GL_FRAMEBUFFER, 0);
+  setup_frame(0, width, height, glm::vec4(clear_rgb, 1.0f));
+}
+
+void Renderer::begin_frame(const RenderTarget& target, glm::vec4 clear_rgba) {
+  setup_frame(target.framebuffer(), target.width(), target.height(), clear_rgba);
+}
+
+void Renderer::setup_frame(unsigned framebuffer, int width, int height, glm::vec4 clear_rgba) {
+  glBindFramebuffer(GL_FRAMEBUFFER, framebuffer);
   glViewport(0, 0, width, height);
-  glClearColor(clear_rgb.r, clear_rgb.g, clear_rgb.b, 1.0f);
+  glClearColor(clear_rgba.r, clear_rgba.g, clear_rgba.b, clear_rgba.a);
   glClear(GL_COLOR_BUFFER_BIT);
+  glDisable(GL_SCISSOR_TEST);
   glDisable(GL_DEPTH_TEST);
   glDisable(GL_CULL_FACE);  // mirrored creatures flip the winding
   glEnable(GL_BLEND);

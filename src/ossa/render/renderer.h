@@ -27,6 +27,7 @@ namespace ossa {
 
 class CreatureBatch;
 class DebugDraw;
+class RenderTarget;
 class Texture;
 
 // The textured program's vertex (world space).
@@ -72,9 +73,12 @@ class Renderer {
   Camera2D camera;
   DrawStats stats;
 
-  // Sets the viewport, clears to `clear_rgb`, enables alpha blending, resets stats and sets
-  // camera.aspect from the size.
+  // Binds the window's framebuffer, sets the viewport, clears to `clear_rgb`, enables alpha
+  // blending, resets stats and sets camera.aspect from the size.
   void begin_frame(int width, int height, glm::vec3 clear_rgb);
+  // The same into an offscreen target (its size), cleared to `clear_rgba` — alpha 0 gives a
+  // transparent background, and the colours drawn over it come out premultiplied by alpha.
+  void begin_frame(const RenderTarget& target, glm::vec4 clear_rgba);
   // Recompiles changed shader files (keeps the old program when the new one fails).
   int reload_shaders_if_changed();
 
@@ -87,6 +91,7 @@ class Renderer {
 
  private:
   std::unique_ptr<VertexArray<TexturedVertex>> quad_;
+  void setup_frame(unsigned framebuffer, int width, int height, glm::vec4 clear_rgba);
   void count_batch(const CreatureBatch& batch, int calls);
 };
 

@@ -11,6 +11,8 @@
 #include "ossa/io/json.h"
 #include "ossa/skeleton/pose.h"
 
+#include <glm/common.hpp>
+
 namespace ossa {
 namespace {
 
@@ -330,6 +332,16 @@ SpriteMesh build_sprite_mesh(const Creature& creature, const SpriteSet& sprites,
   while (layer < kLayerCount) mesh.layer_begin[static_cast<size_t>(++layer)] = static_cast<uint32_t>(mesh.indices.size());
   mesh.layer_begin[0] = 0;
   return mesh;
+}
+
+Box sprite_mesh_bounds(const SpriteMesh& mesh) {
+  if (mesh.vertices.empty()) return Box{};
+  Box b{mesh.vertices.front().position_ms, mesh.vertices.front().position_ms};
+  for (const SpriteVertex& v : mesh.vertices) {
+    b.min_ws = glm::min(b.min_ws, v.position_ms);
+    b.max_ws = glm::max(b.max_ws, v.position_ms);
+  }
+  return b;
 }
 
 }  // namespace ossa

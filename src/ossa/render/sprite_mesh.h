@@ -19,6 +19,7 @@
 
 #include "ossa/gen/creature.h"
 #include "ossa/io/result.h"
+#include "ossa/level/box.h"
 #include "ossa/math/transform2d.h"
 
 namespace ossa {
@@ -121,5 +122,9 @@ SpriteMesh build_sprite_mesh(const Creature& creature, const SpriteSet& sprites,
                              const SpriteMeshOptions& options = {});
 Result<SpriteMesh> try_build_sprite_mesh(const Creature& creature, const SpriteSet& sprites,
                                          const SpriteMeshOptions& options = {});
+
+// The model-space box around every vertex (the bind pose as drawn: whole sprites, not only
+// the joints). An empty mesh gives a zero box at the origin.
+Box sprite_mesh_bounds(const SpriteMesh& mesh);
 
 }  // namespace ossa

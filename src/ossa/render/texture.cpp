@@ -1,6 +1,7 @@
 #include "ossa/render/texture.h"
 
 #include <algorithm>
+#include <cstdlib>
 #include <cstring>
 #include <utility>
 #include <vector>
@@ -79,6 +80,27 @@ Texture& Texture::operator=(Texture&& o) noexcept {
 void Texture::bind(int unit) const {
   glActiveTexture(GL_TEXTURE0 + unit);
   glBindTexture(GL_TEXTURE_2D, id_);
+}
+
+Atlas Atlas::load(const std::string& sprite_dir) {
+  SpriteSet sprites = default_sprite_set();
+  if (auto s = load_sprite_set(sprite_dir + "/sprites.json"); s.ok()) {
+    sprites = std::move(s.value());
+  } else {
+    render_log(s.message() + " (using the built-in sprite anchors)");
+  }
+  return build(sprites, sprite_dir);
+}
+
+std::string default_sprite_dir() {
+  if (const char* env = std::getenv("OSSA_SOURCE_DIR"); env && *env) {
+    return std::string(env) + "/assets/sprites/bones";
+  }
+#ifdef OSSA_SOURCE_DIR
+  return std::string(OSSA_SOURCE_DIR) + "/assets/sprites/bones";
+#else
+  return "assets/sprites/bones";
+#endif
 }
 
 Atlas Atlas::build(const SpriteSet& sprites, const std::string& sprite_dir) {

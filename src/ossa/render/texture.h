@@ -53,6 +53,13 @@ struct Atlas {
 
   // Packs with 2 px padding into the smallest square power of two (≤ 4096) that fits.
   static Atlas build(const SpriteSet& sprites, const std::string& sprite_dir);
+  // The bone sprites of `sprite_dir`: its sprites.json (when that fails to load, the message is
+  // logged and the built-in anchors are used) packed by build().
+  static Atlas load(const std::string& sprite_dir);
 };
+
+// The bone sprite folder: $OSSA_SOURCE_DIR/assets/sprites/bones, else the compiled-in source
+// tree's (like default_shader_dir()).
+std::string default_sprite_dir();
 
 }  // namespace ossa
