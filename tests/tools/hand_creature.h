@@ -1,6 +1,6 @@
 #pragma once
 // A small hand-built Creature for the export tests (tests/gen/export_test.cpp and
-// tools/ossa-gen/gltf_export_test.cpp): independent of the generator, so the exporters can be
+// tests/render/gltf_export_test.cpp): independent of the generator, so the exporters can be
 // tested on a known skeleton. A four-legged animal (or, with `winged`, a two-legged one with
 // wings) with root, neck, back and tail vertebrae, skull, ribs, scapulae, pelves and near/far
 // limbs, posed so that the feet touch y = 0.

@@ -6,6 +6,7 @@
 #include "ossa/gen/skeleton_builder.h"
 #include "ossa/io/file.h"
 #include "ossa/math/rng.h"
+#include "ossa/render/gltf_export.h"
 
 namespace ossa {
 
@@ -156,11 +157,28 @@ Status CreaturePanelModel::load_genome(const std::string& path) {
   return {};
 }
 
+Status CreaturePanelModel::exported(const Status& s, const std::string& path) const {
+  note_ = s.ok() ? "exported " + path : std::string();  // no stale "exported" under an error
+  if (!s.ok()) return fail(s);
+  error_.clear();
+  return s;
+}
+
+Status CreaturePanelModel::export_gltf(const std::string& path) const {
+  if (!creature_) return exported(Error::at(path, "", "no creature to export"), path);
+  return exported(ossa::export_gltf(*creature_, path), path);
+}
+
 Status CreaturePanelModel::export_svg(const std::string& path) const {
-  if (!creature_) return fail(Error{"no creature to export"});
+  if (!creature_) return exported(Error::at(path, "", "no creature to export"), path);
   SvgOptions o;
   o.skull_variant = genome_.skull_variant;
-  return fail(write_file_atomic(path, creature_svg(*creature_, o)));
+  return exported(write_file_atomic(path, creature_svg(*creature_, o)), path);
+}
+
+Status CreaturePanelModel::export_png(const std::string& path, const CreatureImageOptions& options) const {
+  if (!creature_) return exported(Error::at(path, "", "no creature to export"), path);
+  return exported(write_creature_png(path, *creature_, options), path);
 }
 
 }  // namespace ossa

@@ -3,15 +3,19 @@
 // example or draw a random creature with a seed under conditions (wings, leg pairs, weight,
 // neck girdle, several limbs per girdle), move the first 8 principal components in σ units,
 // draw variations with a σ, regenerate one part (limbs, ribs, tail, skull) keeping the rest,
-// save / load the genome, export SVG, and hand the creature to the game (apply to the player,
-// spawn as an NPC) through callbacks.
+// save / load the genome, export glTF, SVG and PNG, and hand the creature to the game (apply to
+// the player, spawn as an NPC) through callbacks.
 //
 // Step-wise generation [Z 8.3]: every change of the genome is one UndoStack step (document
 // kGenome); a slider drag (begin_edit … set_sigma … end_edit) is one step.
 //
-// Exports: SVG only. glTF export needs Assimp, which lives in tools/ossa-gen, not in the
-// core or editor libraries; PNG is not offered by the panel either (the game's screenshot key
-// captures the viewport).
+// Exports (files written atomically; on failure the error names the file, an existing file is
+// left untouched and the genome is kept):
+//   glTF — skeleton nodes and a skinned sprite mesh through Assimp (ossa/render/gltf_export.h);
+//   SVG  — the bones as shapes (ossa/gen/export_svg.h);
+//   PNG  — the creature in its rest pose drawn by the game's renderer into an offscreen
+//          framebuffer, framed on it (ossa/render/creature_image.h). Needs a current GL context:
+//          the editor runs inside the game, which has one; without it export_png says so.
 #include <array>
 #include <functional>
 #include <memory>
@@ -22,6 +26,7 @@
 #include "ossa/gen/creature.h"
 #include "ossa/gen/generator.h"
 #include "ossa/io/result.h"
+#include "ossa/render/creature_image.h"
 
 namespace ossa {
 
@@ -77,7 +82,11 @@ class CreaturePanelModel {
   const std::string& path() const { return path_; }
   Status save_genome(const std::string& path);
   Status load_genome(const std::string& path);   // one undo step; keeps the genome on error
+  // Exports set last_note() to "exported F" and clear last_error() on success; on failure
+  // last_error() holds the message (naming F) and last_note() is cleared.
+  Status export_gltf(const std::string& path) const;
   Status export_svg(const std::string& path) const;
+  Status export_png(const std::string& path, const CreatureImageOptions& options = {}) const;
 
   void apply_to_player() const { if (creature_ && on_apply_to_player) on_apply_to_player(creature_); }
   void spawn_npc() const { if (creature_ && on_spawn_npc) on_spawn_npc(creature_); }
@@ -91,6 +100,8 @@ class CreaturePanelModel {
  private:
   void assign(const Genome& g);   // set + rebuild the creature
   Status fail(const Status& s) const { if (!s.ok()) error_ = s.message(); return s; }
+  // An export's outcome: the error, or a note naming the file.
+  Status exported(const Status& s, const std::string& path) const;
 
   const Generator* generator_;
   UndoStack* undo_;
@@ -99,7 +110,7 @@ class CreaturePanelModel {
   std::vector<std::string> example_names_;
   std::string path_;
   mutable std::string error_;
-  std::string note_;
+  mutable std::string note_;  // exports are const but report what they wrote
   bool editing_ = false;
   Genome edit_before_;
   std::string edit_label_;

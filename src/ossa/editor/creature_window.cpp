@@ -1,6 +1,6 @@
 // EditorSuite: the creature panel window — example picker, random with seed and conditions,
 // σ sliders of the first principal components, variations, part regeneration, genome files,
-// SVG export, apply / spawn — with a rest-pose preview of the skeleton.
+// glTF / SVG / PNG export, apply / spawn — with a rest-pose preview of the skeleton.
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
@@ -161,17 +161,42 @@ void EditorSuite::draw_creature_window() {
     const std::string path = genome_path_buf_;
     confirm_discard(EditorDocument::kGenome, [this, path] { (void)creature_->load_genome(path); });
   }
-  ImGui::SetNextItemWidth(-1);
-  ImGui::InputText("##svg", svg_path_buf_, sizeof svg_path_buf_);
-  if (ImGui::Button("Export SVG")) {
-    if (m.export_svg(svg_path_buf_).ok()) creature_message_ = std::string("exported ") + svg_path_buf_;
+  // Exports: a path field and its button per format; the outcome shows below (last_note /
+  // last_error).
+  const float button_w = ImGui::CalcTextSize("Export glTF").x + 2.0f * ImGui::GetStyle().FramePadding.x;
+  auto export_row = [&](const char* id, char* buf, size_t size, const char* button) {
+    ImGui::SetNextItemWidth(-(button_w + ImGui::GetStyle().ItemSpacing.x));
+    ImGui::InputText(id, buf, size);
+    ImGui::SameLine();
+    return ImGui::Button(button, ImVec2(button_w, 0.0f));
+  };
+  if (export_row("##gltf", gltf_path_buf_, sizeof gltf_path_buf_, "Export glTF"))
+    (void)m.export_gltf(gltf_path_buf_);
+  if (export_row("##svg", svg_path_buf_, sizeof svg_path_buf_, "Export SVG"))
+    (void)m.export_svg(svg_path_buf_);
+  if (export_row("##png", png_path_buf_, sizeof png_path_buf_, "Export PNG")) {
+    CreatureImageOptions o;
+    o.width = png_size_[0];
+    o.height = png_size_[1];
+    o.background = png_transparent_
+                       ? glm::vec4(0.0f)
+                       : glm::vec4(png_background_[0], png_background_[1], png_background_[2], 1.0f);
+    (void)m.export_png(png_path_buf_, o);
+  }
+  ImGui::SetNextItemWidth(120);
+  if (ImGui::InputInt2("px##pngsize", png_size_)) {
+    for (int& v : png_size_) v = std::clamp(v, 16, 4096);
   }
   ImGui::SameLine();
-  ImGui::TextDisabled("(glTF: ossa-gen)");
+  ImGui::Checkbox("transparent", &png_transparent_);
+  if (!png_transparent_) {
+    ImGui::SameLine();
+    ImGui::ColorEdit3("##pngbg", png_background_, ImGuiColorEditFlags_NoInputs);
+  }
   if (ImGui::Button("Apply to player")) m.apply_to_player();
   ImGui::SameLine();
   if (ImGui::Button("Spawn NPC")) m.spawn_npc();
-  show_messages(m.last_error(), m.last_note().empty() ? creature_message_ : m.last_note());
+  show_messages(m.last_error(), m.last_note());
   ImGui::End();
 }
 

@@ -54,7 +54,9 @@ EditorSuite::EditorSuite(World& world, const Generator* generator, EditorPaths p
   copy_to_buffer(proto_path_buf_, sizeof proto_path_buf_,
                  paths_.prototypes_file.empty() ? "prototypes.json" : paths_.prototypes_file);
   copy_to_buffer(genome_path_buf_, sizeof genome_path_buf_, paths_.genome_file);
+  copy_to_buffer(gltf_path_buf_, sizeof gltf_path_buf_, paths_.export_dir + "/creature.gltf");
   copy_to_buffer(svg_path_buf_, sizeof svg_path_buf_, paths_.export_dir + "/creature.svg");
+  copy_to_buffer(png_path_buf_, sizeof png_path_buf_, paths_.export_dir + "/creature.png");
   copy_to_buffer(tuning_path_buf_, sizeof tuning_path_buf_, paths_.tuning_file);
   tuning_->set_path(paths_.tuning_file);
   undo_.clear();

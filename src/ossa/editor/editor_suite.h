@@ -53,7 +53,7 @@ struct EditorPaths {
   std::string prototypes_file;                     // the file the prototypes came from ("" = none)
   std::string genome_file = "creature.json";       // default path of genome save / load
   std::string tuning_file = "tuning.json";         // default path of tuning save / load
-  std::string export_dir = ".";                    // SVG exports and Tiled exports go here
+  std::string export_dir = ".";                    // creature (glTF, SVG, PNG) and Tiled exports go here
 };
 
 class EditorSuite {
@@ -168,12 +168,16 @@ class EditorSuite {
   char tiled_path_buf_[512] = {};
   char proto_path_buf_[512] = {};
   char genome_path_buf_[512] = {};
+  char gltf_path_buf_[512] = {};
   char svg_path_buf_[512] = {};
+  char png_path_buf_[512] = {};
+  int png_size_[2] = {800, 600};  // pixels
+  bool png_transparent_ = true;
+  float png_background_[3] = {0.55f, 0.70f, 0.85f};  // the game's sky
   char tuning_path_buf_[512] = {};
   std::function<void()> pending_discard_;
   bool open_discard_popup_ = false;
   bool quit_confirmed_ = false;
-  std::string creature_message_;
   float variation_sigma_ = 0.5f;
   int creature_example_ = 0;
 };
