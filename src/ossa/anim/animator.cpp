@@ -65,6 +65,31 @@ glm::vec2 rotate(glm::vec2 v, float a) {
   return {c * v.x - s * v.y, s * v.x + c * v.y};
 }
 float bone_angle(const Mat2x3& m) { return std::atan2(m.m[1], m.m[0]); }
+// Does the segment a-b pass through the interior of a collider (shrunk by a millimetre)?
+bool segment_hits_level(const Level& level, glm::vec2 a, glm::vec2 b, std::vector<int>& hits) {
+  hits.clear();
+  level.overlapping(Box{glm::min(a, b), glm::max(a, b)}, hits);
+  for (int h : hits) {
+    const Box& box = level.box(h);
+    float t0 = 0.0f, t1 = 1.0f;  // Liang-Barsky clip against the shrunk box
+    bool inside = true;
+    for (int axis = 0; axis < 2 && inside; ++axis) {
+      const float lo = box.min_ws[axis] + 1e-3f, hi = box.max_ws[axis] - 1e-3f;
+      const float d = b[axis] - a[axis];
+      if (std::fabs(d) < 1e-9f) {
+        inside = a[axis] > lo && a[axis] < hi;
+      } else {
+        float u0 = (lo - a[axis]) / d, u1 = (hi - a[axis]) / d;
+        if (u0 > u1) std::swap(u0, u1);
+        t0 = std::max(t0, u0);
+        t1 = std::min(t1, u1);
+        inside = t0 < t1;
+      }
+    }
+    if (inside) return true;
+  }
+  return false;
+}
 float bump(float s) { return std::pow(std::max(0.0f, std::sin(kPi * s)), 0.7f); }
 
 }  // namespace
@@ -107,6 +132,8 @@ Animator::Animator(const Creature& creature, SplinePrototypes prototypes, Animat
     const glm::vec2 tip = bone_end(model_rest_[limb.bones[2]], sk.length(limb.bones[2]));
     info.foot_angle_ms = creature.contact == ContactMode::kFlat ? 0.0f : bone_angle(model_rest_[limb.bones[2]]);
     info.foot_offset_ms = creature.contact == ContactMode::kFlat ? glm::vec2(0.0f) : tip - ankle;
+    info.foot_dir_ms = {std::cos(info.foot_angle_ms), std::sin(info.foot_angle_ms)};
+    info.contact_reach = kReachLimit * info.reach + glm::length(info.foot_offset_ms);
     int group = -1;
     for (int g = 0; g < static_cast<int>(groups_.size()); ++g) {
       const Limb& other = creature.limbs[legs_[groups_[g].legs[0]].limb];
@@ -161,11 +188,8 @@ Animator::Animator(const Creature& creature, SplinePrototypes prototypes, Animat
     for (int b : limb.bones) limb_bone[b] = 1;
   }
   std::vector<uint8_t> leg_ik_bone(sk.bone_count(), 0);
-  leg_foot_dir_.resize(legs_.size());
-  for (size_t i = 0; i < legs_.size(); ++i) {
-    const Limb& limb = creature.limbs[legs_[i].limb];
-    for (int k = 0; k < 3; ++k) leg_ik_bone[limb.bones[k]] = 1;
-    leg_foot_dir_[i] = {std::cos(legs_[i].foot_angle_ms), std::sin(legs_[i].foot_angle_ms)};
+  for (const LegInfo& info : legs_) {
+    for (int k = 0; k < 3; ++k) leg_ik_bone[creature.limbs[info.limb].bones[k]] = 1;
   }
   for (int b = 0; b < sk.bone_count(); ++b) {
     if (limb_bone[b] && !leg_ik_bone[b]) other_limb_bones_.push_back(b);
@@ -197,16 +221,36 @@ Animator::Animator(const Creature& creature, SplinePrototypes prototypes, Animat
       const Mat2x3 rel = root_inv * model_rest_[creature.limbs[info.limb].girdle_bone];
       info.girdle_rel_angle = bone_angle(rel);
     }
-    // The wall sweep's outline of the body: its joints relative to the root's frame.
+    // The wall sweep's outline of the body in slabs along it (a pitched body's single box
+    // would meet the stairs it climbs): the spine's segments relative to the root's frame,
+    // clipped to each slab, reduced to their hull.
     std::vector<int> body = {root};
     body.insert(body.end(), creature.back.begin(), creature.back.end());
     body.insert(body.end(), creature.neck.begin(), creature.neck.end());
+    std::vector<std::pair<glm::vec2, glm::vec2>> segments;
+    float x0 = 1e30f, x1 = -1e30f;
     for (int b : body) {
-      body_points_rel_.push_back(root_inv.apply(bone_start(model_rest_[b])));
-      body_points_rel_.push_back(root_inv.apply(bone_end(model_rest_[b], sk.length(b))));
+      const glm::vec2 p = root_inv.apply(bone_start(model_rest_[b])), q = root_inv.apply(bone_end(model_rest_[b], sk.length(b)));
+      segments.push_back({p, q});
+      x0 = std::min({x0, p.x, q.x});
+      x1 = std::max({x1, p.x, q.x});
     }
-    // A rotated outline's bounds are its hull's bounds.
-    body_points_rel_ = convex_hull(body_points_rel_);
+    constexpr int kSlabs = 4;
+    for (int k = 0; k < kSlabs; ++k) {
+      const float a = x0 + (x1 - x0) * static_cast<float>(k) / kSlabs;
+      const float b = x0 + (x1 - x0) * static_cast<float>(k + 1) / kSlabs;
+      std::vector<glm::vec2> points;
+      for (auto [p, q] : segments) {
+        if (p.x > q.x) std::swap(p, q);
+        if (q.x < a || p.x > b) continue;
+        auto at = [&](float x) { return q.x - p.x < 1e-9f ? p : p + (q - p) * ((x - p.x) / (q.x - p.x)); };
+        points.push_back(p.x < a ? at(a) : p);
+        points.push_back(q.x > b ? at(b) : q);
+      }
+      if (!points.empty()) body_slabs_.push_back(convex_hull(points));
+    }
+    for (const std::vector<glm::vec2>& slab : body_slabs_) body_hull_.insert(body_hull_.end(), slab.begin(), slab.end());
+    body_hull_ = convex_hull(body_hull_);
     if (creature.skull >= 0) {
       const Mat2x3& skull = model_rest_[creature.skull];
       skull_rel_ = root_inv.apply(bone_start(skull));
@@ -271,28 +315,38 @@ const std::vector<Mat2x3>& Animator::world_matrices() const {
   return world_;
 }
 
-void Animator::body_bounds(glm::vec2* lo_out, glm::vec2* hi_out) const {
-  // The back, neck, head, arms and fins as they are now.
+void Animator::body_boxes(bool slabs, std::vector<Box>* boxes) const {
   const Skeleton& sk = creature_->skeleton;
-  glm::vec2 lo(1e30f), hi(-1e30f);
+  boxes->clear();
+  auto begin = [&] { boxes->push_back(Box{glm::vec2(1e30f), glm::vec2(-1e30f)}); };
   auto add_point = [&](glm::vec2 p_ms) {
     const glm::vec2 p = to_world(p_ms);
-    lo = glm::min(lo, p);
-    hi = glm::max(hi, p);
+    boxes->back().min_ws = glm::min(boxes->back().min_ws, p);
+    boxes->back().max_ws = glm::max(boxes->back().max_ws, p);
   };
   auto add = [&](int b) {
     add_point(bone_start(model_[b]));
     add_point(bone_end(model_[b], sk.length(b)));
   };
-  if (!body_points_rel_.empty()) {
+  if (!body_slabs_.empty()) {
     const Mat2x3& root = model_[creature_->root];
-    for (glm::vec2 p : body_points_rel_) add_point(root.apply(p));
+    if (slabs) {
+      for (const std::vector<glm::vec2>& slab : body_slabs_) {
+        begin();
+        for (glm::vec2 p : slab) add_point(root.apply(p));
+      }
+    } else {
+      begin();
+      for (glm::vec2 p : body_hull_) add_point(root.apply(p));
+    }
     if (creature_->skull >= 0) {
+      if (slabs) begin();
       const glm::vec2 skull = root.apply(skull_rel_);
       add_point(skull);
       add_point(skull + skull_span_);
     }
   } else {
+    begin();
     add(creature_->root);
     for (int b : creature_->back) add(b);
     for (int b : creature_->neck) add(b);
@@ -301,16 +355,16 @@ void Animator::body_bounds(glm::vec2* lo_out, glm::vec2* hi_out) const {
   // Arms swing: count the whole reach of each arm, forward and back, not just this pose.
   for (int a : arms_) {
     const Limb& arm = creature_->limbs[a];
-    const glm::vec2 shoulder = to_world(bone_start(model_[arm.bones[0]]));
+    const glm::vec2 shoulder = bone_start(model_[arm.bones[0]]);
     const float reach = sk.length(arm.bones[0]) + sk.length(arm.bones[1]) + sk.length(arm.bones[2]);
-    lo = glm::min(lo, shoulder - glm::vec2(reach, reach));
-    hi = glm::max(hi, shoulder + glm::vec2(reach, 0.0f));
+    if (slabs) begin();
+    add_point(shoulder - glm::vec2(reach, reach));
+    add_point(shoulder + glm::vec2(reach, 0.0f));
   }
   for (int a : fins_) {
+    if (slabs) begin();
     for (int b : creature_->limbs[a].bones) add(b);
   }
-  *lo_out = lo;
-  *hi_out = hi;
 }
 
 void Animator::reset(glm::vec2 position_ws, const Level& level, int facing) {
@@ -387,40 +441,57 @@ void Animator::update(float dt, float desired_velocity, const Level& level) {
   // Body motion, stopped by walls the body would run into.
   float dx = facing_ * speed_ * dt;
   if (dx != 0.0f) {
-    glm::vec2 lo, hi;
-    body_bounds(&lo, &hi);
-    // Low obstacles are the legs' business (steps); the body only meets walls.
+    // Low obstacles are the legs' business (steps); the body only meets walls. The ground
+    // line under the body runs through the girdles' support, tilted with the body's pitch.
+    // The whole body is swept first; only if that meets something, its parts one by one.
     const float support = root_y_ - root_rest_y_ * params_.stance_height;
-    lo.y = std::max(lo.y + 0.3f * hip_height_, support + params_.max_step_up * hip_height_);
-    lo.y = std::min(lo.y, hi.y);
-    Box body{lo, glm::max(hi, lo + glm::vec2(1e-3f))};
-    auto hit = level.sweep_box(body, {dx, 0.0f});
-    // Walls (reaching above the body) are met a few centimetres early: arms and head
-    // settle forward a little when the body stops.
+    const float slope = std::tan(pitch_);
     const glm::vec2 margin(0.03f + 0.02f * hip_height_, 0.0f);
-    if (auto wall = level.sweep_box(Box{body.min_ws - margin, body.max_ws + margin}, {dx, 0.0f});
-        wall && wall->t < 1.0f && level.box(wall->index).top() > hi.y) {
-      hit = wall;
+    auto ground_under = [&](const Box& box) {
+      const float a = slope * facing_ * (box.min_ws.x - body_x_), b = slope * facing_ * (box.max_ws.x - body_x_);
+      return support + std::min(a, b);
+    };
+    body_boxes(false, &body_boxes_);
+    {
+      Box all = body_boxes_[0];
+      all.min_ws.y = std::min(std::max(all.min_ws.y + 0.3f * hip_height_, ground_under(all) + params_.max_step_up * hip_height_),
+                              all.max_ws.y);
+      auto hit = level.sweep_box(Box{all.min_ws - margin, glm::max(all.max_ws, all.min_ws + glm::vec2(1e-3f)) + margin}, {dx, 0.0f});
+      if (hit && hit->t < 1.0f) body_boxes(!body_slabs_.empty(), &body_boxes_);
+      else body_boxes_.clear();
     }
-    if (hit && hit->t < 1.0f) {
-      dx = facing_ * std::max(0.0f, hit->t * std::fabs(dx) - 1e-4f);
-      blocked_ = true;
-      blocked_dir_ = facing_;
-      blocked_retry_ = 0.5f;
+    float move = std::fabs(dx);
+    for (Box box : body_boxes_) {
+      const float hi_y = box.max_ws.y;
+      const float ground = ground_under(box);
+      box.min_ws.y = std::min(std::max(box.min_ws.y + 0.3f * hip_height_, ground + params_.max_step_up * hip_height_), hi_y);
+      box.max_ws = glm::max(box.max_ws, box.min_ws + glm::vec2(1e-3f));
+      auto hit = level.sweep_box(box, {dx, 0.0f});
+      // Walls (reaching above the body) are met a few centimetres early: arms and head
+      // settle forward a little when the body stops.
+      if (auto wall = level.sweep_box(Box{box.min_ws - margin, box.max_ws + margin}, {dx, 0.0f});
+          wall && wall->t < 1.0f && level.box(wall->index).top() > hi_y) {
+        hit = wall;
+      }
+      if (hit && hit->t < 1.0f) {
+        move = std::min(move, std::max(0.0f, hit->t * std::fabs(dx) - 1e-4f));
+        blocked_ = true;
+        blocked_dir_ = facing_;
+        blocked_retry_ = 0.5f;
+      }
     }
+    dx = facing_ * move;
   }
-  // The body never outruns a foot on the ground, nor where a swinging foot will land (steps
-  // shortened by stairs or a ledge): it waits for its legs.
   if (dx != 0.0f) {
     for (size_t i = 0; i < legs_.size(); ++i) {
       const Foot& f = feet_[foot_of_leg_[i]];
       const LegInfo& info = legs_[i];
       const glm::vec2 joint = to_model(girdle_ws(info.group));
-      const glm::vec2 ankle = to_model(f.state == LegState::kStance ? f.pos_ws : f.to_ws) - info.foot_offset_ms;
-      const float r = kReachLimit * info.reach;
-      const float h = joint.y - ankle.y;
+      float r;
+      const glm::vec2 anchor = leg_anchor(static_cast<int>(i), to_model(f.state == LegState::kStance ? f.pos_ws : f.to_ws), joint, level, &r);
+      const float h = joint.y - anchor.y;
       // How far forward the joint may go with this foot still in reach (model x).
-      const float ahead = ankle.x + std::sqrt(std::max(r * r - h * h, 0.0f)) - joint.x;
+      const float ahead = anchor.x + std::sqrt(std::max(r * r - h * h, 0.0f)) - joint.x;
       dx = facing_ * std::min(std::fabs(dx), std::max(ahead, 0.0f));
     }
   }
@@ -460,8 +531,9 @@ void Animator::update(float dt, float desired_velocity, const Level& level) {
         // A foot left behind (a gait change, a shortened step) lifts before it would slide.
         const LegInfo& info = legs_[i];
         const glm::vec2 joint = to_model(girdle_ws(info.group));
-        const glm::vec2 ankle = to_model(f.pos_ws) - info.foot_offset_ms;
-        if (glm::length(ankle - joint) > 0.97f * kReachLimit * info.reach && -(ankle.x - joint.x) > 0.0f) lift = true;
+        float r;
+        const glm::vec2 anchor = leg_anchor(static_cast<int>(i), to_model(f.pos_ws), joint, level, &r);
+        if (glm::length(anchor - joint) > 0.97f * r && anchor.x < joint.x) lift = true;
         if (lift) set_new_splines(static_cast<int>(i), level, std::max(1.0f - p, 0.05f));
       } else if (!f.easing) {
         f.progress += f.rate * dphi;
@@ -499,9 +571,9 @@ void Animator::update(float dt, float desired_velocity, const Level& level) {
       // above its landing point while the body comes down to it (see build_pose).
       const LegInfo& info = legs_[i];
       const glm::vec2 joint = to_model(girdle_ws(info.group));
-      const glm::vec2 ankle = to_model(f.to_ws) - info.foot_offset_ms;
-      const float r = kReachLimit * info.reach;
-      if (glm::length(ankle - joint) > r && std::fabs(ankle.x - joint.x) < r && f.hover < 0.5f) {
+      float r;
+      const glm::vec2 anchor = leg_anchor(static_cast<int>(i), to_model(f.to_ws), joint, level, &r);
+      if (glm::length(anchor - joint) > r && std::fabs(anchor.x - joint.x) < r && f.hover < 0.5f) {
         f.hover += dt;
         f.progress = 1.0f;
         f.pos_ws = f.to_ws;
@@ -544,8 +616,8 @@ void Animator::update_gait() {
   float stride = 2.3f * hip_height_ * stride_pow_ * params_.step_distance_multiplier;
   float max_stride = 1e30f;
   for (const LegInfo& leg : legs_) {
-    const float h = groups_[leg.group].rest_height * params_.stance_height - std::max(0.0f, -leg.foot_offset_ms.y);
-    const float reach_x = std::sqrt(std::max(kReachLimit * kReachLimit * leg.reach * leg.reach - h * h, 0.0f));
+    const float h = groups_[leg.group].rest_height * params_.stance_height;
+    const float reach_x = std::sqrt(std::max(leg.contact_reach * leg.contact_reach - h * h, 0.0f));
     max_stride = std::min(max_stride, 2.0f * 0.9f * reach_x / std::max(duty_, 0.2f));
   }
   stride_ = std::clamp(stride, 0.25f * hip_height_, std::max(max_stride, 0.25f * hip_height_));
@@ -652,15 +724,14 @@ bool Animator::find_landing(int leg, float x_wanted, const Level& level, glm::ve
 
 float Animator::landing_x(int leg, float speed, float swing_phase) const {
   const LegInfo& info = legs_[leg];
-  // The stance is centred with the ankle under the girdle joint, so the foot passes right
-  // below the hip half-way through it.
-  const float contact_dx = info.foot_offset_ms.x;
+  // The stance is centred with the contact point under the girdle joint, where the leg's
+  // reach forward and back is the same.
   if (swing_phase < 0.0f) swing_phase = 1.0f - duty_;
   const float frequency = speed > 0.0f ? speed / std::max(stride_, 1e-3f) : 0.0f;
   const float t_swing = frequency > 0.0f ? swing_phase / frequency : 0.0f;
   // Land half a stance ahead of where the girdle will be [T 4.4.1].
   const float girdle_td = girdle_ws(info.group).x + facing_ * speed * t_swing;
-  return girdle_td + facing_ * (0.5f * duty_ * stride_ + contact_dx);
+  return girdle_td + facing_ * 0.5f * duty_ * stride_;
 }
 
 void Animator::set_new_splines(int leg, const Level& level, float swing_phase) {
@@ -688,6 +759,62 @@ void Animator::set_new_splines(int leg, const Level& level, float swing_phase) {
   f.state = LegState::kSwing;
 
   raise_for_clearance(leg, level);
+}
+
+glm::vec2 Animator::leg_ankle(int leg, glm::vec2 contact_ms, glm::vec2 joint_ms, const Level* level, glm::vec2* foot_dir,
+                               bool* limited) const {
+  // Hooves and toes roll: with the contact point c fixed, the ankle a(θ) = c - F·u(θ) lies on
+  // a circle of the foot's length F around it. The leg (joint j → ankle) reaches r, so
+  // |a - j| <= r, i.e. u(θ)·d >= q with d = c - j and q = (|d|² + F² - r²) / 2F: an arc of
+  // directions within β = acos(q / |d|) of d. The foot keeps its rest direction inside the
+  // arc and turns to the arc's nearer end outside it (into line with d when it is empty).
+  const LegInfo& info = legs_[leg];
+  *foot_dir = info.foot_dir_ms;
+  if (limited) *limited = false;
+  const float F = glm::length(info.foot_offset_ms);
+  if (F <= 0.0f) return contact_ms;  // flat contact: the contact point is the ankle
+  const glm::vec2 d = contact_ms - joint_ms;
+  const float r = kReachLimit * info.reach;
+  const float dd = glm::dot(d, d);
+  const float q = (dd + F * F - r * r) / (2.0f * F);
+  if (glm::dot(d, info.foot_dir_ms) < q && dd > 1e-12f) {
+    const float len = std::sqrt(dd);
+    const glm::vec2 n = d / len;
+    const float cos_b = std::min(q / len, 1.0f);
+    const float sin_b = std::sqrt(std::max(1.0f - cos_b * cos_b, 0.0f));
+    // The side of d the rest direction lies on.
+    const float side = n.x * info.foot_dir_ms.y - n.y * info.foot_dir_ms.x >= 0.0f ? 1.0f : -1.0f;
+    *foot_dir = {cos_b * n.x - side * sin_b * n.y, side * sin_b * n.x + cos_b * n.y};
+  }
+  if (level && *foot_dir != info.foot_dir_ms) {
+    // A rolled foot must not sweep into a step: turn it back towards the rest direction
+    // (bisection on the angle) until the ankle → contact segment clears every box.
+    auto clear = [&](glm::vec2 u) { return !segment_hits_level(*level, to_world(contact_ms - F * u), to_world(contact_ms), segment_hits_); };
+    if (!clear(*foot_dir)) {
+      const glm::vec2 rest = info.foot_dir_ms;
+      const float full = std::atan2(rest.x * foot_dir->y - rest.y * foot_dir->x, glm::dot(rest, *foot_dir));
+      float lo = 0.0f, hi = 1.0f;  // fractions of the roll: lo clears, hi does not
+      for (int k = 0; k < 6; ++k) {
+        const float mid = 0.5f * (lo + hi);
+        (clear(rotate(rest, mid * full)) ? lo : hi) = mid;
+      }
+      *foot_dir = lo > 0.0f ? rotate(rest, lo * full) : rest;
+      if (limited) *limited = true;
+    }
+  }
+  return contact_ms - F * *foot_dir;
+}
+
+glm::vec2 Animator::leg_anchor(int leg, glm::vec2 contact_ms, glm::vec2 joint_ms, const Level& level, float* radius) const {
+  glm::vec2 dir;
+  bool limited = false;
+  const glm::vec2 ankle = leg_ankle(leg, contact_ms, joint_ms, &level, &dir, &limited);
+  if (!limited) {
+    *radius = legs_[leg].contact_reach;
+    return contact_ms;
+  }
+  *radius = kReachLimit * legs_[leg].reach;
+  return ankle;
 }
 
 void Animator::keep_arm_above_ground(const Limb& arm, const Level& level) {
@@ -835,6 +962,15 @@ void Animator::place_body(float dt, const Level& level) {
         ground = std::max(ground, 0.5f * (ground + below->height_ws));
       }
       height[g] = ground + groups_[g].rest_height * params_.stance_height + bob;
+      // A foot waiting above a lower step (see update) brings its girdle down to it.
+      for (int leg : groups_[g].legs) {
+        const Foot& f = feet_[foot_of_leg_[leg]];
+        if (f.state != LegState::kSwing || f.hover <= 0.0f) continue;
+        const glm::vec2 foot = f.to_ws;
+        const float r = 0.97f * legs_[leg].contact_reach;
+        const float dx = std::min(std::fabs(foot.x - gx), 0.3f * r);
+        height[g] = std::min(height[g], foot.y + std::sqrt(r * r - dx * dx));
+      }
     }
     const float angle_extra = lean_;
     if (groups_.size() >= 2) {
@@ -866,11 +1002,11 @@ void Animator::place_body(float dt, const Level& level) {
       // On the turn tick, swinging feet (taken over by other legs) must stay in reach too.
       if (f.state != LegState::kStance && !(turning && !f.easing)) continue;
       const glm::vec2 joint = to_model(girdle_ws(info.group));
-      const glm::vec2 ankle = to_model(f.pos_ws) - info.foot_offset_ms;
-      const float r = kReachLimit * info.reach;
-      const float dx = std::fabs(ankle.x - joint.x);
+      float r;
+      const glm::vec2 anchor = leg_anchor(static_cast<int>(i), to_model(f.pos_ws), joint, level, &r);
+      const float dx = std::fabs(anchor.x - joint.x);
       if (dx >= r) continue;
-      const float allowed = ankle.y + std::sqrt(r * r - dx * dx);
+      const float allowed = anchor.y + std::sqrt(r * r - dx * dx);
       lower = std::max(lower, joint.y - allowed);
     }
     root_y_ -= lower;
@@ -931,23 +1067,34 @@ void Animator::build_pose(float dt, const Level& level) {
     const Limb& limb = c.limbs[info.limb];
     const Foot& f = feet_[foot_of_leg_[i]];
     const glm::vec2 joint = model_[limb.girdle_bone].apply(pose_.locals[limb.bones[0]].offset_ls);
-    glm::vec2 ankle = to_model(f.pos_ws) - info.foot_offset_ms;
+    glm::vec2 contact = to_model(f.pos_ws);
     if (f.state == LegState::kSwing) {
       // A swinging foot out of reach below stays at the lowest point the leg reaches, right
       // above its path, instead of being dragged along the line to it (into a step's corner).
+      const float r = info.contact_reach;
+      const float dx = contact.x - joint.x;
+      if (glm::length(contact - joint) > r && std::fabs(dx) < r && contact.y < joint.y) {
+        contact.y = joint.y - std::sqrt(r * r - dx * dx);
+      }
+    }
+    glm::vec2 foot_dir;
+    glm::vec2 ankle = leg_ankle(static_cast<int>(i), contact, joint, &level, &foot_dir, nullptr);
+    if (f.state == LegState::kSwing) {
+      // The same for the ankle when the foot could not roll far enough.
       const float r = kReachLimit * info.reach;
       const float dx = ankle.x - joint.x;
       if (glm::length(ankle - joint) > r && std::fabs(dx) < r && ankle.y < joint.y) {
         ankle.y = joint.y - std::sqrt(r * r - dx * dx);
       }
     }
+    const float foot_angle = foot_dir == info.foot_dir_ms ? info.foot_angle_ms : std::atan2(foot_dir.y, foot_dir.x);
     const TwoBoneIkResult ik = solve_two_bone_ik(joint, sk.length(limb.bones[0]), sk.length(limb.bones[1]), ankle,
                                                  static_cast<float>(limb.bend_sign));
     const float girdle_angle = std::isnan(info.girdle_rel_angle) ? bone_angle(model_[limb.girdle_bone])
                                                                  : pose_.locals[c.root].angle_ls + info.girdle_rel_angle;
     pose_.locals[limb.bones[0]].angle_ls = wrap_angle(ik.upper_angle - girdle_angle);
     pose_.locals[limb.bones[1]].angle_ls = ik.lower_angle;
-    pose_.locals[limb.bones[2]].angle_ls = wrap_angle(info.foot_angle_ms - (ik.upper_angle + ik.lower_angle));
+    pose_.locals[limb.bones[2]].angle_ls = wrap_angle(foot_angle - (ik.upper_angle + ik.lower_angle));
     // The chain's matrices straight from the solution's directions (no trigonometry).
     auto frame = [](glm::vec2 dir, glm::vec2 origin) {
       Mat2x3 m;
@@ -958,7 +1105,7 @@ void Animator::build_pose(float dt, const Level& level) {
     const Mat2x3 lower = frame(ik.lower_dir, upper.apply(pose_.locals[limb.bones[1]].offset_ls));
     model_[limb.bones[0]] = upper;
     model_[limb.bones[1]] = lower;
-    model_[limb.bones[2]] = frame(leg_foot_dir_[i], lower.apply(pose_.locals[limb.bones[2]].offset_ls));
+    model_[limb.bones[2]] = frame(foot_dir, lower.apply(pose_.locals[limb.bones[2]].offset_ls));
   }
   // Arms swing counter to the same-side leg; fins trail with a slow beat.
   const float motion = std::min(speed_ / std::max(walk_speed(), 1e-3f), 1.0f);

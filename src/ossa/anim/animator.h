@@ -111,6 +111,10 @@ class Animator {
     glm::vec2 foot_offset_ms{0.0f};  // ankle → contact point in the rest pose (model space)
     float foot_angle_ms = 0.0f;      // rest absolute angle of the foot bone (model space)
     float girdle_rel_angle = NAN;    // girdle angle relative to the root (NaN: spine bends)
+    glm::vec2 foot_dir_ms{1.0f, 0.0f};  // (cos, sin) of foot_angle_ms
+    // Farthest the contact point gets from the girdle joint: the leg at kReachLimit and, for
+    // tip contact, the foot pivoted into line with it.
+    float contact_reach = 0.0f;
   };
   struct Group {                     // a girdle slot carrying a leg pair
     glm::vec2 joint_ms{0.0f};        // rest girdle joint, model space
@@ -144,10 +148,21 @@ class Animator {
   float landing_x(int leg, float speed, float swing_phase = -1.0f) const;
   glm::vec2 girdle_ws(int group) const;  // from the current body placement
   glm::vec2 rotate_body(glm::vec2 v) const;  // v rotated by the body angle pitch_ + lean_
-  void body_bounds(glm::vec2* lo, glm::vec2* hi) const;  // back, neck, head, arms, fins (world)
+  // World boxes of the body's parts for the wall sweep: slabs of the spine, head, arms, fins
+  // (slabs = true), or one box around them all.
+  void body_boxes(bool slabs, std::vector<Box>* boxes) const;
   void place_body(float dt, const Level& level);
   void build_pose(float dt, const Level& level);
   void keep_arm_above_ground(const Limb& arm, const Level& level);
+  // Ankle of leg i for a contact point and girdle joint (model space) and the foot bone's
+  // direction: the rest angle unless that over-extends the leg, else pivoted about the contact
+  // (no further than the level allows, when one is given).
+  // *limited: the level kept the foot from rolling as far as the leg's reach needs.
+  glm::vec2 leg_ankle(int leg, glm::vec2 contact_ms, glm::vec2 joint_ms, const Level* level, glm::vec2* foot_dir,
+                      bool* limited) const;
+  // The point the girdle joint of leg i must stay within *radius of: the contact point (foot
+  // free to roll) or the ankle (foot held by the level).
+  glm::vec2 leg_anchor(int leg, glm::vec2 contact_ms, glm::vec2 joint_ms, const Level& level, float* radius) const;
   glm::vec2 to_model(glm::vec2 p_ws) const { return {(p_ws.x - body_x_) * facing_, p_ws.y}; }
   glm::vec2 to_world(glm::vec2 p_ms) const { return {body_x_ + facing_ * p_ms.x, p_ms.y}; }
 
@@ -181,10 +196,13 @@ class Animator {
   std::vector<uint8_t> dynamic_bone_;     // joint values the animator changes (spine, skull, tail)
   std::vector<int> touched_bones_;        // bones whose joint values build_pose rewrites
   std::vector<int> other_limb_bones_;     // limb bones not placed by the leg IK, parents first
-  std::vector<glm::vec2> leg_foot_dir_;   // per leg: rest direction of the foot bone (model)
-  // Wall sweep: root, back and neck joints relative to the root bone's frame, and the skull
-  // (kept level) as its joint in that frame plus its rest span. Empty when the spine bends.
-  std::vector<glm::vec2> body_points_rel_;
+  // Wall sweep: hulls of the root, back and neck in slabs along the body, relative to the root
+  // bone's frame, and the skull (kept level) as its joint in that frame plus its rest span.
+  // Empty when the spine bends.
+  std::vector<std::vector<glm::vec2>> body_slabs_;
+  std::vector<glm::vec2> body_hull_;      // all slabs together
+  std::vector<Box> body_boxes_;           // scratch for the wall sweep
+  mutable std::vector<int> segment_hits_; // scratch for leg_ankle
   glm::vec2 skull_rel_{0.0f}, skull_span_{0.0f};
   std::vector<float> group_height_;       // scratch for place_body
   std::vector<int> clearance_hits_;       // scratch for raise_for_clearance
