@@ -103,6 +103,25 @@ TEST_CASE("creature panel: glTF export re-imports with the creature's bones", "[
   }
 }
 
+// CTest runs every test case in a process of its own, so no GL context exists yet here; in a
+// run of the whole executable this file's cases come first (link order), before any context.
+TEST_CASE("creature panel: PNG export without a GL context reports it and writes nothing", "[editor][export]") {
+  if (gl_context_is_current()) {
+    WARN("a GL context already exists in this process; run this case on its own");
+    return;
+  }
+  UndoStack undo;
+  CreaturePanelModel m(scenes::generator(), undo, "horse");
+  const fs::path dir = fresh_dir("ossa_editor_export_nogl");
+  const std::string path = (dir / "horse.png").string();
+  const Status st = m.export_png(path);
+  REQUIRE_FALSE(st.ok());
+  CHECK(st.message().find(path) != std::string::npos);
+  CHECK(st.message().find("OpenGL context") != std::string::npos);
+  CHECK(m.last_error() == st.message());
+  CHECK_FALSE(fs::exists(path));
+}
+
 TEST_CASE("creature panel: PNG export draws the creature offscreen at the asked size", "[editor][export]") {
   ensure_gl_context();
   UndoStack undo;
