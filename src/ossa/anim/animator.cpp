@@ -65,28 +65,37 @@ glm::vec2 rotate(glm::vec2 v, float a) {
   return {c * v.x - s * v.y, s * v.x + c * v.y};
 }
 float bone_angle(const Mat2x3& m) { return std::atan2(m.m[1], m.m[0]); }
-// Does the segment a-b pass through the interior of a collider (shrunk by a millimetre)?
-bool segment_hits_level(const Level& level, glm::vec2 a, glm::vec2 b, std::vector<int>& hits) {
+// Does the polyline p[0] - p[1] - ... pass through the interior of a collider (shrunk by a
+// millimetre)? One query for its bounds, then a Liang-Barsky clip per segment and box.
+bool polyline_hits_level(const Level& level, const glm::vec2* p, int n, std::vector<int>& hits) {
+  glm::vec2 lo = p[0], hi = p[0];
+  for (int i = 1; i < n; ++i) {
+    lo = glm::min(lo, p[i]);
+    hi = glm::max(hi, p[i]);
+  }
   hits.clear();
-  level.overlapping(Box{glm::min(a, b), glm::max(a, b)}, hits);
+  level.overlapping(Box{lo, hi}, hits);
   for (int h : hits) {
     const Box& box = level.box(h);
-    float t0 = 0.0f, t1 = 1.0f;  // Liang-Barsky clip against the shrunk box
-    bool inside = true;
-    for (int axis = 0; axis < 2 && inside; ++axis) {
-      const float lo = box.min_ws[axis] + 1e-3f, hi = box.max_ws[axis] - 1e-3f;
-      const float d = b[axis] - a[axis];
-      if (std::fabs(d) < 1e-9f) {
-        inside = a[axis] > lo && a[axis] < hi;
-      } else {
-        float u0 = (lo - a[axis]) / d, u1 = (hi - a[axis]) / d;
-        if (u0 > u1) std::swap(u0, u1);
-        t0 = std::max(t0, u0);
-        t1 = std::min(t1, u1);
-        inside = t0 < t1;
+    for (int i = 0; i + 1 < n; ++i) {
+      const glm::vec2 a = p[i], b = p[i + 1];
+      float t0 = 0.0f, t1 = 1.0f;
+      bool inside = true;
+      for (int axis = 0; axis < 2 && inside; ++axis) {
+        const float lo_a = box.min_ws[axis] + 1e-3f, hi_a = box.max_ws[axis] - 1e-3f;
+        const float d = b[axis] - a[axis];
+        if (std::fabs(d) < 1e-9f) {
+          inside = a[axis] > lo_a && a[axis] < hi_a;
+        } else {
+          float u0 = (lo_a - a[axis]) / d, u1 = (hi_a - a[axis]) / d;
+          if (u0 > u1) std::swap(u0, u1);
+          t0 = std::max(t0, u0);
+          t1 = std::min(t1, u1);
+          inside = t0 < t1;
+        }
       }
+      if (inside) return true;
     }
-    if (inside) return true;
   }
   return false;
 }
@@ -352,7 +361,12 @@ void Animator::body_boxes(bool slabs, std::vector<Box>* boxes) const {
     for (int b : creature_->neck) add(b);
     if (creature_->skull >= 0) add(creature_->skull);
   }
+  for (int a : fins_) {
+    if (slabs) begin();
+    for (int b : creature_->limbs[a].bones) add(b);
+  }
   // Arms swing: count the whole reach of each arm, forward and back, not just this pose.
+  // (They come last: the sweep tests them against walls only, as they lift over the rest.)
   for (int a : arms_) {
     const Limb& arm = creature_->limbs[a];
     const glm::vec2 shoulder = bone_start(model_[arm.bones[0]]);
@@ -360,10 +374,6 @@ void Animator::body_boxes(bool slabs, std::vector<Box>* boxes) const {
     if (slabs) begin();
     add_point(shoulder - glm::vec2(reach, reach));
     add_point(shoulder + glm::vec2(reach, 0.0f));
-  }
-  for (int a : fins_) {
-    if (slabs) begin();
-    for (int b : creature_->limbs[a].bones) add(b);
   }
 }
 
@@ -398,6 +408,12 @@ void Animator::reset(glm::vec2 position_ws, const Level& level, int facing) {
     f.offset = leg_target_offset(static_cast<int>(i));
     const float x = to_world(contact_ms).x;
     f.pos_ws = {x, ground_at(x - 0.02f, x + 0.02f, position_ws.y)};
+  }
+  // Each foot stands where it fits (not across the edge of a step).
+  for (size_t i = 0; i < legs_.size(); ++i) {
+    glm::vec2 landing;
+    Foot& f = feet_[foot_of_leg_[i]];
+    if (find_landing(static_cast<int>(i), f.pos_ws.x, level, &landing)) f.pos_ws = landing;
   }
   place_body(0.0f, level);
   build_pose(0.0f, level);
@@ -461,12 +477,14 @@ void Animator::update(float dt, float desired_velocity, const Level& level) {
       else body_boxes_.clear();
     }
     float move = std::fabs(dx);
-    for (Box box : body_boxes_) {
+    const size_t first_arm = body_boxes_.empty() ? 0 : body_boxes_.size() - arms_.size();
+    for (size_t k = 0; k < body_boxes_.size(); ++k) {
+      Box box = body_boxes_[k];
       const float hi_y = box.max_ws.y;
       const float ground = ground_under(box);
       box.min_ws.y = std::min(std::max(box.min_ws.y + 0.3f * hip_height_, ground + params_.max_step_up * hip_height_), hi_y);
       box.max_ws = glm::max(box.max_ws, box.min_ws + glm::vec2(1e-3f));
-      auto hit = level.sweep_box(box, {dx, 0.0f});
+      auto hit = k < first_arm ? level.sweep_box(box, {dx, 0.0f}) : std::nullopt;
       // Walls (reaching above the body) are met a few centimetres early: arms and head
       // settle forward a little when the body stops.
       if (auto wall = level.sweep_box(Box{box.min_ws - margin, box.max_ws + margin}, {dx, 0.0f});
@@ -789,7 +807,10 @@ glm::vec2 Animator::leg_ankle(int leg, glm::vec2 contact_ms, glm::vec2 joint_ms,
   if (level && *foot_dir != info.foot_dir_ms) {
     // A rolled foot must not sweep into a step: turn it back towards the rest direction
     // (bisection on the angle) until the ankle → contact segment clears every box.
-    auto clear = [&](glm::vec2 u) { return !segment_hits_level(*level, to_world(contact_ms - F * u), to_world(contact_ms), segment_hits_); };
+    auto clear = [&](glm::vec2 u) {
+      const glm::vec2 seg[2] = {to_world(contact_ms - F * u), to_world(contact_ms)};
+      return !polyline_hits_level(*level, seg, 2, segment_hits_);
+    };
     if (!clear(*foot_dir)) {
       const glm::vec2 rest = info.foot_dir_ms;
       const float full = std::atan2(rest.x * foot_dir->y - rest.y * foot_dir->x, glm::dot(rest, *foot_dir));
@@ -819,35 +840,57 @@ glm::vec2 Animator::leg_anchor(int leg, glm::vec2 contact_ms, glm::vec2 joint_ms
 
 void Animator::keep_arm_above_ground(const Limb& arm, const Level& level) {
   // Long arms of a low body would reach into the ground (or a ledge): lift the wrist with
-  // two-bone IK until elbow, wrist and hand clear the highest ground under the arm.
+  // two-bone IK until elbow, wrist and hand clear the highest ground under the arm; an arm
+  // still in a step (a riser in front) folds towards the shoulder until it clears.
   const Skeleton& sk = creature_->skeleton;
   const float l1 = sk.length(arm.bones[0]), l2 = sk.length(arm.bones[1]), l3 = sk.length(arm.bones[2]);
-  for (int pass = 0; pass < 3; ++pass) {
+  struct ArmPose {
+    glm::vec2 shoulder, elbow, wrist, tip;
+    float hand_abs, bend;
+  };
+  auto current = [&] {
     const Mat2x3 upper = model_[arm.girdle_bone] * local_matrix(pose_.locals[arm.bones[0]]);
     const Mat2x3 lower = upper * local_matrix(pose_.locals[arm.bones[1]]);
     const Mat2x3 hand = lower * local_matrix(pose_.locals[arm.bones[2]]);
-    const glm::vec2 shoulder = bone_start(upper), elbow = bone_start(lower), wrist = bone_start(hand);
-    const glm::vec2 tip = bone_end(hand, l3);
+    ArmPose p{bone_start(upper), bone_start(lower), bone_start(hand), bone_end(hand, l3), bone_angle(hand), 1.0f};
+    const glm::vec2 a = p.elbow - p.shoulder, b = p.wrist - p.shoulder;
+    p.bend = a.x * b.y - a.y * b.x > 0.0f ? 1.0f : -1.0f;  // keep the elbow's side
+    return p;
+  };
+  auto set_wrist = [&](const ArmPose& p, glm::vec2 target) {
+    const TwoBoneIkResult ik = solve_two_bone_ik(p.shoulder, l1, l2, target, p.bend);
+    pose_.locals[arm.bones[0]].angle_ls = wrap_angle(ik.upper_angle - bone_angle(model_[arm.girdle_bone]));
+    pose_.locals[arm.bones[1]].angle_ls = ik.lower_angle;
+    pose_.locals[arm.bones[2]].angle_ls = wrap_angle(p.hand_abs - (ik.upper_angle + ik.lower_angle));
+  };
+  for (int pass = 0; pass < 3; ++pass) {
+    const ArmPose p = current();
     float x0 = 1e30f, x1 = -1e30f, low = 1e30f;
-    for (glm::vec2 q : {elbow, wrist, tip}) {
+    for (glm::vec2 q : {p.elbow, p.wrist, p.tip}) {
       const float xw = to_world(q).x;
       x0 = std::min(x0, xw);
       x1 = std::max(x1, xw);
       low = std::min(low, q.y);
     }
-    const auto ground = level.ground_height_below(x0, x1, shoulder.y, 100.0f);
+    const auto ground = level.ground_height_below(x0, x1, p.shoulder.y, 100.0f);
     const float margin = 0.01f + 0.02f * hip_height_;
-    if (!ground || low >= ground->height_ws + margin) return;
-    const float lift = ground->height_ws + margin - low;
-    const glm::vec2 target = wrist + glm::vec2(0.0f, lift);
-    const glm::vec2 a = elbow - shoulder, b = wrist - shoulder;
-    const float bend = a.x * b.y - a.y * b.x > 0.0f ? 1.0f : -1.0f;  // keep the elbow's side
-    const float hand_abs = bone_angle(hand);
-    const TwoBoneIkResult ik = solve_two_bone_ik(shoulder, l1, l2, target, bend);
-    pose_.locals[arm.bones[0]].angle_ls = wrap_angle(ik.upper_angle - bone_angle(model_[arm.girdle_bone]));
-    pose_.locals[arm.bones[1]].angle_ls = ik.lower_angle;
-    pose_.locals[arm.bones[2]].angle_ls = wrap_angle(hand_abs - (ik.upper_angle + ik.lower_angle));
+    if (!ground || low >= ground->height_ws + margin) break;
+    set_wrist(p, p.wrist + glm::vec2(0.0f, ground->height_ws + margin - low));
   }
+  const ArmPose p = current();
+  auto hits = [&](const ArmPose& q) {
+    const glm::vec2 pts[4] = {to_world(q.shoulder), to_world(q.elbow), to_world(q.wrist), to_world(q.tip)};
+    return polyline_hits_level(level, pts, 4, segment_hits_);
+  };
+  if (!hits(p)) return;
+  const glm::vec2 tuck = p.shoulder + glm::normalize(glm::vec2(-1.0f, -0.3f)) * std::max(std::fabs(l1 - l2) + 0.01f, 0.35f * (l1 + l2));
+  float lo = 0.0f, hi = 1.0f;  // fractions of the way to the tuck: lo hits, hi is the answer
+  for (int k = 0; k < 6; ++k) {
+    const float mid = 0.5f * (lo + hi);
+    set_wrist(p, glm::mix(p.wrist, tuck, mid));
+    (hits(current()) ? lo : hi) = mid;
+  }
+  set_wrist(p, glm::mix(p.wrist, tuck, hi));
 }
 
 glm::vec2 Animator::swing_point(const Foot& f, float s) {
@@ -962,15 +1005,19 @@ void Animator::place_body(float dt, const Level& level) {
         ground = std::max(ground, 0.5f * (ground + below->height_ws));
       }
       height[g] = ground + groups_[g].rest_height * params_.stance_height + bob;
-      // A foot waiting above a lower step (see update) brings its girdle down to it.
+      // A foot waiting above a lower step (see update) brings its girdle down to it, but not
+      // so far that a leg on the ground folds up (its knee would reach into the ground).
+      float floor = -1e30f, lowest = height[g];
       for (int leg : groups_[g].legs) {
         const Foot& f = feet_[foot_of_leg_[leg]];
+        if (f.state == LegState::kStance) floor = std::max(floor, f.pos_ws.y + 0.6f * groups_[g].rest_height);
         if (f.state != LegState::kSwing || f.hover <= 0.0f) continue;
         const glm::vec2 foot = f.to_ws;
         const float r = 0.97f * legs_[leg].contact_reach;
-        const float dx = std::min(std::fabs(foot.x - gx), 0.3f * r);
-        height[g] = std::min(height[g], foot.y + std::sqrt(r * r - dx * dx));
+        const float dx = std::min(std::fabs(foot.x - gx), 0.95f * r);
+        lowest = std::min(lowest, foot.y + std::sqrt(r * r - dx * dx));
       }
+      height[g] = std::min(height[g], std::max(lowest, floor));
     }
     const float angle_extra = lean_;
     if (groups_.size() >= 2) {
@@ -1088,8 +1135,36 @@ void Animator::build_pose(float dt, const Level& level) {
       }
     }
     const float foot_angle = foot_dir == info.foot_dir_ms ? info.foot_angle_ms : std::atan2(foot_dir.y, foot_dir.x);
-    const TwoBoneIkResult ik = solve_two_bone_ik(joint, sk.length(limb.bones[0]), sk.length(limb.bones[1]), ankle,
-                                                 static_cast<float>(limb.bend_sign));
+    const float l0 = sk.length(limb.bones[0]), l1 = sk.length(limb.bones[1]), bend = static_cast<float>(limb.bend_sign);
+    TwoBoneIkResult ik = solve_two_bone_ik(joint, l0, l1, ankle, bend);
+    if (f.state == LegState::kSwing) {
+      // A knee or shin swinging into a step lifts the foot until the whole leg clears.
+      const float F = glm::length(info.foot_offset_ms);
+      auto leg_hits = [&](const TwoBoneIkResult& r) {
+        const glm::vec2 tip = r.end + F * foot_dir;
+        const glm::vec2 p[4] = {to_world(joint), to_world(r.middle), to_world(r.end), to_world(tip)};
+        return polyline_hits_level(level, p, F > 0.0f ? 4 : 3, segment_hits_);
+      };
+      const float max_lift = joint.y - 0.3f * info.reach - ankle.y;
+      if (max_lift > 0.0f && leg_hits(ik)) {
+        const TwoBoneIkResult top = solve_two_bone_ik(joint, l0, l1, ankle + glm::vec2(0.0f, max_lift), bend);
+        if (!leg_hits(top)) {
+          float lo = 0.0f, hi = max_lift;
+          TwoBoneIkResult best = top;
+          for (int k = 0; k < 6; ++k) {
+            const float mid = 0.5f * (lo + hi);
+            const TwoBoneIkResult r = solve_two_bone_ik(joint, l0, l1, ankle + glm::vec2(0.0f, mid), bend);
+            if (leg_hits(r)) {
+              lo = mid;
+            } else {
+              hi = mid;
+              best = r;
+            }
+          }
+          ik = best;
+        }
+      }
+    }
     const float girdle_angle = std::isnan(info.girdle_rel_angle) ? bone_angle(model_[limb.girdle_bone])
                                                                  : pose_.locals[c.root].angle_ls + info.girdle_rel_angle;
     pose_.locals[limb.bones[0]].angle_ls = wrap_angle(ik.upper_angle - girdle_angle);
