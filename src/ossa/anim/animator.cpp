@@ -22,7 +22,12 @@ namespace {
 constexpr float kEps = 1e-5f;
 constexpr float kReachLimit = 0.985f;  // stance legs never extend beyond this fraction
 
-float frac(float x) { return x - std::floor(x); }
+// x - floor(x) in [0, 1), without a library call for the phases' range.
+float frac(float x) {
+  if (!(std::fabs(x) < 1e6f)) return x - std::floor(x);
+  const float f = x - static_cast<float>(static_cast<int>(x));
+  return f < 0.0f ? f + 1.0f : f;
+}
 float smoothstep(float a, float b, float x) {
   const float t = std::clamp((x - a) / (b - a), 0.0f, 1.0f);
   return t * t * (3.0f - 2.0f * t);
@@ -142,7 +147,9 @@ Animator::Animator(const Creature& creature, SplinePrototypes prototypes, Animat
     info.foot_angle_ms = creature.contact == ContactMode::kFlat ? 0.0f : bone_angle(model_rest_[limb.bones[2]]);
     info.foot_offset_ms = creature.contact == ContactMode::kFlat ? glm::vec2(0.0f) : tip - ankle;
     info.foot_dir_ms = {std::cos(info.foot_angle_ms), std::sin(info.foot_angle_ms)};
-    info.contact_reach = kReachLimit * info.reach + glm::length(info.foot_offset_ms);
+    info.foot_span = glm::length(info.foot_offset_ms);
+    info.leg_reach = kReachLimit * info.reach;
+    info.contact_reach = info.leg_reach + info.foot_span;
     int group = -1;
     for (int g = 0; g < static_cast<int>(groups_.size()); ++g) {
       const Limb& other = creature.limbs[legs_[groups_[g].legs[0]].limb];
@@ -414,6 +421,7 @@ void Animator::reset(glm::vec2 position_ws, const Level& level, int facing) {
     glm::vec2 landing;
     Foot& f = feet_[foot_of_leg_[i]];
     if (find_landing(static_cast<int>(i), f.pos_ws.x, level, &landing)) f.pos_ws = landing;
+    update_stance_clearance(f, level);
   }
   place_body(0.0f, level);
   build_pose(0.0f, level);
@@ -506,7 +514,9 @@ void Animator::update(float dt, float desired_velocity, const Level& level) {
       const LegInfo& info = legs_[i];
       const glm::vec2 joint = to_model(girdle_ws(info.group));
       float r;
-      const glm::vec2 anchor = leg_anchor(static_cast<int>(i), to_model(f.state == LegState::kStance ? f.pos_ws : f.to_ws), joint, level, &r);
+      const bool stance = f.state == LegState::kStance;
+      const glm::vec2 anchor = leg_anchor(static_cast<int>(i), to_model(stance ? f.pos_ws : f.to_ws), joint, level,
+                                          stance ? f.stance_clear : f.swing_clear, &r);
       const float h = joint.y - anchor.y;
       // How far forward the joint may go with this foot still in reach (model x).
       const float ahead = anchor.x + std::sqrt(std::max(r * r - h * h, 0.0f)) - joint.x;
@@ -538,9 +548,10 @@ void Animator::update(float dt, float desired_velocity, const Level& level) {
       }
     }
     phase_ = frac(phase_ + dphi);
+    update_target_offsets();
     for (size_t i = 0; i < legs_.size(); ++i) {
       Foot& f = feet_[foot_of_leg_[i]];
-      const float target_offset = leg_target_offset(static_cast<int>(i));
+      const float target_offset = target_offset_[i];
       f.offset = circular_lerp(f.offset, target_offset,
                                std::min(1.0f, 0.6f * ism * dt / std::max(std::fabs(phase_diff(f.offset, target_offset)), 1e-6f)));
       const float p = frac(phase_ + f.offset);
@@ -550,7 +561,7 @@ void Animator::update(float dt, float desired_velocity, const Level& level) {
         const LegInfo& info = legs_[i];
         const glm::vec2 joint = to_model(girdle_ws(info.group));
         float r;
-        const glm::vec2 anchor = leg_anchor(static_cast<int>(i), to_model(f.pos_ws), joint, level, &r);
+        const glm::vec2 anchor = leg_anchor(static_cast<int>(i), to_model(f.pos_ws), joint, level, f.stance_clear, &r);
         if (glm::length(anchor - joint) > 0.97f * r && anchor.x < joint.x) lift = true;
         if (lift) set_new_splines(static_cast<int>(i), level, std::max(1.0f - p, 0.05f));
       } else if (!f.easing) {
@@ -590,7 +601,7 @@ void Animator::update(float dt, float desired_velocity, const Level& level) {
       const LegInfo& info = legs_[i];
       const glm::vec2 joint = to_model(girdle_ws(info.group));
       float r;
-      const glm::vec2 anchor = leg_anchor(static_cast<int>(i), to_model(f.to_ws), joint, level, &r);
+      const glm::vec2 anchor = leg_anchor(static_cast<int>(i), to_model(f.to_ws), joint, level, f.swing_clear, &r);
       if (glm::length(anchor - joint) > r && std::fabs(anchor.x - joint.x) < r && f.hover < 0.5f) {
         f.hover += dt;
         f.progress = 1.0f;
@@ -603,6 +614,7 @@ void Animator::update(float dt, float desired_velocity, const Level& level) {
       f.state = LegState::kStance;
       f.pos_ws = f.to_ws;
       f.easing = false;
+      update_stance_clearance(f, level);
       ++steps_;
       continue;
     }
@@ -650,6 +662,14 @@ void Animator::update_gait() {
   } else {
     gait_ = gallop_factor_ > 0.5f ? Gait::kGallop : trot_factor_ > 0.5f ? Gait::kTrot : Gait::kWalk;
   }
+}
+
+void Animator::update_target_offsets() {
+  if (trot_factor_ == offsets_trot_ && gallop_factor_ == offsets_gallop_ && target_offset_.size() == legs_.size()) return;
+  offsets_trot_ = trot_factor_;
+  offsets_gallop_ = gallop_factor_;
+  target_offset_.resize(legs_.size());
+  for (size_t i = 0; i < legs_.size(); ++i) target_offset_[i] = leg_target_offset(static_cast<int>(i));
 }
 
 float Animator::leg_target_offset(int leg) const {
@@ -779,8 +799,8 @@ void Animator::set_new_splines(int leg, const Level& level, float swing_phase) {
   raise_for_clearance(leg, level);
 }
 
-glm::vec2 Animator::leg_ankle(int leg, glm::vec2 contact_ms, glm::vec2 joint_ms, const Level* level, glm::vec2* foot_dir,
-                               bool* limited) const {
+glm::vec2 Animator::leg_ankle(int leg, glm::vec2 contact_ms, glm::vec2 joint_ms, const Level* level, const Clearance& near,
+                               glm::vec2* foot_dir, bool* limited) const {
   // Hooves and toes roll: with the contact point c fixed, the ankle a(θ) = c - F·u(θ) lies on
   // a circle of the foot's length F around it. The leg (joint j → ankle) reaches r, so
   // |a - j| <= r, i.e. u(θ)·d >= q with d = c - j and q = (|d|² + F² - r²) / 2F: an arc of
@@ -789,10 +809,10 @@ glm::vec2 Animator::leg_ankle(int leg, glm::vec2 contact_ms, glm::vec2 joint_ms,
   const LegInfo& info = legs_[leg];
   *foot_dir = info.foot_dir_ms;
   if (limited) *limited = false;
-  const float F = glm::length(info.foot_offset_ms);
+  const float F = info.foot_span;
   if (F <= 0.0f) return contact_ms;  // flat contact: the contact point is the ankle
   const glm::vec2 d = contact_ms - joint_ms;
-  const float r = kReachLimit * info.reach;
+  const float r = info.leg_reach;
   const float dd = glm::dot(d, d);
   const float q = (dd + F * F - r * r) / (2.0f * F);
   if (glm::dot(d, info.foot_dir_ms) < q && dd > 1e-12f) {
@@ -804,7 +824,7 @@ glm::vec2 Animator::leg_ankle(int leg, glm::vec2 contact_ms, glm::vec2 joint_ms,
     const float side = n.x * info.foot_dir_ms.y - n.y * info.foot_dir_ms.x >= 0.0f ? 1.0f : -1.0f;
     *foot_dir = {cos_b * n.x - side * sin_b * n.y, side * sin_b * n.x + cos_b * n.y};
   }
-  if (level && *foot_dir != info.foot_dir_ms) {
+  if (level && *foot_dir != info.foot_dir_ms && !near.clear_above(std::min(contact_ms.y, contact_ms.y - F * foot_dir->y))) {
     // A rolled foot must not sweep into a step: turn it back towards the rest direction
     // (bisection on the angle) until the ankle → contact segment clears every box.
     auto clear = [&](glm::vec2 u) {
@@ -826,10 +846,40 @@ glm::vec2 Animator::leg_ankle(int leg, glm::vec2 contact_ms, glm::vec2 joint_ms,
   return contact_ms - F * *foot_dir;
 }
 
-glm::vec2 Animator::leg_anchor(int leg, glm::vec2 contact_ms, glm::vec2 joint_ms, const Level& level, float* radius) const {
+Animator::Clearance Animator::clearance_in(const Box& region, float base, const Level& level) const {
+  Clearance c;
+  c.base = base;
+  c.top = -1e30f;
+  segment_hits_.clear();
+  level.overlapping(region, segment_hits_);
+  for (int h : segment_hits_) {
+    const float top = level.box(h).top();
+    if (top > base + 0.5e-3f) c.top = std::max(c.top, top);
+  }
+  return c;
+}
+
+void Animator::update_stance_clearance(Foot& f, const Level& level) const {
+  // Any leg's foot may stand here after a turn: the longest foot's circle around the contact.
+  float r = 0.05f;
+  for (const LegInfo& info : legs_) r = std::max(r, glm::length(info.foot_offset_ms) + 0.05f);
+  f.stance_clear = clearance_in(Box{f.pos_ws - glm::vec2(r), f.pos_ws + glm::vec2(r)}, f.pos_ws.y, level);
+}
+
+void Animator::update_swing_clearance(int leg, const Level& level) {
+  // Everything the leg may sweep through on this swing: around the path, a leg's length
+  // to either side and two above.
+  Foot& f = feet_[foot_of_leg_[leg]];
+  const float reach = legs_[leg].reach + glm::length(legs_[leg].foot_offset_ms);
+  const glm::vec2 lo = glm::min(f.from_ws, f.to_ws), hi = glm::max(f.from_ws, f.to_ws);
+  f.swing_clear = clearance_in(Box{lo - glm::vec2(1.5f * reach, reach), hi + glm::vec2(1.5f * reach, 2.0f * reach)}, lo.y, level);
+}
+
+glm::vec2 Animator::leg_anchor(int leg, glm::vec2 contact_ms, glm::vec2 joint_ms, const Level& level, const Clearance& near,
+                               float* radius) const {
   glm::vec2 dir;
   bool limited = false;
-  const glm::vec2 ankle = leg_ankle(leg, contact_ms, joint_ms, &level, &dir, &limited);
+  const glm::vec2 ankle = leg_ankle(leg, contact_ms, joint_ms, &level, near, &dir, &limited);
   if (!limited) {
     *radius = legs_[leg].contact_reach;
     return contact_ms;
@@ -939,6 +989,7 @@ void Animator::raise_for_clearance(int leg, const Level& level) {
     if (need <= 0.0f) break;
     f.raise += need;
   }
+  update_swing_clearance(leg, level);
 }
 
 void Animator::start_ease(int leg, const Level& level) {
@@ -958,21 +1009,6 @@ void Animator::start_ease(int leg, const Level& level) {
 }
 
 // [SECTION] body placement ------------------------------------------------------------------
-
-glm::vec2 Animator::rotate_body(glm::vec2 v) const {
-  const float angle = pitch_ + lean_;
-  if (angle != body_angle_cached_) {
-    body_angle_cached_ = angle;
-    body_cs_ = {std::cos(angle), std::sin(angle)};
-  }
-  return {body_cs_.x * v.x - body_cs_.y * v.y, body_cs_.y * v.x + body_cs_.x * v.y};
-}
-
-glm::vec2 Animator::girdle_ws(int group) const {
-  const glm::vec2 root(0.0f, root_rest_y_);
-  const glm::vec2 j = glm::vec2(0.0f, root_y_) + rotate_body(groups_[group].joint_ms - root);
-  return to_world(j);
-}
 
 void Animator::place_body(float dt, const Level& level) {
   const float old_root = root_y_;
@@ -1040,7 +1076,8 @@ void Animator::place_body(float dt, const Level& level) {
   pitch_ = approach(pitch_, target_pitch, snap ? 0.0f : decay_.pitch);
   root_y_ = approach(root_y_, target_root, snap ? 0.0f : decay_.root);
 
-  // Never over-extend a leg on the ground: lower the body (hard clamp, no smoothing).
+  // Never over-extend a leg on the ground: lower the body (hard clamp, no smoothing; a second
+  // pass when the first moved it, as a rolling foot's reach depends on where the joint is).
   for (int pass = 0; pass < 2; ++pass) {
     float lower = 0.0f;
     for (size_t i = 0; i < legs_.size(); ++i) {
@@ -1050,13 +1087,15 @@ void Animator::place_body(float dt, const Level& level) {
       if (f.state != LegState::kStance && !(turning && !f.easing)) continue;
       const glm::vec2 joint = to_model(girdle_ws(info.group));
       float r;
-      const glm::vec2 anchor = leg_anchor(static_cast<int>(i), to_model(f.pos_ws), joint, level, &r);
+      const glm::vec2 anchor = leg_anchor(static_cast<int>(i), to_model(f.pos_ws), joint, level,
+                                          f.state == LegState::kStance ? f.stance_clear : f.swing_clear, &r);
       const float dx = std::fabs(anchor.x - joint.x);
       if (dx >= r) continue;
       const float allowed = anchor.y + std::sqrt(r * r - dx * dx);
       lower = std::max(lower, joint.y - allowed);
     }
     root_y_ -= lower;
+    if (lower <= 0.0f) break;
   }
   root_vy_ = dt > 0.0f ? (root_y_ - old_root) / dt : 0.0f;
 }
@@ -1125,10 +1164,11 @@ void Animator::build_pose(float dt, const Level& level) {
       }
     }
     glm::vec2 foot_dir;
-    glm::vec2 ankle = leg_ankle(static_cast<int>(i), contact, joint, &level, &foot_dir, nullptr);
+    const Clearance& near = f.state == LegState::kStance ? f.stance_clear : f.swing_clear;
+    glm::vec2 ankle = leg_ankle(static_cast<int>(i), contact, joint, &level, near, &foot_dir, nullptr);
     if (f.state == LegState::kSwing) {
       // The same for the ankle when the foot could not roll far enough.
-      const float r = kReachLimit * info.reach;
+      const float r = info.leg_reach;
       const float dx = ankle.x - joint.x;
       if (glm::length(ankle - joint) > r && std::fabs(dx) < r && ankle.y < joint.y) {
         ankle.y = joint.y - std::sqrt(r * r - dx * dx);
@@ -1139,14 +1179,15 @@ void Animator::build_pose(float dt, const Level& level) {
     TwoBoneIkResult ik = solve_two_bone_ik(joint, l0, l1, ankle, bend);
     if (f.state == LegState::kSwing) {
       // A knee or shin swinging into a step lifts the foot until the whole leg clears.
-      const float F = glm::length(info.foot_offset_ms);
+      const float F = info.foot_span;
       auto leg_hits = [&](const TwoBoneIkResult& r) {
         const glm::vec2 tip = r.end + F * foot_dir;
         const glm::vec2 p[4] = {to_world(joint), to_world(r.middle), to_world(r.end), to_world(tip)};
         return polyline_hits_level(level, p, F > 0.0f ? 4 : 3, segment_hits_);
       };
       const float max_lift = joint.y - 0.3f * info.reach - ankle.y;
-      if (max_lift > 0.0f && leg_hits(ik)) {
+      const float min_y = std::min({joint.y, ik.middle.y, ik.end.y, ik.end.y + F * foot_dir.y});
+      if (max_lift > 0.0f && !near.clear_above(min_y) && leg_hits(ik)) {
         const TwoBoneIkResult top = solve_two_bone_ik(joint, l0, l1, ankle + glm::vec2(0.0f, max_lift), bend);
         if (!leg_hits(top)) {
           float lo = 0.0f, hi = max_lift;

@@ -115,11 +115,21 @@ class Animator {
     // Farthest the contact point gets from the girdle joint: the leg at kReachLimit and, for
     // tip contact, the foot pivoted into line with it.
     float contact_reach = 0.0f;
+    float foot_span = 0.0f;          // |foot_offset_ms|: ankle to contact point
+    float leg_reach = 0.0f;          // kReachLimit * reach
   };
   struct Group {                     // a girdle slot carrying a leg pair
     glm::vec2 joint_ms{0.0f};        // rest girdle joint, model space
     float rest_height = 0.0f;        // joint height above the rest ground, metres
     std::vector<int> legs;           // leg indices (near first)
+  };
+  // What a limb near a foot can meet: colliders whose tops are at most `base` (the ground the
+  // foot stands or steps on) and, above that, none higher than `top`. A limb entirely above
+  // both meets nothing, so the level need not be asked. The default knows nothing.
+  struct Clearance {
+    float base = -1e30f;
+    float top = 1e30f;
+    bool clear_above(float min_y) const { return min_y >= base - 0.5e-3f && min_y >= top + 1e-3f; }
   };
   struct Foot {                      // per foot: moves between legs when the creature turns
     LegState state = LegState::kStance;
@@ -134,6 +144,8 @@ class Animator {
     float offset = 0.0f;             // phase offset (eases toward the owning leg's target)
     float phase_prev = 0.0f;
     float hover = 0.0f;              // seconds spent waiting above the landing point
+    Clearance stance_clear;          // around pos_ws while in stance
+    Clearance swing_clear;           // around the path of the current swing
   };
 
   void set_new_splines(int leg, const Level& level, float swing_phase);  // [T] name: plans a swing
@@ -143,11 +155,24 @@ class Animator {
   void reverse(const Level& level);
   void update_gait();
   float leg_target_offset(int leg) const;
+  void update_target_offsets();  // leg_target_offset of every leg, when the gait blend moved
   bool find_landing(int leg, float x_wanted, const Level& level, glm::vec2* landing) const;
   // Where leg i would land if it lifted now at `speed` (swing_phase < 0: a full swing).
   float landing_x(int leg, float speed, float swing_phase = -1.0f) const;
-  glm::vec2 girdle_ws(int group) const;  // from the current body placement
-  glm::vec2 rotate_body(glm::vec2 v) const;  // v rotated by the body angle pitch_ + lean_
+  // v rotated by the body angle pitch_ + lean_.
+  glm::vec2 rotate_body(glm::vec2 v) const {
+    const float angle = pitch_ + lean_;
+    if (angle != body_angle_cached_) {
+      body_angle_cached_ = angle;
+      body_cs_ = {std::cos(angle), std::sin(angle)};
+    }
+    return {body_cs_.x * v.x - body_cs_.y * v.y, body_cs_.y * v.x + body_cs_.x * v.y};
+  }
+  // Girdle joint of a leg group from the current body placement.
+  glm::vec2 girdle_ws(int group) const {
+    const glm::vec2 j = rotate_body(groups_[group].joint_ms - glm::vec2(0.0f, root_rest_y_));
+    return to_world({j.x, j.y + root_y_});
+  }
   // World boxes of the body's parts for the wall sweep: slabs of the spine, head, arms, fins
   // (slabs = true), or one box around them all.
   void body_boxes(bool slabs, std::vector<Box>* boxes) const;
@@ -158,11 +183,15 @@ class Animator {
   // direction: the rest angle unless that over-extends the leg, else pivoted about the contact
   // (no further than the level allows, when one is given).
   // *limited: the level kept the foot from rolling as far as the leg's reach needs.
-  glm::vec2 leg_ankle(int leg, glm::vec2 contact_ms, glm::vec2 joint_ms, const Level* level, glm::vec2* foot_dir,
-                      bool* limited) const;
+  glm::vec2 leg_ankle(int leg, glm::vec2 contact_ms, glm::vec2 joint_ms, const Level* level, const Clearance& near,
+                      glm::vec2* foot_dir, bool* limited) const;
   // The point the girdle joint of leg i must stay within *radius of: the contact point (foot
   // free to roll) or the ankle (foot held by the level).
-  glm::vec2 leg_anchor(int leg, glm::vec2 contact_ms, glm::vec2 joint_ms, const Level& level, float* radius) const;
+  glm::vec2 leg_anchor(int leg, glm::vec2 contact_ms, glm::vec2 joint_ms, const Level& level, const Clearance& near,
+                       float* radius) const;
+  Clearance clearance_in(const Box& region, float base, const Level& level) const;
+  void update_stance_clearance(Foot& f, const Level& level) const;
+  void update_swing_clearance(int leg, const Level& level);
   glm::vec2 to_model(glm::vec2 p_ws) const { return {(p_ws.x - body_x_) * facing_, p_ws.y}; }
   glm::vec2 to_world(glm::vec2 p_ms) const { return {body_x_ + facing_ * p_ms.x, p_ms.y}; }
 
@@ -205,6 +234,8 @@ class Animator {
   mutable std::vector<int> segment_hits_; // scratch for leg_ankle
   glm::vec2 skull_rel_{0.0f}, skull_span_{0.0f};
   std::vector<float> group_height_;       // scratch for place_body
+  std::vector<float> target_offset_;      // per leg: leg_target_offset at offsets_trot_/gallop_
+  float offsets_trot_ = -1.0f, offsets_gallop_ = -1.0f;
   std::vector<int> clearance_hits_;       // scratch for raise_for_clearance
   mutable float body_angle_cached_ = 0.0f;
   mutable glm::vec2 body_cs_{1.0f, 0.0f}; // cos, sin of body_angle_cached_

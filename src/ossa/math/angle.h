@@ -45,7 +45,8 @@ inline float fast_atan2(float y, float x) {
   return std::copysign(offset + sign * r, y);
 }
 
-/// The angle a wrapped into [-π, π] (same angle modulo 2π).
-inline float wrap_angle(float a) { return std::remainder(a, kTwoPi); }
+/// The angle a wrapped into [-π, π] (same angle modulo 2π). Angles already in range (nearly
+/// every call) return at once, bit-identical to what std::remainder gives them.
+inline float wrap_angle(float a) { return a >= -kPi && a <= kPi ? a : std::remainder(a, kTwoPi); }
 
 }  // namespace ossa
