@@ -4,7 +4,8 @@
 //   animator_1000:reference  the bare kinematics a naive animator does per creature and tick:
 //                            full FK with glm::mat3 (trig per bone) before and after IK, and a
 //                            naive acos/atan2 two-bone IK per leg
-//   anim_ik_fk_1000:ossa     our share of the update spent in IK and FK alone
+//   anim_ik_fk_1000:ossa     our share of the update spent in IK and FK alone (the root, the
+//                            girdles and the leg chains, as the update computes them)
 //   anim_ik_fk_1000:reference  the naive IK + FK again (for the ratio of the shares)
 #include <benchmark/benchmark.h>
 
@@ -96,24 +97,46 @@ void animator_reference(benchmark::State& state) {
 }
 BENCHMARK(animator_reference)->Name("animator_1000:reference")->Unit(benchmark::kMicrosecond);
 
-// Our IK + FK alone: two-bone IK per leg and FK of the bones the update computes.
+// Our IK + FK alone, as the update does them: the root's matrix, each girdle straight from it
+// (its rest matrix relative to the root), one two-bone IK per leg and the leg chain's matrices
+// from the solution's directions.
 void ik_fk_ossa(benchmark::State& state) {
   Herd& h = herd();
   const Creature& c = *h.creature;
-  std::vector<Mat2x3> model(c.skeleton.bone_count());
+  const Skeleton& sk = c.skeleton;
+  const std::vector<Mat2x3> rest = model_matrices(sk, c.rest_pose.locals);
+  const Mat2x3 root_inv = inverse(rest[c.root]);
+  std::vector<Mat2x3> model(sk.bone_count());
+  std::vector<const Limb*> legs;
+  std::vector<Mat2x3> girdle_rel;
+  for (const Limb& limb : c.limbs) {
+    if (limb.kind != LimbKind::kLeg) continue;
+    legs.push_back(&limb);
+    girdle_rel.push_back(root_inv * rest[limb.girdle_bone]);
+  }
+  auto frame = [](glm::vec2 dir, glm::vec2 origin) {
+    Mat2x3 m;
+    m.m[0] = dir.x, m.m[1] = dir.y, m.m[2] = -dir.y, m.m[3] = dir.x, m.m[4] = origin.x, m.m[5] = origin.y;
+    return m;
+  };
   for (auto _ : state) {
     for (auto& a : h.animators) {
-      ForwardKinematicsJob fk;
-      fk.skeleton = &c.skeleton;
-      fk.locals = a->pose().locals;
-      fk.model = model;
-      fk.run();
-      for (const Limb& limb : c.limbs) {
-        if (limb.kind != LimbKind::kLeg) continue;
-        const glm::vec2 root = bone_start(model[limb.bones[0]]);
-        benchmark::DoNotOptimize(solve_two_bone_ik(root, c.skeleton.length(limb.bones[0]), c.skeleton.length(limb.bones[1]),
-                                                   root + glm::vec2(0.1f, -0.6f), 1.0f));
+      const std::vector<BoneLocal>& locals = a->pose().locals;
+      model[c.root] = local_matrix(locals[c.root]);
+      for (size_t i = 0; i < legs.size(); ++i) {
+        const Limb& limb = *legs[i];
+        const Mat2x3 girdle = model[c.root] * girdle_rel[i];
+        model[limb.girdle_bone] = girdle;
+        const glm::vec2 joint = girdle.apply(locals[limb.bones[0]].offset_ls);
+        const TwoBoneIkResult ik = solve_two_bone_ik(joint, sk.length(limb.bones[0]), sk.length(limb.bones[1]),
+                                                     joint + glm::vec2(0.1f, -0.6f), static_cast<float>(limb.bend_sign));
+        const Mat2x3 upper = frame(ik.upper_dir, joint);
+        const Mat2x3 lower = frame(ik.lower_dir, upper.apply(locals[limb.bones[1]].offset_ls));
+        model[limb.bones[0]] = upper;
+        model[limb.bones[1]] = lower;
+        model[limb.bones[2]] = frame({0.0f, -1.0f}, lower.apply(locals[limb.bones[2]].offset_ls));
       }
+      benchmark::DoNotOptimize(model.data());
     }
     benchmark::ClobberMemory();
   }
