@@ -590,8 +590,14 @@ void Animator::update(float dt, float desired_velocity, const Level& level) {
       if (facing_ * (f.to_ws.x - wanted) > 0.08f * stride_) {
         glm::vec2 landing;
         if (find_landing(static_cast<int>(i), wanted, level, &landing) && facing_ * (landing.x - f.to_ws.x) < 0.0f) {
+          const glm::vec2 old_to = f.to_ws;
+          const float old_raise = f.raise;
           f.to_ws = landing;
-          raise_for_clearance(static_cast<int>(i), level);
+          if (!raise_for_clearance(static_cast<int>(i), level)) {  // keep the old landing
+            f.to_ws = old_to;
+            f.raise = old_raise;
+            update_swing_clearance(static_cast<int>(i), level);
+          }
         }
       }
     }
@@ -692,7 +698,6 @@ float Animator::leg_target_offset(int leg) const {
 }
 
 void Animator::reverse(const Level& level) {
-  (void)level;
   // Mirror in place: leg pairs take over the feet standing where their girdle will be
   // (group i ← group n-1-i, same side), and the root shifts so girdles land on those feet.
   const int n = static_cast<int>(groups_.size());
@@ -718,6 +723,49 @@ void Animator::reverse(const Level& level) {
   facing_ = -facing_;
   lean_ = 0.0f;
   snap_body_ = true;  // the body takes its new height and pitch at once (feet must not jump)
+  // Feet now point the other way: one that would reach into a step takes a quick step to the
+  // nearest place it fits (already lifted on this tick).
+  for (size_t i = 0; i < legs_.size(); ++i) {
+    Foot& f = feet_[foot_of_leg_[i]];
+    if (f.state != LegState::kStance || foot_fits(static_cast<int>(i), f.pos_ws, level)) continue;
+    glm::vec2 landing;
+    if (!nearest_fit(static_cast<int>(i), f.pos_ws, level, &landing)) continue;
+    start_ease(static_cast<int>(i), level);
+    f.to_ws = landing;
+    raise_for_clearance(static_cast<int>(i), level);
+    f.progress = 1.0f / 48.0f;
+  }
+}
+
+bool Animator::nearest_fit(int leg, glm::vec2 near_ws, const Level& level, glm::vec2* spot) const {
+  // Centimetre by centimetre either way, up to half a leg's length, on ground within a step.
+  const LegInfo& info = legs_[leg];
+  const float up = params_.max_step_up * groups_[info.group].rest_height;
+  const float down = params_.max_step_down * groups_[info.group].rest_height;
+  const int n = std::max(1, static_cast<int>(0.5f * (info.reach + info.foot_length) / 0.01f));
+  for (int k = 0; k <= 2 * n; ++k) {
+    const float x = near_ws.x + 0.01f * static_cast<float>(k % 2 == 0 ? k / 2 : -(k + 1) / 2);
+    auto hit = level.ground_height_below(x - 0.005f, x + 0.005f, near_ws.y + up, up + down);
+    if (!hit) continue;
+    const glm::vec2 p(x, hit->height_ws);
+    if (foot_fits(leg, p, level)) {
+      *spot = p;
+      return true;
+    }
+  }
+  return false;
+}
+
+bool Animator::foot_fits(int leg, glm::vec2 contact_ws, const Level& level) const {
+  const LegInfo& info = legs_[leg];
+  const glm::vec2 ankle_rel = -info.foot_offset_ms;
+  const glm::vec2 tip_rel = creature_->contact == ContactMode::kFlat ? glm::vec2(info.foot_length, 0.0f) : glm::vec2(0.0f);
+  const float a = facing_ * std::min({0.0f, ankle_rel.x, tip_rel.x});
+  const float b = facing_ * std::max({0.0f, ankle_rel.x, tip_rel.x});
+  const float height = std::max({0.02f, ankle_rel.y, 0.3f * info.foot_length});
+  const Box foot_box{{contact_ws.x + std::min(a, b) - 0.008f, contact_ws.y + 0.002f},
+                     {contact_ws.x + std::max(a, b) + 0.008f, contact_ws.y + height}};
+  return !level.overlaps(foot_box);
 }
 
 // [SECTION] swing planning (set_new_splines) and footholds ----------------------------------
@@ -796,7 +844,15 @@ void Animator::set_new_splines(int leg, const Level& level, float swing_phase) {
   f.easing = false;
   f.state = LegState::kSwing;
 
-  raise_for_clearance(leg, level);
+  if (!raise_for_clearance(leg, level)) {
+    // The way to the landing is walled off: the foot stays, the creature stops.
+    f.state = LegState::kStance;
+    f.to_ws = f.from_ws;
+    blocked_ = true;
+    blocked_leg_ = leg;
+    blocked_dir_ = facing_;
+    blocked_retry_ = 0.5f;
+  }
 }
 
 glm::vec2 Animator::leg_ankle(int leg, glm::vec2 contact_ms, glm::vec2 joint_ms, const Level* level, const Clearance& near,
@@ -943,6 +999,37 @@ void Animator::keep_arm_above_ground(const Limb& arm, const Level& level) {
   set_wrist(p, glm::mix(p.wrist, tuck, hi));
 }
 
+void Animator::keep_fin_clear(const Limb& fin, const Level& level) {
+  // A fin trailing into the ground or a step turns up at its root until it clears.
+  const Skeleton& sk = creature_->skeleton;
+  const size_t n = std::min<size_t>(fin.bones.size(), 7);
+  glm::vec2 p[8];
+  auto chain = [&] {  // model space: the fin's joints and its tip
+    Mat2x3 m = model_[fin.girdle_bone];
+    for (size_t k = 0; k < n; ++k) {
+      m = m * local_matrix(pose_.locals[fin.bones[k]]);
+      p[k] = bone_start(m);
+      if (k + 1 == n) p[n] = bone_end(m, sk.length(fin.bones[k]));
+    }
+  };
+  auto hits = [&] {
+    chain();
+    glm::vec2 w[8];
+    for (size_t k = 0; k <= n; ++k) w[k] = to_world(p[k]);
+    return polyline_hits_level(level, w, static_cast<int>(n + 1), segment_hits_);
+  };
+  if (n == 0 || !hits()) return;
+  const float base = pose_.locals[fin.bones[0]].angle_ls;
+  const float up = p[n].x >= p[0].x ? 1.0f : -1.0f;  // the turn that raises the tip
+  float lo = 0.0f, hi = 0.5f * kPi;
+  for (int k = 0; k < 7; ++k) {
+    const float mid = 0.5f * (lo + hi);
+    pose_.locals[fin.bones[0]].angle_ls = base + up * mid;
+    (hits() ? lo : hi) = mid;
+  }
+  pose_.locals[fin.bones[0]].angle_ls = wrap_angle(base + up * hi);
+}
+
 glm::vec2 Animator::swing_point(const Foot& f, float s) {
   // The blended prototype shapes the step [T 4.4.1]; on steps the foot rises before it moves
   // forward (up) or moves over before it descends (down), so it never clips a riser's corner.
@@ -954,8 +1041,9 @@ glm::vec2 Animator::swing_point(const Foot& f, float s) {
           f.from_ws.y + ease * up + f.lift * f.swing_y.position(s) + (f.raise != 0.0f ? f.raise * bump(s) : 0.0f)};
 }
 
-void Animator::raise_for_clearance(int leg, const Level& level) {
-  // Raise the curve until the whole foot (ankle to toe) clears every box [T 5.1e].
+bool Animator::raise_for_clearance(int leg, const Level& level) {
+  // Raise the curve until the whole foot (ankle to toe) clears every box [T 5.1e]; false when
+  // no reasonable lift does (the path runs into a wall).
   const LegInfo& info = legs_[leg];
   Foot& f = feet_[foot_of_leg_[leg]];
   const glm::vec2 ankle_rel = -info.foot_offset_ms;
@@ -986,10 +1074,15 @@ void Animator::raise_for_clearance(int leg, const Level& level) {
         need = std::max(need, depth / std::max(bump(static_cast<float>(k) / kSamples), 0.1f));
       }
     }
-    if (need <= 0.0f) break;
+    if (need <= 0.0f) {
+      update_swing_clearance(leg, level);
+      return true;
+    }
     f.raise += need;
+    if (f.raise > 2.0f * (info.reach + info.foot_span)) break;  // a wall, not a step
   }
   update_swing_clearance(leg, level);
+  return false;
 }
 
 void Animator::start_ease(int leg, const Level& level) {
@@ -1097,6 +1190,19 @@ void Animator::place_body(float dt, const Level& level) {
     root_y_ -= lower;
     if (lower <= 0.0f) break;
   }
+  // Whatever the legs ask, a girdle never sinks into the ground under it: it keeps an eighth
+  // of its standing height above the highest ground there (a leg may stretch, the body stays
+  // out).
+  float raise = 0.0f;
+  for (size_t g = 0; g < groups_.size(); ++g) {
+    const glm::vec2 joint = girdle_ws(static_cast<int>(g));
+    const float rest = groups_[g].rest_height;
+    const float half = 0.1f * rest;
+    if (auto below = level.ground_height_below(joint.x - half, joint.x + half, joint.y + 0.5f * rest, 100.0f)) {
+      raise = std::max(raise, below->height_ws + 0.12f * rest - joint.y);
+    }
+  }
+  root_y_ += raise;
   root_vy_ = dt > 0.0f ? (root_y_ - old_root) / dt : 0.0f;
 }
 
@@ -1185,24 +1291,30 @@ void Animator::build_pose(float dt, const Level& level) {
         const glm::vec2 p[4] = {to_world(joint), to_world(r.middle), to_world(r.end), to_world(tip)};
         return polyline_hits_level(level, p, F > 0.0f ? 4 : 3, segment_hits_);
       };
-      const float max_lift = joint.y - 0.3f * info.reach - ankle.y;
+      // Candidates run from the planned ankle straight up, then in towards a tuck under the
+      // joint; the first (bisected) that clears wins.
+      const glm::vec2 up = glm::vec2(ankle.x, std::max(ankle.y, joint.y - 0.3f * info.reach));
+      const glm::vec2 tuck = joint + glm::vec2(0.0f, -0.45f * info.reach);
+      auto candidate = [&](float t) {  // t in [0, 2]: 0 planned, 1 lifted, 2 tucked
+        const glm::vec2 a = t <= 1.0f ? glm::mix(ankle, up, t) : glm::mix(up, tuck, t - 1.0f);
+        return solve_two_bone_ik(joint, l0, l1, a, bend);
+      };
       const float min_y = std::min({joint.y, ik.middle.y, ik.end.y, ik.end.y + F * foot_dir.y});
-      if (max_lift > 0.0f && !near.clear_above(min_y) && leg_hits(ik)) {
-        const TwoBoneIkResult top = solve_two_bone_ik(joint, l0, l1, ankle + glm::vec2(0.0f, max_lift), bend);
-        if (!leg_hits(top)) {
-          float lo = 0.0f, hi = max_lift;
-          TwoBoneIkResult best = top;
+      if (!near.clear_above(min_y) && leg_hits(ik)) {
+        float lo = 0.0f, hi = -1.0f;
+        for (float t : {1.0f, 2.0f}) {
+          if (!leg_hits(candidate(t))) {
+            hi = t;
+            break;
+          }
+          lo = t;
+        }
+        if (hi > 0.0f) {
           for (int k = 0; k < 6; ++k) {
             const float mid = 0.5f * (lo + hi);
-            const TwoBoneIkResult r = solve_two_bone_ik(joint, l0, l1, ankle + glm::vec2(0.0f, mid), bend);
-            if (leg_hits(r)) {
-              lo = mid;
-            } else {
-              hi = mid;
-              best = r;
-            }
+            (leg_hits(candidate(mid)) ? lo : hi) = mid;
           }
-          ik = best;
+          ik = candidate(hi);
         }
       }
     }
@@ -1239,6 +1351,7 @@ void Animator::build_pose(float dt, const Level& level) {
   for (int fin : fins_) {
     const Limb& limb = c.limbs[fin];
     pose_.locals[limb.bones[0]].angle_ls += 0.12f * motion * std::sin(kTwoPi * (crawl_phase_ + phase_));
+    keep_fin_clear(limb, level);
   }
   for (int b : other_limb_bones_) model_[b] = model_[parents[b]] * local_matrix(pose_.locals[b]);
   world_dirty_ = true;

@@ -150,13 +150,17 @@ class Animator {
 
   void set_new_splines(int leg, const Level& level, float swing_phase);  // [T] name: plans a swing
   void start_ease(int leg, const Level& level);
-  void raise_for_clearance(int leg, const Level& level);
+  bool raise_for_clearance(int leg, const Level& level);
   static glm::vec2 swing_point(const Foot& f, float s);
   void reverse(const Level& level);
   void update_gait();
   float leg_target_offset(int leg) const;
   void update_target_offsets();  // leg_target_offset of every leg, when the gait blend moved
   bool find_landing(int leg, float x_wanted, const Level& level, glm::vec2* landing) const;
+  // Does leg i's foot, standing at contact_ws as the creature now faces, clear every box?
+  bool foot_fits(int leg, glm::vec2 contact_ws, const Level& level) const;
+  // The nearest place to near_ws (either way along the ground) where leg i's foot fits.
+  bool nearest_fit(int leg, glm::vec2 near_ws, const Level& level, glm::vec2* spot) const;
   // Where leg i would land if it lifted now at `speed` (swing_phase < 0: a full swing).
   float landing_x(int leg, float speed, float swing_phase = -1.0f) const;
   // v rotated by the body angle pitch_ + lean_.
@@ -179,6 +183,7 @@ class Animator {
   void place_body(float dt, const Level& level);
   void build_pose(float dt, const Level& level);
   void keep_arm_above_ground(const Limb& arm, const Level& level);
+  void keep_fin_clear(const Limb& fin, const Level& level);
   // Ankle of leg i for a contact point and girdle joint (model space) and the foot bone's
   // direction: the rest angle unless that over-extends the leg, else pivoted about the contact
   // (no further than the level allows, when one is given).
