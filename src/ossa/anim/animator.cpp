@@ -731,9 +731,11 @@ void Animator::reverse(const Level& level) {
     glm::vec2 landing;
     if (!nearest_fit(static_cast<int>(i), f.pos_ws, level, &landing)) continue;
     start_ease(static_cast<int>(i), level);
+    f.state = LegState::kSwing;
     f.to_ws = landing;
     raise_for_clearance(static_cast<int>(i), level);
     f.progress = 1.0f / 48.0f;
+    f.pos_ws = swing_point(f, f.progress);
   }
 }
 
