@@ -45,8 +45,13 @@ bool crossed(float prev, float now, float x) {
   const float to_x = frac(x - prev);
   return to_x > 0.0f && to_x <= d;
 }
+// Below this a decaying quantity is zero: left alone, exponential decays run into denormal
+// floats after a few thousand ticks, and arithmetic on those is a hundred times slower.
+constexpr float kNegligible = 1e-12f;
+float flush(float x) { return std::fabs(x) < kNegligible ? 0.0f : x; }
+
 // Exponential approach: value moves towards target, keeping a fraction `keep` = exp(-rate·dt).
-float approach(float value, float target, float keep) { return target + (value - target) * keep; }
+float approach(float value, float target, float keep) { return target + flush((value - target) * keep); }
 // The convex hull of points (Andrew's monotone chain), counter-clockwise.
 std::vector<glm::vec2> convex_hull(std::vector<glm::vec2> p) {
   std::sort(p.begin(), p.end(), [](glm::vec2 a, glm::vec2 b) { return a.x < b.x || (a.x == b.x && a.y < b.y); });
@@ -1225,9 +1230,8 @@ void Animator::build_pose(float dt, const Level& level) {
     if (dt > 0.0f) {
       const float k = params_.tail_stiffness;
       const float damping = 2.0f * params_.tail_damping * std::sqrt(k);
-      tail_rate_ += (k * (target - tail_angle_) - damping * tail_rate_) * dt;
-      tail_angle_ += tail_rate_ * dt;
-      tail_angle_ = std::clamp(tail_angle_, -0.8f, 0.8f);
+      tail_rate_ = flush(tail_rate_ + (k * (target - tail_angle_) - damping * tail_rate_) * dt);
+      tail_angle_ = flush(std::clamp(tail_angle_ + tail_rate_ * dt, -0.8f, 0.8f));
     }
     const float n = static_cast<float>(c.tail.size());
     for (size_t i = 0; i < c.tail.size(); ++i) pose_.locals[c.tail[i]].angle_ls += tail_angle_ * 2.0f / n;
