@@ -1158,13 +1158,15 @@ void Animator::place_body(float dt, const Level& level) {
     const float angle_extra = lean_;
     if (groups_.size() >= 2) {
       const glm::vec2 df = groups_.front().joint_ms - root_rest, db = groups_.back().joint_ms - root_rest;
-      const glm::vec2 d = df - db;
+      const glm::vec2 d = df - db;  // the rest chord between the girdles
       const float len = std::sqrt(d.x * d.x + d.y * d.y);
       const float dy = height.front() - height.back();
-      const float total = std::asin(std::clamp(dy / std::max(len, 1e-4f), -0.9f, 0.9f)) - std::atan2(d.y, d.x);
+      const float total = std::asin(std::clamp(dy / std::max(len, 1e-4f), -0.9f, 0.9f)) - fast_atan2(d.y, d.x);
       target_pitch = std::clamp(wrap_angle(total - angle_extra), -0.7f, 0.7f);
       const float a = target_pitch + angle_extra;
-      target_root = 0.5f * (height.front() - rotate(df, a).y + height.back() - rotate(db, a).y);
+      const float c = std::cos(a), s = std::sin(a);
+      const float df_y = s * df.x + c * df.y, db_y = s * db.x + c * db.y;  // rotate(·, a).y
+      target_root = 0.5f * (height.front() - df_y + height.back() - db_y);
     } else {
       const glm::vec2 d = groups_.front().joint_ms - root_rest;
       target_root = height.front() - rotate(d, angle_extra).y;
@@ -1286,7 +1288,7 @@ void Animator::build_pose(float dt, const Level& level) {
         ankle.y = joint.y - std::sqrt(r * r - dx * dx);
       }
     }
-    const float foot_angle = foot_dir == info.foot_dir_ms ? info.foot_angle_ms : std::atan2(foot_dir.y, foot_dir.x);
+    const float foot_angle = foot_dir == info.foot_dir_ms ? info.foot_angle_ms : fast_atan2(foot_dir.y, foot_dir.x);
     const float l0 = sk.length(limb.bones[0]), l1 = sk.length(limb.bones[1]), bend = static_cast<float>(limb.bend_sign);
     TwoBoneIkResult ik = solve_two_bone_ik(joint, l0, l1, ankle, bend);
     if (f.state == LegState::kSwing) {
