@@ -1199,6 +1199,21 @@ void Animator::place_body(float dt, const Level& level) {
     root_y_ -= lower;
     if (lower <= 0.0f) break;
   }
+  // Nor fold a leg on the ground tighter than it can (short legs with long shins on a low
+  // body): raise the body until each stance ankle is at least the folded length away.
+  float fold_raise = 0.0f;
+  for (size_t i = 0; i < legs_.size(); ++i) {
+    const Foot& f = feet_[foot_of_leg_[i]];
+    if (f.state != LegState::kStance) continue;
+    const Limb& limb = creature_->limbs[legs_[i].limb];
+    const float fold = 1.02f * std::fabs(creature_->skeleton.length(limb.bones[0]) - creature_->skeleton.length(limb.bones[1]));
+    const glm::vec2 joint = to_model(girdle_ws(legs_[i].group));
+    glm::vec2 dir;
+    const glm::vec2 ankle = leg_ankle(static_cast<int>(i), to_model(f.pos_ws), joint, &level, f.stance_clear, &dir, nullptr);
+    const float dx = std::fabs(ankle.x - joint.x);
+    if (dx < fold) fold_raise = std::max(fold_raise, ankle.y + std::sqrt(fold * fold - dx * dx) - joint.y);
+  }
+  root_y_ += fold_raise;
   // Whatever the legs ask, a girdle never sinks into the ground under it: it keeps an eighth
   // of its standing height above the highest ground there (a leg may stretch, the body stays
   // out).
@@ -1286,6 +1301,13 @@ void Animator::build_pose(float dt, const Level& level) {
       const float dx = ankle.x - joint.x;
       if (glm::length(ankle - joint) > r && std::fabs(dx) < r && ankle.y < joint.y) {
         ankle.y = joint.y - std::sqrt(r * r - dx * dx);
+      }
+      // A foot lifted closer to the joint than the leg folds (short legs, high swings) moves
+      // out sideways to where the folded leg reaches, not down through the ground.
+      const float fold = 1.02f * std::fabs(sk.length(limb.bones[0]) - sk.length(limb.bones[1]));
+      const glm::vec2 d = ankle - joint;
+      if (glm::dot(d, d) < fold * fold && std::fabs(d.y) < fold) {
+        ankle.x = joint.x + (d.x >= 0.0f ? 1.0f : -1.0f) * std::sqrt(fold * fold - d.y * d.y);
       }
     }
     const float foot_angle = foot_dir == info.foot_dir_ms ? info.foot_angle_ms : fast_atan2(foot_dir.y, foot_dir.x);
