@@ -292,10 +292,33 @@ Animator::Animator(const Creature& creature, SplinePrototypes prototypes, Animat
     if (dynamic_bone_[b] || (limb_bone[b] && !leg_ik_bone[b])) touched_bones_.push_back(b);
   }
   group_height_.resize(groups_.size());
+  leg_dirs_.resize(legs_.size());
 }
 
 float Animator::walk_speed() const { return std::sqrt(0.5f * params_.gravity * hip_height_); }
 float Animator::run_speed() const { return std::sqrt(2.5f * params_.gravity * hip_height_); }
+
+const Pose& Animator::pose() const {
+  if (leg_angles_dirty_) {
+    // The legs' joint angles from the directions build_pose left (the matrices need none).
+    const Creature& c = *creature_;
+    for (size_t i = 0; i < legs_.size(); ++i) {
+      const LegInfo& info = legs_[i];
+      const Limb& limb = c.limbs[info.limb];
+      const auto& [upper_dir, lower_dir, foot_dir] = leg_dirs_[i];
+      const float girdle = std::isnan(info.girdle_rel_angle) ? bone_angle(model_[limb.girdle_bone])
+                                                              : pose_.locals[c.root].angle_ls + info.girdle_rel_angle;
+      const float upper = fast_atan2(upper_dir.y, upper_dir.x);
+      const float lower = fast_atan2(upper_dir.x * lower_dir.y - upper_dir.y * lower_dir.x, glm::dot(upper_dir, lower_dir));
+      const float foot = foot_dir == info.foot_dir_ms ? info.foot_angle_ms : fast_atan2(foot_dir.y, foot_dir.x);
+      pose_.locals[limb.bones[0]].angle_ls = wrap_angle(upper - girdle);
+      pose_.locals[limb.bones[1]].angle_ls = lower;
+      pose_.locals[limb.bones[2]].angle_ls = wrap_angle(foot - (upper + lower));
+    }
+    leg_angles_dirty_ = false;
+  }
+  return pose_;
+}
 
 Mat2x3 Animator::model_to_world() const {
   Mat2x3 m;
@@ -518,10 +541,13 @@ void Animator::update(float dt, float desired_velocity, const Level& level) {
       const Foot& f = feet_[foot_of_leg_[i]];
       const LegInfo& info = legs_[i];
       const glm::vec2 joint = to_model(girdle_ws(info.group));
-      float r;
       const bool stance = f.state == LegState::kStance;
-      const glm::vec2 anchor = leg_anchor(static_cast<int>(i), to_model(stance ? f.pos_ws : f.to_ws), joint, level,
-                                          stance ? f.stance_clear : f.swing_clear, &r);
+      const glm::vec2 contact = to_model(stance ? f.pos_ws : f.to_ws);
+      // The anchor lies within a foot's length of the contact point: a foot that far ahead of
+      // where the joint goes cannot hold it back.
+      if (contact.x - info.foot_span > joint.x + std::fabs(dx)) continue;
+      float r;
+      const glm::vec2 anchor = leg_anchor(static_cast<int>(i), contact, joint, level, stance ? f.stance_clear : f.swing_clear, &r);
       const float h = joint.y - anchor.y;
       // How far forward the joint may go with this foot still in reach (model x).
       const float ahead = anchor.x + std::sqrt(std::max(r * r - h * h, 0.0f)) - joint.x;
@@ -565,9 +591,12 @@ void Animator::update(float dt, float desired_velocity, const Level& level) {
         // A foot left behind (a gait change, a shortened step) lifts before it would slide.
         const LegInfo& info = legs_[i];
         const glm::vec2 joint = to_model(girdle_ws(info.group));
-        float r;
-        const glm::vec2 anchor = leg_anchor(static_cast<int>(i), to_model(f.pos_ws), joint, level, f.stance_clear, &r);
-        if (glm::length(anchor - joint) > 0.97f * r && anchor.x < joint.x) lift = true;
+        const glm::vec2 contact = to_model(f.pos_ws);
+        if (!lift && contact.x - info.foot_span < joint.x) {  // else its anchor is ahead of the joint
+          float r;
+          const glm::vec2 anchor = leg_anchor(static_cast<int>(i), contact, joint, level, f.stance_clear, &r);
+          if (glm::length(anchor - joint) > 0.97f * r && anchor.x < joint.x) lift = true;
+        }
         if (lift) set_new_splines(static_cast<int>(i), level, std::max(1.0f - p, 0.05f));
       } else if (!f.easing) {
         f.progress += f.rate * dphi;
@@ -1208,6 +1237,8 @@ void Animator::place_body(float dt, const Level& level) {
     const Limb& limb = creature_->limbs[legs_[i].limb];
     const float fold = 1.02f * std::fabs(creature_->skeleton.length(limb.bones[0]) - creature_->skeleton.length(limb.bones[1]));
     const glm::vec2 joint = to_model(girdle_ws(legs_[i].group));
+    // The ankle lies within a foot's length of the contact point.
+    if (glm::length(to_model(f.pos_ws) - joint) - legs_[i].foot_span >= fold) continue;
     glm::vec2 dir;
     const glm::vec2 ankle = leg_ankle(static_cast<int>(i), to_model(f.pos_ws), joint, &level, f.stance_clear, &dir, nullptr);
     const float dx = std::fabs(ankle.x - joint.x);
@@ -1310,9 +1341,19 @@ void Animator::build_pose(float dt, const Level& level) {
         ankle.x = joint.x + (d.x >= 0.0f ? 1.0f : -1.0f) * std::sqrt(fold * fold - d.y * d.y);
       }
     }
-    const float foot_angle = foot_dir == info.foot_dir_ms ? info.foot_angle_ms : fast_atan2(foot_dir.y, foot_dir.x);
     const float l0 = sk.length(limb.bones[0]), l1 = sk.length(limb.bones[1]), bend = static_cast<float>(limb.bend_sign);
-    TwoBoneIkResult ik = solve_two_bone_ik(joint, l0, l1, ankle, bend);
+    auto leg_ik = [&](glm::vec2 target) {  // directions only: the angles are for pose() (lazily)
+      TwoBoneIkJob job;
+      job.root = joint;
+      job.upper_length = l0;
+      job.lower_length = l1;
+      job.target = target;
+      job.bend_sign = bend;
+      job.compute_angles = false;
+      job.run();
+      return job.result;
+    };
+    TwoBoneIkResult ik = leg_ik(ankle);
     if (f.state == LegState::kSwing) {
       // A knee or shin swinging into a step lifts the foot until the whole leg clears.
       const float F = info.foot_span;
@@ -1327,7 +1368,7 @@ void Animator::build_pose(float dt, const Level& level) {
       const glm::vec2 tuck = joint + glm::vec2(0.0f, -0.45f * info.reach);
       auto candidate = [&](float t) {  // t in [0, 2]: 0 planned, 1 lifted, 2 tucked
         const glm::vec2 a = t <= 1.0f ? glm::mix(ankle, up, t) : glm::mix(up, tuck, t - 1.0f);
-        return solve_two_bone_ik(joint, l0, l1, a, bend);
+        return leg_ik(a);
       };
       const float min_y = std::min({joint.y, ik.middle.y, ik.end.y, ik.end.y + F * foot_dir.y});
       if (!near.clear_above(min_y) && leg_hits(ik)) {
@@ -1348,11 +1389,7 @@ void Animator::build_pose(float dt, const Level& level) {
         }
       }
     }
-    const float girdle_angle = std::isnan(info.girdle_rel_angle) ? bone_angle(model_[limb.girdle_bone])
-                                                                 : pose_.locals[c.root].angle_ls + info.girdle_rel_angle;
-    pose_.locals[limb.bones[0]].angle_ls = wrap_angle(ik.upper_angle - girdle_angle);
-    pose_.locals[limb.bones[1]].angle_ls = ik.lower_angle;
-    pose_.locals[limb.bones[2]].angle_ls = wrap_angle(foot_angle - (ik.upper_angle + ik.lower_angle));
+    leg_dirs_[i] = {ik.upper_dir, ik.lower_dir, foot_dir};
     // The chain's matrices straight from the solution's directions (no trigonometry).
     auto frame = [](glm::vec2 dir, glm::vec2 origin) {
       Mat2x3 m;
@@ -1386,6 +1423,7 @@ void Animator::build_pose(float dt, const Level& level) {
   for (int b : other_limb_bones_) model_[b] = model_[parents[b]] * local_matrix(pose_.locals[b]);
   world_dirty_ = true;
   model_dirty_ = true;
+  leg_angles_dirty_ = true;
 }
 
 }  // namespace ossa

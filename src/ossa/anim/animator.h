@@ -23,6 +23,7 @@
 //
 // Everything is deterministic: the same inputs give bit-identical poses.
 
+#include <array>
 #include <cmath>
 #include <vector>
 
@@ -59,7 +60,9 @@ class Animator {
 
   // ---- Output -----------------------------------------------------------------------------
   const Creature& creature() const { return *creature_; }
-  const Pose& pose() const { return pose_; }
+  // The joint values of the current pose (the legs' angles are worked out on first use after
+  // an update: the matrices below do not need them).
+  const Pose& pose() const;
   Mat2x3 model_to_world() const;
   // Model-space matrices of the current pose. update() computes the bones it needs (spine to
   // the girdles, limbs); the rest (ribs, neck, skull, tail...) on first use after an update,
@@ -213,7 +216,10 @@ class Animator {
   float root_rest_y_ = 0.0f;         // model-space y of the root in the rest pose
   float body_half_length_ = 0.5f;
 
-  Pose pose_;
+  mutable Pose pose_;
+  // Per leg: upper, lower and foot bone directions (model space) of the current pose.
+  std::vector<std::array<glm::vec2, 3>> leg_dirs_;
+  mutable bool leg_angles_dirty_ = false;
   std::vector<Mat2x3> model_rest_;
   mutable std::vector<Mat2x3> model_;
   mutable std::vector<Mat2x3> world_;
