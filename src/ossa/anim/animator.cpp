@@ -1084,6 +1084,15 @@ bool Animator::raise_for_clearance(int leg, const Level& level) {
   Foot& f = feet_[foot_of_leg_[leg]];
   const glm::vec2 ankle_rel = -info.foot_offset_ms;
   const glm::vec2 tip_rel = creature_->contact == ContactMode::kFlat ? glm::vec2(info.foot_length, 0.0f) : glm::vec2(0.0f);
+  // Nothing near the path rises above its lower end (flat ground, or down a slope): a coarse
+  // check that the curve stays above that suffices.
+  update_swing_clearance(leg, level);
+  if (f.swing_clear.top < f.swing_clear.base) {
+    const float lowest = std::min(f.from_ws.y, f.to_ws.y) - std::min(0.0f, ankle_rel.y);
+    bool above = true;
+    for (int k = 1; k < 12 && above; ++k) above = swing_point(f, static_cast<float>(k) / 12.0f).y >= lowest;
+    if (above) return true;
+  }
   constexpr int kSamples = 48;
   Box foot[kSamples];
   std::vector<int>& hits = clearance_hits_;
