@@ -733,15 +733,15 @@ float Animator::leg_target_offset(int leg) const {
 
 void Animator::reverse(const Level& level) {
   // Mirror in place: leg pairs take over the feet standing where their girdle will be
-  // (group i ← group n-1-i, same side), and the root shifts so girdles land on those feet.
+  // (group i ← group n-1-i, same side), and the root shifts so the front and back girdles land
+  // on each other's feet.
   const int n = static_cast<int>(groups_.size());
   if (n > 0) {
     std::vector<int> old = foot_of_leg_;
-    float shift = 0.0f;
+    const float shift = groups_.front().joint_ms.x + groups_.back().joint_ms.x;
     for (int g = 0; g < n; ++g) {
       const Group& mine = groups_[g];
       const Group& other = groups_[n - 1 - g];
-      shift += mine.joint_ms.x + other.joint_ms.x;
       for (size_t k = 0; k < mine.legs.size(); ++k) {
         const int src = other.legs[std::min(k, other.legs.size() - 1)];
         foot_of_leg_[mine.legs[k]] = old[src];
@@ -752,11 +752,42 @@ void Animator::reverse(const Level& level) {
     bool ok = true;
     for (int f : foot_of_leg_) ok &= (seen[f]++ == 0);
     if (!ok) foot_of_leg_ = old;
-    body_x_ += facing_ * shift / static_cast<float>(n);
+    body_x_ += facing_ * shift;
   }
   facing_ = -facing_;
   lean_ = 0.0f;
   snap_body_ = true;  // the body takes its new height and pitch at once (feet must not jump)
+  // Girdles spaced unevenly along the body (three leg pairs) cannot all land on feet: a leg
+  // whose foot (standing or in the air) is now out of reach lifts from the nearest foot on the
+  // ground it reaches and steps under its girdle.
+  for (size_t i = 0; i < legs_.size(); ++i) {
+    Foot& f = feet_[foot_of_leg_[i]];
+    const LegInfo& info = legs_[i];
+    const float h = groups_[info.group].rest_height * params_.stance_height;
+    const float reach_x = 0.95f * std::sqrt(std::max(info.contact_reach * info.contact_reach - h * h, 0.0f));
+    const float joint_x = girdle_ws(info.group).x;
+    if (std::fabs(f.pos_ws.x - joint_x) <= reach_x) continue;
+    const Foot* from = nullptr;
+    for (const Foot& other : feet_) {
+      if (&other == &f || other.state != LegState::kStance || std::fabs(other.pos_ws.x - joint_x) > reach_x) continue;
+      if (!from || std::fabs(other.pos_ws.x - joint_x) < std::fabs(from->pos_ws.x - joint_x)) from = &other;
+    }
+    glm::vec2 landing;
+    if (!from) continue;
+    f.pos_ws = from->pos_ws;
+    if (!find_landing(static_cast<int>(i), joint_x, level, &landing)) landing = f.pos_ws;
+    f.from_ws = f.pos_ws;
+    f.to_ws = landing;
+    f.swing_x = spline_prototypes_[PrototypeId::kLegSwingX].blended(run_factor_);
+    f.swing_y = spline_prototypes_[PrototypeId::kLegSwingY].blended(run_factor_);
+    f.lift = 0.5f * info.reach;
+    f.raise = 0.0f;
+    f.progress = 0.0f;
+    f.rate = 1.0f / 0.3f;
+    f.easing = true;
+    f.state = LegState::kSwing;
+    raise_for_clearance(static_cast<int>(i), level);
+  }
   // Feet now point the other way: one that would reach into a step takes a quick step to the
   // nearest place it fits (already lifted on this tick).
   for (size_t i = 0; i < legs_.size(); ++i) {
