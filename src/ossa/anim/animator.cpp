@@ -588,6 +588,7 @@ void Animator::update(float dt, float desired_velocity, const Level& level) {
       const float p = frac(phase_ + f.offset);
       if (f.state == LegState::kStance) {
         bool lift = starting ? p >= duty_ : crossed(f.phase_prev, p, duty_);
+        lift |= f.holds_body;
         // A foot left behind (a gait change, a shortened step) lifts before it would slide.
         const LegInfo& info = legs_[i];
         const glm::vec2 joint = to_model(girdle_ws(info.group));
@@ -1056,14 +1057,23 @@ void Animator::keep_arm_above_ground(const Limb& arm, const Level& level) {
     return polyline_hits_level(level, pts, 4, segment_hits_);
   };
   if (!hits(p)) return;
-  const glm::vec2 tuck = p.shoulder + glm::normalize(glm::vec2(-1.0f, -0.3f)) * std::max(std::fabs(l1 - l2) + 0.01f, 0.35f * (l1 + l2));
-  float lo = 0.0f, hi = 1.0f;  // fractions of the way to the tuck: lo hits, hi is the answer
-  for (int k = 0; k < 6; ++k) {
-    const float mid = 0.5f * (lo + hi);
-    set_wrist(p, glm::mix(p.wrist, tuck, mid));
-    (hits(current()) ? lo : hi) = mid;
+  // Tucked under the shoulder, else folded up in front of the chest, else up behind it: the
+  // first tuck that clears, approached only as far as needed.
+  const float tuck_len = std::max(std::fabs(l1 - l2) + 0.01f, 0.35f * (l1 + l2));
+  for (glm::vec2 dir : {glm::vec2(-1.0f, -0.3f), glm::vec2(0.4f, 1.0f), glm::vec2(-0.6f, 1.0f)}) {
+    const glm::vec2 tuck = p.shoulder + glm::normalize(dir) * tuck_len;
+    set_wrist(p, tuck);
+    if (hits(current())) continue;
+    float lo = 0.0f, hi = 1.0f;  // fractions of the way to the tuck: lo hits, hi clears
+    for (int k = 0; k < 6; ++k) {
+      const float mid = 0.5f * (lo + hi);
+      set_wrist(p, glm::mix(p.wrist, tuck, mid));
+      (hits(current()) ? lo : hi) = mid;
+    }
+    set_wrist(p, glm::mix(p.wrist, tuck, hi));
+    return;
   }
-  set_wrist(p, glm::mix(p.wrist, tuck, hi));
+  set_wrist(p, p.shoulder + glm::normalize(glm::vec2(-1.0f, -0.3f)) * tuck_len);
 }
 
 void Animator::keep_fin_clear(const Limb& fin, const Level& level) {
@@ -1180,6 +1190,7 @@ void Animator::start_ease(int leg, const Level& level) {
 // [SECTION] body placement ------------------------------------------------------------------
 
 void Animator::place_body(float dt, const Level& level) {
+  for (Foot& f : feet_) f.holds_body = false;
   const float old_root = root_y_;
   const glm::vec2 root_rest(0.0f, root_rest_y_);
   float target_root = root_y_, target_pitch = 0.0f;
@@ -1264,6 +1275,12 @@ void Animator::place_body(float dt, const Level& level) {
       if (dx >= r) continue;
       const float allowed = anchor.y + std::sqrt(r * r - dx * dx);
       lower = std::max(lower, joint.y - allowed);
+      // A foot left behind and below (stairs) that drags the body down lifts on the next tick
+      // (see update) rather than fold the other legs into the step ahead.
+      if (pass == 0 && f.state == LegState::kStance && anchor.x < joint.x &&
+          joint.y - allowed > 0.05f * groups_[info.group].rest_height) {
+        feet_[foot_of_leg_[i]].holds_body = true;
+      }
     }
     root_y_ -= lower;
     if (lower <= 0.0f) break;
@@ -1295,6 +1312,16 @@ void Animator::place_body(float dt, const Level& level) {
     const float half = 0.1f * rest;
     if (auto below = level.ground_height_below(joint.x - half, joint.x + half, joint.y + 0.5f * rest, 100.0f)) {
       raise = std::max(raise, below->height_ws + 0.12f * rest - joint.y);
+    }
+  }
+  // Shoulders carrying arms too (the arms fold and lift, but their root must stay out).
+  for (int a : arms_) {
+    const glm::vec2 rest_joint = bone_start(model_rest_[creature_->limbs[a].bones[0]]);
+    const glm::vec2 j = rotate_body(rest_joint - glm::vec2(0.0f, root_rest_y_));
+    const glm::vec2 joint = to_world({j.x, j.y + root_y_});
+    const float half = 0.05f * hip_height_;
+    if (auto below = level.ground_height_below(joint.x - half, joint.x + half, joint.y + 0.5f * hip_height_, 100.0f)) {
+      raise = std::max(raise, below->height_ws + 0.1f * hip_height_ - joint.y);
     }
   }
   root_y_ += raise;

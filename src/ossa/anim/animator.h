@@ -147,6 +147,7 @@ class Animator {
     float offset = 0.0f;             // phase offset (eases toward the owning leg's target)
     float phase_prev = 0.0f;
     float hover = 0.0f;              // seconds spent waiting above the landing point
+    bool holds_body = false;         // standing behind and below, it held the body down
     Clearance stance_clear;          // around pos_ws while in stance
     Clearance swing_clear;           // around the path of the current swing
   };
