@@ -1302,6 +1302,38 @@ void Animator::place_body(float dt, const Level& level) {
     if (dx < fold) fold_raise = std::max(fold_raise, ankle.y + std::sqrt(fold * fold - dx * dx) - joint.y);
   }
   root_y_ += fold_raise;
+  // Nor kneel: a leg folded so far that its knee would touch the ground (sprawling legs on a
+  // low body, or lifted in a swing) raises the body until the knee clears the ground under it.
+  for (int pass = 0; pass < 2; ++pass) {
+    float knee_raise = 0.0f;
+    for (size_t i = 0; i < legs_.size(); ++i) {
+      const Foot& f = feet_[foot_of_leg_[i]];
+      const bool stance = f.state == LegState::kStance;
+      const LegInfo& info = legs_[i];
+      const Limb& limb = creature_->limbs[info.limb];
+      const glm::vec2 joint = to_model(girdle_ws(info.group));
+      glm::vec2 dir;
+      const glm::vec2 ankle = leg_ankle(static_cast<int>(i), to_model(f.pos_ws), joint, &level,
+                                        stance ? f.stance_clear : f.swing_clear, &dir, nullptr);
+      const float margin = 0.02f * info.reach;
+      // The knee is never below the lower of joint and ankle by more than the shin: a cheap
+      // test before the IK.
+      if (std::min(joint.y, ankle.y) - creature_->skeleton.length(limb.bones[1]) > f.pos_ws.y + margin) continue;
+      TwoBoneIkJob ik;
+      ik.root = joint;
+      ik.upper_length = creature_->skeleton.length(limb.bones[0]);
+      ik.lower_length = creature_->skeleton.length(limb.bones[1]);
+      ik.target = ankle;
+      ik.bend_sign = static_cast<float>(limb.bend_sign);
+      ik.compute_angles = false;
+      ik.run();
+      const glm::vec2 knee = to_world(ik.result.middle);
+      auto ground = level.ground_height_below(knee.x - 0.005f, knee.x + 0.005f, knee.y + info.reach, 2.0f * info.reach);
+      if (ground) knee_raise = std::max(knee_raise, ground->height_ws + margin - knee.y);
+    }
+    if (knee_raise <= 0.0f) break;
+    root_y_ += std::min(knee_raise, 0.5f * hip_height_);
+  }
   // Whatever the legs ask, a girdle never sinks into the ground under it: it keeps an eighth
   // of its standing height above the highest ground there (a leg may stretch, the body stays
   // out).
