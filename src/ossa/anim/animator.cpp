@@ -643,11 +643,30 @@ void Animator::update(float dt, float desired_velocity, const Level& level) {
       const glm::vec2 joint = to_model(girdle_ws(info.group));
       float r;
       const glm::vec2 anchor = leg_anchor(static_cast<int>(i), to_model(f.to_ws), joint, level, f.swing_clear, &r);
-      if (glm::length(anchor - joint) > r && std::fabs(anchor.x - joint.x) < r && f.hover < 0.5f) {
-        f.hover += dt;
-        f.progress = 1.0f;
-        f.pos_ws = f.to_ws;
-        continue;
+      if (glm::length(anchor - joint) > r && std::fabs(anchor.x - joint.x) < r) {
+        if (f.hover < 0.5f) {
+          f.hover += dt;
+          f.progress = 1.0f;
+          f.pos_ws = f.to_ws;
+          continue;
+        }
+        // The body did not come down in time (other feet hold it up): set the foot down on the
+        // nearest place below the joint it reaches instead, from where it hangs now.
+        glm::vec2 spot;
+        const glm::vec2 below_joint = to_world({joint.x, f.to_ws.y});
+        if (nearest_fit(static_cast<int>(i), below_joint, level, &spot) &&
+            glm::length(to_model(spot) - joint) < 0.97f * info.contact_reach) {
+          const float R = info.contact_reach;
+          const float dxj = to_model(f.to_ws).x - joint.x;
+          const glm::vec2 hanging = to_world({to_model(f.to_ws).x, joint.y - std::sqrt(std::max(R * R - dxj * dxj, 0.0f))});
+          f.pos_ws = hanging;
+          start_ease(static_cast<int>(i), level);
+          f.to_ws = spot;
+          raise_for_clearance(static_cast<int>(i), level);
+          f.hover = 0.0f;
+          f.pos_ws = swing_point(f, 0.0f);
+          continue;
+        }
       }
     }
     if (f.progress >= 1.0f) {
