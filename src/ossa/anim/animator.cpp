@@ -889,6 +889,12 @@ bool Animator::find_landing(int leg, float x_wanted, const Level& level, glm::ve
     const float y = hit->height_ws;
     const Box foot_box{{x + span_lo + 0.002f, y + 0.002f}, {x + span_hi - 0.002f, y + height}};
     if (level.overlaps(foot_box)) continue;
+    // Down a step the shin comes from above and behind: keep the foot off the riser it steps
+    // down from, or the shin cuts the step's edge.
+    const float back = facing_ > 0 ? x + span_lo : x + span_hi;
+    const float gap = 0.25f * groups_[info.group].rest_height;
+    const Box behind{{std::min(back, back - facing_ * gap), y + 0.02f}, {std::max(back, back - facing_ * gap), y + up}};
+    if (k + 1 < 600 && level.overlaps(behind)) continue;
     *landing = {x, y};
     return true;
   }
