@@ -725,7 +725,12 @@ void Animator::update_gait() {
 }
 
 void Animator::update_target_offsets() {
-  if (trot_factor_ == offsets_trot_ && gallop_factor_ == offsets_gallop_ && target_offset_.size() == legs_.size()) return;
+  // The offsets follow the gait blend; a change below 1e-4 of it moves them by less than
+  // 1e-4 of a cycle, which the feet's own easing towards them swallows.
+  if (std::fabs(trot_factor_ - offsets_trot_) < 1e-4f && std::fabs(gallop_factor_ - offsets_gallop_) < 1e-4f &&
+      target_offset_.size() == legs_.size()) {
+    return;
+  }
   offsets_trot_ = trot_factor_;
   offsets_gallop_ = gallop_factor_;
   target_offset_.resize(legs_.size());
@@ -1337,13 +1342,14 @@ void Animator::place_body(float dt, const Level& level) {
       const LegInfo& info = legs_[i];
       const Limb& limb = creature_->limbs[info.limb];
       const glm::vec2 joint = to_model(girdle_ws(info.group));
+      const float margin = 0.02f * info.reach;
+      // The knee is no lower than a thigh below the joint nor a shin below the ankle: cheap
+      // tests before the IK.
+      if (joint.y - creature_->skeleton.length(limb.bones[0]) > f.pos_ws.y + margin) continue;
       glm::vec2 dir;
       const glm::vec2 ankle = leg_ankle(static_cast<int>(i), to_model(f.pos_ws), joint, &level,
                                         stance ? f.stance_clear : f.swing_clear, &dir, nullptr);
-      const float margin = 0.02f * info.reach;
-      // The knee is never below the lower of joint and ankle by more than the shin: a cheap
-      // test before the IK.
-      if (std::min(joint.y, ankle.y) - creature_->skeleton.length(limb.bones[1]) > f.pos_ws.y + margin) continue;
+      if (ankle.y - creature_->skeleton.length(limb.bones[1]) > f.pos_ws.y + margin) continue;
       TwoBoneIkJob ik;
       ik.root = joint;
       ik.upper_length = creature_->skeleton.length(limb.bones[0]);
