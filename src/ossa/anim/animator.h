@@ -18,8 +18,11 @@
 //   4. body: each girdle's height = mean ground under its feet + its rest height + bob; the
 //      spine pitches between girdles and leans into speed, clamped so no stance leg
 //      over-extends; the head stays level, the tail swings with damped secondary motion;
-//   5. pose: two-bone IK for every leg, arm swing counter to the same-side leg, folded wings,
-//      trailing fins, a travelling wave for legless bodies.
+//   5. pose: two-bone IK for every leg (a hoof or toe rolls about its contact point when the
+//      leg would over-extend, so the whole limb reaches), arm swing counter to the same-side
+//      leg, folded wings, trailing fins, a travelling wave for legless bodies. Limbs keep out
+//      of the level: a swinging leg that meets a step lifts or tucks its foot, arms fold, fins
+//      turn up; the body never folds a leg tighter than it bends nor lets a knee touch ground.
 //
 // Everything is deterministic: the same inputs give bit-identical poses.
 
