@@ -214,12 +214,9 @@ TEST_CASE("the joint values of pose() give the animator's matrices", "[anim]") {
   }
 }
 
-TEST_CASE("an hour of random input on random levels gives finite poses", "[anim][long]") {
-  // Ten random creatures on ten random levels of steps and ledges, driven by random sticks.
-  // Issue 5 asks for no penetration above 1 mm here. Five of the ten meet it and are held to
-  // it (two legless crawlers, one with fins, two bipeds and a quadruped); the other
-  // five (seeds 2, 3, 4, 8, 9) still push a foot or shin up to ~14 cm into a step now and then
-  // (feet set down out of reach after a turn or a long wait), so for them it is not claimed.
+TEST_CASE("an hour of random input on random levels: finite poses, no limb in a ledge", "[anim][long]") {
+  // Ten random creatures on ten random levels of steps and ledges, driven by random sticks:
+  // no NaN and no limb bone more than 1 mm inside a collider.
   // Under sanitizers the simulated time is cut to a tenth.
 #if defined(__SANITIZE_ADDRESS__)
   const int seconds_each = 36;
@@ -254,7 +251,7 @@ TEST_CASE("an hour of random input on random levels gives finite poses", "[anim]
       x_max = std::max(x_max, walker.player->animator().x());
     }
     CHECK(probe.nan_count == 0);
-    if (seed == 1 || seed == 5 || seed == 6 || seed == 7 || seed == 10) CHECK(probe.max_penetration_m <= 0.001f);
+    CHECK(probe.max_penetration_m <= 0.001f);
     CHECK(x_max - x_min > 1.0f);  // it did get around
     CHECK(x_min > -2.0f);
     CHECK(x_max < 200.0f);

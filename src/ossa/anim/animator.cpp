@@ -669,6 +669,19 @@ void Animator::update(float dt, float desired_velocity, const Level& level) {
         }
       }
     }
+    if (f.progress >= 1.0f && !foot_fits(static_cast<int>(i), f.to_ws, level)) {
+      // Planned facing the other way (the creature turned meanwhile): the foot would reach
+      // into a step. It moves on to the nearest place it fits.
+      glm::vec2 spot;
+      if (nearest_fit(static_cast<int>(i), f.to_ws, level, &spot) && glm::length(spot - f.to_ws) > 1e-4f) {
+        start_ease(static_cast<int>(i), level);
+        f.to_ws = spot;
+        raise_for_clearance(static_cast<int>(i), level);
+        f.progress = 1.0f / 48.0f;
+        f.pos_ws = swing_point(f, f.progress);
+        continue;
+      }
+    }
     if (f.progress >= 1.0f) {
       f.hover = 0.0f;
       f.state = LegState::kStance;
@@ -1485,8 +1498,8 @@ void Animator::build_pose(float dt, const Level& level) {
     };
     TwoBoneIkResult ik = leg_ik(ankle);
     if (f.state == LegState::kSwing) {
-      // A knee or shin swinging into a step lifts the foot until the whole leg clears.
-      const float F = info.foot_span;
+      // A knee, shin or foot swinging into a step lifts the foot until the whole leg clears.
+      const float F = info.foot_length;  // ankle to toe (to the contact point, or along a flat foot)
       auto leg_hits = [&](const TwoBoneIkResult& r) {
         const glm::vec2 tip = r.end + F * foot_dir;
         const glm::vec2 p[4] = {to_world(joint), to_world(r.middle), to_world(r.end), to_world(tip)};
@@ -1496,14 +1509,18 @@ void Animator::build_pose(float dt, const Level& level) {
       // joint; the first (bisected) that clears wins.
       const glm::vec2 up = glm::vec2(ankle.x, std::max(ankle.y, joint.y - 0.3f * info.reach));
       const glm::vec2 tuck = joint + glm::vec2(0.0f, -0.45f * info.reach);
-      auto candidate = [&](float t) {  // t in [0, 2]: 0 planned, 1 lifted, 2 tucked
-        const glm::vec2 a = t <= 1.0f ? glm::mix(ankle, up, t) : glm::mix(up, tuck, t - 1.0f);
+      // Last, drawn back from under the joint by a foot's length (a toe against a riser).
+      const glm::vec2 back = tuck - glm::vec2(F + 0.02f * info.reach, 0.0f);
+      auto candidate = [&](float t) {  // t in [0, 3]: 0 planned, 1 lifted, 2 tucked, 3 back
+        const glm::vec2 a = t <= 1.0f   ? glm::mix(ankle, up, t)
+                            : t <= 2.0f ? glm::mix(up, tuck, t - 1.0f)
+                                        : glm::mix(tuck, back, t - 2.0f);
         return leg_ik(a);
       };
       const float min_y = std::min({joint.y, ik.middle.y, ik.end.y, ik.end.y + F * foot_dir.y});
       if (!near.clear_above(min_y) && leg_hits(ik)) {
         float lo = 0.0f, hi = -1.0f;
-        for (float t : {1.0f, 2.0f}) {
+        for (float t : {1.0f, 2.0f, 3.0f}) {
           if (!leg_hits(candidate(t))) {
             hi = t;
             break;
