@@ -140,6 +140,7 @@ Animator::Animator(const Creature& creature, SplinePrototypes prototypes, Animat
   for (int i = 0; i < static_cast<int>(creature.limbs.size()); ++i) {
     const Limb& limb = creature.limbs[i];
     if (limb.kind == LimbKind::kArm) arms_.push_back(i);
+    if (limb.kind == LimbKind::kWing) wings_.push_back(i);
     if (limb.kind == LimbKind::kFin) fins_.push_back(i);
     if (limb.kind != LimbKind::kLeg) continue;
     LegInfo info;
@@ -1120,7 +1121,8 @@ void Animator::keep_arm_above_ground(const Limb& arm, const Level& level) {
 }
 
 void Animator::keep_fin_clear(const Limb& fin, const Level& level) {
-  // A fin trailing into the ground or a step turns up at its root until it clears.
+  // A fin (or folded wing) trailing into the ground or a step turns up at its root until it
+  // clears.
   const Skeleton& sk = creature_->skeleton;
   const size_t n = std::min<size_t>(fin.bones.size(), 7);
   glm::vec2 p[8];
@@ -1390,16 +1392,18 @@ void Animator::place_body(float dt, const Level& level) {
       raise = std::max(raise, below->height_ws + 0.12f * rest - joint.y);
     }
   }
-  // Shoulders carrying arms too (the arms fold and lift, but their root must stay out).
-  for (int a : arms_) {
-    const glm::vec2 rest_joint = bone_start(model_rest_[creature_->limbs[a].bones[0]]);
+  // Shoulders carrying arms or wings too (those fold and lift, but their roots must stay out).
+  auto keep_shoulder_out = [&](int limb) {
+    const glm::vec2 rest_joint = bone_start(model_rest_[creature_->limbs[limb].bones[0]]);
     const glm::vec2 j = rotate_body(rest_joint - glm::vec2(0.0f, root_rest_y_));
     const glm::vec2 joint = to_world({j.x, j.y + root_y_});
     const float half = 0.05f * hip_height_;
     if (auto below = level.ground_height_below(joint.x - half, joint.x + half, joint.y + 0.5f * hip_height_, 100.0f)) {
       raise = std::max(raise, below->height_ws + 0.1f * hip_height_ - joint.y);
     }
-  }
+  };
+  for (int a : arms_) keep_shoulder_out(a);
+  for (int w : wings_) keep_shoulder_out(w);
   root_y_ += raise;
   root_vy_ = dt > 0.0f ? (root_y_ - old_root) / dt : 0.0f;
 }
@@ -1567,6 +1571,7 @@ void Animator::build_pose(float dt, const Level& level) {
     pose_.locals[limb.bones[0]].angle_ls += 0.12f * motion * std::sin(kTwoPi * (crawl_phase_ + phase_));
     keep_fin_clear(limb, level);
   }
+  for (int wing : wings_) keep_fin_clear(c.limbs[wing], level);  // folded, but not into a step
   for (int b : other_limb_bones_) model_[b] = model_[parents[b]] * local_matrix(pose_.locals[b]);
   world_dirty_ = true;
   model_dirty_ = true;

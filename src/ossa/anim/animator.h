@@ -215,7 +215,7 @@ class Animator {
   std::vector<Group> groups_;        // sorted front (largest x) to back
   std::vector<Foot> feet_;
   std::vector<int> foot_of_leg_;
-  std::vector<int> arms_, fins_;     // limb indices
+  std::vector<int> arms_, fins_, wings_;  // limb indices
   float hip_height_ = 1.0f;
   float root_rest_y_ = 0.0f;         // model-space y of the root in the rest pose
   float body_half_length_ = 0.5f;
