@@ -262,7 +262,8 @@ Animator::Animator(const Creature& creature, SplinePrototypes prototypes, Animat
       const float a = x0 + (x1 - x0) * static_cast<float>(k) / kSlabs;
       const float b = x0 + (x1 - x0) * static_cast<float>(k + 1) / kSlabs;
       std::vector<glm::vec2> points;
-      for (auto [p, q] : segments) {
+      for (const auto& segment : segments) {
+        glm::vec2 p = segment.first, q = segment.second;  // (clang 14 lambdas cannot capture bindings)
         if (p.x > q.x) std::swap(p, q);
         if (q.x < a || p.x > b) continue;
         auto at = [&](float x) { return q.x - p.x < 1e-9f ? p : p + (q - p) * ((x - p.x) / (q.x - p.x)); };
