@@ -19,7 +19,6 @@ namespace ossa {
 
 namespace {
 
-constexpr float kEps = 1e-5f;
 constexpr float kReachLimit = 0.985f;  // stance legs never extend beyond this fraction
 
 // x - floor(x) in [0, 1), without a library call for the phases' range.
