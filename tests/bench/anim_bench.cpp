@@ -114,11 +114,6 @@ void ik_fk_ossa(benchmark::State& state) {
     legs.push_back(&limb);
     girdle_rel.push_back(root_inv * rest[limb.girdle_bone]);
   }
-  auto frame = [](glm::vec2 dir, glm::vec2 origin) {
-    Mat2x3 m;
-    m.m[0] = dir.x, m.m[1] = dir.y, m.m[2] = -dir.y, m.m[3] = dir.x, m.m[4] = origin.x, m.m[5] = origin.y;
-    return m;
-  };
   for (auto _ : state) {
     for (auto& a : h.animators) {
       const std::vector<BoneLocal>& locals = a->pose().locals;
@@ -128,13 +123,13 @@ void ik_fk_ossa(benchmark::State& state) {
         const Mat2x3 girdle = model[c.root] * girdle_rel[i];
         model[limb.girdle_bone] = girdle;
         const glm::vec2 joint = girdle.apply(locals[limb.bones[0]].offset_ls);
-        const TwoBoneIkResult ik = solve_two_bone_ik(joint, sk.length(limb.bones[0]), sk.length(limb.bones[1]),
-                                                     joint + glm::vec2(0.1f, -0.6f), static_cast<float>(limb.bend_sign));
-        const Mat2x3 upper = frame(ik.upper_dir, joint);
-        const Mat2x3 lower = frame(ik.lower_dir, upper.apply(locals[limb.bones[1]].offset_ls));
+        const TwoBoneIkResult ik = solve_two_bone_ik_directions(joint, sk.length(limb.bones[0]), sk.length(limb.bones[1]),
+                                                                joint + glm::vec2(0.1f, -0.6f), static_cast<float>(limb.bend_sign));
+        const Mat2x3 upper = frame_matrix(ik.upper_dir, joint);
+        const Mat2x3 lower = frame_matrix(ik.lower_dir, upper.apply(locals[limb.bones[1]].offset_ls));
         model[limb.bones[0]] = upper;
         model[limb.bones[1]] = lower;
-        model[limb.bones[2]] = frame({0.0f, -1.0f}, lower.apply(locals[limb.bones[2]].offset_ls));
+        model[limb.bones[2]] = frame_matrix({0.0f, -1.0f}, lower.apply(locals[limb.bones[2]].offset_ls));
       }
       benchmark::DoNotOptimize(model.data());
     }

@@ -521,15 +521,18 @@ void Animator::update(float dt, float desired_velocity, const Level& level) {
       const float ground = ground_under(box);
       box.min_ws.y = std::min(std::max(box.min_ws.y + 0.3f * hip_height_, ground + params_.max_step_up * hip_height_), hi_y);
       box.max_ws = glm::max(box.max_ws, box.min_ws + glm::vec2(1e-3f));
-      auto hit = k < first_arm ? level.sweep_box(box, {dx, 0.0f}) : std::nullopt;
+      float t = 1.0f;  // fraction of dx until the part meets something
+      if (k < first_arm) {
+        if (auto hit = level.sweep_box(box, {dx, 0.0f})) t = hit->t;
+      }
       // Walls (reaching above the body) are met a few centimetres early: arms and head
       // settle forward a little when the body stops.
       if (auto wall = level.sweep_box(Box{box.min_ws - margin, box.max_ws + margin}, {dx, 0.0f});
           wall && wall->t < 1.0f && level.box(wall->index).top() > hi_y) {
-        hit = wall;
+        t = wall->t;
       }
-      if (hit && hit->t < 1.0f) {
-        move = std::min(move, std::max(0.0f, hit->t * std::fabs(dx) - 1e-4f));
+      if (t < 1.0f) {
+        move = std::min(move, std::max(0.0f, t * std::fabs(dx) - 1e-4f));
         blocked_ = true;
         blocked_dir_ = facing_;
         blocked_retry_ = 0.5f;
@@ -661,11 +664,8 @@ void Animator::update(float dt, float desired_velocity, const Level& level) {
           const float dxj = to_model(f.to_ws).x - joint.x;
           const glm::vec2 hanging = to_world({to_model(f.to_ws).x, joint.y - std::sqrt(std::max(R * R - dxj * dxj, 0.0f))});
           f.pos_ws = hanging;
-          start_ease(static_cast<int>(i), level);
-          f.to_ws = spot;
-          raise_for_clearance(static_cast<int>(i), level);
+          start_ease(static_cast<int>(i), level, &spot);
           f.hover = 0.0f;
-          f.pos_ws = swing_point(f, 0.0f);
           continue;
         }
       }
@@ -675,11 +675,7 @@ void Animator::update(float dt, float desired_velocity, const Level& level) {
       // into a step. It moves on to the nearest place it fits.
       glm::vec2 spot;
       if (nearest_fit(static_cast<int>(i), f.to_ws, level, &spot) && glm::length(spot - f.to_ws) > 1e-4f) {
-        start_ease(static_cast<int>(i), level);
-        f.to_ws = spot;
-        raise_for_clearance(static_cast<int>(i), level);
-        f.progress = 1.0f / 48.0f;
-        f.pos_ws = swing_point(f, f.progress);
+        step_to(static_cast<int>(i), spot, level);
         continue;
       }
     }
@@ -833,13 +829,7 @@ void Animator::reverse(const Level& level) {
     Foot& f = feet_[foot_of_leg_[i]];
     if (f.state != LegState::kStance || foot_fits(static_cast<int>(i), f.pos_ws, level)) continue;
     glm::vec2 landing;
-    if (!nearest_fit(static_cast<int>(i), f.pos_ws, level, &landing)) continue;
-    start_ease(static_cast<int>(i), level);
-    f.state = LegState::kSwing;
-    f.to_ws = landing;
-    raise_for_clearance(static_cast<int>(i), level);
-    f.progress = 1.0f / 48.0f;
-    f.pos_ws = swing_point(f, f.progress);
+    if (nearest_fit(static_cast<int>(i), f.pos_ws, level, &landing)) step_to(static_cast<int>(i), landing, level);
   }
 }
 
@@ -1170,8 +1160,9 @@ bool Animator::raise_for_clearance(int leg, const Level& level) {
   Foot& f = feet_[foot_of_leg_[leg]];
   const glm::vec2 ankle_rel = -info.foot_offset_ms;
   const glm::vec2 tip_rel = creature_->contact == ContactMode::kFlat ? glm::vec2(info.foot_length, 0.0f) : glm::vec2(0.0f);
-  // Nothing near the path rises above its lower end (flat ground, or down a slope): a coarse
-  // check that the curve stays above that suffices.
+  // What rises near the path (kept: build_pose tests the swinging leg against it too). When
+  // nothing rises above its lower end (flat ground, or down a slope), a coarse check that the
+  // curve stays above that suffices.
   update_swing_clearance(leg, level);
   if (f.swing_clear.top < f.swing_clear.base) {
     const float lowest = std::min(f.from_ws.y, f.to_ws.y) - std::min(0.0f, ankle_rel.y);
@@ -1205,21 +1196,30 @@ bool Animator::raise_for_clearance(int leg, const Level& level) {
         need = std::max(need, depth / std::max(bump(static_cast<float>(k) / kSamples), 0.1f));
       }
     }
-    if (need <= 0.0f) {
-      update_swing_clearance(leg, level);
-      return true;
-    }
+    if (need <= 0.0f) return true;
     f.raise += need;
     if (f.raise > 2.0f * (info.reach + info.foot_span)) break;  // a wall, not a step
   }
-  update_swing_clearance(leg, level);
   return false;
 }
 
-void Animator::start_ease(int leg, const Level& level) {
+void Animator::step_to(int leg, glm::vec2 spot, const Level& level) {
+  start_ease(leg, level, &spot);
+  // Already lifted on this tick: the first sample of a path cleared from the second on.
+  Foot& f = feet_[foot_of_leg_[leg]];
+  f.progress = 1.0f / 48.0f;
+  f.pos_ws = swing_point(f, f.progress);
+}
+
+void Animator::start_ease(int leg, const Level& level, const glm::vec2* to) {
   Foot& f = feet_[foot_of_leg_[leg]];
   glm::vec2 landing;
-  if (!find_landing(leg, f.pos_ws.x, level, &landing)) landing = f.to_ws;
+  if (to) {
+    landing = *to;
+  } else if (!find_landing(leg, f.pos_ws.x, level, &landing)) {
+    landing = f.to_ws;
+  }
+  f.state = LegState::kSwing;
   f.from_ws = f.pos_ws;
   f.to_ws = landing;
   f.swing_x = HermiteSpline({{0.0f, 0.0f, 1.0f}, {1.0f, 1.0f, 1.0f}});
@@ -1365,15 +1365,10 @@ void Animator::place_body(float dt, const Level& level) {
       const glm::vec2 ankle = leg_ankle(static_cast<int>(i), to_model(f.pos_ws), joint, &level,
                                         stance ? f.stance_clear : f.swing_clear, &dir, nullptr);
       if (ankle.y - creature_->skeleton.length(limb.bones[1]) > f.pos_ws.y + margin) continue;
-      TwoBoneIkJob ik;
-      ik.root = joint;
-      ik.upper_length = creature_->skeleton.length(limb.bones[0]);
-      ik.lower_length = creature_->skeleton.length(limb.bones[1]);
-      ik.target = ankle;
-      ik.bend_sign = static_cast<float>(limb.bend_sign);
-      ik.compute_angles = false;
-      ik.run();
-      const glm::vec2 knee = to_world(ik.result.middle);
+      const TwoBoneIkResult ik = solve_two_bone_ik_directions(joint, creature_->skeleton.length(limb.bones[0]),
+                                                              creature_->skeleton.length(limb.bones[1]), ankle,
+                                                              static_cast<float>(limb.bend_sign));
+      const glm::vec2 knee = to_world(ik.middle);
       auto ground = level.ground_height_below(knee.x - 0.005f, knee.x + 0.005f, knee.y + info.reach, 2.0f * info.reach);
       if (ground) knee_raise = std::max(knee_raise, ground->height_ws + margin - knee.y);
     }
@@ -1490,15 +1485,7 @@ void Animator::build_pose(float dt, const Level& level) {
     }
     const float l0 = sk.length(limb.bones[0]), l1 = sk.length(limb.bones[1]), bend = static_cast<float>(limb.bend_sign);
     auto leg_ik = [&](glm::vec2 target) {  // directions only: the angles are for pose() (lazily)
-      TwoBoneIkJob job;
-      job.root = joint;
-      job.upper_length = l0;
-      job.lower_length = l1;
-      job.target = target;
-      job.bend_sign = bend;
-      job.compute_angles = false;
-      job.run();
-      return job.result;
+      return solve_two_bone_ik_directions(joint, l0, l1, target, bend);
     };
     TwoBoneIkResult ik = leg_ik(ankle);
     if (f.state == LegState::kSwing) {
@@ -1542,16 +1529,11 @@ void Animator::build_pose(float dt, const Level& level) {
     }
     leg_dirs_[i] = {ik.upper_dir, ik.lower_dir, foot_dir};
     // The chain's matrices straight from the solution's directions (no trigonometry).
-    auto frame = [](glm::vec2 dir, glm::vec2 origin) {
-      Mat2x3 m;
-      m.m[0] = dir.x, m.m[1] = dir.y, m.m[2] = -dir.y, m.m[3] = dir.x, m.m[4] = origin.x, m.m[5] = origin.y;
-      return m;
-    };
-    const Mat2x3 upper = frame(ik.upper_dir, joint);
-    const Mat2x3 lower = frame(ik.lower_dir, upper.apply(pose_.locals[limb.bones[1]].offset_ls));
+    const Mat2x3 upper = frame_matrix(ik.upper_dir, joint);
+    const Mat2x3 lower = frame_matrix(ik.lower_dir, upper.apply(pose_.locals[limb.bones[1]].offset_ls));
     model_[limb.bones[0]] = upper;
     model_[limb.bones[1]] = lower;
-    model_[limb.bones[2]] = frame(foot_dir, lower.apply(pose_.locals[limb.bones[2]].offset_ls));
+    model_[limb.bones[2]] = frame_matrix(foot_dir, lower.apply(pose_.locals[limb.bones[2]].offset_ls));
   }
   // Arms swing counter to the same-side leg; fins trail with a slow beat.
   const float motion = std::min(speed_ / std::max(walk_speed(), 1e-3f), 1.0f);

@@ -156,7 +156,11 @@ class Animator {
   };
 
   void set_new_splines(int leg, const Level& level, float swing_phase);  // [T] name: plans a swing
-  void start_ease(int leg, const Level& level);
+  // An eased, unlifted step of leg i to `to` (default: the nearest foothold ahead of the foot),
+  // timed in seconds rather than phase: setting feet down after a stop, and corrections.
+  void start_ease(int leg, const Level& level, const glm::vec2* to = nullptr);
+  // start_ease to `spot`, already one sample into the step on this tick.
+  void step_to(int leg, glm::vec2 spot, const Level& level);
   bool raise_for_clearance(int leg, const Level& level);
   static glm::vec2 swing_point(const Foot& f, float s);
   void reverse(const Level& level);

@@ -131,8 +131,10 @@ bool TwoBoneIkJob::run() {
   return true;
 }
 
-TwoBoneIkResult solve_two_bone_ik(glm::vec2 root, float upper_length, float lower_length,
-                                  glm::vec2 target, float bend_sign, float soft_reach) {
+namespace {
+
+TwoBoneIkResult solve(glm::vec2 root, float upper_length, float lower_length, glm::vec2 target,
+                      float bend_sign, float soft_reach, bool compute_angles) {
   TwoBoneIkJob job;
   job.root = root;
   job.upper_length = upper_length;
@@ -140,9 +142,22 @@ TwoBoneIkResult solve_two_bone_ik(glm::vec2 root, float upper_length, float lowe
   job.target = target;
   job.bend_sign = bend_sign;
   job.soft_reach = soft_reach;
+  job.compute_angles = compute_angles;
   const bool ok = job.run();
   OSSA_ASSERT(ok, "solve_two_bone_ik: invalid inputs (see TwoBoneIkJob::validate)");
   return job.result;
+}
+
+}  // namespace
+
+TwoBoneIkResult solve_two_bone_ik(glm::vec2 root, float upper_length, float lower_length,
+                                  glm::vec2 target, float bend_sign, float soft_reach) {
+  return solve(root, upper_length, lower_length, target, bend_sign, soft_reach, true);
+}
+
+TwoBoneIkResult solve_two_bone_ik_directions(glm::vec2 root, float upper_length, float lower_length,
+                                             glm::vec2 target, float bend_sign) {
+  return solve(root, upper_length, lower_length, target, bend_sign, 0.0f, false);
 }
 
 }  // namespace ossa

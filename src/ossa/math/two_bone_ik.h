@@ -84,4 +84,9 @@ struct TwoBoneIkJob {
 TwoBoneIkResult solve_two_bone_ik(glm::vec2 root, float upper_length, float lower_length,
                                   glm::vec2 target, float bend_sign, float soft_reach = 0.0f);
 
+/// The same without the two angles (compute_angles = false): directions, joints and end only,
+/// for callers that build matrices straight from the directions.
+TwoBoneIkResult solve_two_bone_ik_directions(glm::vec2 root, float upper_length, float lower_length,
+                                             glm::vec2 target, float bend_sign);
+
 }  // namespace ossa

@@ -26,6 +26,19 @@ inline Mat2x3 local_matrix(const BoneLocal& l) {
   return m;
 }
 
+// The matrix of a bone frame whose x axis points along the unit vector dir, at origin (what
+// local_matrix gives for an angle, here for a direction an IK solve already has).
+inline Mat2x3 frame_matrix(glm::vec2 dir, glm::vec2 origin) {
+  Mat2x3 m;
+  m.m[0] = dir.x;
+  m.m[1] = dir.y;
+  m.m[2] = -dir.y;
+  m.m[3] = dir.x;
+  m.m[4] = origin.x;
+  m.m[5] = origin.y;
+  return m;
+}
+
 // Per-creature joint values, one BoneLocal per bone of its Skeleton.
 struct Pose {
   std::vector<BoneLocal> locals;
