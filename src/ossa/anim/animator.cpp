@@ -20,6 +20,8 @@ namespace ossa {
 namespace {
 
 constexpr float kReachLimit = 0.985f;  // stance legs never extend beyond this fraction
+constexpr float kMaxPitch = 0.9f;       // the body turns no steeper than this (radians)
+constexpr float kMaxPitchStep = 0.03f;  // nor by more than this in one tick to keep a foot in reach
 
 // x - floor(x) in [0, 1), without a library call for the phases' range.
 float frac(float x) {
@@ -293,6 +295,9 @@ Animator::Animator(const Creature& creature, SplinePrototypes prototypes, Animat
     if (dynamic_bone_[b] || (limb_bone[b] && !leg_ik_bone[b])) touched_bones_.push_back(b);
   }
   group_height_.resize(groups_.size());
+  group_need_.resize(groups_.size());
+  group_room_.resize(groups_.size());
+  group_swing_up_.resize(groups_.size());
   leg_dirs_.resize(legs_.size());
 }
 
@@ -556,6 +561,13 @@ void Animator::update(float dt, float desired_velocity, const Level& level) {
       // How far forward the joint may go with this foot still in reach (model x).
       const float ahead = anchor.x + std::sqrt(std::max(r * r - h * h, 0.0f)) - joint.x;
       dx = facing_ * std::min(std::fabs(dx), std::max(ahead, 0.0f));
+      // A foot left below and behind on stairs whose leg would cut the edge of a step above
+      // it lifts now (see the gait clock below) rather than drag its knee through the step.
+      // The body waits for it if the leg clears the steps where it is.
+      if (stance && anchor.x < joint.x && stance_leg_hits(static_cast<int>(i), joint + glm::vec2(std::fabs(dx), 0.0f), level)) {
+        feet_[foot_of_leg_[i]].holds_body = true;
+        if (!stance_leg_hits(static_cast<int>(i), joint, level)) dx = 0.0f;
+      }
     }
   }
   body_x_ += dx;
@@ -640,6 +652,15 @@ void Animator::update(float dt, float desired_velocity, const Level& level) {
         }
       }
     }
+    if (f.progress >= 1.0f && !foot_fits(static_cast<int>(i), f.to_ws, level)) {
+      // Planned facing the other way (the creature turned meanwhile): the foot would reach
+      // into a step. It moves on to the nearest place it fits.
+      glm::vec2 spot;
+      if (nearest_fit(static_cast<int>(i), f.to_ws, level, &spot, true) && glm::length(spot - f.to_ws) > 1e-4f) {
+        step_to(static_cast<int>(i), spot, level);
+        continue;
+      }
+    }
     if (f.progress >= 1.0f && !f.easing && moving_) {
       // A foot stepping down further than the leg reaches from the still-high body waits
       // above its landing point while the body comes down to it (see build_pose).
@@ -668,15 +689,6 @@ void Animator::update(float dt, float desired_velocity, const Level& level) {
           f.hover = 0.0f;
           continue;
         }
-      }
-    }
-    if (f.progress >= 1.0f && !foot_fits(static_cast<int>(i), f.to_ws, level)) {
-      // Planned facing the other way (the creature turned meanwhile): the foot would reach
-      // into a step. It moves on to the nearest place it fits.
-      glm::vec2 spot;
-      if (nearest_fit(static_cast<int>(i), f.to_ws, level, &spot) && glm::length(spot - f.to_ws) > 1e-4f) {
-        step_to(static_cast<int>(i), spot, level);
-        continue;
       }
     }
     if (f.progress >= 1.0f) {
@@ -808,7 +820,7 @@ void Animator::reverse(const Level& level) {
       if (!from || std::fabs(other.pos_ws.x - joint_x) < std::fabs(from->pos_ws.x - joint_x)) from = &other;
     }
     glm::vec2 landing;
-    if (!from) continue;
+    if (!from) from = &f;  // none in reach: it swings from where it is, rather than stand out of reach
     f.pos_ws = from->pos_ws;
     if (!find_landing(static_cast<int>(i), joint_x, level, &landing)) landing = f.pos_ws;
     f.from_ws = f.pos_ws;
@@ -829,21 +841,31 @@ void Animator::reverse(const Level& level) {
     Foot& f = feet_[foot_of_leg_[i]];
     if (f.state != LegState::kStance || foot_fits(static_cast<int>(i), f.pos_ws, level)) continue;
     glm::vec2 landing;
-    if (nearest_fit(static_cast<int>(i), f.pos_ws, level, &landing)) step_to(static_cast<int>(i), landing, level);
+    if (nearest_fit(static_cast<int>(i), f.pos_ws, level, &landing, true)) step_to(static_cast<int>(i), landing, level);
   }
 }
 
-bool Animator::nearest_fit(int leg, glm::vec2 near_ws, const Level& level, glm::vec2* spot) const {
+bool Animator::nearest_fit(int leg, glm::vec2 near_ws, const Level& level, glm::vec2* spot, bool prefer_reach) const {
+  return (prefer_reach && nearest_fit_within(leg, near_ws, level, spot, true)) ||
+         nearest_fit_within(leg, near_ws, level, spot, false);
+}
+
+bool Animator::nearest_fit_within(int leg, glm::vec2 near_ws, const Level& level, glm::vec2* spot, bool in_reach) const {
   // Centimetre by centimetre either way, up to half a leg's length, on ground within a step.
   const LegInfo& info = legs_[leg];
+  const glm::vec2 joint = to_model(girdle_ws(info.group));
   const float up = params_.max_step_up * groups_[info.group].rest_height;
   const float down = params_.max_step_down * groups_[info.group].rest_height;
+  // A flat foot stands on the highest ground under its sole.
+  const float sole = creature_->contact == ContactMode::kFlat ? facing_ * info.foot_length : 0.0f;
+  const float sole_lo = std::min(sole, 0.0f) - 0.005f, sole_hi = std::max(sole, 0.0f) + 0.005f;
   const int n = std::max(1, static_cast<int>(0.5f * (info.reach + info.foot_length) / 0.01f));
   for (int k = 0; k <= 2 * n; ++k) {
     const float x = near_ws.x + 0.01f * static_cast<float>(k % 2 == 0 ? k / 2 : -(k + 1) / 2);
-    auto hit = level.ground_height_below(x - 0.005f, x + 0.005f, near_ws.y + up, up + down);
+    auto hit = level.ground_height_below(x + sole_lo, x + sole_hi, near_ws.y + up, up + down);
     if (!hit) continue;
     const glm::vec2 p(x, hit->height_ws);
+    if (in_reach && glm::length(to_model(p) - joint) > 0.97f * info.contact_reach) continue;
     if (foot_fits(leg, p, level)) {
       *spot = p;
       return true;
@@ -859,7 +881,7 @@ bool Animator::foot_fits(int leg, glm::vec2 contact_ws, const Level& level) cons
   const float a = facing_ * std::min({0.0f, ankle_rel.x, tip_rel.x});
   const float b = facing_ * std::max({0.0f, ankle_rel.x, tip_rel.x});
   const float height = std::max({0.02f, ankle_rel.y, 0.3f * info.foot_length});
-  const Box foot_box{{contact_ws.x + std::min(a, b) - 0.008f, contact_ws.y + 0.002f},
+  const Box foot_box{{contact_ws.x + std::min(a, b) - 0.008f, contact_ws.y + 0.0005f},
                      {contact_ws.x + std::max(a, b) + 0.008f, contact_ws.y + height}};
   return !level.overlaps(foot_box);
 }
@@ -1181,7 +1203,8 @@ bool Animator::raise_for_clearance(int leg, const Level& level) {
       const glm::vec2 p = swing_point(f, s);
       const glm::vec2 q = p + glm::vec2(facing_ * ankle_rel.x, ankle_rel.y);
       const glm::vec2 r = p + glm::vec2(facing_ * tip_rel.x, tip_rel.y);
-      foot[k] = Box{glm::min(glm::min(p, q), r) - glm::vec2(0.01f, 0.0f), glm::max(glm::max(p, q), r) + glm::vec2(0.01f, 0.005f)};
+      // A little narrower than find_landing's test, so a landing it found clears at its end.
+      foot[k] = Box{glm::min(glm::min(p, q), r) - glm::vec2(0.006f, 0.0f), glm::max(glm::max(p, q), r) + glm::vec2(0.006f, 0.005f)};
       path.min_ws = glm::min(path.min_ws, foot[k].min_ws);
       path.max_ws = glm::max(path.max_ws, foot[k].max_ws);
     }
@@ -1201,6 +1224,23 @@ bool Animator::raise_for_clearance(int leg, const Level& level) {
     if (f.raise > 2.0f * (info.reach + info.foot_span)) break;  // a wall, not a step
   }
   return false;
+}
+
+bool Animator::stance_leg_hits(int leg, glm::vec2 joint_ms, const Level& level) const {
+  const LegInfo& info = legs_[leg];
+  const Foot& f = feet_[foot_of_leg_[leg]];
+  const Limb& limb = creature_->limbs[info.limb];
+  const Skeleton& sk = creature_->skeleton;
+  const glm::vec2 contact = to_model(f.pos_ws);
+  // Nothing rises near the foot above the lowest the leg reaches down to: nothing to cut.
+  if (f.stance_clear.clear_above(std::min(contact.y, joint_ms.y - info.reach))) return false;
+  glm::vec2 dir;
+  const glm::vec2 ankle = leg_ankle(leg, contact, joint_ms, &level, f.stance_clear, &dir, nullptr);
+  const TwoBoneIkResult ik = solve_two_bone_ik_directions(joint_ms, sk.length(limb.bones[0]), sk.length(limb.bones[1]),
+                                                          ankle, static_cast<float>(limb.bend_sign));
+  const glm::vec2 tip = ik.end + info.foot_length * dir;
+  const glm::vec2 p[4] = {to_world(joint_ms), to_world(ik.middle), to_world(ik.end), to_world(tip)};
+  return polyline_hits_level(level, p, info.foot_length > 0.0f ? 4 : 3, segment_hits_);
 }
 
 void Animator::step_to(int leg, glm::vec2 spot, const Level& level) {
@@ -1303,10 +1343,15 @@ void Animator::place_body(float dt, const Level& level) {
   pitch_ = approach(pitch_, target_pitch, snap ? 0.0f : decay_.pitch);
   root_y_ = approach(root_y_, target_root, snap ? 0.0f : decay_.root);
 
-  // Never over-extend a leg on the ground: lower the body (hard clamp, no smoothing; a second
-  // pass when the first moved it, as a rolling foot's reach depends on where the joint is).
-  for (int pass = 0; pass < 2; ++pass) {
-    float lower = 0.0f;
+  // Never over-extend a leg on the ground: lower its girdle (hard clamp, no smoothing; again
+  // when that moved it, as a rolling foot's reach depends on where the joint is). The end girdles turn the body about each other, so a hind leg left on a lower step
+  // pitches the body up instead of pulling the shoulders down into the steps ahead.
+  const size_t n_groups = groups_.size();
+  std::vector<float>& need = group_need_;
+  std::vector<float>& room = group_room_;  // how far each girdle may rise with its feet in reach
+  for (int pass = 0; pass < 3; ++pass) {
+    std::fill(need.begin(), need.end(), 0.0f);
+    std::fill(room.begin(), room.end(), 1e30f);
     for (size_t i = 0; i < legs_.size(); ++i) {
       const LegInfo& info = legs_[i];
       const Foot& f = feet_[foot_of_leg_[i]];
@@ -1319,7 +1364,8 @@ void Animator::place_body(float dt, const Level& level) {
       const float dx = std::fabs(anchor.x - joint.x);
       if (dx >= r) continue;
       const float allowed = anchor.y + std::sqrt(r * r - dx * dx);
-      lower = std::max(lower, joint.y - allowed);
+      need[info.group] = std::max(need[info.group], joint.y - allowed);
+      room[info.group] = std::min(room[info.group], allowed - joint.y);
       // A foot left behind and below (stairs) that drags the body down lifts on the next tick
       // (see update) rather than fold the other legs into the step ahead.
       if (pass == 0 && f.state == LegState::kStance && anchor.x < joint.x &&
@@ -1327,8 +1373,17 @@ void Animator::place_body(float dt, const Level& level) {
         feet_[foot_of_leg_[i]].holds_body = true;
       }
     }
-    root_y_ -= lower;
-    if (lower <= 0.0f) break;
+    // Turning the body moves the other girdle's joint sideways a little: the last pass lowers
+    // the whole body, which keeps every joint's x.
+    float most = 0.0f;
+    for (float d : need) most = std::max(most, d);
+    if (most <= 0.0f) break;
+    for (size_t g = 0; g < n_groups; ++g) {
+      if (need[g] <= 0.0f) continue;
+      if (pass < 2) move_girdle(static_cast<int>(g), -need[g]);
+      room[g] += need[g];
+    }
+    if (pass == 2) root_y_ -= most;
   }
   // Nor fold a leg on the ground tighter than it can (short legs with long shins on a low
   // body): raise the body until each stance ankle is at least the folded length away.
@@ -1347,10 +1402,16 @@ void Animator::place_body(float dt, const Level& level) {
     if (dx < fold) fold_raise = std::max(fold_raise, ankle.y + std::sqrt(fold * fold - dx * dx) - joint.y);
   }
   root_y_ += fold_raise;
+  for (float& r : room) r = std::max(r - fold_raise, 0.0f);
   // Nor kneel: a leg folded so far that its knee would touch the ground (sprawling legs on a
-  // low body, or lifted in a swing) raises the body until the knee clears the ground under it.
+  // low body, or lifted in a swing) raises its girdle until the knee clears the ground under
+  // it. A swinging leg's knee raises it only as far as the legs on the ground allow (their
+  // feet must not slide); past that the swing itself lifts and tucks the leg (build_pose).
+  std::vector<float>& stance_up = group_need_;
+  std::vector<float>& swing_up = group_swing_up_;
   for (int pass = 0; pass < 2; ++pass) {
-    float knee_raise = 0.0f;
+    std::fill(stance_up.begin(), stance_up.end(), 0.0f);
+    std::fill(swing_up.begin(), swing_up.end(), 0.0f);
     for (size_t i = 0; i < legs_.size(); ++i) {
       const Foot& f = feet_[foot_of_leg_[i]];
       const bool stance = f.state == LegState::kStance;
@@ -1370,10 +1431,19 @@ void Animator::place_body(float dt, const Level& level) {
                                                               static_cast<float>(limb.bend_sign));
       const glm::vec2 knee = to_world(ik.middle);
       auto ground = level.ground_height_below(knee.x - 0.005f, knee.x + 0.005f, knee.y + info.reach, 2.0f * info.reach);
-      if (ground) knee_raise = std::max(knee_raise, ground->height_ws + margin - knee.y);
+      if (!ground) continue;
+      float& up = stance ? stance_up[info.group] : swing_up[info.group];
+      up = std::max(up, ground->height_ws + margin - knee.y);
     }
-    if (knee_raise <= 0.0f) break;
-    root_y_ += std::min(knee_raise, 0.5f * hip_height_);
+    bool moved = false;
+    for (size_t g = 0; g < n_groups; ++g) {
+      const float up = std::min(std::max(stance_up[g], std::min(swing_up[g], room[g])), 0.5f * hip_height_);
+      if (up <= 0.0f) continue;
+      move_girdle(static_cast<int>(g), up);
+      room[g] = std::max(room[g] - up, 0.0f);
+      moved = true;
+    }
+    if (!moved) break;
   }
   // Whatever the legs ask, a girdle never sinks into the ground under it: it keeps an eighth
   // of its standing height above the highest ground there (a leg may stretch, the body stays
@@ -1401,6 +1471,30 @@ void Animator::place_body(float dt, const Level& level) {
   for (int w : wings_) keep_shoulder_out(w);
   root_y_ += raise;
   root_vy_ = dt > 0.0f ? (root_y_ - old_root) / dt : 0.0f;
+}
+
+void Animator::move_girdle(int group, float dy) {
+  const int n = static_cast<int>(groups_.size());
+  if (n < 2 || (group != 0 && group != n - 1)) {
+    root_y_ += dy;
+    return;
+  }
+  // Turn the body about the girdle at the other end (o), which stays put; whatever a turn
+  // within the pitch limits (per tick and overall) cannot give, the whole body moves.
+  const glm::vec2 root_rest(0.0f, root_rest_y_);
+  const glm::vec2 o = groups_[group == 0 ? n - 1 : 0].joint_ms - root_rest;
+  const glm::vec2 v = groups_[group].joint_ms - root_rest - o;
+  const float len = std::sqrt(v.x * v.x + v.y * v.y);
+  const glm::vec2 v_before = rotate_body(v), o_before = rotate_body(o);
+  if (len > 1e-4f) {
+    const float phi = fast_atan2(v.y, v.x), a = pitch_ + lean_;
+    const float s = std::asin(std::clamp((v_before.y + dy) / len, -0.95f, 0.95f));
+    const float turned = (std::cos(a + phi) >= 0.0f ? s : kPi - s) - phi;
+    const float step = std::clamp(wrap_angle(turned - a), -kMaxPitchStep, kMaxPitchStep);
+    pitch_ = std::clamp(pitch_ + step, -kMaxPitch, kMaxPitch);
+  }
+  const float moved = rotate_body(v).y - v_before.y;
+  root_y_ += o_before.y - rotate_body(o).y + (dy - moved);
 }
 
 // [SECTION] pose: spine, IK, arms, tail ------------------------------------------------------
@@ -1461,8 +1555,11 @@ void Animator::build_pose(float dt, const Level& level) {
       // above its path, instead of being dragged along the line to it (into a step's corner).
       const float r = info.contact_reach;
       const float dx = contact.x - joint.x;
-      if (glm::length(contact - joint) > r && std::fabs(dx) < r && contact.y < joint.y) {
+      const float len = glm::length(contact - joint);
+      if (len > r && std::fabs(dx) < r && contact.y < joint.y) {
         contact.y = joint.y - std::sqrt(r * r - dx * dx);
+      } else if (len > r) {  // out of reach to the side: towards it, as far as the leg reaches
+        contact = joint + (contact - joint) * (r / len);
       }
     }
     glm::vec2 foot_dir;
@@ -1491,8 +1588,9 @@ void Animator::build_pose(float dt, const Level& level) {
     if (f.state == LegState::kSwing) {
       // A knee, shin or foot swinging into a step lifts the foot until the whole leg clears.
       const float F = info.foot_length;  // ankle to toe (to the contact point, or along a flat foot)
+      glm::vec2 dir = foot_dir;  // the foot's direction for the candidate being tested
       auto leg_hits = [&](const TwoBoneIkResult& r) {
-        const glm::vec2 tip = r.end + F * foot_dir;
+        const glm::vec2 tip = r.end + F * dir;
         const glm::vec2 p[4] = {to_world(joint), to_world(r.middle), to_world(r.end), to_world(tip)};
         return polyline_hits_level(level, p, F > 0.0f ? 4 : 3, segment_hits_);
       };
@@ -1502,10 +1600,17 @@ void Animator::build_pose(float dt, const Level& level) {
       const glm::vec2 tuck = joint + glm::vec2(0.0f, -0.45f * info.reach);
       // Last, drawn back from under the joint by a foot's length (a toe against a riser).
       const glm::vec2 back = tuck - glm::vec2(F + 0.02f * info.reach, 0.0f);
+      // A lifted foot turns back from its roll to hang in its rest direction; drawn back, it
+      // folds up behind the ankle.
+      const glm::vec2 folded(-0.98f, 0.2f);
       auto candidate = [&](float t) {  // t in [0, 3]: 0 planned, 1 lifted, 2 tucked, 3 back
         const glm::vec2 a = t <= 1.0f   ? glm::mix(ankle, up, t)
                             : t <= 2.0f ? glm::mix(up, tuck, t - 1.0f)
                                         : glm::mix(tuck, back, t - 2.0f);
+        const glm::vec2 d = t <= 1.0f   ? glm::mix(foot_dir, info.foot_dir_ms, t)
+                            : t <= 2.0f ? info.foot_dir_ms
+                                        : glm::mix(info.foot_dir_ms, folded, t - 2.0f);
+        dir = d / std::max(glm::length(d), 1e-6f);
         return leg_ik(a);
       };
       const float min_y = std::min({joint.y, ik.middle.y, ik.end.y, ik.end.y + F * foot_dir.y});
@@ -1524,6 +1629,7 @@ void Animator::build_pose(float dt, const Level& level) {
             (leg_hits(candidate(mid)) ? lo : hi) = mid;
           }
           ik = candidate(hi);
+          foot_dir = dir;
         }
       }
     }

@@ -170,8 +170,10 @@ class Animator {
   bool find_landing(int leg, float x_wanted, const Level& level, glm::vec2* landing) const;
   // Does leg i's foot, standing at contact_ws as the creature now faces, clear every box?
   bool foot_fits(int leg, glm::vec2 contact_ws, const Level& level) const;
-  // The nearest place to near_ws (either way along the ground) where leg i's foot fits.
-  bool nearest_fit(int leg, glm::vec2 near_ws, const Level& level, glm::vec2* spot) const;
+  // The nearest place to near_ws (either way along the ground) where leg i's foot fits;
+  // prefer_reach: one the leg reaches from where its girdle is now, if there is one.
+  bool nearest_fit(int leg, glm::vec2 near_ws, const Level& level, glm::vec2* spot, bool prefer_reach = false) const;
+  bool nearest_fit_within(int leg, glm::vec2 near_ws, const Level& level, glm::vec2* spot, bool in_reach) const;
   // Where leg i would land if it lifted now at `speed` (swing_phase < 0: a full swing).
   float landing_x(int leg, float speed, float swing_phase = -1.0f) const;
   // v rotated by the body angle pitch_ + lean_.
@@ -183,6 +185,11 @@ class Animator {
     }
     return {body_cs_.x * v.x - body_cs_.y * v.y, body_cs_.y * v.x + body_cs_.x * v.y};
   }
+  // Would leg i's chain (joint, knee, ankle, toe), standing where it stands, cut into a box
+  // with its girdle joint at joint_ms?
+  bool stance_leg_hits(int leg, glm::vec2 joint_ms, const Level& level) const;
+  // Moves a girdle's joint up by dy, turning the body about the girdle at the other end.
+  void move_girdle(int group, float dy);
   // Girdle joint of a leg group from the current body placement.
   glm::vec2 girdle_ws(int group) const {
     const glm::vec2 j = rotate_body(groups_[group].joint_ms - glm::vec2(0.0f, root_rest_y_));
@@ -253,6 +260,7 @@ class Animator {
   mutable std::vector<int> segment_hits_; // scratch for leg_ankle
   glm::vec2 skull_rel_{0.0f}, skull_span_{0.0f};
   std::vector<float> group_height_;       // scratch for place_body
+  std::vector<float> group_need_, group_room_, group_swing_up_;  // scratch for place_body's clamps
   std::vector<float> target_offset_;      // per leg: leg_target_offset at offsets_trot_/gallop_
   float offsets_trot_ = -1.0f, offsets_gallop_ = -1.0f;
   std::vector<int> clearance_hits_;       // scratch for raise_for_clearance
