@@ -22,6 +22,7 @@ namespace {
 constexpr float kReachLimit = 0.985f;  // stance legs never extend beyond this fraction
 constexpr float kMaxPitch = 0.9f;       // the body turns no steeper than this (radians)
 constexpr float kMaxPitchStep = 0.03f;  // nor by more than this in one tick to keep a foot in reach
+constexpr float kStepReach = 0.8f;      // near steps the body outruns a foot by this much of its reach
 
 // x - floor(x) in [0, 1), without a library call for the phases' range.
 float frac(float x) {
@@ -558,13 +559,17 @@ void Animator::update(float dt, float desired_velocity, const Level& level) {
       float r;
       const glm::vec2 anchor = leg_anchor(static_cast<int>(i), contact, joint, level, stance ? f.stance_clear : f.swing_clear, &r);
       const float h = joint.y - anchor.y;
+      // Near steps a foot behind keeps the joint within kStepReach of the leg's reach: a leg
+      // stretched back across a flight of stairs would cut the edges between.
+      if (anchor.x < joint.x && !(stance ? f.stance_clear : f.swing_clear).clear_above(anchor.y)) r *= kStepReach;
       // How far forward the joint may go with this foot still in reach (model x).
       const float ahead = anchor.x + std::sqrt(std::max(r * r - h * h, 0.0f)) - joint.x;
       dx = facing_ * std::min(std::fabs(dx), std::max(ahead, 0.0f));
       // A foot left below and behind on stairs whose leg would cut the edge of a step above
       // it lifts now (see the gait clock below) rather than drag its knee through the step.
       // The body waits for it if the leg clears the steps where it is.
-      if (stance && anchor.x < joint.x && stance_leg_hits(static_cast<int>(i), joint + glm::vec2(std::fabs(dx), 0.0f), level)) {
+      if (stance && anchor.x < joint.x && !f.stance_clear.clear_above(std::min(contact.y, joint.y - info.reach)) &&
+          stance_leg_hits(static_cast<int>(i), joint + glm::vec2(std::fabs(dx), 0.0f), level)) {
         feet_[foot_of_leg_[i]].holds_body = true;
         if (!stance_leg_hits(static_cast<int>(i), joint, level)) dx = 0.0f;
       }
@@ -1232,8 +1237,6 @@ bool Animator::stance_leg_hits(int leg, glm::vec2 joint_ms, const Level& level) 
   const Limb& limb = creature_->limbs[info.limb];
   const Skeleton& sk = creature_->skeleton;
   const glm::vec2 contact = to_model(f.pos_ws);
-  // Nothing rises near the foot above the lowest the leg reaches down to: nothing to cut.
-  if (f.stance_clear.clear_above(std::min(contact.y, joint_ms.y - info.reach))) return false;
   glm::vec2 dir;
   const glm::vec2 ankle = leg_ankle(leg, contact, joint_ms, &level, f.stance_clear, &dir, nullptr);
   const TwoBoneIkResult ik = solve_two_bone_ik_directions(joint_ms, sk.length(limb.bones[0]), sk.length(limb.bones[1]),
@@ -1401,8 +1404,10 @@ void Animator::place_body(float dt, const Level& level) {
     const float dx = std::fabs(ankle.x - joint.x);
     if (dx < fold) fold_raise = std::max(fold_raise, ankle.y + std::sqrt(fold * fold - dx * dx) - joint.y);
   }
-  root_y_ += fold_raise;
-  for (float& r : room) r = std::max(r - fold_raise, 0.0f);
+  if (fold_raise > 0.0f) {
+    root_y_ += fold_raise;
+    for (float& r : room) r = std::max(r - fold_raise, 0.0f);
+  }
   // Nor kneel: a leg folded so far that its knee would touch the ground (sprawling legs on a
   // low body, or lifted in a swing) raises its girdle until the knee clears the ground under
   // it. A swinging leg's knee raises it only as far as the legs on the ground allow (their

@@ -186,7 +186,7 @@ class Animator {
     return {body_cs_.x * v.x - body_cs_.y * v.y, body_cs_.y * v.x + body_cs_.x * v.y};
   }
   // Would leg i's chain (joint, knee, ankle, toe), standing where it stands, cut into a box
-  // with its girdle joint at joint_ms?
+  // with its girdle joint at joint_ms? (Callers skip it when nothing rises near the foot.)
   bool stance_leg_hits(int leg, glm::vec2 joint_ms, const Level& level) const;
   // Moves a girdle's joint up by dy, turning the body about the girdle at the other end.
   void move_girdle(int group, float dy);
