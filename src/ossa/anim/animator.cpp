@@ -561,7 +561,7 @@ void Animator::update(float dt, float desired_velocity, const Level& level) {
       const float h = joint.y - anchor.y;
       // Near steps a foot behind keeps the joint within kStepReach of the leg's reach: a leg
       // stretched back across a flight of stairs would cut the edges between.
-      if (anchor.x < joint.x && !(stance ? f.stance_clear : f.swing_clear).clear_above(anchor.y)) r *= kStepReach;
+      if (anchor.x < joint.x && !(stance ? f.stance_reach_clear : f.swing_clear).clear_above(anchor.y + 0.1f * hip_height_)) r *= kStepReach;
       // How far forward the joint may go with this foot still in reach (model x).
       const float ahead = anchor.x + std::sqrt(std::max(r * r - h * h, 0.0f)) - joint.x;
       dx = facing_ * std::min(std::fabs(dx), std::max(ahead, 0.0f));
@@ -1049,6 +1049,10 @@ void Animator::update_stance_clearance(Foot& f, const Level& level) const {
   float r = 0.05f;
   for (const LegInfo& info : legs_) r = std::max(r, glm::length(info.foot_offset_ms) + 0.05f);
   f.stance_clear = clearance_in(Box{f.pos_ws - glm::vec2(r), f.pos_ws + glm::vec2(r)}, f.pos_ws.y, level);
+  // And as far as any leg reaches from it (the steps between a foot and its girdle).
+  float reach = r;
+  for (const LegInfo& info : legs_) reach = std::max(reach, info.contact_reach);
+  f.stance_reach_clear = clearance_in(Box{f.pos_ws - glm::vec2(reach, 0.0f), f.pos_ws + glm::vec2(reach)}, f.pos_ws.y, level);
 }
 
 void Animator::update_swing_clearance(int leg, const Level& level) {
@@ -1425,20 +1429,26 @@ void Animator::place_body(float dt, const Level& level) {
       const glm::vec2 joint = to_model(girdle_ws(info.group));
       const float margin = 0.02f * info.reach;
       // The knee is no lower than a thigh below the joint nor a shin below the ankle: cheap
-      // tests before the IK.
-      if (joint.y - creature_->skeleton.length(limb.bones[0]) > f.pos_ws.y + margin) continue;
+      // tests before the IK (unless steps rise beside a standing foot).
+      const bool steps_near = stance && !f.stance_reach_clear.clear_above(f.pos_ws.y + margin);
+      if (!steps_near && joint.y - creature_->skeleton.length(limb.bones[0]) > f.pos_ws.y + margin) continue;
       glm::vec2 dir;
       const glm::vec2 ankle = leg_ankle(static_cast<int>(i), to_model(f.pos_ws), joint, &level,
                                         stance ? f.stance_clear : f.swing_clear, &dir, nullptr);
-      if (ankle.y - creature_->skeleton.length(limb.bones[1]) > f.pos_ws.y + margin) continue;
+      if (!steps_near && ankle.y - creature_->skeleton.length(limb.bones[1]) > f.pos_ws.y + margin) continue;
       const TwoBoneIkResult ik = solve_two_bone_ik_directions(joint, creature_->skeleton.length(limb.bones[0]),
                                                               creature_->skeleton.length(limb.bones[1]), ankle,
                                                               static_cast<float>(limb.bend_sign));
       const glm::vec2 knee = to_world(ik.middle);
-      auto ground = level.ground_height_below(knee.x - 0.005f, knee.x + 0.005f, knee.y + info.reach, 2.0f * info.reach);
-      if (!ground) continue;
       float& up = stance ? stance_up[info.group] : swing_up[info.group];
-      up = std::max(up, ground->height_ws + margin - knee.y);
+      if (auto ground = level.ground_height_below(knee.x - 0.005f, knee.x + 0.005f, knee.y + info.reach, 2.0f * info.reach)) {
+        up = std::max(up, ground->height_ws + margin - knee.y);
+      }
+      // On steps a standing leg's thigh or shin may cross the edge of a step beside the knee.
+      if (steps_near) {
+        const glm::vec2 hip = to_world(joint), heel = to_world(ik.end);
+        up = std::max({up, raise_to_clear(hip, knee, level), raise_to_clear(knee, heel, level)});
+      }
     }
     bool moved = false;
     for (size_t g = 0; g < n_groups; ++g) {
@@ -1476,6 +1486,24 @@ void Animator::place_body(float dt, const Level& level) {
   for (int w : wings_) keep_shoulder_out(w);
   root_y_ += raise;
   root_vy_ = dt > 0.0f ? (root_y_ - old_root) / dt : 0.0f;
+}
+
+float Animator::raise_to_clear(glm::vec2 a, glm::vec2 b, const Level& level) const {
+  // How far the segment must rise (straight up) to leave every box it cuts: over the part of
+  // the box's width it spans, its lowest point to the box's top.
+  segment_hits_.clear();
+  level.overlapping(Box{glm::min(a, b) - glm::vec2(1e-4f), glm::max(a, b) + glm::vec2(1e-4f)}, segment_hits_);
+  float need = 0.0f;
+  for (int h : segment_hits_) {
+    const Box& box = level.box(h);
+    const float lo = std::max(std::min(a.x, b.x), box.min_ws.x), hi = std::min(std::max(a.x, b.x), box.max_ws.x);
+    if (lo > hi) continue;
+    auto y_at = [&](float x) { return std::fabs(b.x - a.x) < 1e-6f ? std::min(a.y, b.y) : a.y + (b.y - a.y) * (x - a.x) / (b.x - a.x); };
+    const float y0 = y_at(lo), y1 = y_at(hi);
+    if (std::max(y0, y1) <= box.min_ws.y) continue;  // passes under it
+    need = std::max(need, box.top() - std::min(y0, y1));
+  }
+  return need;
 }
 
 void Animator::move_girdle(int group, float dy) {

@@ -152,6 +152,7 @@ class Animator {
     float hover = 0.0f;              // seconds spent waiting above the landing point
     bool holds_body = false;         // standing behind and below, it held the body down
     Clearance stance_clear;          // around pos_ws while in stance
+    Clearance stance_reach_clear;    // within a leg's reach of pos_ws while in stance
     Clearance swing_clear;           // around the path of the current swing
   };
 
@@ -188,6 +189,8 @@ class Animator {
   // Would leg i's chain (joint, knee, ankle, toe), standing where it stands, cut into a box
   // with its girdle joint at joint_ms? (Callers skip it when nothing rises near the foot.)
   bool stance_leg_hits(int leg, glm::vec2 joint_ms, const Level& level) const;
+  // How far the segment a-b (world) must rise to clear every box it cuts.
+  float raise_to_clear(glm::vec2 a, glm::vec2 b, const Level& level) const;
   // Moves a girdle's joint up by dy, turning the body about the girdle at the other end.
   void move_girdle(int group, float dy);
   // Girdle joint of a leg group from the current body placement.
