@@ -568,7 +568,7 @@ void Animator::update(float dt, float desired_velocity, const Level& level) {
       // A foot left below and behind on stairs whose leg would cut the edge of a step above
       // it lifts now (see the gait clock below) rather than drag its knee through the step.
       // The body waits for it if the leg clears the steps where it is.
-      if (stance && anchor.x < joint.x && !f.stance_clear.clear_above(std::min(contact.y, joint.y - info.reach)) &&
+      if (stance && anchor.x < joint.x && !f.stance_reach_clear.clear_above(contact.y) &&
           stance_leg_hits(static_cast<int>(i), joint + glm::vec2(std::fabs(dx), 0.0f), level)) {
         feet_[foot_of_leg_[i]].holds_body = true;
         if (!stance_leg_hits(static_cast<int>(i), joint, level)) dx = 0.0f;
