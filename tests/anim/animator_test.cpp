@@ -75,6 +75,20 @@ TEST_CASE("walkers climb stairs up and down and cross rough ground without slidi
   }
 }
 
+TEST_CASE("walkers run up and down the steep flight of stairs.json without sliding or sinking", "[anim]") {
+  const Level stairs = shipped("stairs.json");
+  const Creature magpie = build_creature(scenes::generator().example("magpie").value()).value();
+  for (Creature c : {magpie, scenes::biped(), scenes::quadruped(), scenes::three_leg_pairs()}) {
+    INFO(c.name);
+    Walker w = make_walker(c, stairs, stairs.spawn_ws + glm::vec2(0.0f, 1.0f));
+    const SimResult r = run_script(*w.player, stairs, script("run:1:15"), 120);
+    CHECK(r.x_reached > 30.0f);
+    CHECK(r.probe.max_stance_slip_m <= 0.001f);
+    CHECK(r.probe.max_penetration_m <= 0.001f);
+    CHECK(r.probe.nan_count == 0);
+  }
+}
+
 TEST_CASE("after a stop every foot is on the ground within 0.3 s", "[anim]") {
   const Level flat = scenes::flat_level(200.0f);
   for (Creature c : {scenes::biped(), scenes::quadruped(), scenes::three_leg_pairs()}) {

@@ -22,6 +22,7 @@ namespace {
 constexpr float kReachLimit = 0.985f;  // stance legs never extend beyond this fraction
 constexpr float kMaxPitch = 0.9f;       // the body turns no steeper than this (radians)
 constexpr float kMaxPitchStep = 0.03f;  // nor by more than this in one tick to keep a foot in reach
+constexpr float kMaxPitchOff = 0.25f;   // nor further than this from the pitch of the ground
 constexpr float kStepReach = 0.8f;      // near steps the body outruns a foot by this much of its reach
 
 // x - floor(x) in [0, 1), without a library call for the phases' range.
@@ -1164,13 +1165,26 @@ void Animator::keep_fin_clear(const Limb& fin, const Level& level) {
   if (n == 0 || !hits()) return;
   const float base = pose_.locals[fin.bones[0]].angle_ls;
   const float up = p[n].x >= p[0].x ? 1.0f : -1.0f;  // the turn that raises the tip
-  float lo = 0.0f, hi = 0.5f * kPi;
+  // The least turn that clears, raising the tip first (up to a quarter turn), then either way
+  // in eighth turns up to three eighths (a step rising right in front of a folded wing).
+  float turn = 0.0f;
+  auto clears = [&](float t) {
+    pose_.locals[fin.bones[0]].angle_ls = base + t;
+    return !hits();
+  };
+  for (float t : {0.5f * kPi * up, 0.25f * kPi * -up, 0.75f * kPi * up, 0.5f * kPi * -up, 0.75f * kPi * -up}) {
+    if (clears(t)) {
+      turn = t;
+      break;
+    }
+  }
+  if (turn == 0.0f) turn = 0.5f * kPi * up;  // nothing clears: the tip up, as before
+  float lo = 0.0f, hi = 1.0f;  // fractions of the turn: lo hits, hi clears (or is the last resort)
   for (int k = 0; k < 7; ++k) {
     const float mid = 0.5f * (lo + hi);
-    pose_.locals[fin.bones[0]].angle_ls = base + up * mid;
-    (hits() ? lo : hi) = mid;
+    (clears(mid * turn) ? hi : lo) = mid;
   }
-  pose_.locals[fin.bones[0]].angle_ls = wrap_angle(base + up * hi);
+  pose_.locals[fin.bones[0]].angle_ls = wrap_angle(base + hi * turn);
 }
 
 glm::vec2 Animator::swing_point(const Foot& f, float s) {
@@ -1266,6 +1280,16 @@ void Animator::start_ease(int leg, const Level& level, const glm::vec2* to) {
   } else if (!find_landing(leg, f.pos_ws.x, level, &landing)) {
     landing = f.to_ws;
   }
+  // Set down where the leg reaches from where the body stopped: drawn in towards the joint.
+  const glm::vec2 joint = to_model(girdle_ws(legs_[leg].group));
+  const float reach = 0.97f * legs_[leg].contact_reach;
+  if (!to && glm::length(to_model(landing) - joint) > reach) {
+    const float h = joint.y - landing.y;
+    const float reach_x = 0.9f * std::sqrt(std::max(reach * reach - h * h, 0.0f));
+    const float dx = std::clamp(to_model(landing).x - joint.x, -reach_x, reach_x);
+    glm::vec2 spot;
+    if (nearest_fit(leg, to_world({joint.x + dx, landing.y}), level, &spot, true)) landing = spot;
+  }
   f.state = LegState::kSwing;
   f.from_ws = f.pos_ws;
   f.to_ws = landing;
@@ -1348,6 +1372,7 @@ void Animator::place_body(float dt, const Level& level) {
   const bool snap = turning || dt <= 0.0f;
   snap_body_ = false;
   pitch_ = approach(pitch_, target_pitch, snap ? 0.0f : decay_.pitch);
+  pitch_target_ = target_pitch;
   root_y_ = approach(root_y_, target_root, snap ? 0.0f : decay_.root);
 
   // Never over-extend a leg on the ground: lower its girdle (hard clamp, no smoothing; again
@@ -1524,7 +1549,8 @@ void Animator::move_girdle(int group, float dy) {
     const float s = std::asin(std::clamp((v_before.y + dy) / len, -0.95f, 0.95f));
     const float turned = (std::cos(a + phi) >= 0.0f ? s : kPi - s) - phi;
     const float step = std::clamp(wrap_angle(turned - a), -kMaxPitchStep, kMaxPitchStep);
-    pitch_ = std::clamp(pitch_ + step, -kMaxPitch, kMaxPitch);
+    pitch_ = std::clamp(pitch_ + step, std::max(pitch_target_ - kMaxPitchOff, -kMaxPitch),
+                        std::min(pitch_target_ + kMaxPitchOff, kMaxPitch));
   }
   const float moved = rotate_body(v).y - v_before.y;
   root_y_ += o_before.y - rotate_body(o).y + (dy - moved);

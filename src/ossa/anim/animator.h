@@ -279,6 +279,7 @@ class Animator {
   float body_x_ = 0.0f;
   float root_y_ = 0.0f;              // world y of the root
   float pitch_ = 0.0f;               // model-space root rotation from terrain
+  float pitch_target_ = 0.0f;        // the pitch of the ground under the girdles (place_body)
   float lean_ = 0.0f;
   int facing_ = 1;
   float speed_ = 0.0f;
