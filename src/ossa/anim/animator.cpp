@@ -20,6 +20,7 @@ namespace ossa {
 namespace {
 
 constexpr float kReachLimit = 0.985f;  // stance legs never extend beyond this fraction
+constexpr float kFootReach = 0.97f;     // a foothold counts as in reach within this fraction
 constexpr float kMaxPitch = 0.9f;       // the body turns no steeper than this (radians)
 constexpr float kMaxPitchStep = 0.03f;  // nor by more than this in one tick to keep a foot in reach
 constexpr float kMaxPitchOff = 0.25f;   // nor further than this from the pitch of the ground
@@ -618,7 +619,7 @@ void Animator::update(float dt, float desired_velocity, const Level& level) {
         if (!lift && contact.x - info.foot_span < joint.x) {  // else its anchor is ahead of the joint
           float r;
           const glm::vec2 anchor = leg_anchor(static_cast<int>(i), contact, joint, level, f.stance_clear, &r);
-          if (glm::length(anchor - joint) > 0.97f * r && anchor.x < joint.x) lift = true;
+          if (glm::length(anchor - joint) > kFootReach * r && anchor.x < joint.x) lift = true;
         }
         if (lift) set_new_splines(static_cast<int>(i), level, std::max(1.0f - p, 0.05f));
       } else if (!f.easing) {
@@ -685,8 +686,7 @@ void Animator::update(float dt, float desired_velocity, const Level& level) {
         // nearest place below the joint it reaches instead, from where it hangs now.
         glm::vec2 spot;
         const glm::vec2 below_joint = to_world({joint.x, f.to_ws.y});
-        if (nearest_fit(static_cast<int>(i), below_joint, level, &spot) &&
-            glm::length(to_model(spot) - joint) < 0.97f * info.contact_reach) {
+        if (nearest_fit(static_cast<int>(i), below_joint, level, &spot) && reaches(static_cast<int>(i), spot)) {
           const float R = info.contact_reach;
           const float dxj = to_model(f.to_ws).x - joint.x;
           const glm::vec2 hanging = to_world({to_model(f.to_ws).x, joint.y - std::sqrt(std::max(R * R - dxj * dxj, 0.0f))});
@@ -826,8 +826,7 @@ void Animator::reverse(const Level& level) {
       if (!from || std::fabs(other.pos_ws.x - joint_x) < std::fabs(from->pos_ws.x - joint_x)) from = &other;
     }
     glm::vec2 landing;
-    if (!from) from = &f;  // none in reach: it swings from where it is, rather than stand out of reach
-    f.pos_ws = from->pos_ws;
+    if (from) f.pos_ws = from->pos_ws;  // else none in reach: it swings from where it stands
     if (!find_landing(static_cast<int>(i), joint_x, level, &landing)) landing = f.pos_ws;
     f.from_ws = f.pos_ws;
     f.to_ws = landing;
@@ -859,7 +858,6 @@ bool Animator::nearest_fit(int leg, glm::vec2 near_ws, const Level& level, glm::
 bool Animator::nearest_fit_within(int leg, glm::vec2 near_ws, const Level& level, glm::vec2* spot, bool in_reach) const {
   // Centimetre by centimetre either way, up to half a leg's length, on ground within a step.
   const LegInfo& info = legs_[leg];
-  const glm::vec2 joint = to_model(girdle_ws(info.group));
   const float up = params_.max_step_up * groups_[info.group].rest_height;
   const float down = params_.max_step_down * groups_[info.group].rest_height;
   // A flat foot stands on the highest ground under its sole.
@@ -871,13 +869,17 @@ bool Animator::nearest_fit_within(int leg, glm::vec2 near_ws, const Level& level
     auto hit = level.ground_height_below(x + sole_lo, x + sole_hi, near_ws.y + up, up + down);
     if (!hit) continue;
     const glm::vec2 p(x, hit->height_ws);
-    if (in_reach && glm::length(to_model(p) - joint) > 0.97f * info.contact_reach) continue;
+    if (in_reach && !reaches(leg, p)) continue;
     if (foot_fits(leg, p, level)) {
       *spot = p;
       return true;
     }
   }
   return false;
+}
+
+bool Animator::reaches(int leg, glm::vec2 p_ws) const {
+  return glm::length(to_model(p_ws) - to_model(girdle_ws(legs_[leg].group))) <= kFootReach * legs_[leg].contact_reach;
 }
 
 bool Animator::foot_fits(int leg, glm::vec2 contact_ws, const Level& level) const {
@@ -1281,9 +1283,9 @@ void Animator::start_ease(int leg, const Level& level, const glm::vec2* to) {
     landing = f.to_ws;
   }
   // Set down where the leg reaches from where the body stopped: drawn in towards the joint.
-  const glm::vec2 joint = to_model(girdle_ws(legs_[leg].group));
-  const float reach = 0.97f * legs_[leg].contact_reach;
-  if (!to && glm::length(to_model(landing) - joint) > reach) {
+  if (!to && !reaches(leg, landing)) {
+    const glm::vec2 joint = to_model(girdle_ws(legs_[leg].group));
+    const float reach = kFootReach * legs_[leg].contact_reach;
     const float h = joint.y - landing.y;
     const float reach_x = 0.9f * std::sqrt(std::max(reach * reach - h * h, 0.0f));
     const float dx = std::clamp(to_model(landing).x - joint.x, -reach_x, reach_x);
@@ -1345,7 +1347,7 @@ void Animator::place_body(float dt, const Level& level) {
         if (f.state == LegState::kStance) floor = std::max(floor, f.pos_ws.y + 0.6f * groups_[g].rest_height);
         if (f.state != LegState::kSwing || f.hover <= 0.0f) continue;
         const glm::vec2 foot = f.to_ws;
-        const float r = 0.97f * legs_[leg].contact_reach;
+        const float r = kFootReach * legs_[leg].contact_reach;
         const float dx = std::min(std::fabs(foot.x - gx), 0.95f * r);
         lowest = std::min(lowest, foot.y + std::sqrt(r * r - dx * dx));
       }

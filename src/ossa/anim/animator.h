@@ -175,6 +175,8 @@ class Animator {
   // prefer_reach: one the leg reaches from where its girdle is now, if there is one.
   bool nearest_fit(int leg, glm::vec2 near_ws, const Level& level, glm::vec2* spot, bool prefer_reach = false) const;
   bool nearest_fit_within(int leg, glm::vec2 near_ws, const Level& level, glm::vec2* spot, bool in_reach) const;
+  // Does leg i reach p_ws (within kFootReach of its reach) from where its girdle is now?
+  bool reaches(int leg, glm::vec2 p_ws) const;
   // Where leg i would land if it lifted now at `speed` (swing_phase < 0: a full swing).
   float landing_x(int leg, float speed, float swing_phase = -1.0f) const;
   // v rotated by the body angle pitch_ + lean_.
