@@ -563,9 +563,11 @@ void Animator::update(float dt, float desired_velocity, const Level& level) {
       const float h = joint.y - anchor.y;
       // Near steps a foot behind keeps the joint within kStepReach of the leg's reach: a leg
       // stretched back across a flight of stairs would cut the edges between.
-      if (anchor.x < joint.x && !(stance ? f.stance_reach_clear : f.swing_clear).clear_above(anchor.y + 0.1f * hip_height_)) r *= kStepReach;
+      const bool near_steps = anchor.x < joint.x && !(stance ? f.stance_reach_clear : f.swing_clear).clear_above(anchor.y + 0.1f * hip_height_);
       // How far forward the joint may go with this foot still in reach (model x).
-      const float ahead = anchor.x + std::sqrt(std::max(r * r - h * h, 0.0f)) - joint.x;
+      const float level_reach = std::sqrt(std::max(r * r - h * h, 0.0f));
+      const float near_reach = std::max(std::sqrt(std::max(kStepReach * kStepReach * r * r - h * h, 0.0f)), 0.5f * level_reach);
+      const float ahead = anchor.x + (near_steps ? near_reach : level_reach) - joint.x;
       dx = facing_ * std::min(std::fabs(dx), std::max(ahead, 0.0f));
       // A foot left below and behind on stairs whose leg would cut the edge of a step above
       // it lifts now (see the gait clock below) rather than drag its knee through the step.
@@ -812,21 +814,24 @@ void Animator::reverse(const Level& level) {
   snap_body_ = true;  // the body takes its new height and pitch at once (feet must not jump)
   // Girdles spaced unevenly along the body (three leg pairs) cannot all land on feet: a leg
   // whose foot (standing or in the air) is now out of reach lifts from the nearest foot on the
-  // ground it reaches and steps under its girdle.
+  // ground it reaches and steps under its girdle. A foot in the air heading out of reach (to
+  // where the body was going) steps under its girdle from where it is.
   for (size_t i = 0; i < legs_.size(); ++i) {
     Foot& f = feet_[foot_of_leg_[i]];
     const LegInfo& info = legs_[i];
     const float h = groups_[info.group].rest_height * params_.stance_height;
     const float reach_x = 0.95f * std::sqrt(std::max(info.contact_reach * info.contact_reach - h * h, 0.0f));
     const float joint_x = girdle_ws(info.group).x;
-    if (std::fabs(f.pos_ws.x - joint_x) <= reach_x) continue;
+    const bool foot_in_reach = std::fabs(f.pos_ws.x - joint_x) <= reach_x;
+    if (foot_in_reach && (f.state == LegState::kStance || std::fabs(f.to_ws.x - joint_x) <= reach_x)) continue;
     const Foot* from = nullptr;
     for (const Foot& other : feet_) {
+      if (foot_in_reach) break;
       if (&other == &f || other.state != LegState::kStance || std::fabs(other.pos_ws.x - joint_x) > reach_x) continue;
       if (!from || std::fabs(other.pos_ws.x - joint_x) < std::fabs(from->pos_ws.x - joint_x)) from = &other;
     }
     glm::vec2 landing;
-    if (from) f.pos_ws = from->pos_ws;  // else none in reach: it swings from where it stands
+    if (from) f.pos_ws = from->pos_ws;  // else none in reach: it swings from where it is
     if (!find_landing(static_cast<int>(i), joint_x, level, &landing)) landing = f.pos_ws;
     f.from_ws = f.pos_ws;
     f.to_ws = landing;
