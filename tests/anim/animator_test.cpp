@@ -89,6 +89,35 @@ TEST_CASE("walkers run up and down the steep flight of stairs.json without slidi
   }
 }
 
+TEST_CASE("walkers stopped on the steep flight turn round and walk back down it", "[anim]") {
+  const Level stairs = shipped("stairs.json");
+  const Creature magpie = build_creature(scenes::generator().example("magpie").value()).value();
+  for (Creature c : {magpie, scenes::biped(), scenes::quadruped(), scenes::three_leg_pairs()}) {
+    INFO(c.name);
+    Walker w = make_walker(c, stairs, stairs.spawn_ws + glm::vec2(0.0f, 1.0f));
+    // Six seconds up take each of them onto the 40° flight (x 10.2 to 12).
+    const SimResult r = run_script(*w.player, stairs, script("walk:0.5:6,stop:1,walk:-0.6:6"), 120);
+    REQUIRE(r.segments.size() == 3);
+    CHECK(r.segments[2].mean_speed < 0.4f * r.segments[2].commanded_speed);  // back down, not stuck
+    CHECK(r.x_reached < 5.0f);
+    CHECK(r.probe.max_stance_slip_m <= 0.001f);
+    CHECK(r.probe.max_penetration_m <= 0.001f);
+    CHECK(r.probe.nan_count == 0);
+  }
+}
+
+TEST_CASE("a trotting quadruped goes down the default level's stairs without stalling", "[anim]") {
+  const Level level = shipped("default.json");
+  Walker w = make_walker(scenes::quadruped(), level, level.spawn_ws + glm::vec2(0.0f, 1.0f));
+  const SimResult r = run_script(*w.player, level, script("walk:0.8:20"), 120);
+  REQUIRE(r.segments.size() == 1);
+  CHECK(r.segments[0].gait == "trot");
+  CHECK(r.x_reached > 50.0f);
+  CHECK(r.probe.max_stance_slip_m <= 0.001f);
+  CHECK(r.probe.max_penetration_m <= 0.001f);
+  CHECK(r.probe.nan_count == 0);
+}
+
 TEST_CASE("after a stop every foot is on the ground within 0.3 s", "[anim]") {
   const Level flat = scenes::flat_level(200.0f);
   for (Creature c : {scenes::biped(), scenes::quadruped(), scenes::three_leg_pairs()}) {

@@ -1224,17 +1224,22 @@ bool Animator::raise_for_clearance(int leg, const Level& level) {
   }
   constexpr int kSamples = 48;
   Box foot[kSamples];
+  // A foot that stands pressed against a step (turned round on a narrow tread) only has to
+  // clear it once it has left it.
+  auto foot_box = [&](float s) {
+    const glm::vec2 p = swing_point(f, s);
+    const glm::vec2 q = p + glm::vec2(facing_ * ankle_rel.x, ankle_rel.y);
+    const glm::vec2 r = p + glm::vec2(facing_ * tip_rel.x, tip_rel.y);
+    // A little narrower than find_landing's test, so a landing it found clears at its end.
+    return Box{glm::min(glm::min(p, q), r) - glm::vec2(0.006f, 0.0f), glm::max(glm::max(p, q), r) + glm::vec2(0.006f, 0.005f)};
+  };
+  foot[0] = foot_box(0.0f);
   std::vector<int>& hits = clearance_hits_;
   for (int iter = 0; iter < 8; ++iter) {
     // The foot's box at each sample, then the colliders near the whole path in one query.
     Box path{glm::vec2(1e30f), glm::vec2(-1e30f)};
     for (int k = 1; k < kSamples; ++k) {
-      const float s = static_cast<float>(k) / kSamples;
-      const glm::vec2 p = swing_point(f, s);
-      const glm::vec2 q = p + glm::vec2(facing_ * ankle_rel.x, ankle_rel.y);
-      const glm::vec2 r = p + glm::vec2(facing_ * tip_rel.x, tip_rel.y);
-      // A little narrower than find_landing's test, so a landing it found clears at its end.
-      foot[k] = Box{glm::min(glm::min(p, q), r) - glm::vec2(0.006f, 0.0f), glm::max(glm::max(p, q), r) + glm::vec2(0.006f, 0.005f)};
+      foot[k] = foot_box(static_cast<float>(k) / kSamples);
       path.min_ws = glm::min(path.min_ws, foot[k].min_ws);
       path.max_ws = glm::max(path.max_ws, foot[k].max_ws);
     }
@@ -1243,7 +1248,11 @@ bool Animator::raise_for_clearance(int leg, const Level& level) {
     float need = 0.0f;
     for (int h : hits) {
       const Box& box = level.box(h);
-      for (int k = 1; k < kSamples; ++k) {
+      int k = 1;
+      if (box.overlaps(foot[0])) {
+        while (k < kSamples && box.overlaps(foot[k])) ++k;
+      }
+      for (; k < kSamples; ++k) {
         if (!box.overlaps(foot[k])) continue;
         const float depth = box.top() + 0.01f - foot[k].min_ws.y;
         need = std::max(need, depth / std::max(bump(static_cast<float>(k) / kSamples), 0.1f));
