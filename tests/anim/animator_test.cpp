@@ -118,6 +118,20 @@ TEST_CASE("a trotting quadruped goes down the default level's stairs without sta
   CHECK(r.probe.nan_count == 0);
 }
 
+TEST_CASE("legless swimmers crawl with their fins and spine out of the ground", "[anim]") {
+  const Level rough = shipped("rough.json");
+  for (const char* name : {"trout", "blue whale", "peloneustes"}) {
+    INFO(name);
+    const Creature c = build_creature(scenes::generator().example(name).value()).value();
+    REQUIRE(c.limbs.size() >= 2);
+    Walker w = make_walker(c, rough, rough.spawn_ws + glm::vec2(0.0f, 1.0f));
+    const SimResult r = run_script(*w.player, rough, script("walk:0.6:10,stop:1,walk:-0.6:5"), 120);
+    CHECK(r.x_reached > 0.0f);
+    CHECK(r.probe.max_penetration_m <= 0.001f);  // fins are limbs: the probe measures them
+    CHECK(r.probe.nan_count == 0);
+  }
+}
+
 TEST_CASE("after a stop every foot is on the ground within 0.3 s", "[anim]") {
   const Level flat = scenes::flat_level(200.0f);
   for (Creature c : {scenes::biped(), scenes::quadruped(), scenes::three_leg_pairs()}) {

@@ -432,7 +432,7 @@ void Animator::reset(glm::vec2 position_ws, const Level& level, int facing) {
   lean_ = 0.0f;
   pitch_ = 0.0f;
   run_factor_ = trot_factor_ = gallop_factor_ = 0.0f;
-  tail_angle_ = tail_rate_ = root_vy_ = 0.0f;
+  tail_angle_ = tail_rate_ = root_vy_ = body_lift_ = 0.0f;
   steps_ = 0;
   idle_time_ = 0.0f;
   gait_ = legs_.empty() ? Gait::kCrawl : Gait::kIdle;
@@ -1149,6 +1149,37 @@ void Animator::keep_arm_above_ground(const Limb& arm, const Level& level) {
   set_wrist(p, p.shoulder + glm::normalize(glm::vec2(-1.0f, -0.3f)) * tuck_len);
 }
 
+void Animator::keep_body_out(const Level& level) {
+  // A legless body's wave bends its spine, and the roots of its fins, arms and wings, below
+  // where place_body put them at rest: the whole body rises by the deepest into the ground.
+  const Creature& c = *creature_;
+  float raise = 0.0f;
+  auto keep_out = [&](glm::vec2 p_ms) {
+    const glm::vec2 p = to_world(p_ms);
+    if (auto below = level.ground_height_below(p.x - 0.02f, p.x + 0.02f, p.y + hip_height_, 100.0f)) {
+      raise = std::max(raise, below->height_ws - p.y);
+    }
+  };
+  for (int b : needed_bones_) keep_out(bone_start(model_[b]));
+  for (const Limb& limb : c.limbs) {
+    if (!limb.bones.empty()) keep_out(model_[limb.girdle_bone].apply(pose_.locals[limb.bones[0]].offset_ls));
+  }
+  if (raise <= 0.0f) return;
+  root_y_ += raise;
+  body_lift_ += raise;
+  pose_.locals[c.root].offset_ls.y += raise;
+  body_fk();
+}
+
+void Animator::body_fk() {
+  const std::vector<int>& parents = creature_->skeleton.parents();
+  for (int b : needed_bones_) {
+    const Mat2x3 local = dynamic_bone_[b] ? local_matrix(pose_.locals[b]) : rest_local_m_[b];
+    model_[b] = parents[b] < 0 ? local : model_[parents[b]] * local;
+  }
+  for (size_t i = 0; i < girdle_bones_.size(); ++i) model_[girdle_bones_[i]] = model_[creature_->root] * girdle_rel_[i];
+}
+
 void Animator::keep_fin_clear(const Limb& fin, const Level& level) {
   // A fin (or folded wing) trailing into the ground or a step turns up at its root until it
   // clears.
@@ -1333,7 +1364,10 @@ void Animator::place_body(float dt, const Level& level) {
     // Legless: follow the highest ground under the body.
     auto hit = level.ground_height_below(body_x_ - body_half_length_, body_x_ + body_half_length_,
                                          root_y_ + hip_height_, 100.0f);
-    target_root = (hit ? hit->height_ws : root_y_ - root_rest_y_) + root_rest_y_;
+    // Lifted lately so that the wave keeps the body out of the ground (keep_body_out): held
+    // there, settling back slowly, rather than pulled down and lifted again every tick.
+    if (dt > 0.0f) body_lift_ *= std::exp(-dt);
+    target_root = (hit ? hit->height_ws : root_y_ - root_rest_y_) + root_rest_y_ + body_lift_;
   } else {
     std::vector<float>& height = group_height_;
     for (size_t g = 0; g < groups_.size(); ++g) {
@@ -1513,7 +1547,8 @@ void Animator::place_body(float dt, const Level& level) {
       raise = std::max(raise, below->height_ws + 0.12f * rest - joint.y);
     }
   }
-  // Shoulders carrying arms or wings too (those fold and lift, but their roots must stay out).
+  // Shoulders carrying arms, wings or fins too (those fold and lift, but their roots must stay
+  // out).
   auto keep_shoulder_out = [&](int limb) {
     const glm::vec2 rest_joint = bone_start(model_rest_[creature_->limbs[limb].bones[0]]);
     const glm::vec2 j = rotate_body(rest_joint - glm::vec2(0.0f, root_rest_y_));
@@ -1525,6 +1560,7 @@ void Animator::place_body(float dt, const Level& level) {
   };
   for (int a : arms_) keep_shoulder_out(a);
   for (int w : wings_) keep_shoulder_out(w);
+  for (int f : fins_) keep_shoulder_out(f);
   root_y_ += raise;
   root_vy_ = dt > 0.0f ? (root_y_ - old_root) / dt : 0.0f;
 }
@@ -1611,11 +1647,8 @@ void Animator::build_pose(float dt, const Level& level) {
   // change reuse their rest matrices), then the limb chains after IK (leaves of the tree).
   model_.resize(sk.bone_count());
   const std::vector<int>& parents = sk.parents();
-  for (int b : needed_bones_) {
-    const Mat2x3 local = dynamic_bone_[b] ? local_matrix(pose_.locals[b]) : rest_local_m_[b];
-    model_[b] = parents[b] < 0 ? local : model_[parents[b]] * local;
-  }
-  for (size_t i = 0; i < girdle_bones_.size(); ++i) model_[girdle_bones_[i]] = model_[c.root] * girdle_rel_[i];
+  body_fk();
+  if (legs_.empty()) keep_body_out(level);
 
   // Legs: two-bone IK in model space (the creature always faces +x there, so knees bend the
   // right way whichever way it faces in the world).

@@ -207,6 +207,8 @@ class Animator {
   void build_pose(float dt, const Level& level);
   void keep_arm_above_ground(const Limb& arm, const Level& level);
   void keep_fin_clear(const Limb& fin, const Level& level);
+  void keep_body_out(const Level& level);
+  void body_fk();  // model matrices of the body: the root, the chains to the girdles, the girdles
   // Ankle of leg i for a contact point and girdle joint (model space) and the foot bone's
   // direction: the rest angle unless that over-extends the leg, else pivoted about the contact
   // (no further than the level allows, when one is given).
@@ -304,6 +306,7 @@ class Animator {
   float crawl_phase_ = 0.0f;
   float tail_angle_ = 0.0f, tail_rate_ = 0.0f;
   float root_vy_ = 0.0f;
+  float body_lift_ = 0.0f;  // legless: how far keep_body_out has lately lifted the body
   int steps_ = 0;
 };
 
