@@ -569,6 +569,13 @@ void Animator::update(float dt, float desired_velocity, const Level& level) {
       const float near_reach = std::max(std::sqrt(std::max(kStepReach * kStepReach * r * r - h * h, 0.0f)), 0.5f * level_reach);
       const float ahead = anchor.x + (near_steps ? near_reach : level_reach) - joint.x;
       dx = facing_ * std::min(std::fabs(dx), std::max(ahead, 0.0f));
+      // Nor does the body leave a swinging foot behind further than its leg reaches (a foot
+      // that lifted late, far back on stairs, would sweep the leg through the steps between).
+      if (!stance) {
+        const glm::vec2 now = to_model(f.pos_ws);
+        const float R = info.contact_reach, hn = joint.y - now.y;
+        if (now.x < joint.x) dx = facing_ * std::min(std::fabs(dx), std::max(now.x + std::sqrt(std::max(R * R - hn * hn, 0.0f)) - joint.x, 0.0f));
+      }
       // A foot left below and behind on stairs whose leg would cut the edge of a step above
       // it lifts now (see the gait clock below) rather than drag its knee through the step.
       // The body waits for it if the leg clears the steps where it is.
