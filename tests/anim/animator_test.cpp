@@ -53,6 +53,25 @@ TEST_CASE("walkers keep the commanded speed, plant their feet and stay out of th
   }
 }
 
+TEST_CASE("every example animal walks, runs, stops and turns round on flat ground", "[anim]") {
+  const Level flat = scenes::flat_level(200.0f);
+  const Generator& gen = scenes::generator();
+  REQUIRE(gen.dataset().animals.size() == 44);
+  for (const Animal& animal : gen.dataset().animals) {
+    INFO(animal.name);
+    const Creature c = build_creature(gen.example(animal.name).value()).value();
+    Walker w = make_walker(c, flat, {2.0f, 1.0f});
+    const SimResult r = run_script(*w.player, flat, script("walk:0.6:4,run:1:4,stop:1,walk:-0.6:3"), 120);
+    for (const SegmentMetrics& s : r.segments) {
+      INFO(s.command);
+      CHECK(s.speed_error <= 0.02f);
+    }
+    CHECK(r.probe.max_stance_slip_m <= 0.001f);
+    CHECK(r.probe.max_penetration_m <= 0.001f);
+    CHECK(r.probe.nan_count == 0);
+  }
+}
+
 TEST_CASE("walkers climb stairs up and down and cross rough ground without sliding or sinking", "[anim]") {
   const Level level = shipped("default.json");  // stairs up to a 1 m landing and down again
   const Level rough = shipped("rough.json");
