@@ -24,6 +24,7 @@ constexpr float kFootReach = 0.97f;     // a foothold counts as in reach within 
 constexpr float kMaxPitch = 0.9f;       // the body turns no steeper than this (radians)
 constexpr float kMaxPitchStep = 0.03f;  // nor by more than this in one tick to keep a foot in reach
 constexpr float kMaxPitchOff = 0.25f;   // nor further than this from the pitch of the ground
+constexpr float kStepHeightOfReach = 0.8f;  // a crouching leg steps as high as a straighter one this long
 constexpr float kStepReach = 0.8f;      // near steps the body outruns a foot by this much of its reach
 
 // x - floor(x) in [0, 1), without a library call for the phases' range.
@@ -167,7 +168,7 @@ Animator::Animator(const Creature& creature, SplinePrototypes prototypes, Animat
     }
     if (group < 0) {
       group = static_cast<int>(groups_.size());
-      groups_.push_back({joint, joint.y, {}});
+      groups_.push_back({joint, joint.y, joint.y, {}});
     }
     groups_[group].legs.push_back(static_cast<int>(legs_.size()));
     info.group = group;
@@ -182,7 +183,10 @@ Animator::Animator(const Creature& creature, SplinePrototypes prototypes, Animat
   for (int g : order) sorted.push_back(groups_[g]);
   groups_ = sorted;
   for (int g = 0; g < static_cast<int>(groups_.size()); ++g) {
-    for (int leg : groups_[g].legs) legs_[leg].group = g;
+    for (int leg : groups_[g].legs) {
+      legs_[leg].group = g;
+      groups_[g].step_height = std::max(groups_[g].step_height, kStepHeightOfReach * legs_[leg].contact_reach);
+    }
   }
   feet_.resize(legs_.size());
   foot_of_leg_.resize(legs_.size());
@@ -870,7 +874,7 @@ bool Animator::nearest_fit(int leg, glm::vec2 near_ws, const Level& level, glm::
 bool Animator::nearest_fit_within(int leg, glm::vec2 near_ws, const Level& level, glm::vec2* spot, bool in_reach) const {
   // Centimetre by centimetre either way, up to half a leg's length, on ground within a step.
   const LegInfo& info = legs_[leg];
-  const float up = params_.max_step_up * groups_[info.group].rest_height;
+  const float up = params_.max_step_up * groups_[info.group].step_height;
   const float down = params_.max_step_down * groups_[info.group].rest_height;
   // A flat foot stands on the highest ground under its sole.
   const float sole = creature_->contact == ContactMode::kFlat ? facing_ * info.foot_length : 0.0f;
@@ -911,7 +915,7 @@ bool Animator::foot_fits(int leg, glm::vec2 contact_ws, const Level& level) cons
 bool Animator::find_landing(int leg, float x_wanted, const Level& level, glm::vec2* landing) const {
   const LegInfo& info = legs_[leg];
   const Foot& f = feet_[foot_of_leg_[leg]];
-  const float up = params_.max_step_up * groups_[info.group].rest_height;
+  const float up = params_.max_step_up * groups_[info.group].step_height;
   const float down = params_.max_step_down * groups_[info.group].rest_height;
   // The foot's horizontal extent relative to its contact point (model space → world).
   const glm::vec2 ankle_rel = -info.foot_offset_ms;
@@ -1389,8 +1393,8 @@ void Animator::place_body(float dt, const Level& level) {
       // knees stay clear of the step they pass over.
       const float gx = girdle_ws(static_cast<int>(g)).x;
       const float half = 0.2f * groups_[g].rest_height;
-      if (auto below = level.ground_height_below(gx - half, gx + half, ground + params_.max_step_up * groups_[g].rest_height,
-                                                 params_.max_step_up * groups_[g].rest_height)) {
+      if (auto below = level.ground_height_below(gx - half, gx + half, ground + params_.max_step_up * groups_[g].step_height,
+                                                 params_.max_step_up * groups_[g].step_height)) {
         ground = std::max(ground, 0.5f * (ground + below->height_ws));
       }
       height[g] = ground + groups_[g].rest_height * params_.stance_height + bob;
