@@ -1142,20 +1142,26 @@ void Animator::keep_arm_above_ground(const Limb& arm, const Level& level) {
   };
   if (!hits(p)) return;
   // Tucked under the shoulder, else folded up in front of the chest, else up behind it: the
-  // first tuck that clears, approached only as far as needed.
+  // first tuck that clears, approached only as far as needed. The hand keeps its direction,
+  // else (a long hand or flipper reaching into a step ahead) it trails back and down, else
+  // up behind.
   const float tuck_len = std::max(std::fabs(l1 - l2) + 0.01f, 0.35f * (l1 + l2));
-  for (glm::vec2 dir : {glm::vec2(-1.0f, -0.3f), glm::vec2(0.4f, 1.0f), glm::vec2(-0.6f, 1.0f)}) {
-    const glm::vec2 tuck = p.shoulder + glm::normalize(dir) * tuck_len;
-    set_wrist(p, tuck);
-    if (hits(current())) continue;
-    float lo = 0.0f, hi = 1.0f;  // fractions of the way to the tuck: lo hits, hi clears
-    for (int k = 0; k < 6; ++k) {
-      const float mid = 0.5f * (lo + hi);
-      set_wrist(p, glm::mix(p.wrist, tuck, mid));
-      (hits(current()) ? lo : hi) = mid;
+  for (float hand : {p.hand_abs, kPi + 0.3f, kPi - 0.8f}) {
+    ArmPose q = p;
+    q.hand_abs = hand;
+    for (glm::vec2 dir : {glm::vec2(-1.0f, -0.3f), glm::vec2(0.4f, 1.0f), glm::vec2(-0.6f, 1.0f)}) {
+      const glm::vec2 tuck = q.shoulder + glm::normalize(dir) * tuck_len;
+      set_wrist(q, tuck);
+      if (hits(current())) continue;
+      float lo = 0.0f, hi = 1.0f;  // fractions of the way to the tuck: lo hits, hi clears
+      for (int k = 0; k < 6; ++k) {
+        const float mid = 0.5f * (lo + hi);
+        set_wrist(q, glm::mix(q.wrist, tuck, mid));
+        (hits(current()) ? lo : hi) = mid;
+      }
+      set_wrist(q, glm::mix(q.wrist, tuck, hi));
+      return;
     }
-    set_wrist(p, glm::mix(p.wrist, tuck, hi));
-    return;
   }
   set_wrist(p, p.shoulder + glm::normalize(glm::vec2(-1.0f, -0.3f)) * tuck_len);
 }
