@@ -127,8 +127,8 @@ class Animator {
   struct Group {                     // a girdle slot carrying a leg pair
     glm::vec2 joint_ms{0.0f};        // rest girdle joint, model space
     float rest_height = 0.0f;        // joint height above the rest ground, metres
-    // What the step limits (max_step_up, max_step_down) are fractions of: the rest height, or
-    // more for crouching legs that reach further than they stand tall.
+    // What max_step_up is a fraction of: the rest height, or more for crouching legs that
+    // reach further than they stand tall (max_step_down is a fraction of the rest height).
     float step_height = 0.0f;
     std::vector<int> legs;           // leg indices (near first)
   };
