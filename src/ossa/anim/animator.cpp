@@ -917,6 +917,9 @@ bool Animator::find_landing(int leg, float x_wanted, const Level& level, glm::ve
   const Foot& f = feet_[foot_of_leg_[leg]];
   const float up = params_.max_step_up * groups_[info.group].step_height;
   const float down = params_.max_step_down * groups_[info.group].rest_height;
+  // A step down counts from the foot, or from the ground its girdle stands over when the foot
+  // stands higher (a foot left up on a step steps back down as far as its girdle stands).
+  const float lowest = std::min(f.pos_ws.y, girdle_ws(info.group).y - groups_[info.group].rest_height) - down;
   // The foot's horizontal extent relative to its contact point (model space → world).
   const glm::vec2 ankle_rel = -info.foot_offset_ms;
   const glm::vec2 tip_rel = creature_->contact == ContactMode::kFlat ? glm::vec2(info.foot_length, 0.0f) : glm::vec2(0.0f);
@@ -939,7 +942,7 @@ bool Animator::find_landing(int leg, float x_wanted, const Level& level, glm::ve
     }
     if (d > 0.25f * stride_) continue;
     const float x = x_wanted + facing_ * d;
-    auto hit = level.ground_height_below(x + span_lo, x + span_hi, f.pos_ws.y + up, up + down);
+    auto hit = level.ground_height_below(x + span_lo, x + span_hi, f.pos_ws.y + up, f.pos_ws.y + up - lowest);
     if (!hit) continue;
     const float y = hit->height_ws;
     const Box foot_box{{x + span_lo + 0.002f, y + 0.002f}, {x + span_hi - 0.002f, y + height}};
@@ -1508,9 +1511,11 @@ void Animator::place_body(float dt, const Level& level) {
   // low body, or lifted in a swing) raises its girdle until the knee clears the ground under
   // it. A swinging leg's knee raises it only as far as the legs on the ground allow (their
   // feet must not slide); past that the swing itself lifts and tucks the leg (build_pose).
+  // With the foot in place a raised joint lifts the knee by less than itself: up to four
+  // passes, as long as some girdle moves.
   std::vector<float>& stance_up = group_need_;
   std::vector<float>& swing_up = group_swing_up_;
-  for (int pass = 0; pass < 2; ++pass) {
+  for (int pass = 0; pass < 4; ++pass) {
     std::fill(stance_up.begin(), stance_up.end(), 0.0f);
     std::fill(swing_up.begin(), swing_up.end(), 0.0f);
     for (size_t i = 0; i < legs_.size(); ++i) {
@@ -1522,7 +1527,7 @@ void Animator::place_body(float dt, const Level& level) {
       const float margin = 0.02f * info.reach;
       // The knee is no lower than a thigh below the joint nor a shin below the ankle: cheap
       // tests before the IK (unless steps rise beside a standing foot).
-      const bool steps_near = stance && !f.stance_reach_clear.clear_above(f.pos_ws.y + margin);
+      const bool steps_near = !(stance ? f.stance_reach_clear : f.swing_clear).clear_above(f.pos_ws.y + margin);
       if (!steps_near && joint.y - creature_->skeleton.length(limb.bones[0]) > f.pos_ws.y + margin) continue;
       glm::vec2 dir;
       const glm::vec2 ankle = leg_ankle(static_cast<int>(i), to_model(f.pos_ws), joint, &level,
@@ -1536,8 +1541,10 @@ void Animator::place_body(float dt, const Level& level) {
       if (auto ground = level.ground_height_below(knee.x - 0.005f, knee.x + 0.005f, knee.y + info.reach, 2.0f * info.reach)) {
         up = std::max(up, ground->height_ws + margin - knee.y);
       }
-      // On steps a standing leg's thigh or shin may cross the edge of a step beside the knee.
-      if (steps_near) {
+      // On steps a thigh or shin may cross the edge of a step beside the knee (a swinging leg
+      // far back down a flight, say), as may a shin coming up to a foot on the edge of a ledge
+      // from a knee below it.
+      if (steps_near || knee.y < f.pos_ws.y + margin) {
         const glm::vec2 hip = to_world(joint), heel = to_world(ik.end);
         up = std::max({up, raise_to_clear(hip, knee, level), raise_to_clear(knee, heel, level)});
       }

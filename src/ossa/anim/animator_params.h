@@ -31,7 +31,7 @@ struct AnimatorParams {
   // Highest step up and deepest step down a foot may take, as fractions of the girdle's
   // standing height (for the step up, of 0.8 of the leg's reach where that is more: crouching
   // legs). Walls taller and drops deeper stop the creature at the edge. [0.05, 1].
-  float max_step_up = 0.5f;
+  float max_step_up = 0.6f;
   float max_step_down = 0.7f;
   // Standing height of the girdles as a fraction of their rest height. [0.7, 1.05].
   float stance_height = 0.97f;
