@@ -137,6 +137,28 @@ TEST_CASE("a trotting quadruped goes down the default level's stairs without sta
   CHECK(r.probe.nan_count == 0);
 }
 
+TEST_CASE("example birds walk, run and turn round on every shipped level", "[anim]") {
+  // Long, crouching legs on narrow steps: they land on the steps their legs reach and keep
+  // knees and thighs off the edges between.
+  const Level levels[] = {shipped("default.json"), shipped("stairs.json"), shipped("rough.json")};
+  for (const char* name : {"pigeon", "ostrich", "sinornis", "ichthyornis"}) {
+    const Creature c = build_creature(scenes::generator().example(name).value()).value();
+    for (const Level& level : levels) {
+      for (const char* text : {"walk:0.6:30", "run:1:15", "walk:0.5:6,stop:1,walk:-0.6:6"}) {
+        INFO(name << " on " << level.name << ": " << text);
+        Walker w = make_walker(c, level, level.spawn_ws + glm::vec2(0.0f, 1.0f));
+        const SimResult r = run_script(*w.player, level, script(text), 120);
+        CHECK(r.probe.max_stance_slip_m <= 0.001f);
+        CHECK(r.probe.max_penetration_m <= 0.001f);
+        CHECK(r.probe.nan_count == 0);
+        for (const SegmentMetrics& s : r.segments) {
+          if (s.commanded_speed != 0.0f) CHECK(s.mean_speed * s.commanded_speed > 0.2f * s.commanded_speed * s.commanded_speed);
+        }
+      }
+    }
+  }
+}
+
 TEST_CASE("legless swimmers crawl with their fins and spine out of the ground", "[anim]") {
   const Level rough = shipped("rough.json");
   for (const char* name : {"trout", "blue whale", "peloneustes"}) {
