@@ -159,6 +159,29 @@ TEST_CASE("example birds walk, run and turn round on every shipped level", "[ani
   }
 }
 
+TEST_CASE("legged animals keep their tails out of the steps", "[anim]") {
+  // The probe measures limbs; tails are checked here, along each tail bone.
+  const Level levels[] = {shipped("default.json"), shipped("stairs.json"), shipped("rough.json")};
+  for (const char* name : {"kangaroo", "tyrannosaurus", "dimetrodon", "stegosaurus"}) {
+    const Creature c = build_creature(scenes::generator().example(name).value()).value();
+    REQUIRE(!c.tail.empty());
+    for (const Level& level : levels) {
+      INFO(name << " on " << level.name);
+      Walker w = make_walker(c, level, level.spawn_ws + glm::vec2(0.0f, 1.0f));
+      const Animator& a = w.player->animator();
+      float worst = 0.0f;
+      run_script(*w.player, level, script("walk:0.6:20,run:1:10"), 120, [&](long long) {
+        const std::vector<Mat2x3>& world = a.world_matrices();
+        for (int b : c.tail) {
+          const glm::vec2 p = bone_start(world[b]), q = bone_end(world[b], c.skeleton.length(b));
+          for (int k = 0; k <= 4; ++k) worst = std::max(worst, penetration_depth(level, p + (q - p) * (0.25f * k)));
+        }
+      });
+      CHECK(worst <= 0.002f);
+    }
+  }
+}
+
 TEST_CASE("legless swimmers crawl with their fins and spine out of the ground", "[anim]") {
   const Level rough = shipped("rough.json");
   for (const char* name : {"trout", "blue whale", "peloneustes"}) {

@@ -25,7 +25,8 @@ constexpr float kMaxPitch = 0.9f;       // the body turns no steeper than this (
 constexpr float kMaxPitchStep = 0.03f;  // nor by more than this in one tick to keep a foot in reach
 constexpr float kMaxPitchOff = 0.25f;   // nor further than this from the pitch of the ground
 constexpr float kStepHeightOfReach = 0.8f;  // a crouching leg steps as high as a straighter one this long
-constexpr float kStepReach = 0.8f;      // near steps the body outruns a foot by this much of its reach
+constexpr float kStepReach = 0.8f;
+constexpr size_t kMaxTailBones = 48;     // keep_tail_clear curls at most this many tail bones      // near steps the body outruns a foot by this much of its reach
 
 // x - floor(x) in [0, 1), without a library call for the phases' range.
 float frac(float x) {
@@ -286,6 +287,10 @@ Animator::Animator(const Creature& creature, SplinePrototypes prototypes, Animat
       const Mat2x3& skull = model_rest_[creature.skull];
       skull_rel_ = root_inv.apply(bone_start(skull));
       skull_span_ = bone_end(skull, sk.length(creature.skull)) - bone_start(skull);
+    }
+    if (!creature.tail.empty() && sk.parent(creature.tail[0]) >= 0) {
+      tail_base_rel_ = root_inv * model_rest_[sk.parent(creature.tail[0])];
+      for (int b : creature.tail) tail_length_ += sk.length(b);
     }
   } else {
     // The neck and head take part in the wall sweep.
@@ -1200,6 +1205,42 @@ void Animator::body_fk() {
   for (size_t i = 0; i < girdle_bones_.size(); ++i) model_[girdle_bones_[i]] = model_[creature_->root] * girdle_rel_[i];
 }
 
+void Animator::keep_tail_clear(const Level& level) {
+  // A tail hanging into a step (down a flight, or one rising behind) curls up from its root,
+  // the least that clears, up to 1.6 rad over its length. Only asked when ground rises to
+  // within a tail's length of its root.
+  const Creature& c = *creature_;
+  const Mat2x3 base = model_[c.root] * tail_base_rel_;
+  const glm::vec2 root = to_world(base.apply(pose_.locals[c.tail[0]].offset_ls));
+  const float len = tail_length_;
+  const auto ground = level.ground_height_below(root.x - len, root.x + len, root.y + len, 2.0f * len);
+  if (!ground || ground->height_ws < root.y - len) return;
+  const size_t n = std::min<size_t>(c.tail.size(), kMaxTailBones);
+  glm::vec2 p[kMaxTailBones + 1];
+  auto hits = [&](float turn) {
+    Mat2x3 m = base;
+    for (size_t k = 0; k < n; ++k) {
+      BoneLocal local = pose_.locals[c.tail[k]];
+      local.angle_ls += turn / static_cast<float>(n);
+      m = m * local_matrix(local);
+      p[k] = to_world(bone_start(m));
+      if (k + 1 == n) p[n] = to_world(bone_end(m, c.skeleton.length(c.tail[k])));
+    }
+    return polyline_hits_level(level, p, static_cast<int>(n + 1), segment_hits_);
+  };
+  if (!hits(0.0f)) return;
+  // The turn that raises the tip first; a curled tail may need the other.
+  const float up = facing_ * (p[n].x - p[0].x) < 0.0f ? -1.0f : 1.0f;
+  float most = 1.6f * up;
+  if (hits(most) && !hits(-most)) most = -most;
+  float lo = 0.0f, hi = 1.0f;  // fractions of the most: lo hits, hi clears (or is the last resort)
+  for (int k = 0; k < 6; ++k) {
+    const float mid = 0.5f * (lo + hi);
+    (hits(mid * most) ? lo : hi) = mid;
+  }
+  for (size_t k = 0; k < n; ++k) pose_.locals[c.tail[k]].angle_ls += hi * most / static_cast<float>(n);
+}
+
 void Animator::keep_fin_clear(const Limb& fin, const Level& level) {
   // A fin (or folded wing) trailing into the ground or a step turns up at its root until it
   // clears.
@@ -1673,6 +1714,7 @@ void Animator::build_pose(float dt, const Level& level) {
   const std::vector<int>& parents = sk.parents();
   body_fk();
   if (legs_.empty()) keep_body_out(level);
+  if (tail_length_ > 0.0f) keep_tail_clear(level);
 
   // Legs: two-bone IK in model space (the creature always faces +x there, so knees bend the
   // right way whichever way it faces in the world).

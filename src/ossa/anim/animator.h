@@ -211,6 +211,7 @@ class Animator {
   void keep_arm_above_ground(const Limb& arm, const Level& level);
   void keep_fin_clear(const Limb& fin, const Level& level);
   void keep_body_out(const Level& level);
+  void keep_tail_clear(const Level& level);
   void body_fk();  // model matrices of the body: the root, the chains to the girdles, the girdles
   // Ankle of leg i for a contact point and girdle joint (model space) and the foot bone's
   // direction: the rest angle unless that over-extends the leg, else pivoted about the contact
@@ -269,6 +270,8 @@ class Animator {
   std::vector<Box> body_boxes_;           // scratch for the wall sweep
   mutable std::vector<int> segment_hits_; // scratch for leg_ankle
   glm::vec2 skull_rel_{0.0f}, skull_span_{0.0f};
+  Mat2x3 tail_base_rel_;                  // the tail's parent bone in the root's frame (rigid bodies)
+  float tail_length_ = 0.0f;              // > 0: keep_tail_clear runs
   std::vector<float> group_height_;       // scratch for place_body
   std::vector<float> group_need_, group_room_, group_swing_up_;  // scratch for place_body's clamps
   std::vector<float> target_offset_;      // per leg: leg_target_offset at offsets_trot_/gallop_
