@@ -24,9 +24,10 @@ constexpr float kFootReach = 0.97f;     // a foothold counts as in reach within 
 constexpr float kMaxPitch = 0.9f;       // the body turns no steeper than this (radians)
 constexpr float kMaxPitchStep = 0.03f;  // nor by more than this in one tick to keep a foot in reach
 constexpr float kMaxPitchOff = 0.25f;   // nor further than this from the pitch of the ground
-constexpr float kStepHeightOfReach = 0.8f;  // a crouching leg steps as high as a straighter one this long
-constexpr float kStepReach = 0.8f;
-constexpr size_t kMaxTailBones = 48;     // keep_tail_clear curls at most this many tail bones      // near steps the body outruns a foot by this much of its reach
+constexpr float kStepReach = 0.8f;      // near steps the body outruns a foot by this much of its reach
+// A crouching leg steps up as high as a straight one this fraction of its reach long.
+constexpr float kStepHeightOfReach = 0.8f;
+constexpr size_t kMaxTailBones = 48;    // keep_tail_clear curls at most this many tail bones
 
 // x - floor(x) in [0, 1), without a library call for the phases' range.
 float frac(float x) {
@@ -580,10 +581,11 @@ void Animator::update(float dt, float desired_velocity, const Level& level) {
       dx = facing_ * std::min(std::fabs(dx), std::max(ahead, 0.0f));
       // Nor does the body leave a swinging foot behind further than its leg reaches (a foot
       // that lifted late, far back on stairs, would sweep the leg through the steps between).
-      if (!stance) {
-        const glm::vec2 now = to_model(f.pos_ws);
+      const glm::vec2 now = to_model(f.pos_ws);
+      if (!stance && now.x < joint.x) {
         const float R = info.contact_reach, hn = joint.y - now.y;
-        if (now.x < joint.x) dx = facing_ * std::min(std::fabs(dx), std::max(now.x + std::sqrt(std::max(R * R - hn * hn, 0.0f)) - joint.x, 0.0f));
+        const float lead = now.x + std::sqrt(std::max(R * R - hn * hn, 0.0f)) - joint.x;
+        dx = facing_ * std::min(std::fabs(dx), std::max(lead, 0.0f));
       }
       // A foot left below and behind on stairs whose leg would cut the edge of a step above
       // it lifts now (see the gait clock below) rather than drag its knee through the step.
