@@ -1569,7 +1569,7 @@ void Animator::place_body(float dt, const Level& level) {
       const glm::vec2 joint = to_model(girdle_ws(info.group));
       const float margin = 0.02f * info.reach;
       // The knee is no lower than a thigh below the joint nor a shin below the ankle: cheap
-      // tests before the IK (unless steps rise beside a standing foot).
+      // tests before the IK (unless steps rise near the foot).
       const bool steps_near = !(stance ? f.stance_reach_clear : f.swing_clear).clear_above(f.pos_ws.y + margin);
       if (!steps_near && joint.y - creature_->skeleton.length(limb.bones[0]) > f.pos_ws.y + margin) continue;
       glm::vec2 dir;
