@@ -33,6 +33,21 @@ Level shipped(const char* name) { return load_level(scenes::source_path(std::str
 
 std::vector<ScriptSegment> script(const char* text) { return parse_script(text).value(); }
 
+// No foot on the ground slid, no limb went into a collider by more than 1 mm, no NaN.
+void check_planted_and_clear(const SimResult& r) {
+  CHECK(r.probe.max_stance_slip_m <= 0.001f);
+  CHECK(r.probe.max_penetration_m <= 0.001f);
+  CHECK(r.probe.nan_count == 0);
+}
+
+// Every segment's mean speed within 2% of the command.
+void check_speeds(const SimResult& r) {
+  for (const SegmentMetrics& s : r.segments) {
+    INFO(s.command);
+    CHECK(s.speed_error <= 0.02f);
+  }
+}
+
 }  // namespace
 
 TEST_CASE("walkers keep the commanded speed, plant their feet and stay out of the ground on flat", "[anim]") {
@@ -41,13 +56,8 @@ TEST_CASE("walkers keep the commanded speed, plant their feet and stay out of th
     INFO(c.name);
     Walker w = make_walker(c, flat, {2.0f, 1.0f});
     const SimResult r = run_script(*w.player, flat, script("walk:0.3:6,walk:0.5:8,run:0.8:6,run:1:6,walk:-0.5:6"), 120);
-    for (const SegmentMetrics& s : r.segments) {
-      INFO(s.command);
-      CHECK(s.speed_error <= 0.02f);
-    }
-    CHECK(r.probe.max_stance_slip_m <= 0.001f);
-    CHECK(r.probe.max_penetration_m <= 0.001f);
-    CHECK(r.probe.nan_count == 0);
+    check_speeds(r);
+    check_planted_and_clear(r);
     CHECK(r.steps > 20);
     CHECK(r.probe.min_swing_clearance_m > 0.0f);
   }
@@ -62,13 +72,8 @@ TEST_CASE("every example animal walks, runs, stops and turns round on flat groun
     const Creature c = build_creature(gen.example(animal.name).value()).value();
     Walker w = make_walker(c, flat, {2.0f, 1.0f});
     const SimResult r = run_script(*w.player, flat, script("walk:0.6:4,run:1:4,stop:1,walk:-0.6:3"), 120);
-    for (const SegmentMetrics& s : r.segments) {
-      INFO(s.command);
-      CHECK(s.speed_error <= 0.02f);
-    }
-    CHECK(r.probe.max_stance_slip_m <= 0.001f);
-    CHECK(r.probe.max_penetration_m <= 0.001f);
-    CHECK(r.probe.nan_count == 0);
+    check_speeds(r);
+    check_planted_and_clear(r);
   }
 }
 
@@ -88,9 +93,7 @@ TEST_CASE("walkers climb stairs up and down and cross rough ground without slidi
     Walker w = make_walker(k.creature, *k.level, k.level->spawn_ws + glm::vec2(0.0f, 1.0f));
     const SimResult r = run_script(*w.player, *k.level, script("walk:0.6:30"), 120);
     CHECK(r.x_reached > k.must_reach);
-    CHECK(r.probe.max_stance_slip_m <= 0.001f);
-    CHECK(r.probe.max_penetration_m <= 0.001f);
-    CHECK(r.probe.nan_count == 0);
+    check_planted_and_clear(r);
   }
 }
 
@@ -102,9 +105,7 @@ TEST_CASE("walkers run up and down the steep flight of stairs.json without slidi
     Walker w = make_walker(c, stairs, stairs.spawn_ws + glm::vec2(0.0f, 1.0f));
     const SimResult r = run_script(*w.player, stairs, script("run:1:15"), 120);
     CHECK(r.x_reached > 30.0f);
-    CHECK(r.probe.max_stance_slip_m <= 0.001f);
-    CHECK(r.probe.max_penetration_m <= 0.001f);
-    CHECK(r.probe.nan_count == 0);
+    check_planted_and_clear(r);
   }
 }
 
@@ -119,9 +120,7 @@ TEST_CASE("walkers stopped on the steep flight turn round and walk back down it"
     REQUIRE(r.segments.size() == 3);
     CHECK(r.segments[2].mean_speed < 0.4f * r.segments[2].commanded_speed);  // back down, not stuck
     CHECK(r.x_reached < 5.0f);
-    CHECK(r.probe.max_stance_slip_m <= 0.001f);
-    CHECK(r.probe.max_penetration_m <= 0.001f);
-    CHECK(r.probe.nan_count == 0);
+    check_planted_and_clear(r);
   }
 }
 
@@ -132,9 +131,7 @@ TEST_CASE("a trotting quadruped goes down the default level's stairs without sta
   REQUIRE(r.segments.size() == 1);
   CHECK(r.segments[0].gait == "trot");
   CHECK(r.x_reached > 50.0f);
-  CHECK(r.probe.max_stance_slip_m <= 0.001f);
-  CHECK(r.probe.max_penetration_m <= 0.001f);
-  CHECK(r.probe.nan_count == 0);
+  check_planted_and_clear(r);
 }
 
 TEST_CASE("example birds walk, run and turn round on every shipped level", "[anim]") {
@@ -148,9 +145,7 @@ TEST_CASE("example birds walk, run and turn round on every shipped level", "[ani
         INFO(name << " on " << level.name << ": " << text);
         Walker w = make_walker(c, level, level.spawn_ws + glm::vec2(0.0f, 1.0f));
         const SimResult r = run_script(*w.player, level, script(text), 120);
-        CHECK(r.probe.max_stance_slip_m <= 0.001f);
-        CHECK(r.probe.max_penetration_m <= 0.001f);
-        CHECK(r.probe.nan_count == 0);
+        check_planted_and_clear(r);
         for (const SegmentMetrics& s : r.segments) {
           if (s.commanded_speed != 0.0f) CHECK(s.mean_speed * s.commanded_speed > 0.2f * s.commanded_speed * s.commanded_speed);
         }
