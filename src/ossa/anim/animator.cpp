@@ -289,10 +289,6 @@ Animator::Animator(const Creature& creature, SplinePrototypes prototypes, Animat
       skull_rel_ = root_inv.apply(bone_start(skull));
       skull_span_ = bone_end(skull, sk.length(creature.skull)) - bone_start(skull);
     }
-    if (!creature.tail.empty() && sk.parent(creature.tail[0]) >= 0) {
-      tail_base_rel_ = root_inv * model_rest_[sk.parent(creature.tail[0])];
-      for (int b : creature.tail) tail_length_ += sk.length(b);
-    }
   } else {
     // The neck and head take part in the wall sweep.
     for (int b : creature.neck) needed[b] = 1;
@@ -301,6 +297,28 @@ Animator::Animator(const Creature& creature, SplinePrototypes prototypes, Animat
       if (!needed[b]) continue;
       needed_bones_.push_back(b);
       tick_bone_[b] = 1;
+    }
+  }
+  // The tail hangs from the nearest of its ancestors that update() keeps current, through the
+  // bones between (at rest in a rigid body, bent by the wave in a legless one).
+  if (!creature.tail.empty()) {
+    std::vector<int> between;
+    int b = sk.parent(creature.tail[0]);
+    while (b >= 0 && !tick_bone_[b]) {
+      between.push_back(b);
+      b = sk.parent(b);
+    }
+    if (b >= 0) {
+      tail_base_bone_ = b;
+      tail_between_.assign(between.rbegin(), between.rend());
+      for (int t : creature.tail) tail_length_ += sk.length(t);
+      // Bones that never bend: their product once.
+      bool rest = true;
+      for (int t : tail_between_) rest = rest && !dynamic_bone_[t];
+      if (rest) {
+        for (int t : tail_between_) tail_between_rest_ = tail_between_rest_ * rest_local_m_[t];
+        tail_between_.clear();
+      }
     }
   }
   // The joints build_pose rewrites each tick (everything else keeps its rest value).
@@ -1212,7 +1230,8 @@ void Animator::keep_tail_clear(const Level& level) {
   // the least that clears, up to 1.6 rad over its length. Only asked when ground rises to
   // within a tail's length of its root.
   const Creature& c = *creature_;
-  const Mat2x3 base = model_[c.root] * tail_base_rel_;
+  Mat2x3 base = model_[tail_base_bone_] * tail_between_rest_;
+  for (int b : tail_between_) base = base * local_matrix(pose_.locals[b]);
   const glm::vec2 root = to_world(base.apply(pose_.locals[c.tail[0]].offset_ls));
   const float len = tail_length_;
   const auto ground = level.ground_height_below(root.x - len, root.x + len, root.y + len, 2.0f * len);

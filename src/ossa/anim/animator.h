@@ -270,7 +270,9 @@ class Animator {
   std::vector<Box> body_boxes_;           // scratch for the wall sweep
   mutable std::vector<int> segment_hits_; // scratch for leg_ankle
   glm::vec2 skull_rel_{0.0f}, skull_span_{0.0f};
-  Mat2x3 tail_base_rel_;                  // the tail's parent bone in the root's frame (rigid bodies)
+  int tail_base_bone_ = -1;               // the tail's nearest ancestor kept current each tick
+  std::vector<int> tail_between_;         // the bones from there to the tail (root first)...
+  Mat2x3 tail_between_rest_;              // ...or, when none of them bends, their rest product
   float tail_length_ = 0.0f;              // > 0: keep_tail_clear runs
   std::vector<float> group_height_;       // scratch for place_body
   std::vector<float> group_need_, group_room_, group_swing_up_;  // scratch for place_body's clamps
