@@ -860,14 +860,15 @@ void Animator::reverse(const Level& level) {
     const float joint_x = girdle_ws(info.group).x;
     const bool foot_in_reach = std::fabs(f.pos_ws.x - joint_x) <= reach_x;
     if (foot_in_reach && (f.state == LegState::kStance || std::fabs(f.to_ws.x - joint_x) <= reach_x)) continue;
-    const Foot* from = nullptr;
-    for (const Foot& other : feet_) {
-      if (foot_in_reach) break;
-      if (&other == &f || other.state != LegState::kStance || std::fabs(other.pos_ws.x - joint_x) > reach_x) continue;
-      if (!from || std::fabs(other.pos_ws.x - joint_x) < std::fabs(from->pos_ws.x - joint_x)) from = &other;
+    if (!foot_in_reach) {  // from the nearest foot on the ground in reach, else from where it is
+      const Foot* from = nullptr;
+      for (const Foot& other : feet_) {
+        if (&other == &f || other.state != LegState::kStance || std::fabs(other.pos_ws.x - joint_x) > reach_x) continue;
+        if (!from || std::fabs(other.pos_ws.x - joint_x) < std::fabs(from->pos_ws.x - joint_x)) from = &other;
+      }
+      if (from) f.pos_ws = from->pos_ws;
     }
     glm::vec2 landing;
-    if (from) f.pos_ws = from->pos_ws;  // else none in reach: it swings from where it is
     if (!find_landing(static_cast<int>(i), joint_x, level, &landing)) landing = f.pos_ws;
     f.from_ws = f.pos_ws;
     f.to_ws = landing;
