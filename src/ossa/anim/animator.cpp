@@ -1647,6 +1647,22 @@ void Animator::place_body(float dt, const Level& level) {
   };
   for (int a : arms_) keep_shoulder_out(a);
   for (int w : wings_) keep_shoulder_out(w);
+  // A folded wing is part of the body's outline: it does not cut a step's corner either (a
+  // wall, too high to rise over, is the sweep's business).
+  for (int w : wings_) {
+    const auto& bones = creature_->limbs[w].bones;
+    auto at = [&](glm::vec2 rest) {
+      const glm::vec2 j = rotate_body(rest - glm::vec2(0.0f, root_rest_y_));
+      return to_world({j.x, j.y + root_y_ + raise});
+    };
+    glm::vec2 a = at(bone_start(model_rest_[bones[0]]));
+    for (int b : bones) {
+      const glm::vec2 e = at(bone_end(model_rest_[b], creature_->skeleton.length(b)));
+      const float need = raise_to_clear(a, e, level);
+      if (need < 0.5f * hip_height_) raise += need;
+      a = e;
+    }
+  }
   for (int f : fins_) keep_shoulder_out(f);
   root_y_ += raise;
   root_vy_ = dt > 0.0f ? (root_y_ - old_root) / dt : 0.0f;
