@@ -1200,15 +1200,23 @@ void Animator::keep_body_out(const Level& level) {
   // where place_body put them at rest: the whole body rises by the deepest into the ground.
   const Creature& c = *creature_;
   float raise = 0.0f;
-  auto keep_out = [&](glm::vec2 p_ms) {
+  // (A limb's root may hang far below its girdle: the ground is looked for from the girdle.)
+  auto keep_out = [&](glm::vec2 p_ms, float from_y_ms) {
     const glm::vec2 p = to_world(p_ms);
-    if (auto below = level.ground_height_below(p.x - 0.02f, p.x + 0.02f, p.y + hip_height_, 100.0f)) {
+    const float from = to_world({p_ms.x, std::max(from_y_ms, p_ms.y)}).y;
+    if (auto below = level.ground_height_below(p.x - 0.02f, p.x + 0.02f, from + hip_height_, 100.0f)) {
       raise = std::max(raise, below->height_ws - p.y);
     }
   };
-  for (int b : needed_bones_) keep_out(bone_start(model_[b]));
+  for (int b : needed_bones_) {
+    const glm::vec2 p = bone_start(model_[b]);
+    keep_out(p, p.y);
+  }
   for (const Limb& limb : c.limbs) {
-    if (!limb.bones.empty()) keep_out(model_[limb.girdle_bone].apply(pose_.locals[limb.bones[0]].offset_ls));
+    if (!limb.bones.empty()) {
+      const Mat2x3& girdle = model_[limb.girdle_bone];
+      keep_out(girdle.apply(pose_.locals[limb.bones[0]].offset_ls), bone_start(girdle).y);
+    }
   }
   if (raise <= 0.0f) return;
   root_y_ += raise;
