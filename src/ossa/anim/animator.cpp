@@ -1632,13 +1632,15 @@ void Animator::place_body(float dt, const Level& level) {
   }
   // Whatever the legs ask, a girdle never sinks into the ground under it: it keeps an eighth
   // of its standing height above the highest ground there (a leg may stretch, the body stays
-  // out).
+  // out). Ground the body came down past on this tick counts too (the leg clamp above may
+  // pull it down further than the queries look up).
   float raise = 0.0f;
+  const float fell = groups_.empty() ? 0.0f : std::max(old_root - root_y_, 0.0f);
   for (size_t g = 0; g < groups_.size(); ++g) {
     const glm::vec2 joint = girdle_ws(static_cast<int>(g));
     const float rest = groups_[g].rest_height;
     const float half = 0.1f * rest;
-    if (auto below = level.ground_height_below(joint.x - half, joint.x + half, joint.y + 0.5f * rest, 100.0f)) {
+    if (auto below = level.ground_height_below(joint.x - half, joint.x + half, joint.y + 0.5f * rest + fell, 100.0f)) {
       raise = std::max(raise, below->height_ws + 0.12f * rest - joint.y);
     }
   }
@@ -1649,7 +1651,7 @@ void Animator::place_body(float dt, const Level& level) {
     const glm::vec2 j = rotate_body(rest_joint - glm::vec2(0.0f, root_rest_y_));
     const glm::vec2 joint = to_world({j.x, j.y + root_y_});
     const float half = 0.05f * hip_height_;
-    if (auto below = level.ground_height_below(joint.x - half, joint.x + half, joint.y + 0.5f * hip_height_, 100.0f)) {
+    if (auto below = level.ground_height_below(joint.x - half, joint.x + half, joint.y + 0.5f * hip_height_ + fell, 100.0f)) {
       raise = std::max(raise, below->height_ws + 0.1f * hip_height_ - joint.y);
     }
   };
