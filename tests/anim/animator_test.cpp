@@ -204,6 +204,20 @@ TEST_CASE("folded wings stay out of the steps a long-bodied bird climbs", "[anim
   }
 }
 
+TEST_CASE("a seal stopped by a flight it cannot climb keeps its flippers out of the steps", "[anim]") {
+  // The eared seal's chest is low and its fore flippers long: its shoulder meets the step in
+  // front (the body stops there), and the flippers fold clear of the tread just under it.
+  const Level level = shipped("stairs.json");
+  const Creature c = build_creature(scenes::generator().example("eared seal").value()).value();
+  for (const char* text : {"walk:0.6:30", "run:1:15"}) {
+    INFO(text);
+    Walker w = make_walker(c, level, level.spawn_ws + glm::vec2(0.0f, 1.0f));
+    const SimResult r = run_script(*w.player, level, script(text), 120);
+    check_planted_and_clear(r);
+    CHECK(r.x_reached > 10.0f);  // up the first flight, to the foot of the steep one
+  }
+}
+
 TEST_CASE("animals keep their tails out of the steps", "[anim]") {
   // The probe measures limbs; tails are checked here, along each tail bone. The swimmers'
   // tails are bent by their travelling wave too.

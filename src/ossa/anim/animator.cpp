@@ -433,6 +433,12 @@ void Animator::body_boxes(bool slabs, std::vector<Box>* boxes) const {
     for (int b : creature_->neck) add(b);
     if (creature_->skull >= 0) add(creature_->skull);
   }
+  // An arm's shoulder is the body's too (the arm itself folds out of the way): it meets a
+  // step rising in front of a low chest.
+  for (int a : arms_) {
+    if (slabs) begin();
+    add_point(bone_start(model_[creature_->limbs[a].bones[0]]));
+  }
   for (int a : fins_) {
     if (slabs) begin();
     for (int b : creature_->limbs[a].bones) add(b);
@@ -1173,11 +1179,13 @@ void Animator::keep_arm_above_ground(const Limb& arm, const Level& level) {
   // Tucked under the shoulder, else folded up in front of the chest, else up behind it: the
   // first tuck that clears, approached only as far as needed. The hand keeps its direction,
   // else (a long hand or flipper reaching into a step ahead) it trails back and down, else
-  // up behind.
+  // up behind; last, with the elbow bent the other way (a shoulder just above a tread, where
+  // any elbow bent down meets the tread).
   const float tuck_len = std::max(std::fabs(l1 - l2) + 0.01f, 0.35f * (l1 + l2));
-  for (float hand : {p.hand_abs, kPi + 0.3f, kPi - 0.8f}) {
+  for (int k = 0; k < 6; ++k) {
     ArmPose q = p;
-    q.hand_abs = hand;
+    q.hand_abs = (k % 3 == 0) ? p.hand_abs : (k % 3 == 1) ? kPi + 0.3f : kPi - 0.8f;
+    if (k >= 3) q.bend = -p.bend;
     for (glm::vec2 dir : {glm::vec2(-1.0f, -0.3f), glm::vec2(0.4f, 1.0f), glm::vec2(-0.6f, 1.0f)}) {
       const glm::vec2 tuck = q.shoulder + glm::normalize(dir) * tuck_len;
       set_wrist(q, tuck);
