@@ -218,6 +218,22 @@ TEST_CASE("a seal stopped by a flight it cannot climb keeps its flippers out of 
   }
 }
 
+TEST_CASE("front legs climb no step the hind legs could not follow up", "[anim]") {
+  // The tortoise's hind legs are shorter than its front legs: the default level's 25 cm step
+  // is one its front legs climb and its hind legs do not. It stops at the foot of it instead
+  // of hanging from the front legs with its hind feet sliding off the tread below.
+  const Creature c = build_creature(scenes::generator().example("tortoise").value()).value();
+  for (const char* file : {"default.json", "stairs.json"}) {
+    const Level level = shipped(file);
+    for (const char* text : {"walk:0.6:30", "run:1:15"}) {
+      INFO(file << ": " << text);
+      Walker w = make_walker(c, level, level.spawn_ws + glm::vec2(0.0f, 1.0f));
+      const SimResult r = run_script(*w.player, level, script(text), 120);
+      check_planted_and_clear(r);
+    }
+  }
+}
+
 TEST_CASE("animals keep their tails out of the steps", "[anim]") {
   // The probe measures limbs; tails are checked here, along each tail bone. The swimmers'
   // tails are bent by their travelling wave too.

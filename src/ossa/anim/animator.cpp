@@ -190,6 +190,10 @@ Animator::Animator(const Creature& creature, SplinePrototypes prototypes, Animat
       groups_[g].step_height = std::max(groups_[g].step_height, kStepHeightOfReach * legs_[leg].contact_reach);
     }
   }
+  climb_height_ = 0.0f;
+  for (size_t g = 0; g < groups_.size(); ++g) {
+    climb_height_ = g == 0 ? groups_[g].step_height : std::min(climb_height_, groups_[g].step_height);
+  }
   feet_.resize(legs_.size());
   foot_of_leg_.resize(legs_.size());
   for (size_t i = 0; i < legs_.size(); ++i) foot_of_leg_[i] = static_cast<int>(i);
@@ -947,7 +951,7 @@ bool Animator::foot_fits(int leg, glm::vec2 contact_ws, const Level& level) cons
 bool Animator::find_landing(int leg, float x_wanted, const Level& level, glm::vec2* landing) const {
   const LegInfo& info = legs_[leg];
   const Foot& f = feet_[foot_of_leg_[leg]];
-  const float up = params_.max_step_up * groups_[info.group].step_height;
+  const float up = params_.max_step_up * climb_height_;
   const float down = params_.max_step_down * groups_[info.group].rest_height;
   // A step down counts from the foot, or from the ground its girdle stands over when the foot
   // stands higher (a foot left up on a step steps back down as far as its girdle stands).

@@ -239,6 +239,8 @@ class Animator {
   std::vector<int> foot_of_leg_;
   std::vector<int> arms_, fins_, wings_;  // limb indices
   float hip_height_ = 1.0f;
+  float climb_height_ = 0.0f;        // the least step_height of any girdle: a step up more
+                                     // than max_step_up of it is a wall (the others could not follow)
   float root_rest_y_ = 0.0f;         // model-space y of the root in the rest pose
   float body_half_length_ = 0.5f;
 
