@@ -1066,27 +1066,33 @@ glm::vec2 Animator::leg_ankle(int leg, glm::vec2 contact_ms, glm::vec2 joint_ms,
     // The side of d the rest direction lies on.
     const float side = n.x * info.foot_dir_ms.y - n.y * info.foot_dir_ms.x >= 0.0f ? 1.0f : -1.0f;
     *foot_dir = {cos_b * n.x - side * sin_b * n.y, side * sin_b * n.x + cos_b * n.y};
-  }
-  if (level && *foot_dir != info.foot_dir_ms && !near.clear_above(std::min(contact_ms.y, contact_ms.y - F * foot_dir->y))) {
-    // A rolled foot must not sweep into a step: turn it back towards the rest direction
-    // (bisection on the angle) until the ankle → contact segment clears every box.
-    auto clear = [&](glm::vec2 u) {
-      const glm::vec2 seg[2] = {to_world(contact_ms - F * u), to_world(contact_ms)};
-      return !polyline_hits_level(*level, seg, 2, segment_hits_);
-    };
-    if (!clear(*foot_dir)) {
-      const glm::vec2 rest = info.foot_dir_ms;
-      const float full = std::atan2(rest.x * foot_dir->y - rest.y * foot_dir->x, glm::dot(rest, *foot_dir));
-      float lo = 0.0f, hi = 1.0f;  // fractions of the roll: lo clears, hi does not
-      for (int k = 0; k < 6; ++k) {
-        const float mid = 0.5f * (lo + hi);
-        (clear(rotate(rest, mid * full)) ? lo : hi) = mid;
-      }
-      *foot_dir = lo > 0.0f ? rotate(rest, lo * full) : rest;
-      if (limited) *limited = true;
+    if (level && *foot_dir != info.foot_dir_ms && !near.clear_above(std::min(contact_ms.y, contact_ms.y - F * foot_dir->y)) &&
+        limit_foot_roll(leg, contact_ms, *level, foot_dir) && limited) {
+      *limited = true;
     }
   }
   return contact_ms - F * *foot_dir;
+}
+
+bool Animator::limit_foot_roll(int leg, glm::vec2 contact_ms, const Level& level, glm::vec2* foot_dir) const {
+  // A rolled foot must not sweep into a step: turn it back towards the rest direction
+  // (bisection on the angle) until the ankle → contact segment clears every box.
+  const LegInfo& info = legs_[leg];
+  const float F = info.foot_span;
+  auto clear = [&](glm::vec2 u) {
+    const glm::vec2 seg[2] = {to_world(contact_ms - F * u), to_world(contact_ms)};
+    return !polyline_hits_level(level, seg, 2, segment_hits_);
+  };
+  if (clear(*foot_dir)) return false;
+  const glm::vec2 rest = info.foot_dir_ms;
+  const float full = std::atan2(rest.x * foot_dir->y - rest.y * foot_dir->x, glm::dot(rest, *foot_dir));
+  float lo = 0.0f, hi = 1.0f;  // fractions of the roll: lo clears, hi does not
+  for (int k = 0; k < 6; ++k) {
+    const float mid = 0.5f * (lo + hi);
+    (clear(rotate(rest, mid * full)) ? lo : hi) = mid;
+  }
+  *foot_dir = lo > 0.0f ? rotate(rest, lo * full) : rest;
+  return true;
 }
 
 Animator::Clearance Animator::clearance_in(const Box& region, float base, const Level& level) const {

@@ -219,6 +219,9 @@ class Animator {
   // *limited: the level kept the foot from rolling as far as the leg's reach needs.
   glm::vec2 leg_ankle(int leg, glm::vec2 contact_ms, glm::vec2 joint_ms, const Level* level, const Clearance& near,
                       glm::vec2* foot_dir, bool* limited) const;
+  // leg_ankle's rare part, out of line so that the common one stays small: turns a rolled
+  // foot back until it clears the level; false if it already did.
+  [[gnu::noinline]] bool limit_foot_roll(int leg, glm::vec2 contact_ms, const Level& level, glm::vec2* foot_dir) const;
   // The point the girdle joint of leg i must stay within *radius of: the contact point (foot
   // free to roll) or the ankle (foot held by the level).
   glm::vec2 leg_anchor(int leg, glm::vec2 contact_ms, glm::vec2 joint_ms, const Level& level, const Clearance& near,
