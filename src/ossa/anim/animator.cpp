@@ -403,18 +403,27 @@ const std::vector<Mat2x3>& Animator::world_matrices() const {
 void Animator::body_boxes(bool slabs, std::vector<Box>* boxes) const {
   const Skeleton& sk = creature_->skeleton;
   boxes->clear();
-  auto begin = [&] { boxes->push_back(Box{glm::vec2(1e30f), glm::vec2(-1e30f)}); };
+  // The open box grows in a local (stores into *boxes could alias every float read here, so
+  // the compiler would reload the matrices and the box for each point) and is appended when
+  // the next one begins, and at the end.
+  Box box;
+  bool open = false;
+  auto begin = [&] {
+    if (open) boxes->push_back(box);
+    box = Box{glm::vec2(1e30f), glm::vec2(-1e30f)};
+    open = true;
+  };
   auto add_point = [&](glm::vec2 p_ms) {
     const glm::vec2 p = to_world(p_ms);
-    boxes->back().min_ws = glm::min(boxes->back().min_ws, p);
-    boxes->back().max_ws = glm::max(boxes->back().max_ws, p);
+    box.min_ws = glm::min(box.min_ws, p);
+    box.max_ws = glm::max(box.max_ws, p);
   };
   auto add = [&](int b) {
     add_point(bone_start(model_[b]));
     add_point(bone_end(model_[b], sk.length(b)));
   };
   if (!body_slabs_.empty()) {
-    const Mat2x3& root = model_[creature_->root];
+    const Mat2x3 root = model_[creature_->root];
     if (slabs) {
       for (const std::vector<glm::vec2>& slab : body_slabs_) {
         begin();
@@ -457,6 +466,7 @@ void Animator::body_boxes(bool slabs, std::vector<Box>* boxes) const {
     add_point(shoulder - glm::vec2(reach, reach));
     add_point(shoulder + glm::vec2(reach, 0.0f));
   }
+  if (open) boxes->push_back(box);
 }
 
 void Animator::reset(glm::vec2 position_ws, const Level& level, int facing) {
