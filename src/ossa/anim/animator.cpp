@@ -152,7 +152,11 @@ Animator::Animator(const Creature& creature, SplinePrototypes prototypes, Animat
     if (limb.kind != LimbKind::kLeg) continue;
     LegInfo info;
     info.limb = i;
-    info.reach = sk.length(limb.bones[0]) + sk.length(limb.bones[1]);
+    info.upper = sk.length(limb.bones[0]);
+    info.lower = sk.length(limb.bones[1]);
+    info.reach = info.upper + info.lower;
+    info.fold = 1.02f * std::fabs(info.upper - info.lower);
+    info.bend = static_cast<float>(limb.bend_sign);
     info.foot_length = sk.length(limb.bones[2]);
     const glm::vec2 joint = bone_start(model_rest_[limb.bones[0]]);
     const glm::vec2 ankle = bone_end(model_rest_[limb.bones[1]], sk.length(limb.bones[1]));
@@ -1259,7 +1263,8 @@ void Animator::body_fk() {
     const Mat2x3 local = dynamic_bone_[b] ? local_matrix(pose_.locals[b]) : rest_local_m_[b];
     model_[b] = parents[b] < 0 ? local : model_[parents[b]] * local;
   }
-  for (size_t i = 0; i < girdle_bones_.size(); ++i) model_[girdle_bones_[i]] = model_[creature_->root] * girdle_rel_[i];
+  const Mat2x3 root = model_[creature_->root];
+  for (size_t i = 0; i < girdle_bones_.size(); ++i) model_[girdle_bones_[i]] = root * girdle_rel_[i];
 }
 
 void Animator::keep_tail_clear(const Level& level) {
@@ -1418,13 +1423,10 @@ bool Animator::raise_for_clearance(int leg, const Level& level) {
 bool Animator::stance_leg_hits(int leg, glm::vec2 joint_ms, const Level& level) const {
   const LegInfo& info = legs_[leg];
   const Foot& f = feet_[foot_of_leg_[leg]];
-  const Limb& limb = creature_->limbs[info.limb];
-  const Skeleton& sk = creature_->skeleton;
   const glm::vec2 contact = to_model(f.pos_ws);
   glm::vec2 dir;
   const glm::vec2 ankle = leg_ankle(leg, contact, joint_ms, &level, f.stance_clear, &dir, nullptr);
-  const TwoBoneIkResult ik = solve_two_bone_ik_directions(joint_ms, sk.length(limb.bones[0]), sk.length(limb.bones[1]),
-                                                          ankle, static_cast<float>(limb.bend_sign));
+  const TwoBoneIkResult ik = solve_two_bone_ik_directions(joint_ms, info.upper, info.lower, ankle, info.bend);
   const glm::vec2 tip = ik.end + info.foot_length * dir;
   const glm::vec2 p[4] = {to_world(joint_ms), to_world(ik.middle), to_world(ik.end), to_world(tip)};
   return polyline_hits_level(level, p, info.foot_length > 0.0f ? 4 : 3, segment_hits_);
@@ -1592,8 +1594,7 @@ void Animator::place_body(float dt, const Level& level) {
   for (size_t i = 0; i < legs_.size(); ++i) {
     const Foot& f = feet_[foot_of_leg_[i]];
     if (f.state != LegState::kStance) continue;
-    const Limb& limb = creature_->limbs[legs_[i].limb];
-    const float fold = 1.02f * std::fabs(creature_->skeleton.length(limb.bones[0]) - creature_->skeleton.length(limb.bones[1]));
+    const float fold = legs_[i].fold;
     const glm::vec2 joint = to_model(girdle_ws(legs_[i].group));
     // The ankle lies within a foot's length of the contact point.
     if (glm::length(to_model(f.pos_ws) - joint) - legs_[i].foot_span >= fold) continue;
@@ -1621,20 +1622,17 @@ void Animator::place_body(float dt, const Level& level) {
       const Foot& f = feet_[foot_of_leg_[i]];
       const bool stance = f.state == LegState::kStance;
       const LegInfo& info = legs_[i];
-      const Limb& limb = creature_->limbs[info.limb];
       const glm::vec2 joint = to_model(girdle_ws(info.group));
       const float margin = 0.02f * info.reach;
       // The knee is no lower than a thigh below the joint nor a shin below the ankle: cheap
       // tests before the IK (unless steps rise near the foot).
       const bool steps_near = !(stance ? f.stance_reach_clear : f.swing_clear).clear_above(f.pos_ws.y + margin);
-      if (!steps_near && joint.y - creature_->skeleton.length(limb.bones[0]) > f.pos_ws.y + margin) continue;
+      if (!steps_near && joint.y - info.upper > f.pos_ws.y + margin) continue;
       glm::vec2 dir;
       const glm::vec2 ankle = leg_ankle(static_cast<int>(i), to_model(f.pos_ws), joint, &level,
                                         stance ? f.stance_clear : f.swing_clear, &dir, nullptr);
-      if (!steps_near && ankle.y - creature_->skeleton.length(limb.bones[1]) > f.pos_ws.y + margin) continue;
-      const TwoBoneIkResult ik = solve_two_bone_ik_directions(joint, creature_->skeleton.length(limb.bones[0]),
-                                                              creature_->skeleton.length(limb.bones[1]), ankle,
-                                                              static_cast<float>(limb.bend_sign));
+      if (!steps_near && ankle.y - info.lower > f.pos_ws.y + margin) continue;
+      const TwoBoneIkResult ik = solve_two_bone_ik_directions(joint, info.upper, info.lower, ankle, info.bend);
       const glm::vec2 knee = to_world(ik.middle);
       float& up = stance ? stance_up[info.group] : swing_up[info.group];
       if (auto ground = level.ground_height_below(knee.x - 0.005f, knee.x + 0.005f, knee.y + info.reach, 2.0f * info.reach)) {
@@ -1769,8 +1767,8 @@ void Animator::build_pose(float dt, const Level& level) {
       tail_rate_ = flush(tail_rate_ + (k * (target - tail_angle_) - damping * tail_rate_) * dt);
       tail_angle_ = flush(std::clamp(tail_angle_ + tail_rate_ * dt, -0.8f, 0.8f));
     }
-    const float n = static_cast<float>(c.tail.size());
-    for (size_t i = 0; i < c.tail.size(); ++i) pose_.locals[c.tail[i]].angle_ls += tail_angle_ * 2.0f / n;
+    const float bend = tail_angle_ * 2.0f / static_cast<float>(c.tail.size());
+    for (int b : c.tail) pose_.locals[b].angle_ls += bend;
   }
   // Legless bodies: a travelling wave down the spine.
   if (legs_.empty() && params_.crawl_amplitude > 0.0f) {
@@ -1824,15 +1822,14 @@ void Animator::build_pose(float dt, const Level& level) {
       }
       // A foot lifted closer to the joint than the leg folds (short legs, high swings) moves
       // out sideways to where the folded leg reaches, not down through the ground.
-      const float fold = 1.02f * std::fabs(sk.length(limb.bones[0]) - sk.length(limb.bones[1]));
+      const float fold = info.fold;
       const glm::vec2 d = ankle - joint;
       if (glm::dot(d, d) < fold * fold && std::fabs(d.y) < fold) {
         ankle.x = joint.x + (d.x >= 0.0f ? 1.0f : -1.0f) * std::sqrt(fold * fold - d.y * d.y);
       }
     }
-    const float l0 = sk.length(limb.bones[0]), l1 = sk.length(limb.bones[1]), bend = static_cast<float>(limb.bend_sign);
     auto leg_ik = [&](glm::vec2 target) {  // directions only: the angles are for pose() (lazily)
-      return solve_two_bone_ik_directions(joint, l0, l1, target, bend);
+      return solve_two_bone_ik_directions(joint, info.upper, info.lower, target, info.bend);
     };
     TwoBoneIkResult ik = leg_ik(ankle);
     if (f.state == LegState::kSwing) {

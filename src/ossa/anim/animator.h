@@ -112,7 +112,10 @@ class Animator {
   struct LegInfo {
     int limb = 0;
     int group = 0;
+    float upper = 0.0f, lower = 0.0f;  // thigh and shin lengths, metres
     float reach = 0.0f;              // upper + lower, metres
+    float fold = 0.0f;               // 1.02 |upper - lower|: the ankle stays this far from the joint
+    float bend = 1.0f;               // the limb's bend sign
     float foot_length = 0.0f;
     glm::vec2 foot_offset_ms{0.0f};  // ankle → contact point in the rest pose (model space)
     float foot_angle_ms = 0.0f;      // rest absolute angle of the foot bone (model space)
