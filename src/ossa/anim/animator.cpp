@@ -794,12 +794,16 @@ void Animator::update_gait() {
     stride_pow_ = std::pow(std::max(froude_, 1e-4f), 0.3f);
   }
   float stride = 2.3f * hip_height_ * stride_pow_ * params_.step_distance_multiplier;
-  float max_stride = 1e30f;
-  for (const LegInfo& leg : legs_) {
-    const float h = groups_[leg.group].rest_height * params_.stance_height;
-    const float reach_x = std::sqrt(std::max(leg.contact_reach * leg.contact_reach - h * h, 0.0f));
-    max_stride = std::min(max_stride, 2.0f * 0.9f * reach_x / std::max(duty_, 0.2f));
+  if (params_.stance_height != reach_x_stance_height_) {
+    reach_x_stance_height_ = params_.stance_height;
+    min_reach_x_ = 1e30f;
+    for (const LegInfo& leg : legs_) {
+      const float h = groups_[leg.group].rest_height * params_.stance_height;
+      min_reach_x_ = std::min(min_reach_x_, std::sqrt(std::max(leg.contact_reach * leg.contact_reach - h * h, 0.0f)));
+    }
   }
+  // The shortest reach limits most: x ↦ 1.8 x / duty is monotonic also in float arithmetic.
+  const float max_stride = std::min(1e30f, 2.0f * 0.9f * min_reach_x_ / std::max(duty_, 0.2f));
   stride_ = std::clamp(stride, 0.25f * hip_height_, std::max(max_stride, 0.25f * hip_height_));
   frequency_ = speed_ > 0.0f ? speed_ / stride_ : 0.0f;
 

@@ -290,6 +290,8 @@ class Animator {
   mutable float body_angle_cached_ = 0.0f;
   mutable glm::vec2 body_cs_{1.0f, 0.0f}; // cos, sin of body_angle_cached_
   float stride_froude_ = -1.0f, stride_pow_ = 0.0f;  // Fr^0.3 cache
+  // The shortest horizontal reach of a stance leg at params_.stance_height (update_gait).
+  float reach_x_stance_height_ = NAN, min_reach_x_ = 0.0f;
   struct Decay {                          // exp(-rate·dt) of each smoothed quantity, per (dt, ism)
     float dt = -1.0f, ism = -1.0f;
     float lean = 0.0f, run = 0.0f, gait = 0.0f, pitch = 0.0f, root = 0.0f;
