@@ -297,6 +297,17 @@ Animator::Animator(const Creature& creature, SplinePrototypes prototypes, Animat
       skull_rel_ = root_inv.apply(bone_start(skull));
       skull_span_ = bone_end(skull, sk.length(creature.skull)) - bone_start(skull);
     }
+    // body_bound_ws: the extent of the hull and the skull joint, and its highest hull point.
+    body_lo_ = body_hi_ = body_top_ = body_hull_[0];
+    for (glm::vec2 p : body_hull_) {
+      body_lo_ = glm::min(body_lo_, p);
+      body_hi_ = glm::max(body_hi_, p);
+      if (p.y > body_top_.y) body_top_ = p;
+    }
+    if (creature.skull >= 0) {
+      body_lo_ = glm::min(body_lo_, skull_rel_);
+      body_hi_ = glm::max(body_hi_, skull_rel_);
+    }
   } else {
     // The neck and head take part in the wall sweep.
     for (int b : creature.neck) needed[b] = 1;
@@ -473,6 +484,30 @@ void Animator::body_boxes(bool slabs, std::vector<Box>* boxes) const {
   if (open) boxes->push_back(box);
 }
 
+bool Animator::body_bound_ws(Box* bound, float* top_y) const {
+  if (body_slabs_.empty() || !fins_.empty() || !arms_.empty()) return false;
+  const Mat2x3& m = model_[creature_->root];
+  // Interval arithmetic over [body_lo_, body_hi_], widened by far more than the rounding of
+  // apply() or of these bounds (a few ulps of the extent); rounding is monotonic, so the
+  // translation, the skull's span and to_world keep the bounds in order.
+  const float extent = std::max({-body_lo_.x, body_hi_.x, -body_lo_.y, body_hi_.y});
+  auto range = [&](float a, float b, float offset) {
+    const float eps = 1e-5f * (std::fabs(a) + std::fabs(b)) * extent;
+    const float lo = std::min(a * body_lo_.x, a * body_hi_.x) + std::min(b * body_lo_.y, b * body_hi_.y) - eps;
+    const float hi = std::max(a * body_lo_.x, a * body_hi_.x) + std::max(b * body_lo_.y, b * body_hi_.y) + eps;
+    return glm::vec2(lo + offset, hi + offset);
+  };
+  glm::vec2 x = range(m.m[0], m.m[2], m.m[4]), y = range(m.m[1], m.m[3], m.m[5]);
+  if (creature_->skull >= 0) {  // the skull's far end: its joint plus a span kept level
+    x = {std::min(x[0], x[0] + skull_span_.x), std::max(x[1], x[1] + skull_span_.x)};
+    y = {std::min(y[0], y[0] + skull_span_.y), std::max(y[1], y[1] + skull_span_.y)};
+  }
+  const float x0 = to_world({x[0], 0.0f}).x, x1 = to_world({x[1], 0.0f}).x;
+  *bound = Box{{std::min(x0, x1), y[0]}, {std::max(x0, x1), y[1]}};
+  *top_y = m.apply(body_top_).y;
+  return std::isfinite(x0) && std::isfinite(x1) && std::isfinite(y[0]) && std::isfinite(y[1]) && std::isfinite(*top_y);
+}
+
 void Animator::reset(glm::vec2 position_ws, const Level& level, int facing) {
   facing_ = facing < 0 ? -1 : 1;
   body_x_ = position_ws.x;
@@ -564,8 +599,22 @@ void Animator::update(float dt, float desired_velocity, const Level& level) {
       const float a = slope * facing_ * (box.min_ws.x - body_x_), b = slope * facing_ * (box.max_ws.x - body_x_);
       return support + std::min(a, b);
     };
-    body_boxes(false, &body_boxes_);
-    {
+    // Cheaper still, and before that: a box around the body from the root and the hull's
+    // extent alone (body_bound_ws), swept as a box holding the one swept below (its bottom no
+    // higher than theirs can be: 0.3 h above the bound's, or a point of the body). Whatever it
+    // does not meet, the body does not meet either.
+    Box bound;
+    float top_y;
+    bool near_something = true;
+    if (body_bound_ws(&bound, &top_y)) {
+      const Box swept{{bound.min_ws.x - margin.x, std::min(bound.min_ws.y + 0.3f * hip_height_, top_y)},
+                      {bound.max_ws.x + 1e-3f + margin.x, bound.max_ws.y + 1e-3f}};
+      auto hit = level.sweep_box(swept, {dx, 0.0f});
+      near_something = hit && hit->t < 1.0f;
+    }
+    body_boxes_.clear();
+    if (near_something) {
+      body_boxes(false, &body_boxes_);
       Box all = body_boxes_[0];
       all.min_ws.y = std::min(std::max(all.min_ws.y + 0.3f * hip_height_, ground_under(all) + params_.max_step_up * hip_height_),
                               all.max_ws.y);

@@ -209,6 +209,9 @@ class Animator {
   // World boxes of the body's parts for the wall sweep: slabs of the spine, head, arms, fins
   // (slabs = true), or one box around them all.
   void body_boxes(bool slabs, std::vector<Box>* boxes) const;
+  // A box holding body_boxes(false, ·)'s single box, from the root and the hull's extent (no
+  // hull points), and *top_y the height of one of its points; false if fins or arms take part.
+  bool body_bound_ws(Box* bound, float* top_y) const;
   void place_body(float dt, const Level& level);
   void build_pose(float dt, const Level& level);
   void keep_arm_above_ground(const Limb& arm, const Level& level);
@@ -278,6 +281,8 @@ class Animator {
   std::vector<Box> body_boxes_;           // scratch for the wall sweep
   mutable std::vector<int> segment_hits_; // scratch for leg_ankle
   glm::vec2 skull_rel_{0.0f}, skull_span_{0.0f};
+  glm::vec2 body_lo_{0.0f}, body_hi_{0.0f};  // body_bound_ws: extent of the hull and skull joint
+  glm::vec2 body_top_{0.0f};              // ... and the hull's highest point (root bone's frame)
   int tail_base_bone_ = -1;               // the tail's nearest ancestor kept current each tick
   std::vector<int> tail_between_;         // the bones from there to the tail (root first)...
   Mat2x3 tail_between_rest_;              // ...or, when none of them bends, their rest product
