@@ -213,6 +213,20 @@ Animator::Animator(const Creature& creature, SplinePrototypes prototypes, Animat
     x_max = std::max(x_max, p.x);
   }
   body_half_length_ = std::max(0.5f * (x_max - x_min), 0.05f);
+  if (groups_.size() == 1) {
+    const Group& g = groups_[0];
+    for (size_t i = 0; i < creature.limbs.size(); ++i) {
+      const LimbKind kind = creature.limbs[i].kind;
+      if (kind != LimbKind::kArm && kind != LimbKind::kWing) continue;
+      const glm::vec2 v = bone_start(model_rest_[creature.limbs[i].bones[0]]) - g.joint_ms;
+      if (v.x > front_shoulder_.x) {
+        front_shoulder_ = v;
+        // Its rest height above the ground, less the clearance keep_shoulder_out keeps, and
+        // a little.
+        front_slack_ = v.y + g.rest_height - 0.2f * hip_height_;
+      }
+    }
+  }
   for (size_t i = 0; i < legs_.size(); ++i) feet_[i].offset = leg_target_offset(static_cast<int>(i));
 
   // FK caches: rest local matrices, the bones the animator moves, the limb chains.
@@ -1588,8 +1602,23 @@ void Animator::place_body(float dt, const Level& level) {
       const float df_y = s * df.x + c * df.y, db_y = s * db.x + c * db.y;  // rotate(·, a).y
       target_root = 0.5f * (height.front() - df_y + height.back() - db_y);
     } else {
+      // A shoulder far ahead of the only girdle (a long-bodied bird) would run into the steps
+      // of a steep flight before the legs climb them: the body pitches up so the shoulder
+      // keeps its height above the ground ahead of it (a quarter second ahead).
+      if (front_shoulder_.x > 0.0f) {
+        const float ground = height.front() - groups_.front().rest_height * params_.stance_height;
+        const float sx = girdle_ws(0).x + facing_ * front_shoulder_.x;
+        const float ahead = facing_ * speed_ * 0.25f;
+        const float half = 0.05f * hip_height_;
+        const float top = ground + front_slack_ + 0.6f * front_shoulder_.x;  // the most a turn gets over
+        if (auto below = level.ground_height_below(std::min(sx, sx + ahead) - half, std::max(sx, sx + ahead) + half,
+                                                   top, top - ground + front_shoulder_.x)) {
+          const float rise = below->height_ws - ground - front_slack_;
+          if (rise > 0.0f) target_pitch = std::asin(std::min(rise / front_shoulder_.x, 0.6f));
+        }
+      }
       const glm::vec2 d = groups_.front().joint_ms - root_rest;
-      target_root = height.front() - rotate(d, angle_extra).y;
+      target_root = height.front() - rotate(d, target_pitch + angle_extra).y;
     }
   }
   const bool turning = snap_body_;
@@ -1708,6 +1737,23 @@ void Animator::place_body(float dt, const Level& level) {
       moved = true;
     }
     if (!moved) break;
+  }
+  // The shoulder far ahead of a single girdle meeting a step: the body turns up about the
+  // girdle (the feet stay in reach) rather than rise (see the pitch target above, which
+  // follows more slowly).
+  if (front_shoulder_.x > 0.0f) {
+    const glm::vec2 rel = groups_.front().joint_ms - root_rest;
+    for (int pass = 0; pass < 2; ++pass) {
+      const glm::vec2 j = rotate_body(groups_.front().joint_ms + front_shoulder_ - root_rest);
+      const glm::vec2 shoulder = to_world({j.x, j.y + root_y_});
+      const float half = 0.05f * hip_height_;
+      auto below = level.ground_height_below(shoulder.x - half, shoulder.x + half, shoulder.y + 0.5f * hip_height_, 100.0f);
+      const float need = below ? below->height_ws + 0.1f * hip_height_ - shoulder.y : 0.0f;
+      if (need <= 0.0f) break;
+      const float girdle_y = rotate_body(rel).y;
+      pitch_ = std::min(pitch_ + std::asin(std::min(need / front_shoulder_.x, 0.9f)), kMaxPitch);
+      root_y_ += girdle_y - rotate_body(rel).y;
+    }
   }
   // Whatever the legs ask, a girdle never sinks into the ground under it: it keeps an eighth
   // of its standing height above the highest ground there (a leg may stretch, the body stays

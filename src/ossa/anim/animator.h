@@ -251,6 +251,11 @@ class Animator {
   float climb_height_ = 0.0f;        // the least step_height of any girdle: a step up more
                                      // than max_step_up of it is a wall (the others could not follow)
   float root_rest_y_ = 0.0f;         // model-space y of the root in the rest pose
+  // One girdle only: the foremost arm or wing shoulder ahead of it (rest, relative to the
+  // girdle joint), and how much higher the ground under it may be than under the girdle
+  // before the body pitches up.
+  glm::vec2 front_shoulder_{0.0f};
+  float front_slack_ = 0.0f;
   float body_half_length_ = 0.5f;
 
   mutable Pose pose_;
