@@ -33,6 +33,13 @@ Level shipped(const char* name) { return load_level(scenes::source_path(std::str
 
 std::vector<ScriptSegment> script(const char* text) { return parse_script(text).value(); }
 
+// Example animal `name` dropped at the level's spawn point and driven by `text`.
+SimResult run_example(const char* name, const Level& level, const char* text) {
+  Walker w = make_walker(build_creature(scenes::generator().example(name).value()).value(), level,
+                         level.spawn_ws + glm::vec2(0.0f, 1.0f));
+  return run_script(*w.player, level, script(text), 120);
+}
+
 // No foot on the ground slid, no limb went into a collider by more than 1 mm, no NaN.
 void check_planted_and_clear(const SimResult& r) {
   CHECK(r.probe.max_stance_slip_m <= 0.001f);
@@ -189,32 +196,24 @@ TEST_CASE("example birds walk, run and turn round on every shipped level", "[ani
   }
 }
 
-TEST_CASE("a long-bodied bird pitches up a steep flight, wings out of the steps, feet planted", "[anim]") {
+TEST_CASE("long bodies at the steep flight keep wings and flippers out of the steps, feet planted", "[anim]") {
   // The swan's folded wing reaches ahead of its chest, over the steps its short legs have not
-  // climbed yet: the body turns up about its hips (and rises, a little) rather than cut the
-  // corners of the steps ahead or lift its feet off the treads.
+  // climbed yet: the body turns up about its hips rather than cut the corners of the steps
+  // ahead or lift its feet off the treads, and climbs the whole level. The eared seal's chest
+  // is low and its fore flippers long: its shoulder meets the step in front (the body stops
+  // there, at the foot of the flight), and the flippers fold clear of the tread under it.
   const Level level = shipped("stairs.json");
-  const Creature c = build_creature(scenes::generator().example("swan").value()).value();
-  for (const char* text : {"walk:0.6:30", "run:1:15"}) {
-    INFO(text);
-    Walker w = make_walker(c, level, level.spawn_ws + glm::vec2(0.0f, 1.0f));
-    const SimResult r = run_script(*w.player, level, script(text), 120);
-    check_planted_and_clear(r);
-    CHECK(r.x_reached > 38.0f);  // over the whole level
-  }
-}
-
-TEST_CASE("a seal stopped by a flight it cannot climb keeps its flippers out of the steps", "[anim]") {
-  // The eared seal's chest is low and its fore flippers long: its shoulder meets the step in
-  // front (the body stops there), and the flippers fold clear of the tread just under it.
-  const Level level = shipped("stairs.json");
-  const Creature c = build_creature(scenes::generator().example("eared seal").value()).value();
-  for (const char* text : {"walk:0.6:30", "run:1:15"}) {
-    INFO(text);
-    Walker w = make_walker(c, level, level.spawn_ws + glm::vec2(0.0f, 1.0f));
-    const SimResult r = run_script(*w.player, level, script(text), 120);
-    check_planted_and_clear(r);
-    CHECK(r.x_reached > 10.0f);  // up the first flight, to the foot of the steep one
+  const struct {
+    const char* name;
+    float must_reach;
+  } cases[] = {{"swan", 38.0f}, {"eared seal", 10.0f}};
+  for (const auto& k : cases) {
+    for (const char* text : {"walk:0.6:30", "run:1:15"}) {
+      INFO(k.name << ": " << text);
+      const SimResult r = run_example(k.name, level, text);
+      check_planted_and_clear(r);
+      CHECK(r.x_reached > k.must_reach);
+    }
   }
 }
 
@@ -222,14 +221,11 @@ TEST_CASE("front legs climb no step the hind legs could not follow up", "[anim]"
   // The tortoise's hind legs are shorter than its front legs: the default level's 25 cm step
   // is one its front legs climb and its hind legs do not. It stops at the foot of it instead
   // of hanging from the front legs with its hind feet sliding off the tread below.
-  const Creature c = build_creature(scenes::generator().example("tortoise").value()).value();
   for (const char* file : {"default.json", "stairs.json"}) {
     const Level level = shipped(file);
     for (const char* text : {"walk:0.6:30", "run:1:15"}) {
       INFO(file << ": " << text);
-      Walker w = make_walker(c, level, level.spawn_ws + glm::vec2(0.0f, 1.0f));
-      const SimResult r = run_script(*w.player, level, script(text), 120);
-      check_planted_and_clear(r);
+      check_planted_and_clear(run_example("tortoise", level, text));
     }
   }
 }
