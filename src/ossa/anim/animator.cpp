@@ -989,9 +989,10 @@ bool Animator::nearest_fit(int leg, glm::vec2 near_ws, const Level& level, glm::
 }
 
 bool Animator::nearest_fit_within(int leg, glm::vec2 near_ws, const Level& level, glm::vec2* spot, bool in_reach) const {
-  // Centimetre by centimetre either way, up to half a leg's length, on ground within a step.
+  // Centimetre by centimetre either way, up to half a leg's length, on ground within a step
+  // (one every leg pair could follow up, as in find_landing).
   const LegInfo& info = legs_[leg];
-  const float up = params_.max_step_up * groups_[info.group].step_height;
+  const float up = params_.max_step_up * climb_height_;
   const float down = params_.max_step_down * groups_[info.group].rest_height;
   // A flat foot stands on the highest ground under its sole.
   const float sole = creature_->contact == ContactMode::kFlat ? facing_ * info.foot_length : 0.0f;

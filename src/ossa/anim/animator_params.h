@@ -28,9 +28,11 @@ struct AnimatorParams {
   float gallop_froude = 2.5f;
   GaitOverride gait_override = GaitOverride::kAuto;
 
-  // Highest step up and deepest step down a foot may take, as fractions of the girdle's
-  // standing height (for the step up, of 0.8 of the leg's reach where that is more: crouching
-  // legs). Walls taller and drops deeper stop the creature at the edge. [0.05, 1].
+  // Highest step up and deepest step down a foot may take: the step up as a fraction of the
+  // shortest girdle's standing height (or of 0.8 of its leg's reach where that is more:
+  // crouching legs), so that every leg pair can follow; the step down as a fraction of the
+  // foot's own girdle's standing height. Walls taller and drops deeper stop the creature at
+  // the edge. [0.05, 1].
   float max_step_up = 0.6f;
   float max_step_down = 0.7f;
   // Standing height of the girdles as a fraction of their rest height. [0.7, 1.05].

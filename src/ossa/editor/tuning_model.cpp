@@ -23,7 +23,7 @@ std::span<const TuningField> tuning_fields() {
       {"run_froude_end", "Fr", 0.05f, 3.0f, &P::run_froude_end, "Froude number where the blend reaches run"},
       {"trot_froude", "Fr", 0.05f, 3.0f, &P::trot_froude, "quadrupeds: walk→trot"},
       {"gallop_froude", "Fr", 0.05f, 5.0f, &P::gallop_froude, "quadrupeds: trot→gallop"},
-      {"max_step_up", "x height", 0.05f, 1.0f, &P::max_step_up, "highest step up, of the standing height (or 0.8 of a crouching leg's reach)"},
+      {"max_step_up", "x height", 0.05f, 1.0f, &P::max_step_up, "highest step up, of the shortest girdle's standing height (or 0.8 of a crouching leg's reach)"},
       {"max_step_down", "x height", 0.05f, 1.0f, &P::max_step_down, "deepest step down, of the standing height"},
       {"stance_height", "x rest", 0.7f, 1.05f, &P::stance_height, "girdle height, of its rest height"},
       {"stop_ease_time", "s", 0.05f, 0.3f, &P::stop_ease_time, "time for swinging feet to set down after a stop"},
