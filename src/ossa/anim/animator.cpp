@@ -1274,22 +1274,24 @@ void Animator::keep_arm_above_ground(const Limb& arm, const Level& level) {
   // up behind; last, with the elbow bent the other way (a shoulder just above a tread, where
   // any elbow bent down meets the tread).
   const float tuck_len = std::max(std::fabs(l1 - l2) + 0.01f, 0.35f * (l1 + l2));
-  for (int k = 0; k < 6; ++k) {
-    ArmPose q = p;
-    q.hand_abs = (k % 3 == 0) ? p.hand_abs : (k % 3 == 1) ? kPi + 0.3f : kPi - 0.8f;
-    if (k >= 3) q.bend = -p.bend;
-    for (glm::vec2 dir : {glm::vec2(-1.0f, -0.3f), glm::vec2(0.4f, 1.0f), glm::vec2(-0.6f, 1.0f)}) {
-      const glm::vec2 tuck = q.shoulder + glm::normalize(dir) * tuck_len;
-      set_wrist(q, tuck);
-      if (hits(current())) continue;
-      float lo = 0.0f, hi = 1.0f;  // fractions of the way to the tuck: lo hits, hi clears
-      for (int k = 0; k < 6; ++k) {
-        const float mid = 0.5f * (lo + hi);
-        set_wrist(q, glm::mix(q.wrist, tuck, mid));
-        (hits(current()) ? lo : hi) = mid;
+  for (float bend : {p.bend, -p.bend}) {
+    for (float hand : {p.hand_abs, kPi + 0.3f, kPi - 0.8f}) {
+      ArmPose q = p;
+      q.hand_abs = hand;
+      q.bend = bend;
+      for (glm::vec2 dir : {glm::vec2(-1.0f, -0.3f), glm::vec2(0.4f, 1.0f), glm::vec2(-0.6f, 1.0f)}) {
+        const glm::vec2 tuck = q.shoulder + glm::normalize(dir) * tuck_len;
+        set_wrist(q, tuck);
+        if (hits(current())) continue;
+        float lo = 0.0f, hi = 1.0f;  // fractions of the way to the tuck: lo hits, hi clears
+        for (int k = 0; k < 6; ++k) {
+          const float mid = 0.5f * (lo + hi);
+          set_wrist(q, glm::mix(q.wrist, tuck, mid));
+          (hits(current()) ? lo : hi) = mid;
+        }
+        set_wrist(q, glm::mix(q.wrist, tuck, hi));
+        return;
       }
-      set_wrist(q, glm::mix(q.wrist, tuck, hi));
-      return;
     }
   }
   set_wrist(p, p.shoulder + glm::normalize(glm::vec2(-1.0f, -0.3f)) * tuck_len);
