@@ -1741,17 +1741,25 @@ void Animator::place_body(float dt, const Level& level) {
     }
     if (!moved) break;
   }
+  // A point of the body's rest pose where the body is now (lifted by `lift`), and how far a
+  // shoulder there must rise to keep a tenth of the standing height above the ground under
+  // it (looked for from half a standing height, plus `extra`, above it).
+  auto body_ws = [&](glm::vec2 rest_ms, float lift) {
+    const glm::vec2 j = rotate_body(rest_ms - root_rest);
+    return to_world({j.x, j.y + root_y_ + lift});
+  };
+  auto shoulder_need = [&](glm::vec2 shoulder, float extra) {
+    const float half = 0.05f * hip_height_;
+    auto below = level.ground_height_below(shoulder.x - half, shoulder.x + half, shoulder.y + 0.5f * hip_height_ + extra, 100.0f);
+    return below ? below->height_ws + 0.1f * hip_height_ - shoulder.y : 0.0f;
+  };
   // The shoulder far ahead of a single girdle meeting a step: the body turns up about the
   // girdle (the feet stay in reach) rather than rise (see the pitch target above, which
   // follows more slowly).
   if (front_shoulder_.x > 0.0f) {
     const glm::vec2 rel = groups_.front().joint_ms - root_rest;
     for (int pass = 0; pass < 2; ++pass) {
-      const glm::vec2 j = rotate_body(groups_.front().joint_ms + front_shoulder_ - root_rest);
-      const glm::vec2 shoulder = to_world({j.x, j.y + root_y_});
-      const float half = 0.05f * hip_height_;
-      auto below = level.ground_height_below(shoulder.x - half, shoulder.x + half, shoulder.y + 0.5f * hip_height_, 100.0f);
-      const float need = below ? below->height_ws + 0.1f * hip_height_ - shoulder.y : 0.0f;
+      const float need = shoulder_need(body_ws(groups_.front().joint_ms + front_shoulder_, 0.0f), 0.0f);
       if (need <= 0.0f) break;
       const float girdle_y = rotate_body(rel).y;
       pitch_ = std::min(pitch_ + std::asin(std::min(need / front_shoulder_.x, 0.9f)), kMaxPitch);
@@ -1775,13 +1783,7 @@ void Animator::place_body(float dt, const Level& level) {
   // Shoulders carrying arms, wings or fins too (those fold and lift, but their roots must stay
   // out).
   auto keep_shoulder_out = [&](int limb) {
-    const glm::vec2 rest_joint = bone_start(model_rest_[creature_->limbs[limb].bones[0]]);
-    const glm::vec2 j = rotate_body(rest_joint - glm::vec2(0.0f, root_rest_y_));
-    const glm::vec2 joint = to_world({j.x, j.y + root_y_});
-    const float half = 0.05f * hip_height_;
-    if (auto below = level.ground_height_below(joint.x - half, joint.x + half, joint.y + 0.5f * hip_height_ + fell, 100.0f)) {
-      raise = std::max(raise, below->height_ws + 0.1f * hip_height_ - joint.y);
-    }
+    raise = std::max(raise, shoulder_need(body_ws(bone_start(model_rest_[creature_->limbs[limb].bones[0]]), 0.0f), fell));
   };
   for (int a : arms_) keep_shoulder_out(a);
   for (int w : wings_) keep_shoulder_out(w);
@@ -1789,13 +1791,9 @@ void Animator::place_body(float dt, const Level& level) {
   // wall, too high to rise over, is the sweep's business).
   for (int w : wings_) {
     const auto& bones = creature_->limbs[w].bones;
-    auto at = [&](glm::vec2 rest) {
-      const glm::vec2 j = rotate_body(rest - glm::vec2(0.0f, root_rest_y_));
-      return to_world({j.x, j.y + root_y_ + raise});
-    };
-    glm::vec2 a = at(bone_start(model_rest_[bones[0]]));
+    glm::vec2 a = body_ws(bone_start(model_rest_[bones[0]]), raise);
     for (int b : bones) {
-      const glm::vec2 e = at(bone_end(model_rest_[b], creature_->skeleton.length(b)));
+      const glm::vec2 e = body_ws(bone_end(model_rest_[b], creature_->skeleton.length(b)), raise);
       const float need = raise_to_clear(a, e, level);
       if (need < 0.5f * hip_height_) raise += need;
       a = e;
