@@ -213,6 +213,27 @@ Animator::Animator(const Creature& creature, SplinePrototypes prototypes, Animat
     x_max = std::max(x_max, p.x);
   }
   body_half_length_ = std::max(0.5f * (x_max - x_min), 0.05f);
+  auto distinct_outlines = [&](const std::vector<int>& limbs) {
+    std::vector<int> out;
+    for (int a : limbs) {
+      auto same = [&](int b) {
+        const Limb &la = creature.limbs[a], &lb = creature.limbs[b];
+        for (size_t k = 0; k < la.bones.size(); ++k) {
+          const int i = la.bones[k], j = lb.bones[k];
+          if (bone_start(model_rest_[i]) != bone_start(model_rest_[j]) ||
+              bone_end(model_rest_[i], sk.length(i)) != bone_end(model_rest_[j], sk.length(j))) {
+            return false;
+          }
+        }
+        return true;
+      };
+      if (std::none_of(out.begin(), out.end(), same)) out.push_back(a);
+    }
+    return out;
+  };
+  outline_arms_ = distinct_outlines(arms_);
+  outline_fins_ = distinct_outlines(fins_);
+  outline_wings_ = distinct_outlines(wings_);
   if (groups_.size() == 1) {
     const Group& g = groups_[0];
     for (size_t i = 0; i < creature.limbs.size(); ++i) {
@@ -1785,11 +1806,11 @@ void Animator::place_body(float dt, const Level& level) {
   auto keep_shoulder_out = [&](int limb) {
     raise = std::max(raise, shoulder_need(body_ws(bone_start(model_rest_[creature_->limbs[limb].bones[0]]), 0.0f), fell));
   };
-  for (int a : arms_) keep_shoulder_out(a);
-  for (int w : wings_) keep_shoulder_out(w);
+  for (int a : outline_arms_) keep_shoulder_out(a);
+  for (int w : outline_wings_) keep_shoulder_out(w);
   // A folded wing is part of the body's outline: it does not cut a step's corner either (a
   // wall, too high to rise over, is the sweep's business).
-  for (int w : wings_) {
+  for (int w : outline_wings_) {
     const auto& bones = creature_->limbs[w].bones;
     glm::vec2 a = body_ws(bone_start(model_rest_[bones[0]]), raise);
     for (int b : bones) {
@@ -1799,7 +1820,7 @@ void Animator::place_body(float dt, const Level& level) {
       a = e;
     }
   }
-  for (int f : fins_) keep_shoulder_out(f);
+  for (int f : outline_fins_) keep_shoulder_out(f);
   root_y_ += raise;
   root_vy_ = dt > 0.0f ? (root_y_ - old_root) / dt : 0.0f;
 }

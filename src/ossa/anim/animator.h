@@ -247,6 +247,9 @@ class Animator {
   std::vector<Foot> feet_;
   std::vector<int> foot_of_leg_;
   std::vector<int> arms_, fins_, wings_;  // limb indices
+  // The same, one of each left/right pair whose rest poses coincide in the side view: the
+  // rest-pose keep-outs of place_body test each outline once.
+  std::vector<int> outline_arms_, outline_fins_, outline_wings_;
   float hip_height_ = 1.0f;
   float climb_height_ = 0.0f;        // the least step_height of any girdle: a step up more
                                      // than max_step_up of it is a wall (the others could not follow)
