@@ -1,5 +1,7 @@
-// Fuzz target: level files and Tiled maps. Every input goes through parse_level and
-// import_tiled; whatever loads is queried, saved and re-read, which must give it back.
+// Fuzz target: level files, Tiled maps (JSON and XML) and LDtk projects. Every input goes
+// through parse_level, import_tiled and parse_level_any (the content-dispatching loader behind
+// load_level, without file access); whatever loads is queried, saved and re-read, which must
+// give it back.
 
 #include <cstddef>
 #include <cstdint>
@@ -7,6 +9,7 @@
 #include <string_view>
 
 #include "ossa/level/level_io.h"
+#include "ossa/level/level_load.h"
 #include "ossa/level/tiled.h"
 
 namespace {
@@ -31,6 +34,10 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   if (map.ok()) {
     exercise(*map);
     (void)ossa::export_tiled(*map);
+  }
+  for (const char* file : {"fuzz.tmj", "fuzz.ldtk"}) {
+    ossa::Result<ossa::Level> any = ossa::parse_level_any(text, file, ossa::LevelLoadOptions{});
+    if (any.ok()) exercise(*any);
   }
   return 0;
 }

@@ -127,11 +127,7 @@ Result<Level> parse_level(std::string_view text, std::string_view file) {
   return level_from_json(*doc, file);
 }
 
-Result<Level> load_level(const std::string& path) {
-  Result<Json> doc = read_json_file(path);
-  if (!doc) return doc.error();
-  return level_from_json(*doc, path);
-}
+Result<Level> load_level(const std::string& path) { return load_level(path, LevelLoadOptions{}); }
 
 namespace {
 

@@ -34,6 +34,7 @@
 #include "ossa/io/json.h"
 #include "ossa/io/result.h"
 #include "ossa/level/level.h"
+#include "ossa/level/level_load.h"
 
 namespace ossa {
 
@@ -42,7 +43,8 @@ inline constexpr int kLevelVersion = 1;
 inline constexpr int kMaxLevelColliders = 1000000;
 inline constexpr double kMaxLevelCoordinate = 1.0e6;  // metres, bound on |x|, |y|, w, h
 
-// Reads and parses a level file.
+// Reads and parses a level file of any format: load_level(path, LevelLoadOptions{}) of
+// level_load.h (ossa levels, Tiled .tmj/.tmx maps, LDtk "project.ldtk#Level").
 Result<Level> load_level(const std::string& path);
 // Parses level JSON text; `file` names the source in error messages.
 Result<Level> parse_level(std::string_view text, std::string_view file);

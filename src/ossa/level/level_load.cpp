@@ -1,0 +1,138 @@
+// load_level(path, options): format dispatch for every level file ossa reads (level_load.h).
+
+#include "ossa/level/level_load.h"
+
+#include <cctype>
+#include <filesystem>
+#include <system_error>
+
+#include "ossa/io/file.h"
+#include "ossa/io/json.h"
+#include "ossa/level/ldtk.h"
+#include "ossa/level/level_io.h"
+#include "ossa/level/tiled.h"
+
+namespace ossa {
+
+namespace {
+
+std::string extension(std::string_view path) {
+  std::string ext = std::filesystem::path(std::string(path)).extension().string();
+  for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  return ext;
+}
+
+// The first character that is not white space or a UTF-8 byte order mark.
+char first_char(std::string_view text) {
+  size_t i = 0;
+  if (text.substr(0, 3) == "\xEF\xBB\xBF") i = 3;
+  while (i < text.size() && std::isspace(static_cast<unsigned char>(text[i]))) ++i;
+  return i < text.size() ? text[i] : '\0';
+}
+
+std::optional<LevelFormat> format_of_json(const Json& doc) {
+  if (!doc.is_object()) return std::nullopt;
+  if (doc.contains("format")) return LevelFormat::kOssa;
+  if ((doc.contains("__header__") || doc.contains("jsonVersion")) && doc.contains("levels")) return LevelFormat::kLdtk;
+  if (doc.contains("orientation") || doc.contains("tilewidth") || doc.contains("tileheight") ||
+      (doc.contains("type") && doc["type"] == "map")) {
+    return LevelFormat::kTiledJson;
+  }
+  return std::nullopt;
+}
+
+std::optional<LevelFormat> format_of_extension(std::string_view path) {
+  const std::string ext = extension(path);
+  if (ext == ".tmx") return LevelFormat::kTiledXml;
+  if (ext == ".tmj") return LevelFormat::kTiledJson;
+  if (ext == ".ldtk") return LevelFormat::kLdtk;
+  return std::nullopt;
+}
+
+}  // namespace
+
+const char* level_format_name(LevelFormat format) {
+  switch (format) {
+    case LevelFormat::kOssa: return "ossa";
+    case LevelFormat::kTiledJson: return "tiled-json";
+    case LevelFormat::kTiledXml: return "tiled-xml";
+    case LevelFormat::kLdtk: return "ldtk";
+  }
+  return "ossa";
+}
+
+LevelFormat detect_level_format(std::string_view text, std::string_view path) {
+  const char c = first_char(text);
+  if (c == '<') return LevelFormat::kTiledXml;
+  if (c == '{') {
+    Result<Json> doc = parse_json(text, path);
+    if (doc) {
+      if (auto f = format_of_json(*doc)) return *f;
+    }
+  }
+  return format_of_extension(path).value_or(LevelFormat::kOssa);
+}
+
+Result<Level> parse_level_any(std::string_view text, const std::string& file, const LevelLoadOptions& options,
+                              LevelLoadReport* report, const FileLoader& loader, const std::string& level_name) {
+  OSSA_ASSERT(options.pixels_per_metre > 0.0f && std::isfinite(options.pixels_per_metre),
+              "LevelLoadOptions::pixels_per_metre must be > 0");
+  LevelLoadReport local;
+  LevelLoadReport& rep = report ? *report : local;
+  rep = LevelLoadReport{};
+  // Parse JSON once: the content decides, the extension only when the content says nothing.
+  std::optional<Result<Json>> doc;
+  LevelFormat format;
+  if (first_char(text) == '<') {
+    format = LevelFormat::kTiledXml;
+  } else {
+    doc.emplace(parse_json(text, file));
+    std::optional<LevelFormat> f = *doc ? format_of_json(**doc) : std::nullopt;
+    format = f ? *f : format_of_extension(file).value_or(LevelFormat::kOssa);
+    if (format == LevelFormat::kTiledXml) format = LevelFormat::kTiledJson;  // JSON text named .tmx
+    if (!*doc) return doc->error();
+  }
+  rep.format = format;
+  if (!level_name.empty() && format != LevelFormat::kLdtk) {
+    return Error::at(file, "", "\"#" + level_name + "\" picks a level of an LDtk project, but this is a " +
+                                   level_format_name(format) + " file");
+  }
+  switch (format) {
+    case LevelFormat::kOssa:
+      return level_from_json(**doc, file);
+    case LevelFormat::kTiledJson:
+    case LevelFormat::kTiledXml: {
+      TiledOptions o;
+      o.pixels_per_metre = options.pixels_per_metre;
+      o.tile_is_half_metre = true;
+      o.read_file = loader;
+      return format == LevelFormat::kTiledXml ? import_tmx(text, file, o, &rep)
+                                              : import_tiled_json(**doc, file, o, &rep);
+    }
+    case LevelFormat::kLdtk: {
+      LdtkOptions o;
+      o.pixels_per_metre = options.pixels_per_metre;
+      o.passable = options.ldtk_passable;
+      o.read_file = loader;
+      return import_ldtk_json(**doc, file, level_name, o, &rep);
+    }
+  }
+  return Error::at(file, "", "unknown level format");
+}
+
+Result<Level> load_level(const std::string& path, const LevelLoadOptions& options, LevelLoadReport* report) {
+  // "project.ldtk#Level" picks a level, unless a file of that very name exists.
+  std::string file = path, level_name;
+  const size_t hash = path.rfind('#');
+  std::error_code ec;
+  if (hash != std::string::npos && !std::filesystem::exists(path, ec)) {
+    file = path.substr(0, hash);
+    level_name = path.substr(hash + 1);
+    if (level_name.empty()) return Error::at(path, "", "expected a level name after '#'");
+  }
+  Result<std::string> text = read_file(file);
+  if (!text) return text.error();
+  return parse_level_any(*text, file, options, report, [](const std::string& p) { return read_file(p); }, level_name);
+}
+
+}  // namespace ossa
