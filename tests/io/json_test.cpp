@@ -96,3 +96,47 @@ TEST_CASE("read_file errors name the file", "[io]") {
   REQUIRE_FALSE(d.ok());
   CHECK_THAT(d.message(), Catch::Contains("is a folder"));
 }
+
+TEST_CASE("a key twice in one object is an error naming its path", "[io]") {
+  // nlohmann::json alone keeps the last value: a second "colliders": [] would empty a level.
+  Result<Json> top = parse_json(R"({"colliders": [{"x": 1}], "colliders": []})", "levels/x.json");
+  REQUIRE_FALSE(top.ok());
+  CHECK(top.message() == "levels/x.json: colliders: duplicate key (a key may appear only once in an object)");
+  Result<Json> nested = parse_json(R"({"a": [{"x": 1}, {"y": 2, "y": 3}]})", "f.json");
+  REQUIRE_FALSE(nested.ok());
+  CHECK_THAT(nested.message(), Catch::StartsWith("f.json: a[1].y: duplicate key"));
+  // The same key in different objects, and many keys in one object, are fine.
+  CHECK(parse_json(R"({"a": {"x": 1}, "b": {"x": 2}, "x": [{"x": 3}, {"x": 4}]})", "f.json").ok());
+  std::string many = "{";
+  for (int i = 0; i < 200; ++i) many += (i ? ",\"k" : "\"k") + std::to_string(i) + "\": " + std::to_string(i);
+  CHECK(parse_json(many + "}", "f.json").ok());
+  CHECK_FALSE(parse_json(many + ", \"k150\": 0}", "f.json").ok());
+}
+
+TEST_CASE("read_file reads regular files only, up to a size limit", "[io]") {
+  const auto dir = std::filesystem::temp_directory_path() / "ossa_read_file_test";
+  std::filesystem::create_directories(dir);
+  const std::string path = (dir / "five.txt").string();
+  REQUIRE(write_file_atomic(path, "12345").ok());
+  CHECK(read_file(path).value() == "12345");
+  CHECK(read_file(path, 5).ok());
+  Result<std::string> big = read_file(path, 4);
+  REQUIRE_FALSE(big.ok());
+  CHECK_THAT(big.message(), Catch::Contains("five.txt: is 5 bytes, expected at most 4 bytes"));
+  // A device never ends: refused before a byte is read (this used to grow to gigabytes).
+  Result<std::string> zero = read_file("/dev/zero");
+  REQUIRE_FALSE(zero.ok());
+  CHECK(zero.message() == "/dev/zero: is not a regular file (a device, pipe or socket), expected a file");
+  CHECK_THAT(read_file(dir.string()).message(), Catch::Contains("is a folder"));
+  CHECK_THAT(read_file((dir / "nope").string()).message(), Catch::Contains("nope: no such file"));
+  std::filesystem::remove_all(dir);
+}
+
+TEST_CASE("written files start with \"format\" and \"version\"", "[io]") {
+  const Json doc = {{"contact", "tip"}, {"version", 1}, {"format", "ossa.creature"}, {"alpha", 2}};
+  const std::string text = json_file_text(doc);
+  CHECK_THAT(text, Catch::StartsWith("{\n  \"format\": \"ossa.creature\",\n  \"version\": 1,\n"));
+  CHECK(parse_json(text, "t.json").value() == doc);
+  // Documents without a header keep their plain sorted form.
+  CHECK(json_file_text(Json{{"b", 1}, {"a", 2}}) == "{\n  \"a\": 2,\n  \"b\": 1\n}\n");
+}

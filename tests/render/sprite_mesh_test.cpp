@@ -144,8 +144,13 @@ TEST_CASE("bad sprite files give errors naming the file and field", "[render]") 
   }
   SECTION("missing sprite, syntax error, missing file") {
     std::string text = good;
-    text.replace(text.find("\"fin\": {"), 8, "\"bird_foot\": {");  // duplicate key replaces fin
+    text.replace(text.find("\"fin\": {"), 8, "\"bird_foot\": {");  // a second bird_foot, no fin
     Result<SpriteSet> r = load_sprite_set(write_temp("ossa_bad_sprites.json", text));
+    REQUIRE_FALSE(r.ok());
+    CHECK_THAT(r.message(), Catch::Contains("sprites.bird_foot: duplicate key"));
+    Json without_fin = Json::parse(good);
+    without_fin["sprites"].erase("fin");
+    r = load_sprite_set(write_temp("ossa_bad_sprites.json", without_fin.dump()));
     REQUIRE_FALSE(r.ok());
     CHECK_THAT(r.message(), Catch::Contains("sprites.fin: missing"));
     r = load_sprite_set(write_temp("ossa_bad_sprites.json", "{\"format\": "));

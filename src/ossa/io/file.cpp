@@ -7,8 +7,6 @@
 #include <unistd.h>
 
 #include <filesystem>
-#include <fstream>
-#include <sstream>
 
 namespace ossa {
 
@@ -34,21 +32,45 @@ bool write_all(int fd, std::string_view data) {
 
 }  // namespace
 
-Result<std::string> read_file(const std::string& path) {
-  std::error_code ec;
-  if (std::filesystem::is_directory(path, ec)) {
-    return Error::at(path, "", "is a folder, expected a file");
-  }
-  std::ifstream in(path, std::ios::binary);
-  if (!in) {
+Result<std::string> read_file(const std::string& path, long long max_bytes) {
+  struct stat st {};
+  if (::stat(path.c_str(), &st) != 0) {
     const int err = errno;
-    if (!std::filesystem::exists(path, ec)) return Error::at(path, "", "no such file");
+    if (err == ENOENT) return Error::at(path, "", "no such file");
     return Error::at(path, "", "cannot open: " + errno_text(err));
   }
-  std::ostringstream ss;
-  ss << in.rdbuf();
-  if (in.bad()) return Error::at(path, "", "read error");
-  return ss.str();
+  if (S_ISDIR(st.st_mode)) return Error::at(path, "", "is a folder, expected a file");
+  if (!S_ISREG(st.st_mode)) return Error::at(path, "", "is not a regular file (a device, pipe or socket), expected a file");
+  const auto too_large = [&](long long size) {
+    return Error::at(path, "", "is " + std::to_string(size) + " bytes, expected at most " +
+                                   std::to_string(max_bytes) + " bytes");
+  };
+  if (st.st_size > max_bytes) return too_large(st.st_size);
+
+  const int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC);
+  if (fd < 0) return Error::at(path, "", "cannot open: " + errno_text(errno));
+  // Read to the end rather than trusting st_size, but never past max_bytes: a file that grows
+  // while we read stops at the limit.
+  std::string data;
+  data.reserve(static_cast<size_t>(st.st_size));
+  char buf[65536];
+  for (;;) {
+    const ssize_t n = ::read(fd, buf, sizeof buf);
+    if (n < 0) {
+      if (errno == EINTR) continue;
+      const int err = errno;
+      ::close(fd);
+      return Error::at(path, "", "read error: " + errno_text(err));
+    }
+    if (n == 0) break;
+    data.append(buf, static_cast<size_t>(n));
+    if (static_cast<long long>(data.size()) > max_bytes) {
+      ::close(fd);
+      return too_large(static_cast<long long>(data.size()));
+    }
+  }
+  ::close(fd);
+  return data;
 }
 
 Status write_file_atomic(const std::string& path, std::string_view data) {
@@ -98,10 +120,27 @@ Status write_file_atomic(const std::string& path, std::string_view data) {
   return {};
 }
 
-Status write_json_atomic(const std::string& path, const Json& doc) {
-  std::string text = doc.dump(2);
+std::string json_file_text(const Json& doc) {
+  std::string text;
+  if (doc.is_object() && (doc.contains("format") || doc.contains("version"))) {
+    // nlohmann::json keeps keys sorted; an ordered copy of the top level puts the header first.
+    nlohmann::ordered_json ordered = nlohmann::ordered_json::object();
+    for (const char* key : {"format", "version"}) {
+      if (doc.contains(key)) ordered[key] = nlohmann::ordered_json(doc.at(key));
+    }
+    for (const auto& [key, value] : doc.items()) {
+      if (key != "format" && key != "version") ordered[key] = nlohmann::ordered_json(value);
+    }
+    text = ordered.dump(2);
+  } else {
+    text = doc.dump(2);
+  }
   text.push_back('\n');
-  return write_file_atomic(path, text);
+  return text;
+}
+
+Status write_json_atomic(const std::string& path, const Json& doc) {
+  return write_file_atomic(path, json_file_text(doc));
 }
 
 }  // namespace ossa

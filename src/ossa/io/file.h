@@ -11,14 +11,22 @@
 
 namespace ossa {
 
-// Reads a whole file. Errors name the file and the reason (missing, a folder, unreadable).
-Result<std::string> read_file(const std::string& path);
+// The largest data file any loader reads (bytes): 64 MiB. Bigger files, and anything that is
+// not a regular file (a folder, /dev/zero, a pipe), are refused before a byte is read.
+inline constexpr long long kMaxDataFileBytes = 64ll * 1024 * 1024;
+
+// Reads a whole regular file of at most `max_bytes`. Errors name the file and the reason
+// (missing, a folder or device, too large, unreadable).
+Result<std::string> read_file(const std::string& path, long long max_bytes = kMaxDataFileBytes);
 
 // Writes `data` to `path` atomically. On failure the previous file is untouched and no
 // temporary file is left behind.
 Status write_file_atomic(const std::string& path, std::string_view data);
 
-// Serialises `doc` (2-space indent, trailing newline) and writes it atomically.
+// Serialises `doc` (2-space indent, trailing newline) with "format" and "version" first when
+// present (every ossa file starts with them; the other keys follow in sorted order).
+std::string json_file_text(const Json& doc);
+// Writes json_file_text(doc) atomically.
 Status write_json_atomic(const std::string& path, const Json& doc);
 
 }  // namespace ossa

@@ -1,16 +1,97 @@
 #include "ossa/io/json.h"
 
+#include <algorithm>
 #include <charconv>
 #include <cmath>
 #include <cstdlib>
+#include <unordered_set>
+#include <vector>
 
 #include "ossa/io/file.h"
 
 namespace ossa {
 
+namespace {
+
+// Thrown from the parser callback on a key that its object already has.
+struct DuplicateKey {
+  std::string path;
+};
+
+// Follows the parser's events to know the path of the value being read, and keeps each open
+// object's keys so a repeated key is caught (nlohmann::json would silently keep the last one:
+// a second "colliders": [] would empty a level).
+class DuplicateKeyCheck {
+ public:
+  bool operator()(int /*depth*/, Json::parse_event_t event, Json& parsed) {
+    using E = Json::parse_event_t;
+    switch (event) {
+      case E::object_start:
+      case E::array_start:
+        begin_element();
+        frames_.push_back(Frame{event == E::array_start});
+        break;
+      case E::object_end:
+      case E::array_end:
+        if (!frames_.empty()) frames_.pop_back();
+        break;
+      case E::key: {
+        Frame& f = frames_.back();
+        std::string key = parsed.get<std::string>();
+        if (f.has(key)) throw DuplicateKey{path_with(key)};
+        f.add(key);
+        f.key = std::move(key);
+        break;
+      }
+      case E::value: begin_element(); break;
+    }
+    return true;
+  }
+
+ private:
+  struct Frame {
+    bool array = false;
+    long long index = -1;                  // arrays: the element being read
+    std::string key;                       // objects: the key being read
+    std::vector<std::string> small;        // objects: keys seen, while few
+    std::unordered_set<std::string> many;  // ... and once there are many
+
+    bool has(const std::string& k) const {
+      if (!many.empty()) return many.count(k) != 0;
+      return std::find(small.begin(), small.end(), k) != small.end();
+    }
+    void add(const std::string& k) {
+      if (many.empty() && small.size() < 16) {
+        small.push_back(k);
+        return;
+      }
+      if (many.empty()) many.insert(small.begin(), small.end());
+      many.insert(k);
+    }
+  };
+
+  void begin_element() {
+    if (!frames_.empty() && frames_.back().array) ++frames_.back().index;
+  }
+
+  std::string path_with(const std::string& key) const {
+    std::string p;
+    for (size_t i = 0; i + 1 < frames_.size(); ++i) {
+      p = frames_[i].array ? json_path(p, static_cast<size_t>(frames_[i].index)) : json_path(p, frames_[i].key);
+    }
+    return json_path(p, key);
+  }
+
+  std::vector<Frame> frames_;
+};
+
+}  // namespace
+
 Result<Json> parse_json(std::string_view text, std::string_view file) {
   try {
-    return Json::parse(text.begin(), text.end());
+    return Json::parse(text.begin(), text.end(), DuplicateKeyCheck{});
+  } catch (const DuplicateKey& d) {
+    return Error::at(file, d.path, "duplicate key (a key may appear only once in an object)");
   } catch (const Json::parse_error& e) {
     // e.byte is the 1-based offset of the offending byte; turn it into line and column.
     size_t line = 1, column = 1;

@@ -16,9 +16,11 @@ namespace ossa {
 
 using Json = nlohmann::json;
 
-// Parses text; errors name `file` and the line and column of the syntax error.
+// Parses text; errors name `file` and the line and column of the syntax error, or the path of
+// a key that appears twice in one object (an error: JSON parsers disagree on which one wins).
 Result<Json> parse_json(std::string_view text, std::string_view file);
-// Reads and parses a file; errors name the file.
+// Reads (read_file: regular files of at most kMaxDataFileBytes) and parses a file; errors name
+// the file.
 Result<Json> read_json_file(const std::string& path);
 
 // "parent.key" (or "key" when parent is empty) and "parent[index]".
