@@ -19,7 +19,7 @@ Level random_float_level(uint64_t seed, int n) {
   std::vector<Box> boxes;
   for (int i = 0; i < n; ++i) {
     // Arbitrary floats, not short decimals: the writer must still round-trip them exactly.
-    const float x = static_cast<float>(rng.uniform(-5000.0, 5000.0));
+    const float x = static_cast<float>(rng.uniform(-950.0, 950.0));  // within kMaxLevelCoordinate
     const float y = static_cast<float>(rng.uniform(-50.0, 50.0));
     const float w = static_cast<float>(rng.uniform(1e-3, 30.0));
     const float h = static_cast<float>(rng.uniform(1e-3, 5.0));
@@ -90,7 +90,7 @@ TEST_CASE("bad level files give errors naming the file and field", "[level][io]"
   CHECK(message_of(head + R"("colliders":[{"x":0,"y":0,"w":1}]})") ==
         "levels/x.json: colliders[0].h: missing (required field)");
   CHECK(message_of(head + R"("colliders":[{"x":"0","y":0,"w":1,"h":1}]})") ==
-        "levels/x.json: colliders[0].x: expected a number in [-1000000, 1000000], got a string \"0\"");
+        "levels/x.json: colliders[0].x: expected a number in [-1000, 1000], got a string \"0\"");
   // JSON text cannot hold NaN or infinity (the parser rejects 1e999), but a document built in
   // code can.
   CHECK_THAT(message_of(head + R"("colliders":[{"x":1e999,"y":0,"w":1,"h":1}]})"),
@@ -104,12 +104,22 @@ TEST_CASE("bad level files give errors naming the file and field", "[level][io]"
     doc["colliders"][0]["w"] = 1.0;
     doc["colliders"][0]["y"] = -std::numeric_limits<double>::infinity();
     CHECK_THAT(level_from_json(doc, "n.json").message(),
-               Catch::StartsWith("n.json: colliders[0].y: expected a number in [-1000000, 1000000], got "));
+               Catch::StartsWith("n.json: colliders[0].y: expected a number in [-1000, 1000], got "));
   }
   CHECK(message_of(head + R"("colliders":[{"x":0,"y":0,"w":2e6,"h":1}]})") ==
-        "levels/x.json: colliders[0].w: expected a number <= 1000000, got 2000000.0");
-  CHECK(message_of(head + R"("colliders":[{"x":1000000,"y":0,"w":1e-9,"h":1}]})") ==
-        "levels/x.json: colliders[0].w: too small to be represented at x = 1000000.000000");
+        "levels/x.json: colliders[0].w: expected a number <= 2000, got 2000000.0");
+  CHECK(message_of(head + R"("colliders":[{"x":999,"y":0,"w":1e-9,"h":1}]})") ==
+        "levels/x.json: colliders[0].w: too small to be represented at x = 999.000000");
+  // Coordinates stay where a float keeps 0.1 mm: far edges too (a level near x = 999 000
+  // slipped feet by 8.7 mm from rounding alone).
+  CHECK(message_of(head + R"("colliders":[{"x":990,"y":0,"w":20,"h":1}]})") ==
+        "levels/x.json: colliders[0].w: puts the box's far edge at 1010.000000, expected at most 1000 m from "
+        "the origin (beyond it a float cannot keep 0.1 mm)");
+  CHECK(message_of(R"({"format":"ossa.level","version":1,"spawn":{"x":999000,"y":0},"colliders":[]})") ==
+        "levels/x.json: spawn.x: expected a number in [-1000, 1000], got 999000");
+  // A key given twice is an error, not "the last one wins" (which emptied the level).
+  CHECK(message_of(head + R"("colliders":[{"x":0,"y":0,"w":1,"h":1}],"colliders":[]})") ==
+        "levels/x.json: colliders: duplicate key (a key may appear only once in an object)");
   CHECK(message_of(head + R"("colliders":[3]})") ==
         "levels/x.json: colliders[0]: expected an object, got 3");
   CHECK(message_of(head + R"("colliders":{}})") ==
@@ -124,7 +134,7 @@ TEST_CASE("bad level files give errors naming the file and field", "[level][io]"
   CHECK(message_of(R"({"format":"ossa.level","version":1,"colliders":[]})") ==
         "levels/x.json: spawn: missing (required field)");
   CHECK(message_of(R"({"format":"ossa.level","version":1,"spawn":{"x":1,"y":true},"colliders":[]})") ==
-        "levels/x.json: spawn.y: expected a number in [-1000000, 1000000], got true");
+        "levels/x.json: spawn.y: expected a number in [-1000, 1000], got true");
   CHECK(message_of(head + R"("background":{"colour":[1,0]},"colliders":[]})") ==
         "levels/x.json: background.colour: expected an array of 3 numbers (r, g, b), got 2 elements");
   CHECK(message_of(head + R"("background":{"colour":[1,0,2]},"colliders":[]})") ==

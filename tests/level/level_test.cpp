@@ -123,3 +123,18 @@ TEST_CASE("Level editing keeps indices and bounds", "[level]") {
   CHECK(level.bounds().max_ws == glm::vec2(7.0f, 2.0f));
   CHECK(level.bounds().min_ws == glm::vec2(1.0f, 0.0f));  // includes the spawn point
 }
+
+TEST_CASE("a spawn inside a box stands on the first free ground above it", "[level]") {
+  Level level(std::vector<Box>{Box::from_corner(-5.0f, -2.0f, 40.0f, 2.0f),   // ground, top 0
+                               Box::from_corner(3.0f, 0.0f, 1.0f, 0.3f),      // a step on it
+                               Box::from_corner(3.2f, 0.3f, 0.2f, 0.5f)},     // a post on the step
+              glm::vec2(1.0f, -0.5f));
+  CHECK(level.spawn_inside_box());
+  CHECK(level.free_point_above({1.0f, -0.5f}) == glm::vec2(1.0f, 0.0f));
+  CHECK(level.free_point_above({3.5f, -1.0f}) == glm::vec2(3.5f, 0.3f));
+  CHECK(level.free_point_above({3.3f, -1.0f}) == glm::vec2(3.3f, 0.8f));  // through stacked boxes
+  CHECK(level.free_point_above({1.0f, 2.0f}) == glm::vec2(1.0f, 2.0f));   // free: unchanged
+  CHECK(level.free_point_above({1.0f, 0.0f}) == glm::vec2(1.0f, 0.0f));   // on a top: free
+  level.spawn_ws = {1.0f, 0.0f};
+  CHECK_FALSE(level.spawn_inside_box());
+}

@@ -178,13 +178,24 @@ void EditorSuite::draw_viewport(DebugDraw& debug) const {
       debug.add_box(Box::from_center(q, glm::vec2(h)), {0.1f, 0.1f, 0.1f, 1.0f});
     }
   }
-  // Spawn: a green flag pole with a cross at its foot.
+  // Spawn: a green flag pole with a cross at its foot. A spawn inside a box is red, with a
+  // dashed line up to the free ground where the creature will stand instead.
   const glm::vec2 s = level.spawn_ws;
   const float r = kPickRadiusPx / px_per_m;
-  debug.add_line(s, s + glm::vec2(0.0f, 4.0f * r), {0.2f, 1.0f, 0.3f, 1.0f});
+  const bool buried = level.spawn_inside_box();
+  const glm::vec4 flag = buried ? glm::vec4(1.0f, 0.2f, 0.15f, 1.0f) : glm::vec4(0.2f, 1.0f, 0.3f, 1.0f);
+  debug.add_line(s, s + glm::vec2(0.0f, 4.0f * r), flag);
   debug.add_triangle(s + glm::vec2(0.0f, 4.0f * r), s + glm::vec2(0.0f, 2.6f * r),
-                     s + glm::vec2(2.0f * r, 3.3f * r), {0.2f, 1.0f, 0.3f, 1.0f});
-  debug.add_cross(s, r, {0.2f, 1.0f, 0.3f, 1.0f});
+                     s + glm::vec2(2.0f * r, 3.3f * r), flag);
+  debug.add_cross(s, r, flag);
+  if (buried) {
+    const glm::vec2 free = level.free_point_above(s);
+    const float dash = std::max(r, (free.y - s.y) / 64.0f);  // at most 32 dashes
+    for (float y = s.y; y < free.y; y += 2.0f * dash) {
+      debug.add_line({s.x, y}, {s.x, std::min(y + dash, free.y)}, flag);
+    }
+    debug.add_cross(free, 0.6f * r, flag);
+  }
 }
 
 void EditorSuite::handle_shortcuts() {

@@ -106,6 +106,10 @@ void EditorSuite::draw_level_window() {
   float spawn[2] = {m.level().spawn_ws.x, m.level().spawn_ws.y};
   if (ImGui::InputFloat2("spawn", spawn, "%.3f", ImGuiInputTextFlags_EnterReturnsTrue))
     m.set_spawn({spawn[0], spawn[1]});
+  if (m.level().spawn_inside_box()) {
+    ImGui::TextColored(ImVec4(1.0f, 0.35f, 0.3f, 1.0f), "The spawn is inside a box: creatures start");
+    ImGui::TextColored(ImVec4(1.0f, 0.35f, 0.3f, 1.0f), "on the free ground above it (red marker).");
+  }
   if (ImGui::Button("Respawn player here") && world_->player()) {
     world_->player()->animator().reset(m.level().spawn_ws + glm::vec2(0.0f, 1.0f), m.level());
   }

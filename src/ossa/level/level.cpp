@@ -98,6 +98,23 @@ void Level::overlapping(const Box& box, std::vector<int>& out) const {
   index_.overlapping(box, out);
 }
 
+glm::vec2 Level::free_point_above(glm::vec2 p_ws) const {
+  OSSA_ASSERT(finite(p_ws), "free_point_above: point must be finite");
+  std::vector<int> hits;
+  // Each round lifts the point to the highest top among the boxes holding it, so it ends
+  // after at most one round per box.
+  for (int round = 0; round <= size(); ++round) {
+    hits.clear();
+    // A point on a box's bottom edge counts as inside it (a creature standing there would be
+    // in the box): ask for a sliver just above the point.
+    const float sliver = std::max(1e-6f, 1e-6f * std::abs(p_ws.y));
+    index_.overlapping(Box{p_ws, p_ws + glm::vec2(0.0f, sliver)}, hits);
+    if (hits.empty()) break;
+    for (int i : hits) p_ws.y = std::max(p_ws.y, colliders_[i].max_ws.y);
+  }
+  return p_ws;
+}
+
 std::optional<SweepHit> Level::sweep_box(const Box& box, glm::vec2 delta) const {
   OSSA_ASSERT(finite(box.min_ws) && finite(box.max_ws) && finite(delta),
               "sweep_box: inputs must be finite");

@@ -96,6 +96,13 @@ class Level {
   std::optional<SweepHit> raycast(glm::vec2 from_ws, glm::vec2 to_ws) const;
   // Is the point strictly inside a collider?
   bool point_inside(glm::vec2 p_ws) const { return overlaps(Box{p_ws, p_ws}); }
+  // The lowest point at or straight above `p_ws` that is inside no collider (a point on a
+  // box's bottom edge counts as inside): `p_ws` itself when it is free, else the top of the
+  // box holding it (and of any box stacked on that).
+  // A spawn inside a box stands on the first free ground above it (DESIGN.md §6).
+  glm::vec2 free_point_above(glm::vec2 p_ws) const;
+  // Is the spawn point inside a collider? (The level editor marks such a spawn.)
+  bool spawn_inside_box() const { return free_point_above(spawn_ws) != spawn_ws; }
 
   // Same name, spawn, background and colliders (in order).
   friend bool operator==(const Level& a, const Level& b) {

@@ -30,8 +30,9 @@ double read_size(JsonReader& r, const Json& parent, const std::string& path, con
     r.fail(json_path(path, key), "expected a number > 0, got " + describe_json(parent.at(key)));
     return 0.0;
   }
-  if (v > kMaxLevelCoordinate) {
-    r.fail(json_path(path, key), "expected a number <= 1000000, got " + describe_json(parent.at(key)));
+  if (v > 2.0 * kMaxLevelCoordinate) {
+    r.fail(json_path(path, key), "expected a number <= " + std::to_string(static_cast<int>(2.0 * kMaxLevelCoordinate)) +
+                                     ", got " + describe_json(parent.at(key)));
     return 0.0;
   }
   return v;
@@ -104,6 +105,14 @@ Result<Level> level_from_json(const Json& doc, std::string_view file) {
     const double w = read_size(r, c, path, "w");
     const double h = read_size(r, c, path, "h");
     if (r.failed()) return r.error();
+    for (const auto& [key, far] : {std::pair{"w", x + w}, std::pair{"h", y + h}}) {
+      if (far > kMaxLevelCoordinate) {
+        r.fail(json_path(path, key), "puts the box's far edge at " + std::to_string(far) + ", expected at most " +
+                                         std::to_string(static_cast<int>(kMaxLevelCoordinate)) +
+                                         " m from the origin (beyond it a float cannot keep 0.1 mm)");
+        return r.error();
+      }
+    }
     // The far corner is x + w rounded once, so saved files read back exactly.
     const Box box{{static_cast<float>(x), static_cast<float>(y)},
                   {static_cast<float>(x + w), static_cast<float>(y + h)}};
