@@ -40,12 +40,12 @@ source (one of):
 conditions (--example, --random):
   --wings 0|1           condition on wings
   --leg-pairs 0|1|2     condition on ground-contact leg pairs
-  --weight KG           condition on the weight (kg, > 0)
+  --weight KG           condition on the weight (kg, 0.001 to 1000000)
   --neck-girdle         allow a girdle below the head (centaur)
   --multi-limb          allow two limb pairs per girdle (pegasus)
 variations:
   --variations K        K variations of the creature (seeds seed+1 .. seed+K)
-  --sigma S             step size in sigma units of the principal components (default 0.3)
+  --sigma S             step size in sigma units of the principal components (0 to 10, default 0.3)
 outputs (with variations, F-1.ext .. F-K.ext):
   --out F.creature.json save the genome
   --svg F.svg           side view of the skeleton
@@ -88,12 +88,19 @@ long long parse_int(const std::string& flag, const std::string& text, long long 
   return v;
 }
 
-double parse_double(const std::string& flag, const std::string& text, double lo, bool lo_open) {
+// A finite number in [lo, hi] (or (lo, hi] when lo_open); the message names the flag and
+// the range, e.g. "--sigma: expected a number in (0, 10], got "1e6"".
+double parse_double(const std::string& flag, const std::string& text, double lo, bool lo_open, double hi) {
   char* end = nullptr;
   const double v = std::strtod(text.c_str(), &end);
-  if (text.empty() || *end != '\0' || !std::isfinite(v) || v < lo || (lo_open && v == lo)) {
-    usage_error(flag + ": expected a number " + (lo_open ? "> " : ">= ") + std::to_string(lo) +
-                ", got \"" + text + "\"");
+  if (text.empty() || *end != '\0' || !std::isfinite(v) || v < lo || (lo_open && v == lo) || v > hi) {
+    const auto num = [](double x) {
+      char buf[32];
+      std::snprintf(buf, sizeof buf, "%g", x);
+      return std::string(buf);
+    };
+    usage_error(flag + ": expected a number in " + (lo_open ? "(" : "[") + num(lo) + ", " + num(hi) + "], got \"" +
+                text + "\"");
   }
   return v;
 }
@@ -120,11 +127,13 @@ Args parse_args(int argc, char** argv) {
     else if (flag == "--seed") a.seed = static_cast<uint64_t>(parse_int(flag, value(), 0, 9007199254740991LL));
     else if (flag == "--wings") once(a.wings, static_cast<int>(parse_int(flag, value(), 0, 1)));
     else if (flag == "--leg-pairs") once(a.leg_pairs, static_cast<int>(parse_int(flag, value(), 0, 2)));
-    else if (flag == "--weight") once(a.weight, parse_double(flag, value(), 0.0, true));
+    else if (flag == "--weight") {
+      once(a.weight, parse_double(flag, value(), pca_range(kWeightKg).min, false, pca_range(kWeightKg).max));
+    }
     else if (flag == "--neck-girdle") a.neck_girdle = true;
     else if (flag == "--multi-limb") a.multi_limb = true;
     else if (flag == "--variations") once(a.variations, static_cast<int>(parse_int(flag, value(), 1, 10000)));
-    else if (flag == "--sigma") once(a.sigma, parse_double(flag, value(), 0.0, false));
+    else if (flag == "--sigma") once(a.sigma, parse_double(flag, value(), 0.0, false, kMaxVariationSigma));
     else if (flag == "--out") once(a.out, value());
     else if (flag == "--svg") once(a.svg, value());
     else if (flag == "--gltf") once(a.gltf, value());

@@ -42,7 +42,10 @@ source (one of):
   --mesh F                a rigged sprite character made in another tool (glTF, FBX, DAE)
 options:
   --seed N                seed of the random choices (default 1)
-  --level F               stand on this level's ground under its spawn point
+  --level F               stand on this level's ground under its spawn point (an ossa level,
+                          a Tiled .tmj/.tmx map or an LDtk project, F#LevelName)
+  --pixels-per-metre P    scale of Tiled/LDtk maps without a pixels_per_metre property or
+                          a tile size (default 32)
   --png OUT               write the frame as PNG
   --width W --height H    image size in pixels (default 1024 x 576)
   --count N               N creatures side by side (default 1, at most 10000)
@@ -56,6 +59,7 @@ struct Args {
   bool random = false, stats = false, bones = false;
   uint64_t seed = 1;
   int width = 1024, height = 576, count = 1;
+  float pixels_per_metre = 32.0f;  // LevelLoadOptions::pixels_per_metre
 };
 
 [[noreturn]] void fail(const std::string& message) {
@@ -102,6 +106,12 @@ Args parse_args(int argc, char** argv) {
       a.seed = static_cast<uint64_t>(parse_int(flag, value(), 0, 2147483647L));
     } else if (flag == "--level") {
       a.level = value();
+    } else if (flag == "--pixels-per-metre") {
+      const std::string text = value();
+      char* end = nullptr;
+      const double v = std::strtod(text.c_str(), &end);
+      if (text.empty() || *end || !(v > 0.0 && v <= 1e6)) fail(flag + ": expected a number in (0, 1000000], got \"" + text + "\"");
+      a.pixels_per_metre = static_cast<float>(v);
     } else if (flag == "--png") {
       a.png = value();
     } else if (flag == "--width") {
@@ -124,6 +134,9 @@ Args parse_args(int argc, char** argv) {
   if (!a.png && !a.stats) fail("nothing to do: give --png OUT and/or --stats");
   return a;
 }
+
+// The smallest on-screen width (pixels) of one creature in a --count row.
+constexpr float kMinCreaturePixels = 4.0f;
 
 Creature make_creature(const Args& a) {
   Genome genome;
@@ -170,7 +183,9 @@ int run(const Args& a) {
 
   std::optional<Level> level;
   if (a.level) {
-    auto l = load_level(*a.level);
+    LevelLoadOptions level_options;
+    level_options.pixels_per_metre = a.pixels_per_metre;
+    auto l = load_level(*a.level, level_options);
     if (!l.ok()) fail(l.message());
     level = std::move(l.value());
   }
@@ -232,6 +247,16 @@ int run(const Args& a) {
   const glm::vec4 ground_fill{0.42f, 0.36f, 0.27f, 1.0f}, ground_edge{0.25f, 0.20f, 0.14f, 1.0f};
   Camera2D& camera = renderer->camera;
   camera.fit(view, static_cast<float>(a.width) / static_cast<float>(a.height), 0.08f);
+  // The camera fits the whole row, so a row too long for the picture would draw creatures
+  // narrower than a pixel: nothing visible. Refuse it and say what fits.
+  const float creature_px = static_cast<float>(a.width) * body.width() / (2.0f * camera.half_height * camera.aspect);
+  if (creature_px < kMinCreaturePixels) {
+    const int fits = std::max(1, static_cast<int>(static_cast<float>(a.count) * creature_px / kMinCreaturePixels));
+    fail("--count " + std::to_string(a.count) + ": side by side in a " + std::to_string(a.width) +
+         " px wide picture each creature would be " + std::to_string(creature_px) + " px wide (under " +
+         std::to_string(static_cast<int>(kMinCreaturePixels)) + " px: nothing would show); use --count " +
+         std::to_string(fits) + " or less, or a larger --width");
+  }
   // Keep the ground near the bottom edge (a long row would otherwise float mid-frame).
   camera.center_ws.y = view.min_ws.y - 0.2f * camera.half_height + camera.half_height;
   const Box visible = camera.visible_box();

@@ -100,6 +100,7 @@ Genome Generator::complete(std::array<double, kPcaDims> pca, Rng& rng, const Gen
   g.pca = pca;
   g.options = options.genome;
   g.pca[kWeightKg] = std::max(0.01, g.pca[kWeightKg]);
+  clamp_to_genome_limits(g);  // a far draw stays within what the loader reads back
 
   // Girdles this body offers (the neck girdle needs a long enough neck) [Z 7.2.3].
   const BodyPlan bare = plan_body(g);
@@ -214,6 +215,7 @@ Genome Generator::complete(std::array<double, kPcaDims> pca, Rng& rng, const Gen
     }
   }
   recompute_rest_angles(g);
+  clamp_to_genome_limits(g);
   return g;
 }
 
@@ -286,6 +288,7 @@ Genome Generator::variation(const Genome& parent, uint64_t seed, double sigma) c
   if (rng.chance(0.05)) g.skull_variant = rng.uniform_int(0, kSkullVariants - 1);
   if (g.options.true_size) g.scale = static_cast<float>(0.002 * std::cbrt(g.pca[kWeightKg] / 500.0));
   // A neck girdle needs a long neck; drop limbs whose girdle the new body no longer has.
+  clamp_to_genome_limits(g);
   const BodyPlan plan = plan_body(g);
   std::erase_if(g.limbs, [&](const LimbGene& l) { return !plan.girdles[static_cast<int>(l.girdle)].exists; });
   recompute_rest_angles(g);

@@ -13,6 +13,10 @@
 
 namespace ossa {
 
+// The largest variation step (σ units): beyond it a step leaves the space the 44 examples
+// span so far that every value ends clamped at a limit.
+inline constexpr double kMaxVariationSigma = 10.0;
+
 class Rng;
 
 // User input for a random creature. Unset conditions come from the PCA point.
@@ -43,6 +47,7 @@ class Generator {
                          const GenerateOptions& options = {}) const;
   // A variation [Z 8.2]: a Gaussian step of `sigma` (in σ units of every principal component)
   // in PCA space, plus occasional discrete mutations (vertebra counts, rib interval, skull).
+  // sigma in [0, kMaxVariationSigma]; the result is clamped into the genome limits.
   Genome variation(const Genome& parent, uint64_t seed, double sigma) const;
 
   // Completes a genome whose PCA point and options are set: draws limb layout, vertebrae,

@@ -2,6 +2,7 @@
 
 #include <cmath>
 
+#include "ossa/gen/skeleton_builder.h"
 #include "ossa/io/file.h"
 
 namespace ossa {
@@ -26,6 +27,27 @@ constexpr std::array<GirdleKind, 3> kGirdleKinds = {GirdleKind::kNeck, GirdleKin
 constexpr std::array<ContactMode, 2> kContactModes = {ContactMode::kTip, ContactMode::kFlat};
 
 }  // namespace
+
+PcaRange pca_range(int dim) {
+  if (dim == kWings) return {-1.0, 2.0};
+  if (dim == kLegPairs) return {-1.0, 3.0};
+  if (dim == kWeightKg) return {0.001, 1e6};
+  if (dim >= kFrontUpper) return {0.0, 1000.0};
+  return {-1000.0, 2000.0};  // spine points
+}
+
+void clamp_to_genome_limits(Genome& g) {
+  const auto clamp = [](auto v, auto lo, auto hi) { return v >= lo ? (v <= hi ? v : hi) : lo; };  // NaN → lo
+  for (int d = 0; d < kPcaDims; ++d) g.pca[d] = clamp(g.pca[d], pca_range(d).min, pca_range(d).max);
+  g.neck_vertebrae = clamp(g.neck_vertebrae, 0, kMaxNeckVertebrae);
+  g.back_vertebrae = clamp(g.back_vertebrae, 2, kMaxBackVertebrae);
+  g.tail_vertebrae = clamp(g.tail_vertebrae, 0, kMaxTailVertebrae);
+  g.rib_interval = clamp(g.rib_interval, 0.0f, 1.0f);
+  g.scale = clamp(g.scale, kMinGenomeScale, kMaxGenomeScale);
+  for (LimbGene& l : g.limbs) {
+    for (float& a : l.angles) a = clamp(a, -10.0f, 10.0f);
+  }
+}
 
 const char* skull_variant_name(int variant) {
   switch (variant) {
@@ -89,18 +111,19 @@ Result<Genome> genome_from_json(const Json& doc, std::string_view file) {
   }
   if (const Json* pca = r.object(doc, "", "pca")) {
     for (int d = 0; d < kPcaDims; ++d) {
-      const double lo = d == kWeightKg ? 0.0 : -100000.0;
-      g.pca[d] = r.number(*pca, "pca", dim_name(d), lo, d == kWeightKg ? 1e6 : 100000.0);
+      g.pca[d] = r.number(*pca, "pca", dim_name(d), pca_range(d).min, pca_range(d).max);
     }
   }
   if (const Json* v = r.object(doc, "", "vertebrae")) {
-    g.neck_vertebrae = static_cast<int>(r.integer(*v, "vertebrae", "neck", 0, 64));
-    g.back_vertebrae = static_cast<int>(r.integer(*v, "vertebrae", "back", 2, 64));
-    g.tail_vertebrae = static_cast<int>(r.integer(*v, "vertebrae", "tail", 0, 64));
+    g.neck_vertebrae = static_cast<int>(r.integer(*v, "vertebrae", "neck", 0, kMaxNeckVertebrae));
+    g.back_vertebrae = static_cast<int>(r.integer(*v, "vertebrae", "back", 2, kMaxBackVertebrae));
+    g.tail_vertebrae = static_cast<int>(r.integer(*v, "vertebrae", "tail", 0, kMaxTailVertebrae));
   }
   g.rib_interval = r.number_f(doc, "", "rib_interval", 0.0, 1.0);
   if (const Json* limbs = r.array(doc, "", "limbs")) {
-    if (limbs->size() > 12) r.fail("limbs", "expected at most 12 limb pairs, got " + std::to_string(limbs->size()));
+    if (limbs->size() > kMaxLimbPairs) {
+      r.fail("limbs", "expected at most " + std::to_string(kMaxLimbPairs) + " limb pairs, got " + std::to_string(limbs->size()));
+    }
     for (size_t i = 0; i < limbs->size() && !r.failed(); ++i) {
       const std::string path = json_path("limbs", i);
       const Json& lj = (*limbs)[i];
@@ -132,7 +155,7 @@ Result<Genome> genome_from_json(const Json& doc, std::string_view file) {
     r.fail("contact", "expected \"tip\" or \"flat\", got \"" + contact + "\"");
   }
   g.skull_variant = static_cast<int>(r.integer_or(doc, "", "skull", 0, 0, kSkullVariants - 1));
-  g.scale = r.number_f(doc, "", "scale", 1e-6, 1000.0);
+  g.scale = r.number_f(doc, "", "scale", kMinGenomeScale, kMaxGenomeScale);
   if (r.has(doc, "options")) {
     if (const Json* o = r.object(doc, "", "options")) {
       g.options.arc_length_vertebrae = r.boolean_or(*o, "options", "arc_length_vertebrae", true);
@@ -157,6 +180,9 @@ Result<Genome> genome_from_json(const Json& doc, std::string_view file) {
     }
   }
   if (r.failed()) return r.error();
+  // Accepted means buildable: the body plan decides which girdles exist (a neck girdle needs
+  // a long neck), so a limb on a girdle this body lacks is caught here, naming the file.
+  if (Result<Creature> built = build_creature(g); !built) return Error::at(file, "", built.message());
   return g;
 }
 

@@ -64,10 +64,37 @@ struct Genome {
 };
 
 constexpr int kSkullVariants = 4;
+
+// ---- What a genome file may hold (the loader's ranges) ------------------------------------
+// The generator clamps what it writes into the same ranges (clamp_to_genome_limits), so every
+// file a tool writes loads back, and everything the loader accepts builds, animates and
+// renders (issue 17's one rule; the fuzz_creature target checks it).
+//   pca: spine points in [-1000, 2000] frame units (one frame either side of the 1000 × 1000
+//   frame), limb lengths in [0, 1000], wings in [-1, 2], leg_pairs in [-1, 3], weight_kg in
+//   [0.001, 1 000 000]; vertebrae neck 0–32, back 2–32, tail 0–32; scale in [5e-5, 0.05]
+//   metres per frame unit (a 5 cm to a 50 m frame: the smallest example, 0.01 kg, at true
+//   size is 5.4e-5).
+inline constexpr int kMaxNeckVertebrae = 32;
+inline constexpr int kMaxBackVertebrae = 32;
+inline constexpr int kMaxTailVertebrae = 32;
+inline constexpr int kMaxLimbPairs = 6;  // 3 girdles × 2 slots
+inline constexpr float kMinGenomeScale = 5e-5f;
+inline constexpr float kMaxGenomeScale = 0.05f;
+// The most bones a genome within these limits builds: root, skull, every vertebra, two ribs
+// per back vertebra, and per limb pair and side a girdle bone and three limb bones.
+inline constexpr int kMaxCreatureBones =
+    2 + kMaxNeckVertebrae + kMaxBackVertebrae + kMaxTailVertebrae + 2 * kMaxBackVertebrae + kMaxLimbPairs * 2 * 4;
+struct PcaRange {
+  double min, max;
+};
+PcaRange pca_range(int dim);
+// Clamps every field into the ranges above (NaN becomes the range's low end).
+void clamp_to_genome_limits(Genome& genome);
 const char* skull_variant_name(int variant);
 
 Json genome_to_json(const Genome& genome);
-// Parses and validates; errors name the file and field.
+// Parses and validates (every accepted genome builds: build_creature succeeds); errors name
+// the file and field.
 Result<Genome> genome_from_json(const Json& doc, std::string_view file);
 Result<Genome> parse_genome(std::string_view text, std::string_view file);
 Result<Genome> load_genome(const std::string& path);

@@ -18,6 +18,7 @@
 #include <glm/vec2.hpp>
 
 #include "ossa/gen/creature.h"
+#include "ossa/gen/genome.h"
 #include "ossa/io/result.h"
 #include "ossa/level/box.h"
 #include "ossa/math/transform2d.h"
@@ -105,8 +106,10 @@ struct SpriteMesh {
 //   kHoof, otherwise kPaw. A hand bone in no limb → kFlatFoot; the root → kVertebra (no quad).
 SpriteId sprite_for_bone(const Creature& creature, int bone);
 
-// Bone indices are uint8: a creature may have at most this many bones.
+// Bone indices are uint8: a creature may have at most this many bones. Every genome the
+// loader accepts fits (kMaxCreatureBones, gen/genome.h).
 constexpr int kMaxSpriteMeshBones = 255;
+static_assert(kMaxCreatureBones <= kMaxSpriteMeshBones, "genome limits allow more bones than a sprite mesh holds");
 // Fraction of a sprite's anchor span over which smooth weights fade to the bone alone.
 constexpr float kSmoothSpan = 0.15f;
 
