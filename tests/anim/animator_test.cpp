@@ -432,3 +432,45 @@ TEST_CASE("a legless creature trailing a wing below its spine keeps it out of th
   CHECK(r.probe.nan_count == 0);
   CHECK(r.probe.max_penetration_m <= 0.001f);
 }
+
+TEST_CASE("prototypes at the loader's limits keep the stance feet planted", "[anim][prototypes]") {
+  // Issue 17: keys at p = 100, m = 1000 (then accepted) slid a stance foot 116 m. Every key at
+  // either end of its range, with the steepest tangents, alternating or not, must now walk,
+  // run, stop, idle and turn with the feet planted.
+  const Level level = shipped("default.json");
+  for (int pattern = 0; pattern < 4; ++pattern) {
+    SplinePrototypes p = SplinePrototypes::defaults();
+    for (int i = 0; i < kPrototypeCount; ++i) {
+      const PrototypeRange range = prototype_range(static_cast<PrototypeId>(i));
+      for (HermiteSpline* s : {&p.pairs[i].walk, &p.pairs[i].run}) {
+        for (size_t k = 0; k < s->keys.size(); ++k) {
+          const bool high = (pattern & 1) ? (k % 2 == 0) : true;
+          const bool flip = pattern & 2;
+          s->keys[k].p = (high != flip) ? range.max : range.min;
+          s->keys[k].m = (high != flip) ? kMaxPrototypeTangent : -kMaxPrototypeTangent;
+        }
+      }
+    }
+    REQUIRE(prototypes_from_json(prototypes_to_json(p), "limits.json").ok());
+    for (const char* name : {"horse", "ostrich"}) {
+      INFO(name << ", pattern " << pattern);
+      auto creature = std::make_shared<const Creature>(build_creature(scenes::generator().example(name).value()).value());
+      Player player(creature, p);
+      player.animator().reset(level.spawn_ws + glm::vec2(0.0f, 1.0f), level);
+      check_planted_and_clear(run_script(player, level, script("walk:0.5:4,run:1:3,stop:4,walk:-0.6:3"), 120));
+    }
+  }
+}
+
+TEST_CASE("a spawn inside a box stands on the ground above it", "[anim]") {
+  // Issue 17: the creature used to freeze 0.76 m deep in the box.
+  const Level level(std::vector<Box>{Box::from_corner(-5.0f, -2.0f, 40.0f, 2.0f)}, glm::vec2(1.0f, -0.76f));
+  Walker w = make_walker(build_creature(scenes::generator().example("horse").value()).value(), level, level.spawn_ws);
+  for (int leg = 0; leg < w.player->animator().leg_count(); ++leg) {
+    CHECK(w.player->animator().foot_target_ws(leg).y == Approx(0.0f).margin(1e-4));
+  }
+  const SimResult r = run_script(*w.player, level, script("walk:0.5:3"), 120);
+  check_planted_and_clear(r);
+  CHECK(r.steps > 4);
+  CHECK(r.x_reached > 2.0f);
+}

@@ -46,3 +46,27 @@ TEST_CASE("bad prototype files name the file and the field", "[anim][prototypes]
   CHECK_THAT(error_for([](Json& j) { j["version"] = 2; }), Catch::Contains("version"));
   CHECK_THAT(load_prototypes("/no/such/prototypes.json").message(), Catch::Contains("/no/such/prototypes.json"));
 }
+
+TEST_CASE("keys outside a prototype's range are refused, naming the range", "[anim][prototypes]") {
+  Json j = prototypes_to_json(SplinePrototypes::defaults());
+  j["prototypes"]["pelvis_y"]["walk"][1]["p"] = 100;
+  CHECK(prototypes_from_json(j, "p.json").message() ==
+        "p.json: prototypes.pelvis_y.walk[1].p: expected a number in [-0.0625, 0.0625], got 100");
+  j = prototypes_to_json(SplinePrototypes::defaults());
+  j["prototypes"]["leg_swing_y"]["run"][1]["p"] = -0.5;
+  CHECK(prototypes_from_json(j, "p.json").message() ==
+        "p.json: prototypes.leg_swing_y.run[1].p: expected a number in [0, 1], got -0.5");
+  j = prototypes_to_json(SplinePrototypes::defaults());
+  j["prototypes"]["arm_bend"]["walk"][0]["m"] = 1001;
+  CHECK(prototypes_from_json(j, "p.json").message() ==
+        "p.json: prototypes.arm_bend.walk[0].m: expected a number in [-1000, 1000], got 1001");
+  // The bounds themselves read back.
+  for (int i = 0; i < kPrototypeCount; ++i) {
+    const PrototypeRange range = prototype_range(static_cast<PrototypeId>(i));
+    for (float p : {range.min, range.max}) {
+      j = prototypes_to_json(SplinePrototypes::defaults());
+      j["prototypes"][prototype_name(static_cast<PrototypeId>(i))]["walk"][0]["p"] = json_float(p);
+      CHECK(prototypes_from_json(j, "p.json").ok());
+    }
+  }
+}

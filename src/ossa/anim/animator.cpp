@@ -27,6 +27,9 @@ constexpr float kMaxPitchOff = 0.25f;   // nor further than this from the pitch 
 constexpr float kStepReach = 0.8f;      // near steps the body outruns a foot by this much of its reach
 // A crouching leg steps up as high as a straight one this fraction of its reach long.
 constexpr float kStepHeightOfReach = 0.8f;
+// Lowest rest height of a girdle: a fraction of its leg's reach, and at least 1 mm.
+constexpr float kMinRestHeightOfReach = 0.25f;
+constexpr float kMinRestHeight = 0.001f;
 constexpr size_t kMaxTailBones = 48;    // keep_tail_clear curls at most this many tail bones
 
 // x - floor(x) in [0, 1), without a library call for the phases' range.
@@ -174,7 +177,11 @@ Animator::Animator(const Creature& creature, SplinePrototypes prototypes, Animat
     }
     if (group < 0) {
       group = static_cast<int>(groups_.size());
-      groups_.push_back({joint, joint.y, joint.y, {}});
+      // A genome may pose a leg pointing up, leaving its girdle at or below the rest ground:
+      // the girdle still stands a quarter of the leg's reach high (and never at zero height,
+      // which every height-relative threshold below divides or scales by).
+      const float rest_height = std::max({joint.y, kMinRestHeightOfReach * info.reach, kMinRestHeight});
+      groups_.push_back({joint, rest_height, rest_height, {}});
     }
     groups_[group].legs.push_back(static_cast<int>(legs_.size()));
     info.group = group;
@@ -544,6 +551,8 @@ bool Animator::body_bound_ws(Box* bound, float* top_y) const {
 }
 
 void Animator::reset(glm::vec2 position_ws, const Level& level, int facing) {
+  // A position inside a box (a spawn placed in the ground) stands on the ground above it.
+  position_ws = level.free_point_above(position_ws);
   facing_ = facing < 0 ? -1 : 1;
   body_x_ = position_ws.x;
   speed_ = 0.0f;
@@ -1447,8 +1456,10 @@ glm::vec2 Animator::swing_point(const Foot& f, float s) {
   const float sx = up > 0.0f ? std::clamp((s - 0.12f) / 0.88f, 0.0f, 1.0f)
                  : up < 0.0f ? std::clamp(s / 0.85f, 0.0f, 1.0f) : s;
   const float ease = up >= 0.0f ? smoothstep(0.0f, 0.55f, s) : smoothstep(0.45f, 1.0f, s);
-  return {f.from_ws.x + f.swing_x.position(sx) * (f.to_ws.x - f.from_ws.x),
-          f.from_ws.y + ease * up + f.lift * f.swing_y.position(s) + (f.raise != 0.0f ? f.raise * bump(s) : 0.0f)};
+  const float along = prototype_range(PrototypeId::kLegSwingX).clamp(f.swing_x.position(sx));
+  const float lift = prototype_range(PrototypeId::kLegSwingY).clamp(f.swing_y.position(s));
+  return {f.from_ws.x + along * (f.to_ws.x - f.from_ws.x),
+          f.from_ws.y + ease * up + f.lift * lift + (f.raise != 0.0f ? f.raise * bump(s) : 0.0f)};
 }
 
 bool Animator::raise_for_clearance(int leg, const Level& level) {
@@ -1570,8 +1581,9 @@ void Animator::place_body(float dt, const Level& level) {
   const glm::vec2 root_rest(0.0f, root_rest_y_);
   float target_root = root_y_, target_pitch = 0.0f;
   const float w = run_factor_;
-  const float bob = moving_ ? spline_prototypes_[PrototypeId::kPelvisY].value(frac(2.0f * phase_), w) * hip_height_
-                            : spline_prototypes_[PrototypeId::kIdleY].value(frac(idle_time_ / 2.4f), w) * hip_height_;
+  const PrototypeId bob_id = moving_ ? PrototypeId::kPelvisY : PrototypeId::kIdleY;
+  const float bob_t = moving_ ? frac(2.0f * phase_) : frac(idle_time_ / 2.4f);
+  const float bob = prototype_range(bob_id).clamp(spline_prototypes_[bob_id].value(bob_t, w)) * hip_height_;
   if (groups_.empty()) {
     // Legless: follow the highest ground under the body.
     auto hit = level.ground_height_below(body_x_ - body_half_length_, body_x_ + body_half_length_,
@@ -2018,8 +2030,10 @@ void Animator::build_pose(float dt, const Level& level) {
       if (c.limbs[legs_[i].limb].side == arm.side) p = frac(phase_ + feet_[foot_of_leg_[i]].offset);
     }
     const float t = frac(p + 0.5f);
-    pose_.locals[arm.bones[0]].angle_ls += motion * spline_prototypes_[PrototypeId::kArmSwing].value(t, run_factor_);
-    pose_.locals[arm.bones[1]].angle_ls += motion * spline_prototypes_[PrototypeId::kArmBend].value(t, run_factor_);
+    for (int k = 0; k < 2; ++k) {
+      const PrototypeId id = k == 0 ? PrototypeId::kArmSwing : PrototypeId::kArmBend;
+      pose_.locals[arm.bones[k]].angle_ls += motion * prototype_range(id).clamp(spline_prototypes_[id].value(t, run_factor_));
+    }
     keep_arm_above_ground(arm, level);
   }
   for (int fin : fins_) {

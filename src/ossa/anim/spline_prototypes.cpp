@@ -36,6 +36,20 @@ const char* prototype_name(PrototypeId id) {
   return "unknown";
 }
 
+PrototypeRange prototype_range(PrototypeId id) {
+  // Bounds exact in binary, so a file holding the bound itself ("0.0625") reads back.
+  switch (id) {
+    case PrototypeId::kLegSwingX: return {-0.5f, 1.5f};
+    case PrototypeId::kLegSwingY: return {0.0f, 1.0f};
+    case PrototypeId::kPelvisY:
+    case PrototypeId::kIdleY: return {-0.0625f, 0.0625f};
+    case PrototypeId::kArmSwing:
+    case PrototypeId::kArmBend: return {-3.0f, 3.0f};
+    case PrototypeId::kCount: break;
+  }
+  return {0.0f, 0.0f};
+}
+
 SplinePrototypes SplinePrototypes::defaults() {
   SplinePrototypes p;
   // Swing: the foot leaves slowly, crosses fast and sets down gently; the run version
@@ -108,8 +122,9 @@ Result<SplinePrototypes> prototypes_from_json(const Json& doc, std::string_view 
         if (!r.expect_object(kj, kpath)) break;
         HermiteKey key_value;
         key_value.t = r.number_f(kj, kpath, "t", 0.0, 1.0);
-        key_value.p = r.number_f(kj, kpath, "p", -100.0, 100.0);
-        key_value.m = r.number_f(kj, kpath, "m", -1000.0, 1000.0);
+        const PrototypeRange range = prototype_range(static_cast<PrototypeId>(i));
+        key_value.p = r.number_f(kj, kpath, "p", range.min, range.max);
+        key_value.m = r.number_f(kj, kpath, "m", -kMaxPrototypeTangent, kMaxPrototypeTangent);
         if (!r.failed() && !s.keys.empty() && !(key_value.t > s.keys.back().t)) {
           r.fail(json_path(kpath, "t"), "expected a time greater than the previous key's " +
                                             std::to_string(s.keys.back().t) + ", got " + std::to_string(key_value.t));

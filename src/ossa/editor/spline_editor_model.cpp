@@ -70,12 +70,12 @@ void SplineEditorModel::drag_to(glm::vec2 tp) {
     } else {
       k.t = std::clamp(tp.x, s.keys[i - 1].t + kMinKeyGap, s.keys[i + 1].t - kMinKeyGap);
     }
-    k.p = tp.y;
+    k.p = prototype_range(current_).clamp(tp.y);
   } else {
     // The handle stays on its side of the key, so the slope never flips through a vertical.
     const float side = tangent_side(drag_->handle.version, i);
     const float dt = side * std::max(side * (tp.x - k.t), 0.01f);
-    k.m = (tp.y - k.p) / dt;
+    k.m = std::clamp((tp.y - k.p) / dt, -kMaxPrototypeTangent, kMaxPrototypeTangent);
   }
   if (on_change_) on_change_(prototypes_);
 }
@@ -120,7 +120,8 @@ int SplineEditorModel::add_key(float t) {
     }
     float p = 0.0f, m = 0.0f;
     s.evaluate(t, &p, &m);
-    s.keys.insert(it, HermiteKey{t, p, m});
+    s.keys.insert(it, HermiteKey{t, prototype_range(current_).clamp(p),
+                                 std::clamp(m, -kMaxPrototypeTangent, kMaxPrototypeTangent)});
     index = i;
   }
   push_change("add key", before, true);
@@ -148,6 +149,9 @@ bool SplineEditorModel::set_key(SplineVersion v, int index, const HermiteKey& ke
   HermiteKey k = key;
   if (index == 0) k.t = 0.0f;
   if (index == n - 1) k.t = 1.0f;
+  // Keys stay where the loader would read them back (and the walk cannot break).
+  k.p = prototype_range(current_).clamp(k.p);
+  k.m = std::clamp(k.m, -kMaxPrototypeTangent, kMaxPrototypeTangent);
   spline_mut(v).keys[index] = k;
   if (!spline(v).is_valid() || !prototypes_.is_valid()) {
     prototypes_ = before;
