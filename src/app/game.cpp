@@ -36,6 +36,10 @@ std::string ossa_source_dir() {
 std::string resolve_data_path(const std::string& path) {
   std::error_code ec;
   if (path.empty() || std::filesystem::exists(path, ec) || std::filesystem::path(path).is_absolute()) return path;
+  // "project.ldtk#Level": resolve the file, keep the level name.
+  if (const size_t hash = path.rfind('#'); hash != std::string::npos && hash > 0) {
+    return resolve_data_path(path.substr(0, hash)) + path.substr(hash);
+  }
   const std::string in_tree = ossa_source_dir() + "/" + path;
   return std::filesystem::exists(in_tree, ec) ? in_tree : path;
 }
@@ -108,7 +112,9 @@ Status Game::init(const GameOptions& o) {
   if (level_path.empty()) level_path = "levels/default.json";
   m.level_path = level_path;
   m.out_dir = o.out_dir;
-  auto level = load_level(resolve_data_path(level_path));
+  LevelLoadOptions level_options;
+  level_options.pixels_per_metre = o.pixels_per_metre;
+  auto level = load_level(resolve_data_path(level_path), level_options);
   if (!level.ok()) return level.error();
 
   auto prototypes = load_prototypes(resolve_data_path("assets/animation/prototypes.json"));

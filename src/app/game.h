@@ -36,6 +36,9 @@ struct Camera2D;
 
 struct GameOptions {
   std::string level = "levels/default.json";  // level file (relative paths: cwd, then the source tree)
+  // Scale of Tiled/LDtk maps with neither a pixels_per_metre property nor a tile size
+  // (LevelLoadOptions::pixels_per_metre), pixels per metre, > 0.
+  float pixels_per_metre = 32.0f;
   // Player creature: a genome file, an example name or a random seed (at most one set;
   // none → kDefaultExample).
   std::string creature_file;

@@ -53,6 +53,7 @@ int main(int argc, char** argv) {
       }
     }
     ossa::EditorSuite editors(game.world(), generator.ok() ? &generator.value() : nullptr, paths);
+    editors.level_editor().options.pixels_per_metre_tiled = o.pixels_per_metre;  // --pixels-per-metre
     editors.enabled = std::getenv("OSSA_EDITORS") != nullptr;  // start shown with OSSA_EDITORS=1
     game.on_ui = [&](float dt) {
       const ImGuiIO& io = ImGui::GetIO();

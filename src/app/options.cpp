@@ -11,7 +11,10 @@ const char* const kGameUsage = R"(usage: ossa [--level F] [--creature F | --exam
 
 Walk a generated creature over a box level with a gamepad or the keyboard.
 
-  --level F         level file (default levels/default.json)
+  --level F         level file (default levels/default.json): an ossa level, a Tiled map
+                    (.tmj, .tmx) or an LDtk project (.ldtk, pick a level with F#LevelName)
+  --pixels-per-metre P  scale of a Tiled/LDtk map with neither a pixels_per_metre property
+                    nor a tile size (default 32; else the property, or one tile = 0.5 m)
   --creature F      the player's creature: a saved genome (.creature.json)
   --example NAME    ... or one of the 44 example animals (default horse)
   --seed N          ... or a random creature drawn with seed N
@@ -108,6 +111,15 @@ Result<ParsedArgs> parse_game_args(const std::vector<std::string>& args) {
       s = text(o.png);
     } else if (flag == "--gif") {
       s = text(o.gif);
+    } else if (flag == "--pixels-per-metre") {
+      if (!value()) {
+        s = Error{flag + ": missing value"};
+      } else {
+        char* end = nullptr;
+        const double d = std::strtod(v.c_str(), &end);
+        if (*end != '\0' || !(d > 0.0 && d <= 1e6)) s = Error{flag + ": expected a number in (0, 1000000], got \"" + v + "\""};
+        else o.pixels_per_metre = static_cast<float>(d);
+      }
     } else if (flag == "--gif-seconds") {
       long secs = 0;
       if (!value()) {

@@ -207,5 +207,32 @@ TEST_CASE("level editor: hot reload picks up outside changes, keeps state on par
   REQUIRE(f.level.size() == other.size() + 1);
 }
 
+
+TEST_CASE("level editor: Open reads Tiled and LDtk files, Save never writes over them", "[editor]") {
+  Fixture f;
+  const fs::path dir = temp_dir("tiled_open");
+  const std::string src = std::string(OSSA_SOURCE_DIR) + "/tests/level/data/";
+  // Copies, so that a wrong save could not touch the fixtures.
+  for (const char* name : {"tiles_zlib.tmx", "terrain.tsx", "world.ldtk"}) fs::copy_file(src + name, dir / name);
+  const std::string tmx = (dir / "tiles_zlib.tmx").string();
+  const std::string before = read_file(tmx).value();
+  REQUIRE(f.m.load(tmx).ok());
+  REQUIRE(f.level == load_level(tmx).value());
+  CHECK(f.level.size() == 5);
+  f.m.add_box({3.0f, 3.0f}, {1.0f, 1.0f});
+  const Status s = f.m.save();
+  REQUIRE_FALSE(s.ok());
+  CHECK_THAT(s.message(), Catch::Contains("is a tiled-xml file; use Save as"));
+  CHECK(read_file(tmx).value() == before);
+  const std::string out = (dir / "converted.json").string();
+  REQUIRE(f.m.save_as(out).ok());
+  CHECK(parse_level(read_file(out).value(), out).value() == f.level);
+  // An LDtk level by name.
+  const std::string ldtk = (dir / "world.ldtk").string() + "#Level_1";
+  REQUIRE(f.m.load(ldtk).ok());
+  CHECK(f.level.name == "Level_1");
+  CHECK_FALSE(f.m.save().ok());
+}
+
 }  // namespace
 }  // namespace ossa

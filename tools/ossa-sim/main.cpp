@@ -36,7 +36,10 @@ const char* kUsage = R"(usage: ossa-sim (--example NAME | --creature F.creature.
   --example NAME   one of the 44 example animals (English or German name)
   --creature F     a saved genome (.creature.json)
   --random         a random creature (with --seed N, default 1)
-  --level F        level file (default: levels/default.json)
+  --level F        level file (default: levels/default.json): an ossa level, a Tiled map
+                   (.tmj, .tmx) or an LDtk project (.ldtk, F#LevelName picks a level)
+  --pixels-per-metre P  scale of Tiled/LDtk maps with neither a pixels_per_metre property
+                   nor a tile size (default 32)
   --script S       segments: walk:STICK:SECONDS, run:STICK:SECONDS, stop:SECONDS
   --hz N           simulation rate, 30..480 (default 120)
   --count N        N creatures at once (reports update_us_per_creature)
@@ -61,6 +64,7 @@ struct Args {
   bool random = false, json = false;
   uint64_t seed = 1;
   int hz = 120, count = 1;
+  float pixels_per_metre = 32.0f;  // LevelLoadOptions::pixels_per_metre
 };
 
 long long parse_int(const std::string& flag, const char* text, long long lo, long long hi) {
@@ -71,6 +75,16 @@ long long parse_int(const std::string& flag, const char* text, long long lo, lon
     fail(flag + ": expected an integer in [" + std::to_string(lo) + ", " + std::to_string(hi) + "], got \"" + text + "\"");
   }
   return v;
+}
+
+float parse_scale(const std::string& flag, const std::string& text) {
+  char* end = nullptr;
+  errno = 0;
+  const double v = std::strtod(text.c_str(), &end);
+  if (errno || text.empty() || *end || !(v > 0.0 && v <= 1e6)) {
+    fail(flag + ": expected a number in (0, 1000000], got \"" + text + "\"");
+  }
+  return static_cast<float>(v);
 }
 
 Args parse_args(int argc, char** argv) {
@@ -89,6 +103,7 @@ Args parse_args(int argc, char** argv) {
     else if (f == "--random") a.random = true;
     else if (f == "--seed") a.seed = static_cast<uint64_t>(parse_int(f, value().c_str(), 0, 1LL << 62));
     else if (f == "--level") a.level = value();
+    else if (f == "--pixels-per-metre") a.pixels_per_metre = parse_scale(f, value());
     else if (f == "--script") a.script = value();
     else if (f == "--hz") a.hz = static_cast<int>(parse_int(f, value().c_str(), 30, 480));
     else if (f == "--count") a.count = static_cast<int>(parse_int(f, value().c_str(), 1, 100000));
@@ -164,7 +179,9 @@ int main(int argc, char** argv) {
   if (!script) fail(script.message());
 
   const std::string level_path = args.level ? *args.level : source_dir() + "/levels/default.json";
-  Result<Level> level = load_level(level_path);
+  LevelLoadOptions level_options;
+  level_options.pixels_per_metre = args.pixels_per_metre;
+  Result<Level> level = load_level(level_path, level_options);
   if (!level) fail(level.message());
 
   SplinePrototypes prototypes = SplinePrototypes::defaults();

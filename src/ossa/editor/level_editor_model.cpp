@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <filesystem>
 #include <utility>
 #include <vector>
 
@@ -214,7 +215,10 @@ void LevelEditorModel::set_spawn(glm::vec2 spawn) {
 
 void LevelEditorModel::set_path(const std::string& path) {
   path_ = path;
-  watch_.watch(path);
+  // "project.ldtk#Level" (load_level): watch the project file.
+  std::error_code ec;
+  const size_t hash = path.rfind('#');
+  watch_.watch(hash != std::string::npos && !std::filesystem::exists(path, ec) ? path.substr(0, hash) : path);
 }
 
 void LevelEditorModel::replace_level(Level level) {
@@ -226,6 +230,14 @@ void LevelEditorModel::replace_level(Level level) {
 
 Status LevelEditorModel::save() {
   if (path_.empty()) return fail(Error{"the level has no file yet: use Save as"});
+  // A Tiled map or LDtk project opened here stays the designer's file: Save never writes an
+  // ossa level over it (Save as does, to another file).
+  const std::string file = path_.substr(0, path_.rfind('#'));
+  Result<std::string> text = read_file(file);
+  const LevelFormat format = detect_level_format(text.ok() ? std::string_view(*text) : std::string_view(), file);
+  if (format != LevelFormat::kOssa) {
+    return fail(Error{path_ + " is a " + level_format_name(format) + " file; use Save as to write the level as an ossa level (.json)"});
+  }
   return save_as(path_);
 }
 
@@ -240,7 +252,9 @@ Status LevelEditorModel::save_as(const std::string& path) {
 }
 
 Status LevelEditorModel::load(const std::string& path) {
-  auto loaded = load_level(path);
+  LevelLoadOptions o;
+  o.pixels_per_metre = options.pixels_per_metre_tiled;
+  auto loaded = load_level(path, o);
   if (!loaded.ok()) return fail(Error{loaded.message()});
   replace_level(std::move(loaded.value()));
   set_path(path);
@@ -285,7 +299,9 @@ bool LevelEditorModel::poll_file() {
     note_ = path_ + " changed on disk; not reloaded over unsaved edits";
     return false;
   }
-  auto loaded = load_level(path_);
+  LevelLoadOptions o;
+  o.pixels_per_metre = options.pixels_per_metre_tiled;
+  auto loaded = load_level(path_, o);
   if (!loaded.ok()) {
     error_ = "reload failed, keeping the current level: " + loaded.message();
     return false;

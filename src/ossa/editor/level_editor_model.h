@@ -28,7 +28,8 @@ struct LevelEditorOptions {
   bool snap = true;
   float grid_size = 0.25f;       // metres, > 0: snap step for positions and sizes
   float min_box_size = 0.05f;    // metres: resizing never makes a box thinner than this
-  float pixels_per_metre_tiled = 32.0f;  // Tiled import / export scale (pixels per metre)
+  float pixels_per_metre_tiled = 32.0f;  // Tiled import / export scale (pixels per metre); also
+                                         // load()'s --pixels-per-metre (level_load.h)
 };
 
 // Eight resize handles of the selected box, counter-clockwise from the bottom-left corner.
@@ -84,9 +85,10 @@ class LevelEditorModel {
   const std::string& path() const { return path_; }   // "" until saved or loaded
   void set_path(const std::string& path);
   bool dirty() const { return undo_->is_dirty(EditorDocument::kLevel); }
-  Status save();                                      // to path()
+  Status save();                                      // to path(); refuses a Tiled/LDtk path()
   Status save_as(const std::string& path);
   // Replaces the level (undo history of the level is dropped). On error the level is kept.
+  // Any format load_level reads: ossa levels, Tiled .tmj/.tmx, LDtk "project.ldtk#Level".
   Status load(const std::string& path);
   Status import_tiled(const std::string& path);       // the result is unsaved (no path)
   Status export_tiled(const std::string& path) const;
