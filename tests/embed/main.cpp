@@ -13,7 +13,7 @@
 
 int main(int argc, char** argv) {
   if (argc < 3) {
-    std::fprintf(stderr, "usage: embed_demo LEVEL.json EXAMPLES.json\n");
+    std::fprintf(stderr, "usage: embed_demo LEVEL EXAMPLES.json  (LEVEL: .json, .tmj, .tmx or project.ldtk#Level)\n");
     return 2;
   }
   ossa::Result<ossa::Level> level = ossa::load_level(argv[1]);

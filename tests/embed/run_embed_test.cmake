@@ -19,3 +19,7 @@ endif()
 run(${CMAKE_COMMAND} -S ${EMBED_SOURCE_DIR} -B ${WORK_DIR}/build -DCMAKE_PREFIX_PATH=${prefix} -DCMAKE_BUILD_TYPE=Release ${extra})
 run(${CMAKE_COMMAND} --build ${WORK_DIR}/build)
 run(${WORK_DIR}/build/embed_demo ${prefix}/share/ossa/levels/default.json ${prefix}/share/ossa/assets/creatures/examples.json)
+# load_level reads Tiled and LDtk files for embedders too (pugixml and zlib come through
+# the package config).
+run(${WORK_DIR}/build/embed_demo ${EMBED_SOURCE_DIR}/../level/data/tiles_zlib.tmx ${prefix}/share/ossa/assets/creatures/examples.json)
+run(${WORK_DIR}/build/embed_demo "${EMBED_SOURCE_DIR}/../level/data/world.ldtk#Level_1" ${prefix}/share/ossa/assets/creatures/examples.json)
