@@ -32,6 +32,14 @@ constexpr float kMinRestHeightOfReach = 0.25f;
 constexpr float kMinRestHeight = 0.001f;
 constexpr size_t kMaxTailBones = 48;    // keep_tail_clear curls at most this many tail bones
 
+// Level::ground_height_below for spans and drops the animator computes from a creature's
+// proportions: any body a genome may describe (a shoulder behind its girdle, a slack below
+// zero) gives a span in either order and a drop that may come out negative, which mean the
+// same span and no drop.
+std::optional<GroundHit> ground_below(const Level& level, float x0, float x1, float from_y, float max_drop) {
+  return level.ground_height_below(std::min(x0, x1), std::max(x0, x1), from_y, std::max(max_drop, 0.0f));
+}
+
 // x - floor(x) in [0, 1), without a library call for the phases' range.
 float frac(float x) {
   if (!(std::fabs(x) < 1e6f)) return x - std::floor(x);
@@ -569,7 +577,7 @@ void Animator::reset(glm::vec2 position_ws, const Level& level, int facing) {
   gait_ = legs_.empty() ? Gait::kCrawl : Gait::kIdle;
   const float search = std::max(2.0f * hip_height_, 1.0f);
   auto ground_at = [&](float x0, float x1, float fallback) {
-    auto hit = level.ground_height_below(std::min(x0, x1), std::max(x0, x1), position_ws.y + search, 100.0f);
+    auto hit = ground_below(level, std::min(x0, x1), std::max(x0, x1), position_ws.y + search, 100.0f);
     return hit ? hit->height_ws : fallback;
   };
   root_y_ = ground_at(body_x_ - body_half_length_, body_x_ + body_half_length_, position_ws.y) + root_rest_y_;
@@ -1030,7 +1038,7 @@ bool Animator::nearest_fit_within(int leg, glm::vec2 near_ws, const Level& level
   const int n = std::max(1, static_cast<int>(0.5f * (info.reach + info.foot_length) / 0.01f));
   for (int k = 0; k <= 2 * n; ++k) {
     const float x = near_ws.x + 0.01f * static_cast<float>(k % 2 == 0 ? k / 2 : -(k + 1) / 2);
-    auto hit = level.ground_height_below(x + sole_lo, x + sole_hi, near_ws.y + up, up + down);
+    auto hit = ground_below(level, x + sole_lo, x + sole_hi, near_ws.y + up, up + down);
     if (!hit) continue;
     const glm::vec2 p(x, hit->height_ws);
     if (in_reach && !reaches(leg, p)) continue;
@@ -1090,7 +1098,7 @@ bool Animator::find_landing(int leg, float x_wanted, const Level& level, glm::ve
     }
     if (d > 0.25f * stride_) continue;
     const float x = x_wanted + facing_ * d;
-    auto hit = level.ground_height_below(x + span_lo, x + span_hi, f.pos_ws.y + up, f.pos_ws.y + up - lowest);
+    auto hit = ground_below(level, x + span_lo, x + span_hi, f.pos_ws.y + up, f.pos_ws.y + up - lowest);
     if (!hit) continue;
     const float y = hit->height_ws;
     const Box foot_box{{x + span_lo + 0.002f, y + 0.002f}, {x + span_hi - 0.002f, y + height}};
@@ -1287,7 +1295,7 @@ void Animator::keep_arm_above_ground(const Limb& arm, const Level& level) {
       x1 = std::max(x1, xw);
       low = std::min(low, q.y);
     }
-    const auto ground = level.ground_height_below(x0, x1, p.shoulder.y, 100.0f);
+    const auto ground = ground_below(level, x0, x1, p.shoulder.y, 100.0f);
     const float margin = 0.01f + 0.02f * hip_height_;
     if (!ground || low >= ground->height_ws + margin) break;
     set_wrist(p, p.wrist + glm::vec2(0.0f, ground->height_ws + margin - low));
@@ -1336,7 +1344,7 @@ void Animator::keep_body_out(const Level& level) {
   auto keep_out = [&](glm::vec2 p_ms, float from_y_ms) {
     const glm::vec2 p = to_world(p_ms);
     const float from = to_world({p_ms.x, std::max(from_y_ms, p_ms.y)}).y;
-    if (auto below = level.ground_height_below(p.x - 0.02f, p.x + 0.02f, from + hip_height_, 100.0f)) {
+    if (auto below = ground_below(level, p.x - 0.02f, p.x + 0.02f, from + hip_height_, 100.0f)) {
       raise = std::max(raise, below->height_ws - p.y);
     }
   };
@@ -1376,7 +1384,7 @@ void Animator::keep_tail_clear(const Level& level) {
   for (int b : tail_between_) base = base * local_matrix(pose_.locals[b]);
   const glm::vec2 root = to_world(base.apply(pose_.locals[c.tail[0]].offset_ls));
   const float len = tail_length_;
-  const auto ground = level.ground_height_below(root.x - len, root.x + len, root.y + len, 2.0f * len);
+  const auto ground = ground_below(level, root.x - len, root.x + len, root.y + len, 2.0f * len);
   if (!ground || ground->height_ws < root.y - len) return;
   const size_t n = std::min<size_t>(c.tail.size(), kMaxTailBones);
   glm::vec2 p[kMaxTailBones + 1];
@@ -1586,7 +1594,7 @@ void Animator::place_body(float dt, const Level& level) {
   const float bob = prototype_range(bob_id).clamp(spline_prototypes_[bob_id].value(bob_t, w)) * hip_height_;
   if (groups_.empty()) {
     // Legless: follow the highest ground under the body.
-    auto hit = level.ground_height_below(body_x_ - body_half_length_, body_x_ + body_half_length_,
+    auto hit = ground_below(level, body_x_ - body_half_length_, body_x_ + body_half_length_,
                                          root_y_ + hip_height_, 100.0f);
     // Lifted lately so that the wave keeps the body out of the ground (keep_body_out): held
     // there, settling back slowly, rather than pulled down and lifted again every tick.
@@ -1606,7 +1614,7 @@ void Animator::place_body(float dt, const Level& level) {
       // knees stay clear of the step they pass over.
       const float gx = girdle_ws(static_cast<int>(g)).x;
       const float half = 0.2f * groups_[g].rest_height;
-      if (auto below = level.ground_height_below(gx - half, gx + half, ground + params_.max_step_up * groups_[g].step_height,
+      if (auto below = ground_below(level, gx - half, gx + half, ground + params_.max_step_up * groups_[g].step_height,
                                                  params_.max_step_up * groups_[g].step_height)) {
         ground = std::max(ground, 0.5f * (ground + below->height_ws));
       }
@@ -1647,7 +1655,7 @@ void Animator::place_body(float dt, const Level& level) {
         const float ahead = facing_ * speed_ * 0.25f;
         const float half = 0.05f * hip_height_;
         const float top = ground + front_slack_ + 0.6f * front_shoulder_.x;  // the most a turn gets over
-        if (auto below = level.ground_height_below(std::min(sx, sx + ahead) - half, std::max(sx, sx + ahead) + half,
+        if (auto below = ground_below(level, std::min(sx, sx + ahead) - half, std::max(sx, sx + ahead) + half,
                                                    top, top - ground + front_shoulder_.x)) {
           const float rise = below->height_ws - ground - front_slack_;
           if (rise > 0.0f) target_pitch = std::asin(std::min(rise / front_shoulder_.x, 0.6f));
@@ -1753,7 +1761,7 @@ void Animator::place_body(float dt, const Level& level) {
       const TwoBoneIkResult ik = solve_two_bone_ik_directions(joint, info.upper, info.lower, ankle, info.bend);
       const glm::vec2 knee = to_world(ik.middle);
       float& up = stance ? stance_up[info.group] : swing_up[info.group];
-      if (auto ground = level.ground_height_below(knee.x - 0.005f, knee.x + 0.005f, knee.y + info.reach, 2.0f * info.reach)) {
+      if (auto ground = ground_below(level, knee.x - 0.005f, knee.x + 0.005f, knee.y + info.reach, 2.0f * info.reach)) {
         up = std::max(up, ground->height_ws + margin - knee.y);
       }
       // On steps a thigh or shin may cross the edge of a step beside the knee (a swinging leg
@@ -1783,7 +1791,7 @@ void Animator::place_body(float dt, const Level& level) {
   };
   auto shoulder_need = [&](glm::vec2 shoulder, float extra) {
     const float half = 0.05f * hip_height_;
-    auto below = level.ground_height_below(shoulder.x - half, shoulder.x + half, shoulder.y + 0.5f * hip_height_ + extra, 100.0f);
+    auto below = ground_below(level, shoulder.x - half, shoulder.x + half, shoulder.y + 0.5f * hip_height_ + extra, 100.0f);
     return below ? below->height_ws + 0.1f * hip_height_ - shoulder.y : 0.0f;
   };
   // The shoulder far ahead of a single girdle meeting a step: the body turns up about the
@@ -1809,7 +1817,7 @@ void Animator::place_body(float dt, const Level& level) {
     const glm::vec2 joint = girdle_ws(static_cast<int>(g));
     const float rest = groups_[g].rest_height;
     const float half = 0.1f * rest;
-    if (auto below = level.ground_height_below(joint.x - half, joint.x + half, joint.y + 0.5f * rest + fell, 100.0f)) {
+    if (auto below = ground_below(level, joint.x - half, joint.x + half, joint.y + 0.5f * rest + fell, 100.0f)) {
       raise = std::max(raise, below->height_ws + 0.12f * rest - joint.y);
     }
   }
