@@ -54,6 +54,14 @@ Image half_size(const Image& src) {
   return out;
 }
 
+// Half the view's height (metres) that frames a creature of hip height h: room for the body
+// and the ground around it, at most 8 m. Below h = 0.3 m it shrinks with the creature (5 h),
+// so the smallest genome the loader accepts (a 5 cm frame) still fills a good part of the
+// picture instead of a few pixels.
+float framing_half_height(float hip_height) {
+  return std::min(std::clamp(1.8f * hip_height + 0.9f, 1.5f, 8.0f), 5.0f * hip_height);
+}
+
 }  // namespace
 
 // ---- Window and ImGui -----------------------------------------------------------------------
@@ -165,7 +173,7 @@ bool Game::Impl::switch_creature(World& world, const Genome& g) {
   world.set_player_creature(std::make_shared<Creature>(std::move(c.value())));
   batch_dirty = true;
   snapshot_all(world, true);
-  base_half_height = std::clamp(1.8f * world.player()->animator().hip_height() + 0.9f, 1.5f, 8.0f);
+  base_half_height = framing_half_height(world.player()->animator().hip_height());
   say(world.player()->creature().name);
   return true;
 }
@@ -173,7 +181,7 @@ bool Game::Impl::switch_creature(World& world, const Genome& g) {
 // ---- Camera ---------------------------------------------------------------------------------
 
 void Game::Impl::reset_camera(const World& world) {
-  base_half_height = std::clamp(1.8f * world.player()->animator().hip_height() + 0.9f, 1.5f, 8.0f);
+  base_half_height = framing_half_height(world.player()->animator().hip_height());
   const glm::vec2 root = player_root(1.0f);
   const float ground = root.y - world.player()->animator().hip_height();
   camera_ws = {root.x, ground + 0.55f * base_half_height * zoom};
