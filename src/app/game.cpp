@@ -346,6 +346,8 @@ Status Game::finish() {
   if (!options_.state.empty()) {
     const Player& p = *world_->player();
     Json doc;
+    doc["format"] = "ossa.state";  // every file ossa writes starts with format and version
+    doc["version"] = 1;
     doc["frames"] = frames_;
     doc["ticks"] = world_->tick();
     const glm::vec2 root = p.animator().world_matrices().empty() ? glm::vec2(p.animator().x(), 0.0f)
