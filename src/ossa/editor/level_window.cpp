@@ -13,7 +13,9 @@ void EditorSuite::refresh_level_files() {
   level_files_.clear();
   std::error_code ec;
   for (const auto& e : std::filesystem::directory_iterator(paths_.levels_dir, ec)) {
-    if (e.path().extension() == ".json") level_files_.push_back(e.path().string());
+    // Every format load_level reads: ossa levels, Tiled maps, LDtk projects.
+    const std::string ext = e.path().extension().string();
+    if (ext == ".json" || ext == ".tmj" || ext == ".tmx" || ext == ".ldtk") level_files_.push_back(e.path().string());
   }
   std::sort(level_files_.begin(), level_files_.end());
   level_files_age_ = 0.0f;
