@@ -197,7 +197,7 @@ TEST_CASE("pixels per metre: the map property, else one tile = 0.5 m, else the o
   CHECK(rep.scale_from == "map property");
   CHECK(d->colliders() == std::vector<Box>{box(0.0f, 0.0f, 8.0f, 2.0f)});
   CHECK_THAT(load_error(R"({"tilewidth":40,"properties":[{"name":"pixels_per_metre","type":"int","value":-2}],)" + base.substr(1), "e.tmj"),
-             Catch::Contains("e.tmj: properties.pixels_per_metre: expected a number > 0, got -2"));
+             Catch::Contains("e.tmj: properties.pixels_per_metre: expected a number in (0, 1000000], got -2"));
   // LDtk: without defaultGridSize and without the field, the option.
   Json project = read_json_file(fixture("world.ldtk")).value();
   project.erase("defaultGridSize");

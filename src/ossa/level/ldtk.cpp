@@ -37,12 +37,18 @@ struct LdtkImporter {
 
   float to_x(double px, const std::string& path) {
     const double m = (world_x + px) / ppm;
-    if (!(std::abs(m) <= kMaxLevelCoordinate)) r.fail(path, "lies more than " + std::to_string(static_cast<long long>(kMaxLevelCoordinate)) + " m from the origin");
+    if (!(std::abs(m) <= kMaxLevelCoordinate)) {
+      r.fail(path, "lies more than " + std::to_string(static_cast<long long>(kMaxLevelCoordinate)) + " m from the origin");
+      return 0.0f;  // a float cast of an out-of-range double is undefined
+    }
     return static_cast<float>(m);
   }
   float to_y(double px, const std::string& path) {
     const double m = -(world_y + px) / ppm;
-    if (!(std::abs(m) <= kMaxLevelCoordinate)) r.fail(path, "lies more than " + std::to_string(static_cast<long long>(kMaxLevelCoordinate)) + " m from the origin");
+    if (!(std::abs(m) <= kMaxLevelCoordinate)) {
+      r.fail(path, "lies more than " + std::to_string(static_cast<long long>(kMaxLevelCoordinate)) + " m from the origin");
+      return 0.0f;  // a float cast of an out-of-range double is undefined
+    }
     return static_cast<float>(m);
   }
 
@@ -238,9 +244,9 @@ Result<Level> import_ldtk_json(const Json& project, std::string_view file, const
         continue;
       }
       const Json v = f.contains("__value") ? f["__value"] : Json();
-      if (!v.is_number() || !(v.get<double>() > 0.0) || !std::isfinite(v.get<double>())) {
+      if (!v.is_number() || !(v.get<double>() > 0.0 && v.get<double>() <= 1e6)) {
         return Error::at(file, json_path(level_path, "fieldInstances"),
-                         "level \"" + id + "\" field pixels_per_metre: expected a number > 0, got " + describe_json(v));
+                         "level \"" + id + "\" field pixels_per_metre: expected a number in (0, 1000000], got " + describe_json(v));
       }
       im.ppm = v.get<double>();
       scale_from = "map property";

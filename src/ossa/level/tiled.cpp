@@ -169,7 +169,10 @@ struct Importer {
   // Pixel x / y (y-down) to metres, checked against the level file's coordinate bound.
   float to_x(double px, const std::string& path) {
     const double m = px / ppm;
-    if (!(std::abs(m) <= kMaxLevelCoordinate)) r.fail(path, "lies more than " + std::to_string(static_cast<int>(kMaxLevelCoordinate)) + " m from the origin");
+    if (!(std::abs(m) <= kMaxLevelCoordinate)) {
+      r.fail(path, "lies more than " + std::to_string(static_cast<int>(kMaxLevelCoordinate)) + " m from the origin");
+      return 0.0f;  // a float cast of an out-of-range double is undefined
+    }
     return static_cast<float>(m);
   }
   float to_y(double px, const std::string& path) { return to_x(map_h_px - px, path); }
@@ -517,8 +520,8 @@ Result<Level> import_tiled_json(const Json& map, std::string_view file, const Ti
     scale_from = "tile size";
   }
   if (const Json* p = find_property_ci(map, "pixels_per_metre")) {
-    if (!p->is_number() || !(p->get<double>() > 0.0) || !std::isfinite(p->get<double>())) {
-      return Error::at(file, "properties.pixels_per_metre", "expected a number > 0, got " + describe_json(*p));
+    if (!p->is_number() || !(p->get<double>() > 0.0 && p->get<double>() <= 1e6)) {
+      return Error::at(file, "properties.pixels_per_metre", "expected a number in (0, 1000000], got " + describe_json(*p));
     }
     im.ppm = p->get<double>();
     scale_from = "map property";
