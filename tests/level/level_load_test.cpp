@@ -184,7 +184,7 @@ TEST_CASE("pixels per metre: the map property, else one tile = 0.5 m, else the o
   // No tile width: the option (tile height alone does not set the scale).
   Result<Level> b = parse_level_any(base, "b.tmj", o, &rep);
   REQUIRE_FALSE(b.ok());  // a tile layer needs the tile width
-  CHECK_THAT(b.message(), Catch::Contains("b.tmj: layers[0]: a tile layer needs the map's tilewidth"));
+  CHECK_THAT(b.message(), Catch::Contains("b.tmj: layers[0]: tile layer \"collision\": needs the map's tilewidth"));
   Result<Level> c = parse_level_any(R"({"type":"map","height":2,"tileheight":40,"layers":[{"type":"objectgroup","objects":[
       {"x":0,"y":40,"width":20,"height":40}]}]})", "c.tmj", o, &rep);
   REQUIRE(c.ok());
@@ -225,24 +225,24 @@ TEST_CASE("malformed Tiled maps fail naming the file, the layer and the expectat
     return R"({"type":"map","orientation":"orthogonal","width":2,"height":2,"tilewidth":32,"tileheight":32,"layers":[)" + layer + "]}";
   };
   CHECK(load_error(map(R"({"type":"tilelayer","name":"g","width":2,"height":2,"encoding":"base64","compression":"zstd","data":"AAAA"})"), "m.tmj") ==
-        "m.tmj: layers[0].compression: zstd is not supported; save the map with zlib, gzip or no compression "
+        "m.tmj: layers[0].compression: tile layer \"g\": zstd is not supported; save the map with zlib, gzip or no compression "
         "(Map Properties > Tile Layer Format)");
   CHECK_THAT(load_error(map(R"({"type":"tilelayer","width":2,"height":2,"encoding":"base64","compression":"lz4","data":"AAAA"})"), "m.tmj"),
-             Catch::Contains("layers[0].compression: expected \"zlib\", \"gzip\" or none"));
+             Catch::Contains("layers[0].compression: tile layer \"\": expected \"zlib\", \"gzip\" or none"));
   CHECK_THAT(load_error(map(R"({"type":"tilelayer","width":2,"height":2,"data":[1,2,3]})"), "m.tmj"),
-             Catch::Contains("m.tmj: layers[0].data: expected 4 tiles (width x height), got 3"));
+             Catch::Contains("m.tmj: layers[0].data: tile layer \"\": expected 4 tiles (width x height), got 3"));
   CHECK_THAT(load_error(map(R"({"type":"tilelayer","width":2,"height":2,"data":[1,2,-3,4]})"), "m.tmj"),
-             Catch::Contains("layers[0].data[2]: expected a tile gid"));
+             Catch::Contains("layers[0].data[2]: tile layer \"\": expected a tile gid"));
   CHECK_THAT(load_error(map(R"({"type":"tilelayer","width":2,"height":2,"encoding":"base64","data":"AA!A"})"), "m.tmj"),
-             Catch::Contains("layers[0].data: expected base64 text"));
+             Catch::Contains("layers[0].data: tile layer \"\": expected base64 text"));
   CHECK_THAT(load_error(map(R"({"type":"tilelayer","width":2,"height":2,"encoding":"base64","data":"AAAA"})"), "m.tmj"),
-             Catch::Contains("layers[0].data: expected 16 bytes (4 per tile), got 3"));
+             Catch::Contains("layers[0].data: tile layer \"\": expected 16 bytes (4 per tile), got 3"));
   CHECK_THAT(load_error(map(R"({"type":"tilelayer","width":2,"height":2,"encoding":"base64","compression":"zlib","data":"AAAAAAAA"})"), "m.tmj"),
-             Catch::Contains("layers[0].data: zlib data is not a valid zlib/gzip stream"));
+             Catch::Contains("layers[0].data: tile layer \"\": zlib data is not a valid zlib/gzip stream"));
   CHECK_THAT(load_error(map(R"({"type":"tilelayer","width":100000,"height":100000,"data":[]})"), "m.tmj"),
-             Catch::Contains("layers[0]: has 10000000000 cells"));
+             Catch::Contains("layers[0]: tile layer \"\": has 10000000000 cells"));
   CHECK_THAT(load_error(map(R"({"type":"group","layers":[{"type":"tilelayer","width":1,"height":1,"chunks":[{"x":0,"y":0,"width":1,"height":1}]}]})"), "m.tmj"),
-             Catch::Contains("layers[0].layers[0].chunks[0].data: missing"));
+             Catch::Contains("layers[0].layers[0].chunks[0].data: tile layer \"\": missing"));
   // External tilesets: read relative to the map, errors name both files.
   const std::string ext = R"({"type":"map","orientation":"orthogonal","width":1,"height":1,"tilewidth":32,"tileheight":32,
       "tilesets":[{"firstgid":1,"source":"missing.tsx"}],"layers":[]})";

@@ -165,6 +165,7 @@ struct Importer {
   std::vector<Tileset> tilesets;  // by firstgid
   int64_t solid_cells = 0;
   int64_t boxes_from_cells = 0;
+  std::string layer_what;  // 'tile layer "Ground": ', the start of tile layer errors
 
   // Pixel x / y (y-down) to metres, checked against the level file's coordinate bound.
   float to_x(double px, const std::string& path) {
@@ -328,12 +329,12 @@ struct Importer {
     h = r.integer(holder, path, "height", 0, kMaxCellsPerLayer);
     if (r.failed()) return false;
     if (w * h > kMaxCellsPerLayer) {
-      r.fail(path, "has " + std::to_string(w * h) + " cells; at most " + std::to_string(kMaxCellsPerLayer) + " per layer or chunk");
+      r.fail(path, layer_what + "has " + std::to_string(w * h) + " cells; at most " + std::to_string(kMaxCellsPerLayer) + " per layer or chunk");
       return false;
     }
     const size_t n = static_cast<size_t>(w * h);
     if (!r.has(holder, "data")) {
-      r.fail(json_path(path, "data"), "missing (required field)");
+      r.fail(json_path(path, "data"), layer_what + "missing (required field)");
       return false;
     }
     const Json& data = holder["data"];
@@ -341,13 +342,13 @@ struct Importer {
     gids.assign(n, 0u);
     if (data.is_array()) {
       if (data.size() != n) {
-        r.fail(dpath, "expected " + std::to_string(n) + " tiles (width x height), got " + std::to_string(data.size()));
+        r.fail(dpath, layer_what + "expected " + std::to_string(n) + " tiles (width x height), got " + std::to_string(data.size()));
         return false;
       }
       for (size_t i = 0; i < n; ++i) {
         const Json& g = data[i];
         if (!g.is_number_integer() || g.get<long long>() < 0 || g.get<long long>() > 0xFFFFFFFFLL) {
-          r.fail(json_path(dpath, i), "expected a tile gid (an integer in [0, 4294967295]), got " + describe_json(g));
+          r.fail(json_path(dpath, i), layer_what + "expected a tile gid (an integer in [0, 4294967295]), got " + describe_json(g));
           return false;
         }
         gids[i] = static_cast<uint32_t>(g.get<long long>());
@@ -355,35 +356,35 @@ struct Importer {
       return true;
     }
     if (!data.is_string()) {
-      r.fail(dpath, "expected an array of gids or a base64 string, got " + describe_json(data));
+      r.fail(dpath, layer_what + "expected an array of gids or a base64 string, got " + describe_json(data));
       return false;
     }
     if (encoding != "base64") {
-      r.fail(dpath, "a string needs \"encoding\": \"base64\", got encoding " + describe_json(Json(encoding)));
+      r.fail(dpath, layer_what + "a string needs \"encoding\": \"base64\", got encoding " + describe_json(Json(encoding)));
       return false;
     }
     std::optional<std::string> bytes = decode_base64(data.get<std::string>());
     if (!bytes) {
-      r.fail(dpath, "expected base64 text (A-Z a-z 0-9 + / =)");
+      r.fail(dpath, layer_what + "expected base64 text (A-Z a-z 0-9 + / =)");
       return false;
     }
     if (compression == "zlib" || compression == "gzip") {
       std::string why;
       std::optional<std::string> raw = inflate_exact(*bytes, n * 4, why);
       if (!raw) {
-        r.fail(dpath, compression + " data " + why);
+        r.fail(dpath, layer_what + compression + " data " + why);
         return false;
       }
       bytes = std::move(raw);
     } else if (compression == "zstd") {
-      r.fail(json_path(path, "compression"), "zstd is not supported; save the map with zlib, gzip or no compression (Map Properties > Tile Layer Format)");
+      r.fail(json_path(path, "compression"), layer_what + "zstd is not supported; save the map with zlib, gzip or no compression (Map Properties > Tile Layer Format)");
       return false;
     } else if (!compression.empty()) {
-      r.fail(json_path(path, "compression"), "expected \"zlib\", \"gzip\" or none, got " + describe_json(Json(compression)));
+      r.fail(json_path(path, "compression"), layer_what + "expected \"zlib\", \"gzip\" or none, got " + describe_json(Json(compression)));
       return false;
     }
     if (bytes->size() != n * 4) {
-      r.fail(dpath, "expected " + std::to_string(n * 4) + " bytes (4 per tile), got " + std::to_string(bytes->size()));
+      r.fail(dpath, layer_what + "expected " + std::to_string(n * 4) + " bytes (4 per tile), got " + std::to_string(bytes->size()));
       return false;
     }
     for (size_t i = 0; i < n; ++i) {
@@ -394,8 +395,9 @@ struct Importer {
   }
 
   void tile_layer(const Json& layer, const std::string& path, double offx, double offy) {
+    layer_what = "tile layer \"" + (layer.contains("name") && layer["name"].is_string() ? layer["name"].get<std::string>() : std::string()) + "\": ";
     if (!(tile_w_px > 0.0) || !(tile_h_px > 0.0)) {
-      r.fail(path, "a tile layer needs the map's tilewidth and tileheight > 0");
+      r.fail(path, layer_what + "needs the map's tilewidth and tileheight > 0");
       return;
     }
     const std::string encoding = r.string_or(layer, path, "encoding", "csv");
@@ -427,7 +429,7 @@ struct Importer {
         if (r.failed() || !read_gids(c, cpath, encoding, compression, gids, w, h)) return;
         collect(cx, cy, w, h);
         if (cells.size() > static_cast<size_t>(kMaxCellsPerLayer)) {
-          r.fail(path, "more than " + std::to_string(kMaxCellsPerLayer) + " solid cells in one layer");
+          r.fail(path, layer_what + "more than " + std::to_string(kMaxCellsPerLayer) + " solid cells in one layer");
           return;
         }
       }
@@ -444,11 +446,11 @@ struct Importer {
       const Box box{{to_x(x0, path), to_y(y1, path)}, {to_x(x1, path), to_y(y0, path)}};
       if (r.failed()) return;
       if (!box.is_valid()) {
-        r.fail(path, "tiles at cell (" + std::to_string(c.x) + ", " + std::to_string(c.y) + ") are too small to be represented at this position");
+        r.fail(path, layer_what + "tiles at cell (" + std::to_string(c.x) + ", " + std::to_string(c.y) + ") are too small to be represented at this position");
         return;
       }
       if (boxes.size() >= static_cast<size_t>(kMaxLevelColliders)) {
-        r.fail(path, "more than " + std::to_string(kMaxLevelColliders) + " colliders");
+        r.fail(path, layer_what + "more than " + std::to_string(kMaxLevelColliders) + " colliders");
         return;
       }
       boxes.push_back(box);
