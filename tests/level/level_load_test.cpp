@@ -277,3 +277,21 @@ TEST_CASE("malformed LDtk projects fail naming the file, the level and the layer
   Json ext = read_json_file(fixture("external.ldtk")).value();
   CHECK_THAT(import_ldtk_json(ext, "e.ldtk").message(), Catch::Contains("is in an external file \"external/Level_1.ldtkl\""));
 }
+
+TEST_CASE("a 200 x 50 Tiled map becomes 1 box when solid, 5000 as a checkerboard", "[level][tiled][tiles]") {
+  for (const bool checker : {false, true}) {
+    Json data = Json::array();
+    for (int y = 0; y < 50; ++y)
+      for (int x = 0; x < 200; ++x) data.push_back(!checker || (x + y) % 2 == 0 ? 1 : 0);
+    const Json map = {{"type", "map"}, {"orientation", "orthogonal"}, {"width", 200}, {"height", 50},
+                      {"tilewidth", 16}, {"tileheight", 16},
+                      {"layers", {{{"type", "tilelayer"}, {"name", "Colliders"}, {"width", 200}, {"height", 50}, {"data", data}}}}};
+    LevelLoadReport rep;
+    Result<Level> r = parse_level_any(map.dump(), "big.tmj", LevelLoadOptions{}, &rep);
+    REQUIRE(r.ok());
+    CHECK(rep.solid_cells == (checker ? 5000 : 10000));
+    CHECK(rep.boxes_from_cells == (checker ? 5000 : 1));
+    CHECK(r->size() == (checker ? 5000 : 1));
+    if (!checker) CHECK(r->box(0) == box(0.0f, 0.0f, 100.0f, 25.0f));  // 16 px tiles = 0.5 m
+  }
+}
