@@ -29,7 +29,8 @@ class DuplicateKeyCheck {
       case E::object_start:
       case E::array_start:
         begin_element();
-        frames_.push_back(Frame{event == E::array_start});
+        frames_.emplace_back();
+        frames_.back().array = event == E::array_start;
         break;
       case E::object_end:
       case E::array_end:
