@@ -282,12 +282,8 @@ Result<Level> import_ldtk_json(const Json& project, std::string_view file, const
   level.name = id;
   if (im.spawn) {
     level.spawn_ws = *im.spawn;
-  } else if (!level.empty()) {
-    Box b = level.box(0);
-    for (const Box& c : level.colliders()) b = b.united(c);
-    const float x = b.min_ws.x + 1.0f;
-    const auto g = level.ground_height_below(x, x, b.max_ws.y, b.height());
-    level.spawn_ws = {x, g ? g->height_ws : b.max_ws.y};
+  } else {
+    level.spawn_ws = default_map_spawn(level);
   }
   if (report) {
     report->level_name = id;

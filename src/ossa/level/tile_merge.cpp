@@ -47,4 +47,13 @@ MergedCells merge_cells(std::vector<Cell>& cells) {
   return out;
 }
 
+glm::vec2 default_map_spawn(const Level& level) {
+  if (level.empty()) return glm::vec2(0.0f);
+  Box b = level.box(0);  // the colliders' bounds (Level::bounds() would add the spawn)
+  for (const Box& c : level.colliders()) b = b.united(c);
+  const float x = b.min_ws.x + 1.0f;
+  const auto g = level.ground_height_below(x, x, b.max_ws.y, b.height());
+  return {x, g ? g->height_ws : b.max_ws.y};
+}
+
 }  // namespace ossa

@@ -17,6 +17,10 @@
 #include <cstdint>
 #include <vector>
 
+#include <glm/vec2.hpp>
+
+#include "ossa/level/level.h"
+
 namespace ossa {
 
 struct Cell {
@@ -39,5 +43,10 @@ struct MergedCells {
 
 // Merges `cells` (any order; sorted in place) as described above.
 MergedCells merge_cells(std::vector<Cell>& cells);
+
+// Where a map without a spawn object starts the creature: 1 m in from the left edge of its
+// boxes, on the highest ground there (the origin for a map with no boxes). Shared by the
+// Tiled and LDtk importers.
+glm::vec2 default_map_spawn(const Level& level);
 
 }  // namespace ossa
