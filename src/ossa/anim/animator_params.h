@@ -42,9 +42,15 @@ struct AnimatorParams {
   // Tail: spring stiffness (1/s²) and damping ratio of the tail's secondary motion.
   float tail_stiffness = 60.0f;
   float tail_damping = 0.35f;
+  // Largest swing of the tail's spring, radians summed over the tail. [0, 1.5].
+  float tail_max_swing = 0.8f;
   // Travelling wave of legless bodies: amplitude (radians per vertebra) and waves per body.
   float crawl_amplitude = 0.035f;
   float crawl_waves = 1.5f;
+  // Amplitude of a fin's slow beat while moving, radians. [0, 0.5].
+  float fin_beat = 0.12f;
+  // Period of the idle breathing (prototype idle_y), seconds. [0.5, 10].
+  float idle_period = 2.4f;
   // Gravity for the Froude number, m/s².
   float gravity = 9.81f;
 };

@@ -1,6 +1,7 @@
 #include "ossa/level/level.h"
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <utility>
 
@@ -16,12 +17,17 @@ bool all_valid(const std::vector<Box>& boxes) {
   return true;
 }
 bool finite(glm::vec2 v) { return std::isfinite(v.x) && std::isfinite(v.y); }
+std::uint64_t next_revision() {
+  static std::atomic<std::uint64_t> counter{0};
+  return ++counter;
+}
 }  // namespace
 
 Level::Level(std::vector<Box> colliders, glm::vec2 spawn, std::string level_name)
     : name(std::move(level_name)), spawn_ws(spawn), colliders_(std::move(colliders)) {
   OSSA_ASSERT(all_valid(colliders_), "Level: every collider must be a valid box");
   rebuild_index();
+  revision_ = next_revision();
 }
 
 const Box& Level::box(int index) const {
@@ -39,6 +45,7 @@ int Level::add_box(const Box& box) {
   OSSA_ASSERT(box.is_valid(), "Level::add_box: invalid box");
   colliders_.push_back(box);
   rebuild_index();
+  revision_ = next_revision();
   return size() - 1;
 }
 
@@ -46,12 +53,14 @@ void Level::remove_box(int index) {
   OSSA_ASSERT(index >= 0 && index < size(), "Level::remove_box: index out of range");
   colliders_.erase(colliders_.begin() + index);
   rebuild_index();
+  revision_ = next_revision();
 }
 
 void Level::set_box(int index, const Box& box) {
   OSSA_ASSERT(index >= 0 && index < size(), "Level::set_box: index out of range");
   OSSA_ASSERT(box.is_valid(), "Level::set_box: invalid box");
   colliders_[index] = box;
+  revision_ = next_revision();
   // Refitting keeps the index exact but loosens it when boxes move far; a rebuild after as
   // many refits as there are boxes keeps the amortised cost O(log n) per edit.
   if (++refits_ > std::max(64, size())) {
@@ -65,6 +74,7 @@ void Level::set_colliders(std::vector<Box> colliders) {
   OSSA_ASSERT(all_valid(colliders), "Level::set_colliders: every collider must be a valid box");
   colliders_ = std::move(colliders);
   rebuild_index();
+  revision_ = next_revision();
 }
 
 void Level::rebuild_index() {

@@ -20,6 +20,7 @@
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
 
+#include <cstdint>
 #include <optional>
 #include <string>
 #include <vector>
@@ -70,6 +71,10 @@ class Level {
   // Replaces all colliders (every box valid) and rebuilds the index.
   void set_colliders(std::vector<Box> colliders);
 
+  // Changes with every edit of the colliders (and differs between levels built separately):
+  // a cache of query results (the animator's ground profile) is valid while it stays the same.
+  std::uint64_t revision() const { return revision_; }
+
   // ---- Queries (inputs must be finite) ---------------------------------------------------
   // The ground below the x-span [x_min, x_max] (x_min <= x_max): the highest box top y with
   // from_y - max_drop <= y <= from_y + kGroundEpsilon among boxes whose x-range touches the
@@ -116,6 +121,7 @@ class Level {
   std::vector<Box> colliders_;
   BoxTree index_;
   int refits_ = 0;  // set_box refits since the last rebuild
+  std::uint64_t revision_ = 0;
 };
 
 }  // namespace ossa

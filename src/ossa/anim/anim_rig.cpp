@@ -1,0 +1,319 @@
+#include "ossa/anim/anim_rig.h"
+
+#include <algorithm>
+
+#include "ossa/anim/anim_math.h"
+#include "ossa/skeleton/pose.h"
+
+namespace ossa {
+
+namespace {
+
+// A crouching leg steps up as high as a straight one this fraction of its reach long.
+constexpr float kStepHeightOfReach = 0.8f;
+// Lowest rest height of a girdle: a fraction of its leg's reach, and at least 1 mm.
+constexpr float kMinRestHeightOfReach = 0.25f;
+constexpr float kMinRestHeight = 0.001f;
+// The wall sweep cuts the body into this many slabs along its length.
+constexpr int kBodySlabs = 4;
+
+// The convex hull of points (Andrew's monotone chain), counter-clockwise.
+std::vector<glm::vec2> convex_hull(std::vector<glm::vec2> p) {
+  std::sort(p.begin(), p.end(), [](glm::vec2 a, glm::vec2 b) { return a.x < b.x || (a.x == b.x && a.y < b.y); });
+  if (p.size() < 3) return p;
+  auto cross = [](glm::vec2 o, glm::vec2 a, glm::vec2 b) { return (a.x - o.x) * (b.y - o.y) - (a.y - o.y) * (b.x - o.x); };
+  std::vector<glm::vec2> h(2 * p.size());
+  size_t k = 0;
+  for (size_t i = 0; i < p.size(); ++i) {
+    while (k >= 2 && cross(h[k - 2], h[k - 1], p[i]) <= 0.0f) --k;
+    h[k++] = p[i];
+  }
+  for (size_t i = p.size() - 1, t = k + 1; i > 0; --i) {
+    while (k >= t && cross(h[k - 2], h[k - 1], p[i - 1]) <= 0.0f) --k;
+    h[k++] = p[i - 1];
+  }
+  h.resize(k - 1);
+  return h;
+}
+
+RigLimb rig_limb(const Limb& limb) { return {limb.girdle_bone, limb.bones, limb.side}; }
+
+// Legs grouped by girdle slot, front girdle first.
+void build_legs(const Creature& creature, AnimRig& rig) {
+  const Skeleton& sk = creature.skeleton;
+  const std::vector<Mat2x3>& rest = rig.model_rest;
+  std::vector<std::pair<GirdleKind, int>> slot_of_girdle;
+  for (const Limb& limb : creature.limbs) {
+    if (limb.kind != LimbKind::kLeg) continue;
+    RigLeg leg;
+    leg.bones = limb.bones;
+    leg.girdle_bone = limb.girdle_bone;
+    leg.side = limb.side;
+    leg.upper = sk.length(limb.bones[0]);
+    leg.lower = sk.length(limb.bones[1]);
+    leg.reach = leg.upper + leg.lower;
+    leg.fold = 1.02f * std::fabs(leg.upper - leg.lower);
+    leg.bend = static_cast<float>(limb.bend_sign);
+    leg.foot_length = sk.length(limb.bones[2]);
+    const glm::vec2 joint = bone_start(rest[limb.bones[0]]);
+    const glm::vec2 ankle = bone_end(rest[limb.bones[1]], sk.length(limb.bones[1]));
+    const glm::vec2 tip = bone_end(rest[limb.bones[2]], sk.length(limb.bones[2]));
+    leg.foot_angle_ms = rig.flat_contact ? 0.0f : anim::bone_angle(rest[limb.bones[2]]);
+    leg.foot_offset_ms = rig.flat_contact ? glm::vec2(0.0f) : tip - ankle;
+    leg.foot_dir_ms = {std::cos(leg.foot_angle_ms), std::sin(leg.foot_angle_ms)};
+    leg.foot_span = glm::length(leg.foot_offset_ms);
+    leg.leg_reach = kReachLimit * leg.reach;
+    leg.contact_reach = leg.leg_reach + leg.foot_span;
+    leg.contact_bone = rig.flat_contact ? limb.bones[1] : limb.bones[2];
+    leg.ankle_rel_ms = -leg.foot_offset_ms;
+    leg.tip_rel_ms = rig.flat_contact ? glm::vec2(leg.foot_length, 0.0f) : glm::vec2(0.0f);
+    int group = -1;
+    for (size_t g = 0; g < slot_of_girdle.size(); ++g) {
+      if (slot_of_girdle[g] == std::make_pair(limb.girdle, limb.slot)) group = static_cast<int>(g);
+    }
+    if (group < 0) {
+      group = static_cast<int>(rig.girdles.size());
+      slot_of_girdle.push_back({limb.girdle, limb.slot});
+      // A genome may pose a leg pointing up, leaving its girdle at or below the rest ground:
+      // the girdle still stands a quarter of the leg's reach high (and never at zero height,
+      // which every height-relative threshold divides or scales by).
+      const float rest_height = std::max({joint.y, kMinRestHeightOfReach * leg.reach, kMinRestHeight});
+      rig.girdles.push_back({joint, rest_height, rest_height, {}});
+    }
+    rig.girdles[group].legs.push_back(static_cast<int>(rig.legs.size()));
+    leg.girdle = group;
+    rig.legs.push_back(leg);
+  }
+  // Front (largest x) first; remap the legs' girdle indices.
+  std::vector<int> order(rig.girdles.size());
+  for (size_t i = 0; i < order.size(); ++i) order[i] = static_cast<int>(i);
+  std::stable_sort(order.begin(), order.end(),
+                   [&](int a, int b) { return rig.girdles[a].joint_ms.x > rig.girdles[b].joint_ms.x; });
+  std::vector<RigGirdle> sorted;
+  for (int g : order) sorted.push_back(rig.girdles[g]);
+  rig.girdles = sorted;
+  for (size_t g = 0; g < rig.girdles.size(); ++g) {
+    RigGirdle& girdle = rig.girdles[g];
+    for (int leg : girdle.legs) {
+      rig.legs[leg].girdle = static_cast<int>(g);
+      girdle.step_height = std::max(girdle.step_height, kStepHeightOfReach * rig.legs[leg].contact_reach);
+    }
+  }
+  rig.climb_height = 0.0f;
+  for (size_t g = 0; g < rig.girdles.size(); ++g) {
+    rig.climb_height = g == 0 ? rig.girdles[g].step_height : std::min(rig.climb_height, rig.girdles[g].step_height);
+  }
+  for (const RigLeg& leg : rig.legs) {
+    rig.longest_foot_reach = std::max(rig.longest_foot_reach, leg.foot_span + 0.05f);
+  }
+  rig.longest_contact_reach = rig.longest_foot_reach;
+  for (const RigLeg& leg : rig.legs) rig.longest_contact_reach = std::max(rig.longest_contact_reach, leg.contact_reach);
+}
+
+// One of each left/right pair whose rest poses coincide in the side view.
+std::vector<RigLimb> distinct_outlines(const AnimRig& rig, const std::vector<RigLimb>& limbs) {
+  const Skeleton& sk = rig.skeleton;
+  std::vector<RigLimb> out;
+  for (const RigLimb& a : limbs) {
+    auto same = [&](const RigLimb& b) {
+      for (size_t k = 0; k < a.bones.size(); ++k) {
+        const int i = a.bones[k], j = b.bones[k];
+        if (bone_start(rig.model_rest[i]) != bone_start(rig.model_rest[j]) ||
+            bone_end(rig.model_rest[i], sk.length(i)) != bone_end(rig.model_rest[j], sk.length(j))) {
+          return false;
+        }
+      }
+      return true;
+    };
+    if (std::none_of(out.begin(), out.end(), same)) out.push_back(a);
+  }
+  return out;
+}
+
+// The wall sweep's outline of a rigid body in slabs along it (a pitched body's single box
+// would meet the stairs it climbs): the spine's segments relative to the root's frame,
+// clipped to each slab, reduced to their hull.
+void build_body_outline(AnimRig& rig, const Mat2x3& root_inv) {
+  const Skeleton& sk = rig.skeleton;
+  std::vector<int> body = {rig.root};
+  body.insert(body.end(), rig.back.begin(), rig.back.end());
+  body.insert(body.end(), rig.neck.begin(), rig.neck.end());
+  std::vector<std::pair<glm::vec2, glm::vec2>> segments;
+  float x0 = 1e30f, x1 = -1e30f;
+  for (int b : body) {
+    const glm::vec2 p = root_inv.apply(bone_start(rig.model_rest[b])), q = root_inv.apply(bone_end(rig.model_rest[b], sk.length(b)));
+    segments.push_back({p, q});
+    x0 = std::min({x0, p.x, q.x});
+    x1 = std::max({x1, p.x, q.x});
+  }
+  for (int k = 0; k < kBodySlabs; ++k) {
+    const float a = x0 + (x1 - x0) * static_cast<float>(k) / kBodySlabs;
+    const float b = x0 + (x1 - x0) * static_cast<float>(k + 1) / kBodySlabs;
+    std::vector<glm::vec2> points;
+    for (const auto& segment : segments) {
+      glm::vec2 p = segment.first, q = segment.second;  // (clang 14 lambdas cannot capture bindings)
+      if (p.x > q.x) std::swap(p, q);
+      if (q.x < a || p.x > b) continue;
+      auto at = [&](float x) { return q.x - p.x < 1e-9f ? p : p + (q - p) * ((x - p.x) / (q.x - p.x)); };
+      points.push_back(p.x < a ? at(a) : p);
+      points.push_back(q.x > b ? at(b) : q);
+    }
+    if (!points.empty()) rig.body_slabs.push_back(convex_hull(points));
+  }
+  for (const std::vector<glm::vec2>& slab : rig.body_slabs) rig.body_hull.insert(rig.body_hull.end(), slab.begin(), slab.end());
+  rig.body_hull = convex_hull(rig.body_hull);
+  if (rig.skull >= 0) {
+    const Mat2x3& skull = rig.model_rest[rig.skull];
+    rig.skull_rel = root_inv.apply(bone_start(skull));
+    rig.skull_span = bone_end(skull, sk.length(rig.skull)) - bone_start(skull);
+  }
+  rig.body_lo = rig.body_hi = rig.body_top = rig.body_hull[0];
+  for (glm::vec2 p : rig.body_hull) {
+    rig.body_lo = glm::min(rig.body_lo, p);
+    rig.body_hi = glm::max(rig.body_hi, p);
+    if (p.y > rig.body_top.y) rig.body_top = p;
+  }
+  if (rig.skull >= 0) {
+    rig.body_lo = glm::min(rig.body_lo, rig.skull_rel);
+    rig.body_hi = glm::max(rig.body_hi, rig.skull_rel);
+  }
+}
+
+// Which bones each tick keeps current and how: the root, the girdles (rigid to the root: one
+// product each, skipping the vertebrae between) and the limb chains; the rest on demand.
+void build_fk_plan(const Creature& creature, AnimRig& rig) {
+  const Skeleton& sk = rig.skeleton;
+  const int root = rig.root;
+  rig.rest_local_m.resize(sk.bone_count());
+  for (int b = 0; b < sk.bone_count(); ++b) rig.rest_local_m[b] = local_matrix(rig.rest_pose.locals[b]);
+  rig.dynamic_bone.assign(sk.bone_count(), rig.legs.empty() ? 1 : 0);  // legless bodies bend all along
+  rig.dynamic_bone[root] = 1;
+  if (rig.skull >= 0) rig.dynamic_bone[rig.skull] = 1;
+  for (int b : rig.tail) rig.dynamic_bone[b] = 1;
+  std::vector<uint8_t> limb_bone(sk.bone_count(), 0);
+  for (const Limb& limb : creature.limbs) {
+    for (int b : limb.bones) limb_bone[b] = 1;
+  }
+  std::vector<uint8_t> leg_ik_bone(sk.bone_count(), 0);
+  for (const RigLeg& leg : rig.legs) {
+    for (int b : leg.bones) leg_ik_bone[b] = 1;
+  }
+  for (int b = 0; b < sk.bone_count(); ++b) {
+    if (limb_bone[b] && !leg_ik_bone[b]) rig.other_limb_bones.push_back(b);
+  }
+  // Girdles are rigid to the root unless a bone between bends (legless bodies).
+  bool rigid = sk.parent(root) < 0 && !rig.legs.empty();
+  std::vector<uint8_t> needed(sk.bone_count(), 0), girdle(sk.bone_count(), 0);
+  for (const Limb& limb : creature.limbs) {
+    girdle[limb.girdle_bone] = 1;
+    for (int b = limb.girdle_bone; b >= 0; b = sk.parent(b)) {
+      needed[b] = 1;
+      if (b != root && rig.dynamic_bone[b]) rigid = false;
+      if (sk.parent(b) < 0 && b != root) rigid = false;
+    }
+  }
+  needed[root] = 1;
+  rig.tick_bone = limb_bone;
+  if (rigid) {
+    const Mat2x3 root_inv = inverse(rig.model_rest[root]);
+    rig.needed_bones = {root};
+    rig.tick_bone[root] = 1;
+    for (int b = 0; b < sk.bone_count(); ++b) {
+      if (!girdle[b] || b == root) continue;
+      rig.girdle_bones.push_back(b);
+      rig.girdle_rel.push_back(root_inv * rig.model_rest[b]);
+      rig.tick_bone[b] = 1;
+    }
+    for (RigLeg& leg : rig.legs) leg.girdle_rel_angle = anim::bone_angle(root_inv * rig.model_rest[leg.girdle_bone]);
+    build_body_outline(rig, root_inv);
+  } else {
+    // The neck and head take part in the wall sweep.
+    for (int b : rig.neck) needed[b] = 1;
+    if (rig.skull >= 0) needed[rig.skull] = 1;
+    for (int b = 0; b < sk.bone_count(); ++b) {
+      if (!needed[b]) continue;
+      rig.needed_bones.push_back(b);
+      rig.tick_bone[b] = 1;
+    }
+  }
+  if (!rig.tail.empty()) {
+    std::vector<int> between;
+    int b = sk.parent(rig.tail[0]);
+    while (b >= 0 && !rig.tick_bone[b]) {
+      between.push_back(b);
+      b = sk.parent(b);
+    }
+    if (b >= 0) {
+      rig.tail_base_bone = b;
+      rig.tail_between.assign(between.rbegin(), between.rend());
+      for (int t : rig.tail) rig.tail_length += sk.length(t);
+      bool rest = true;
+      for (int t : rig.tail_between) rest = rest && !rig.dynamic_bone[t];
+      if (rest) {
+        for (int t : rig.tail_between) rig.tail_between_rest = rig.tail_between_rest * rig.rest_local_m[t];
+        rig.tail_between.clear();
+      }
+    }
+  }
+  for (int b = 0; b < sk.bone_count(); ++b) {
+    if (rig.dynamic_bone[b] || (limb_bone[b] && !leg_ik_bone[b])) rig.touched_bones.push_back(b);
+  }
+  rig.crawl_chain = rig.back;
+  rig.crawl_chain.insert(rig.crawl_chain.end(), rig.tail.begin(), rig.tail.end());
+}
+
+}  // namespace
+
+std::shared_ptr<const AnimRig> build_anim_rig(const Creature& creature) {
+  auto rig = std::make_shared<AnimRig>();
+  rig->skeleton = creature.skeleton;
+  rig->rest_pose = creature.rest_pose;
+  rig->root = creature.root;
+  rig->skull = creature.skull;
+  rig->back = creature.back;
+  rig->neck = creature.neck;
+  rig->tail = creature.tail;
+  rig->flat_contact = creature.contact == ContactMode::kFlat;
+  const Skeleton& sk = rig->skeleton;
+  rig->model_rest = ossa::model_matrices(sk, rig->rest_pose.locals);
+  rig->root_rest_y = bone_start(rig->model_rest[creature.root]).y;
+
+  for (const Limb& limb : creature.limbs) {
+    if (limb.kind == LimbKind::kArm) rig->arms.push_back(rig_limb(limb));
+    if (limb.kind == LimbKind::kWing) rig->wings.push_back(rig_limb(limb));
+    if (limb.kind == LimbKind::kFin) rig->fins.push_back(rig_limb(limb));
+  }
+  build_legs(creature, *rig);
+
+  float hip = 0.0f;
+  for (const RigGirdle& g : rig->girdles) hip += g.rest_height;
+  hip = rig->girdles.empty() ? std::max(rig->root_rest_y, 0.05f) : hip / static_cast<float>(rig->girdles.size());
+  rig->hip_height = std::max(hip, 0.02f);
+  float x_min = 0.0f, x_max = 0.0f;
+  for (int b = 0; b < sk.bone_count(); ++b) {
+    const glm::vec2 p = bone_start(rig->model_rest[b]);
+    x_min = std::min(x_min, p.x);
+    x_max = std::max(x_max, p.x);
+  }
+  rig->body_half_length = std::max(0.5f * (x_max - x_min), 0.05f);
+  rig->outline_arms = distinct_outlines(*rig, rig->arms);
+  rig->outline_fins = distinct_outlines(*rig, rig->fins);
+  rig->outline_wings = distinct_outlines(*rig, rig->wings);
+  if (rig->girdles.size() == 1) {
+    const RigGirdle& g = rig->girdles[0];
+    for (const Limb& limb : creature.limbs) {
+      if (limb.kind != LimbKind::kArm && limb.kind != LimbKind::kWing) continue;
+      const glm::vec2 v = bone_start(rig->model_rest[limb.bones[0]]) - g.joint_ms;
+      if (v.x > rig->front_shoulder.x) {
+        rig->front_shoulder = v;
+        // Its rest height above the ground, less the clearance the body keeps under a
+        // shoulder, and a little.
+        rig->front_slack = v.y + g.rest_height - 0.2f * rig->hip_height;
+      }
+    }
+  }
+  build_fk_plan(creature, *rig);
+  return rig;
+}
+
+}  // namespace ossa

@@ -1,0 +1,131 @@
+#pragma once
+// AnimRig — the immutable description of what the animator drives (DESIGN.md §7), built once
+// per creature and shared by every animator of it: the legs (bone chains, lengths, bend sign,
+// contact shape, reach), the girdles carrying them in front-to-back order, the arms, fins,
+// wings and tail, the body's outline for the wall sweep, and which bones each stage writes.
+//
+// Nothing here assumes a generated skeleton: a rig is bones, their rest pose and the roles
+// assigned to them (build_anim_rig reads those from a Creature's LimbLayout; a rig mapping of
+// an imported mesh gives the same roles).
+//
+// Spaces: _ms is model space (DESIGN.md §3): the rest frame, metres, +x forward, y = 0 on the
+// rest ground. Lengths are metres; angles radians.
+
+#include <array>
+#include <cmath>
+#include <memory>
+#include <vector>
+
+#include <glm/vec2.hpp>
+
+#include "ossa/gen/creature.h"
+#include "ossa/skeleton/pose.h"
+#include "ossa/skeleton/skeleton.h"
+
+namespace ossa {
+
+// Stance legs never extend beyond this fraction of their reach (upper + lower).
+inline constexpr float kReachLimit = 0.985f;
+
+struct RigLeg {
+  std::array<int, 3> bones{};       // upper, lower, foot
+  int girdle_bone = -1;             // the bone the chain hangs from
+  int girdle = 0;                   // index into AnimRig::girdles (front first)
+  Side side = Side::kNear;
+  float upper = 0.0f, lower = 0.0f; // thigh and shin lengths, metres
+  float reach = 0.0f;               // upper + lower, metres
+  float fold = 0.0f;                // 1.02 |upper - lower|: the ankle stays this far from the joint
+  float bend = 1.0f;                // the chain's bend sign
+  float foot_length = 0.0f;         // foot bone, metres
+  glm::vec2 foot_offset_ms{0.0f};   // ankle → contact point in the rest pose
+  float foot_angle_ms = 0.0f;       // rest absolute angle of the foot bone
+  glm::vec2 foot_dir_ms{1.0f, 0.0f};// (cos, sin) of foot_angle_ms
+  float girdle_rel_angle = NAN;     // girdle angle relative to the root (NaN: the spine bends)
+  float foot_span = 0.0f;           // |foot_offset_ms|: ankle to contact point
+  float leg_reach = 0.0f;           // kReachLimit * reach
+  // Farthest the contact point gets from the girdle joint: the leg at kReachLimit and, for
+  // tip contact, the foot pivoted into line with it.
+  float contact_reach = 0.0f;
+  int contact_bone = -1;            // the bone whose end is the contact point
+  // The foot's extent relative to its contact point, facing +x: back to the ankle, forward to
+  // the toe (a flat foot's whole sole).
+  glm::vec2 ankle_rel_ms{0.0f}, tip_rel_ms{0.0f};
+};
+
+struct RigGirdle {                  // a girdle slot carrying a leg pair
+  glm::vec2 joint_ms{0.0f};         // rest girdle joint
+  float rest_height = 0.0f;         // joint height above the rest ground, metres
+  // What max_step_up is a fraction of: the rest height, or more for crouching legs that
+  // reach further than they stand tall.
+  float step_height = 0.0f;
+  std::vector<int> legs;            // leg indices (near first)
+};
+
+struct RigLimb {                    // an arm, fin or wing: a chain hanging from a girdle bone
+  int girdle_bone = -1;
+  std::array<int, 3> bones{};
+  Side side = Side::kNear;
+};
+
+struct AnimRig {
+  Skeleton skeleton;
+  Pose rest_pose;
+  int root = 0;
+  int skull = -1;                   // -1: none
+  std::vector<int> back, neck, tail;// spine chains (head end first), as in Creature
+  bool flat_contact = false;        // feet touch with the whole sole (else with the tip)
+
+  std::vector<RigLeg> legs;
+  std::vector<RigGirdle> girdles;   // front (largest x) to back
+  std::vector<RigLimb> arms, fins, wings;
+  // The same, one of each left/right pair whose rest poses coincide in the side view: the
+  // body's keep-outs test each outline once.
+  std::vector<RigLimb> outline_arms, outline_fins, outline_wings;
+
+  float hip_height = 1.0f;          // h of the Froude number: mean girdle rest height, metres
+  // The least step_height of any girdle: a step up more than max_step_up of it is a wall (the
+  // other girdles could not follow).
+  float climb_height = 0.0f;
+  float root_rest_y = 0.0f;         // model-space y of the root in the rest pose
+  float body_half_length = 0.5f;    // half the rest pose's extent along x, metres
+  // One girdle only: the foremost arm or wing shoulder ahead of it (rest, relative to the
+  // girdle joint), and how much higher the ground under it may be than under the girdle
+  // before the body pitches up.
+  glm::vec2 front_shoulder{0.0f};
+  float front_slack = 0.0f;
+  float longest_foot_reach = 0.05f; // the largest foot circle (foot_span + 5 cm)
+  float longest_contact_reach = 0.05f;
+
+  // Rest matrices and which bones each stage writes.
+  std::vector<Mat2x3> model_rest;   // model-space rest matrices
+  std::vector<Mat2x3> rest_local_m; // rest local matrix per bone
+  std::vector<uint8_t> dynamic_bone;// joint values the animator changes (spine, skull, tail)
+  std::vector<uint8_t> tick_bone;   // bones kept current every tick
+  std::vector<int> needed_bones;    // chain-computed each tick, parents first
+  std::vector<int> girdle_bones;    // computed directly from the root each tick (rigid body)
+  std::vector<Mat2x3> girdle_rel;   // their rest matrices relative to the root bone
+  std::vector<int> touched_bones;   // bones whose joint values the pose rewrites each tick
+  std::vector<int> other_limb_bones;// limb bones not placed by the leg IK, parents first
+  std::vector<int> crawl_chain;     // back then tail: the legless travelling wave's bones
+
+  // Wall sweep: hulls of the root, back and neck in slabs along the body, relative to the root
+  // bone's frame, and the skull (kept level) as its joint in that frame plus its rest span.
+  // Empty when the spine bends.
+  std::vector<std::vector<glm::vec2>> body_slabs;
+  std::vector<glm::vec2> body_hull;
+  glm::vec2 skull_rel{0.0f}, skull_span{0.0f};
+  glm::vec2 body_lo{0.0f}, body_hi{0.0f};  // extent of the hull and the skull joint
+  glm::vec2 body_top{0.0f};                // the hull's highest point (root bone's frame)
+
+  // Tail: it hangs from the nearest ancestor kept current each tick through the bones between
+  // (or their rest product when none bends).
+  int tail_base_bone = -1;
+  std::vector<int> tail_between;
+  Mat2x3 tail_between_rest;
+  float tail_length = 0.0f;         // > 0: the tail is kept out of the level
+};
+
+// Builds the rig of a generated creature.
+std::shared_ptr<const AnimRig> build_anim_rig(const Creature& creature);
+
+}  // namespace ossa

@@ -1,0 +1,116 @@
+#pragma once
+// The values the animator's stages pass each other (DESIGN.md §7):
+//   AnimContext  what every stage reads and none writes during a tick (rig, params, level,
+//                ground profile);
+//   BodyFrame    where the body is: root position, facing, pitch and lean (written by body
+//                motion, turning and body placement; read by everyone after them);
+//   FootState    one per foot, lasting between ticks (written by the gait clock's lift-off,
+//                the swing and turning);
+//   TickHandoff  what one stage tells a later one on this tick or the next, as named fields.
+//
+// Spaces (one suffix, one meaning; see also animator.h):
+//   _ws  world: metres, +x right, +y up;
+//   _ms  model: the rest frame of DESIGN.md §3, y = 0 on the rest ground, facing +x;
+//   _fs  facing: world height, x measured from the root along the facing direction, so the
+//        creature faces +x (x_fs = (x_ws - root x) · facing, y_fs = y_ws). The IK and the pose
+//        work here: knees bend the right way whichever way the creature faces.
+
+#include <cmath>
+#include <vector>
+
+#include <glm/common.hpp>
+#include <glm/geometric.hpp>
+#include <glm/vec2.hpp>
+
+#include "ossa/anim/anim_rig.h"
+#include "ossa/anim/level_probe.h"
+#include "ossa/math/hermite.h"
+
+namespace ossa {
+
+class GroundProfile;
+struct AnimatorParams;
+enum class LegState : uint8_t { kStance, kSwing };
+
+namespace anim {
+
+struct AnimContext {
+  const AnimRig& rig;
+  const AnimatorParams& params;
+  const Level& level;
+  const GroundProfile& ground;
+  std::vector<int>& hits;  // scratch for level queries (no stage keeps anything in it)
+};
+
+struct BodyFrame {
+  float x_ws = 0.0f;        // world x of the root
+  int facing = 1;           // +1 faces +x, -1 faces -x
+  float root_y_ws = 0.0f;   // world y of the root
+  float pitch = 0.0f;       // root rotation from the terrain, radians (counter-clockwise, _fs)
+  float lean = 0.0f;        // lean into the motion, radians
+
+  glm::vec2 to_fs(glm::vec2 p_ws) const { return {(p_ws.x - x_ws) * facing, p_ws.y}; }
+  glm::vec2 to_ws(glm::vec2 p_fs) const { return {x_ws + facing * p_fs.x, p_fs.y}; }
+  // v rotated by the body angle pitch + lean.
+  glm::vec2 rotate_body(glm::vec2 v) const {
+    const float angle = pitch + lean;
+    if (angle != cached_angle_) {
+      cached_angle_ = angle;
+      cs_ = {std::cos(angle), std::sin(angle)};
+    }
+    return {cs_.x * v.x - cs_.y * v.y, cs_.y * v.x + cs_.x * v.y};
+  }
+  // A rest-pose point (_ms) where the body is now, lifted by `lift` metres (_ws).
+  glm::vec2 body_point_ws(const AnimRig& rig, glm::vec2 rest_ms, float lift = 0.0f) const {
+    const glm::vec2 j = rotate_body(rest_ms - glm::vec2(0.0f, rig.root_rest_y));
+    return to_ws({j.x, j.y + root_y_ws + lift});
+  }
+  // Girdle joint g from the current body placement.
+  glm::vec2 girdle_ws(const AnimRig& rig, int g) const { return body_point_ws(rig, rig.girdles[g].joint_ms); }
+
+ private:
+  mutable float cached_angle_ = 0.0f;
+  mutable glm::vec2 cs_{1.0f, 0.0f};  // cos, sin of cached_angle_
+};
+
+struct FootState {                  // per foot: moves between legs when the creature turns
+  LegState state = LegState::kStance;
+  glm::vec2 pos_ws{0.0f};           // contact point target
+  glm::vec2 from_ws{0.0f}, to_ws{0.0f};
+  HermiteSpline swing_x, swing_y;   // blended prototypes of this swing (set_new_splines)
+  float lift = 0.0f;                // metres per unit of swing_y
+  float raise = 0.0f;               // extra clearance bump, metres
+  float progress = 0.0f;            // swing progress s in [0, 1]
+  float rate = 0.0f;                // ds per unit of phase (or per second when easing)
+  bool easing = false;              // a stop: progress runs on time, not on phase
+  float offset = 0.0f;              // phase offset (eases toward the owning leg's target)
+  float phase_prev = 0.0f;
+  float hover = 0.0f;               // seconds spent waiting above the landing point
+  Clearance stance_clear;           // around pos_ws while in stance
+  Clearance stance_reach_clear;     // within a leg's reach of pos_ws while in stance
+  Clearance swing_clear;            // around the path of the current swing
+};
+
+// The feet and which leg stands on which (turning round hands feet between leg pairs).
+struct FootSet {
+  std::vector<FootState> feet;
+  std::vector<int> foot_of_leg;
+  FootState& of_leg(int leg) { return feet[foot_of_leg[leg]]; }
+  const FootState& of_leg(int leg) const { return feet[foot_of_leg[leg]]; }
+};
+
+// Hand-offs between stages, cleared where stated.
+struct TickHandoff {
+  // Per foot: standing behind and below its girdle, it held the body back or down (set by
+  // body motion and body placement), so the gait clock lifts it at the next chance. Body
+  // placement clears it at its start, so body motion's marks of this tick and placement's
+  // of the last tick reach the lift decision.
+  std::vector<uint8_t> lift_now;
+  // Why the creature stopped on this tick, if it did (body motion: a wall; the foothold
+  // planner: no foothold ahead; the swing: the way to the landing walled off); -1: none.
+  int blocked_leg = -1;
+  bool blocked = false;
+};
+
+}  // namespace anim
+}  // namespace ossa

@@ -1,0 +1,230 @@
+#include "ossa/anim/body_motion.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "ossa/anim/animator_params.h"
+#include "ossa/anim/leg_ik.h"
+
+namespace ossa::anim {
+
+namespace {
+
+// Near steps the body outruns a foot behind by at most this fraction of its leg's reach.
+constexpr float kStepReach = 0.8f;
+// The wall sweep ignores the lowest part of the body this many hip heights high (the legs'
+// business), and meets walls this far early: 3 cm plus this many hip heights.
+constexpr float kSweepFloorOfHip = 0.3f;
+constexpr float kWallMarginOfHip = 0.02f;
+constexpr float kWallMargin = 0.03f;
+
+// A box holding body_boxes(false, ·)'s single box, from the root and the hull's extent (no
+// hull points), and *top_y the height of one of its points; false if fins or arms take part.
+bool body_bound_ws(const AnimRig& rig, const BodyFrame& body, const std::vector<Mat2x3>& model_fs, Box* bound, float* top_y) {
+  if (rig.body_slabs.empty() || !rig.fins.empty() || !rig.arms.empty()) return false;
+  const Mat2x3& m = model_fs[rig.root];
+  // Interval arithmetic over [body_lo, body_hi], widened by far more than the rounding of
+  // apply() or of these bounds (a few ulps of the extent); rounding is monotonic, so the
+  // translation, the skull's span and to_ws keep the bounds in order.
+  const float extent = std::max({-rig.body_lo.x, rig.body_hi.x, -rig.body_lo.y, rig.body_hi.y});
+  auto range = [&](float a, float b, float offset) {
+    const float eps = 1e-5f * (std::fabs(a) + std::fabs(b)) * extent;
+    const float lo = std::min(a * rig.body_lo.x, a * rig.body_hi.x) + std::min(b * rig.body_lo.y, b * rig.body_hi.y) - eps;
+    const float hi = std::max(a * rig.body_lo.x, a * rig.body_hi.x) + std::max(b * rig.body_lo.y, b * rig.body_hi.y) + eps;
+    return glm::vec2(lo + offset, hi + offset);
+  };
+  glm::vec2 x = range(m.m[0], m.m[2], m.m[4]), y = range(m.m[1], m.m[3], m.m[5]);
+  if (rig.skull >= 0) {  // the skull's far end: its joint plus a span kept level
+    x = {std::min(x[0], x[0] + rig.skull_span.x), std::max(x[1], x[1] + rig.skull_span.x)};
+    y = {std::min(y[0], y[0] + rig.skull_span.y), std::max(y[1], y[1] + rig.skull_span.y)};
+  }
+  const float x0 = body.to_ws({x[0], 0.0f}).x, x1 = body.to_ws({x[1], 0.0f}).x;
+  *bound = Box{{std::min(x0, x1), y[0]}, {std::max(x0, x1), y[1]}};
+  *top_y = m.apply(rig.body_top).y;
+  return std::isfinite(x0) && std::isfinite(x1) && std::isfinite(y[0]) && std::isfinite(y[1]) && std::isfinite(*top_y);
+}
+
+}  // namespace
+
+void body_boxes(const AnimRig& rig, const BodyFrame& body, const std::vector<Mat2x3>& model_fs, bool slabs, std::vector<Box>* boxes) {
+  const Skeleton& sk = rig.skeleton;
+  boxes->clear();
+  // The open box grows in a local (stores into *boxes could alias every float read here, so
+  // the compiler would reload the matrices and the box for each point) and is appended when
+  // the next one begins, and at the end.
+  Box box;
+  bool open = false;
+  auto begin = [&] {
+    if (open) boxes->push_back(box);
+    box = Box{glm::vec2(1e30f), glm::vec2(-1e30f)};
+    open = true;
+  };
+  auto add_point = [&](glm::vec2 p_fs) {
+    const glm::vec2 p = body.to_ws(p_fs);
+    box.min_ws = glm::min(box.min_ws, p);
+    box.max_ws = glm::max(box.max_ws, p);
+  };
+  auto add = [&](int b) {
+    add_point(bone_start(model_fs[b]));
+    add_point(bone_end(model_fs[b], sk.length(b)));
+  };
+  if (!rig.body_slabs.empty()) {
+    const Mat2x3 root = model_fs[rig.root];
+    if (slabs) {
+      for (const std::vector<glm::vec2>& slab : rig.body_slabs) {
+        begin();
+        for (glm::vec2 p : slab) add_point(root.apply(p));
+      }
+    } else {
+      begin();
+      for (glm::vec2 p : rig.body_hull) add_point(root.apply(p));
+    }
+    if (rig.skull >= 0) {
+      if (slabs) begin();
+      const glm::vec2 skull = root.apply(rig.skull_rel);
+      add_point(skull);
+      add_point(skull + rig.skull_span);
+    }
+  } else {
+    begin();
+    add(rig.root);
+    for (int b : rig.back) add(b);
+    for (int b : rig.neck) add(b);
+    if (rig.skull >= 0) add(rig.skull);
+  }
+  // An arm's shoulder is the body's too (the arm itself folds out of the way): it meets a
+  // step rising in front of a low chest.
+  for (const RigLimb& arm : rig.arms) {
+    if (slabs) begin();
+    add_point(bone_start(model_fs[arm.bones[0]]));
+  }
+  for (const RigLimb& fin : rig.fins) {
+    if (slabs) begin();
+    for (int b : fin.bones) add(b);
+  }
+  // Arms swing: count the whole reach of each arm, forward and back, not just this pose.
+  // (They come last: the sweep tests them against walls only, as they lift over the rest.)
+  for (const RigLimb& arm : rig.arms) {
+    const glm::vec2 shoulder = bone_start(model_fs[arm.bones[0]]);
+    const float reach = sk.length(arm.bones[0]) + sk.length(arm.bones[1]) + sk.length(arm.bones[2]);
+    if (slabs) begin();
+    add_point(shoulder - glm::vec2(reach, reach));
+    add_point(shoulder + glm::vec2(reach, 0.0f));
+  }
+  if (open) boxes->push_back(box);
+}
+
+BodyMotionResult sweep_body(const AnimContext& ctx, const BodyFrame& body, const std::vector<Mat2x3>& model_fs, float dx,
+                            std::vector<Box>& boxes) {
+  BodyMotionResult out;
+  out.dx = dx;
+  if (dx == 0.0f) return out;
+  const AnimRig& rig = ctx.rig;
+  const Level& level = ctx.level;
+  const int facing = body.facing;
+  const float hip = rig.hip_height;
+  const float step_up = ctx.params.max_step_up * hip;
+  // The ground line under the body runs through the girdles' support, tilted with the body's
+  // pitch. The whole body is swept first; only if that meets something, its parts one by one.
+  const float support = body.root_y_ws - rig.root_rest_y * ctx.params.stance_height;
+  const float slope = std::tan(body.pitch);
+  const glm::vec2 margin(kWallMargin + kWallMarginOfHip * hip, 0.0f);
+  auto ground_under = [&](const Box& box) {
+    const float a = slope * facing * (box.min_ws.x - body.x_ws), b = slope * facing * (box.max_ws.x - body.x_ws);
+    return support + std::min(a, b);
+  };
+  // Cheaper still, and before that: a box around the body from the root and the hull's extent
+  // alone (body_bound_ws), swept as a box holding the one swept below (its bottom no higher
+  // than theirs can be: kSweepFloorOfHip above the bound's, or a point of the body). Whatever
+  // it does not meet, the body does not meet either.
+  Box bound;
+  float top_y;
+  bool near_something = true;
+  if (body_bound_ws(rig, body, model_fs, &bound, &top_y)) {
+    const Box swept{{bound.min_ws.x - margin.x, std::min(bound.min_ws.y + kSweepFloorOfHip * hip, top_y)},
+                    {bound.max_ws.x + 1e-3f + margin.x, bound.max_ws.y + 1e-3f}};
+    auto hit = level.sweep_box(swept, {dx, 0.0f});
+    near_something = hit && hit->t < 1.0f;
+  }
+  boxes.clear();
+  if (near_something) {
+    body_boxes(rig, body, model_fs, false, &boxes);
+    Box all = boxes[0];
+    all.min_ws.y = std::min(std::max(all.min_ws.y + kSweepFloorOfHip * hip, ground_under(all) + step_up), all.max_ws.y);
+    auto hit = level.sweep_box(Box{all.min_ws - margin, glm::max(all.max_ws, all.min_ws + glm::vec2(1e-3f)) + margin}, {dx, 0.0f});
+    if (hit && hit->t < 1.0f) body_boxes(rig, body, model_fs, !rig.body_slabs.empty(), &boxes);
+    else boxes.clear();
+  }
+  float move = std::fabs(dx);
+  const size_t first_arm = boxes.empty() ? 0 : boxes.size() - rig.arms.size();
+  for (size_t k = 0; k < boxes.size(); ++k) {
+    Box box = boxes[k];
+    const float hi_y = box.max_ws.y;
+    box.min_ws.y = std::min(std::max(box.min_ws.y + kSweepFloorOfHip * hip, ground_under(box) + step_up), hi_y);
+    box.max_ws = glm::max(box.max_ws, box.min_ws + glm::vec2(1e-3f));
+    float t = 1.0f;  // fraction of dx until the part meets something
+    if (k < first_arm) {
+      if (auto hit = level.sweep_box(box, {dx, 0.0f})) t = hit->t;
+    }
+    // Walls (reaching above the body) are met a few centimetres early: arms and head settle
+    // forward a little when the body stops.
+    if (auto wall = level.sweep_box(Box{box.min_ws - margin, box.max_ws + margin}, {dx, 0.0f});
+        wall && wall->t < 1.0f && level.box(wall->index).top() > hi_y) {
+      t = wall->t;
+    }
+    if (t < 1.0f) {
+      move = std::min(move, std::max(0.0f, t * std::fabs(dx) - 1e-4f));
+      out.hit_wall = true;
+    }
+  }
+  out.dx = facing * move;
+  return out;
+}
+
+float limit_by_legs(const AnimContext& ctx, const BodyFrame& body, const FootSet& feet, float dx, TickHandoff& handoff) {
+  if (dx == 0.0f) return dx;
+  const AnimRig& rig = ctx.rig;
+  const int facing = body.facing;
+  for (size_t i = 0; i < rig.legs.size(); ++i) {
+    const int leg = static_cast<int>(i);
+    const FootState& f = feet.of_leg(leg);
+    const RigLeg& info = rig.legs[i];
+    const glm::vec2 joint = body.to_fs(body.girdle_ws(rig, info.girdle));
+    const bool stance = f.state == LegState::kStance;
+    const glm::vec2 contact = body.to_fs(stance ? f.pos_ws : f.to_ws);
+    // The anchor lies within a foot's length of the contact point: a foot that far ahead of
+    // where the joint goes cannot hold it back.
+    if (contact.x - info.foot_span > joint.x + std::fabs(dx)) continue;
+    float r;
+    const glm::vec2 anchor = leg_anchor(ctx, body, leg, contact, joint, stance ? f.stance_clear : f.swing_clear, &r);
+    const float h = joint.y - anchor.y;
+    // Near steps a foot behind keeps the joint within kStepReach of the leg's reach: a leg
+    // stretched back across a flight of stairs would cut the edges between.
+    const bool near_steps =
+        anchor.x < joint.x && !(stance ? f.stance_reach_clear : f.swing_clear).clear_above(anchor.y + 0.1f * rig.hip_height);
+    // How far forward the joint may go with this foot still in reach (facing x).
+    const float level_reach = std::sqrt(std::max(r * r - h * h, 0.0f));
+    const float near_reach = std::max(std::sqrt(std::max(kStepReach * kStepReach * r * r - h * h, 0.0f)), 0.5f * level_reach);
+    const float ahead = anchor.x + (near_steps ? near_reach : level_reach) - joint.x;
+    dx = facing * std::min(std::fabs(dx), std::max(ahead, 0.0f));
+    // Nor does the body leave a swinging foot behind further than its leg reaches (a foot
+    // that lifted late, far back on stairs, would sweep the leg through the steps between).
+    const glm::vec2 now = body.to_fs(f.pos_ws);
+    if (!stance && now.x < joint.x) {
+      const float R = info.contact_reach, hn = joint.y - now.y;
+      const float lead = now.x + std::sqrt(std::max(R * R - hn * hn, 0.0f)) - joint.x;
+      dx = facing * std::min(std::fabs(dx), std::max(lead, 0.0f));
+    }
+    // A foot left below and behind on stairs whose leg would cut the edge of a step above it
+    // lifts now (the gait clock reads lift_now) rather than drag its knee through the step.
+    // The body waits for it if the leg clears the steps where it is.
+    if (stance && anchor.x < joint.x && !f.stance_reach_clear.clear_above(contact.y) &&
+        stance_leg_hits(ctx, body, leg, f, joint + glm::vec2(std::fabs(dx), 0.0f))) {
+      handoff.lift_now[feet.foot_of_leg[i]] = 1;
+      if (!stance_leg_hits(ctx, body, leg, f, joint)) dx = 0.0f;
+    }
+  }
+  return dx;
+}
+
+}  // namespace ossa::anim

@@ -1,0 +1,386 @@
+#include "ossa/anim/body_placement.h"
+
+// [SECTION] targets: girdle heights, pitch
+// [SECTION] clamps, in their order
+// [SECTION] place_body
+
+#include <algorithm>
+#include <cmath>
+
+#include "ossa/anim/anim_math.h"
+#include "ossa/anim/animator_params.h"
+#include "ossa/anim/foothold.h"
+#include "ossa/anim/leg_ik.h"
+#include "ossa/math/two_bone_ik.h"
+
+namespace ossa::anim {
+
+namespace {
+
+constexpr float kMaxPitch = 0.9f;       // the body turns no steeper than this (radians)
+constexpr float kMaxPitchStep = 0.03f;  // nor by more than this in one tick to keep a foot in reach
+constexpr float kMaxPitchOff = 0.25f;   // nor further than this from the pitch of the ground
+constexpr float kMaxTargetPitch = 0.7f; // the pitch target between two girdles, radians
+// A girdle over a higher step rises with it halfway; the ground is looked for over this
+// fraction of its rest height either side.
+constexpr float kGirdleGroundHalfOfRest = 0.2f;
+// A stance leg's girdle never comes down below this fraction of its rest height above the foot.
+constexpr float kLowestGirdleOfRest = 0.6f;
+// A foot behind and below dragging the body down by more than this fraction of its girdle's
+// rest height lifts on the next tick.
+constexpr float kDragLiftOfRest = 0.05f;
+// A girdle keeps this fraction of its rest height above the highest ground under it, looked
+// for over kGirdleKeepOutHalfOfRest either side.
+constexpr float kGirdleKeepOutOfRest = 0.12f;
+constexpr float kGirdleKeepOutHalfOfRest = 0.1f;
+// A shoulder keeps this many hip heights above the ground under it.
+constexpr float kShoulderKeepOutOfHip = 0.1f;
+// A knee keeps this fraction of its leg's reach above the ground.
+constexpr float kKneeMarginOfReach = 0.02f;
+// A single girdle's body looks this many seconds ahead for ground rising under its shoulder.
+constexpr float kShoulderLookAhead = 0.25f;
+// One tick raises no girdle by more than this many hip heights to clear a knee.
+constexpr float kMaxKneeRaiseOfHip = 0.5f;
+
+struct Placement {
+  const AnimContext& ctx;
+  const PlacementInputs& in;
+  const FootSet& feet;
+  BodyFrame& body;
+  BodyState& state;
+  TickHandoff& handoff;
+};
+
+// [SECTION] targets: girdle heights, pitch ----------------------------------------------------
+
+// Moves girdle g's joint up by dy, turning the body about the girdle at the other end.
+void move_girdle(Placement& p, int g, float dy) {
+  const AnimRig& rig = p.ctx.rig;
+  BodyFrame& body = p.body;
+  const int n = static_cast<int>(rig.girdles.size());
+  if (n < 2 || (g != 0 && g != n - 1)) {
+    body.root_y_ws += dy;
+    return;
+  }
+  // Turn the body about the girdle at the other end (o), which stays put; whatever a turn
+  // within the pitch limits (per tick and overall) cannot give, the whole body moves.
+  const glm::vec2 root_rest(0.0f, rig.root_rest_y);
+  const glm::vec2 o = rig.girdles[g == 0 ? n - 1 : 0].joint_ms - root_rest;
+  const glm::vec2 v = rig.girdles[g].joint_ms - root_rest - o;
+  const float len = std::sqrt(v.x * v.x + v.y * v.y);
+  const glm::vec2 v_before = body.rotate_body(v), o_before = body.rotate_body(o);
+  if (len > 1e-4f) {
+    const float phi = fast_atan2(v.y, v.x), a = body.pitch + body.lean;
+    const float s = std::asin(std::clamp((v_before.y + dy) / len, -0.95f, 0.95f));
+    const float turned = (std::cos(a + phi) >= 0.0f ? s : kPi - s) - phi;
+    const float step = std::clamp(wrap_angle(turned - a), -kMaxPitchStep, kMaxPitchStep);
+    body.pitch = std::clamp(body.pitch + step, std::max(p.state.pitch_target - kMaxPitchOff, -kMaxPitch),
+                            std::min(p.state.pitch_target + kMaxPitchOff, kMaxPitch));
+  }
+  const float moved = body.rotate_body(v).y - v_before.y;
+  body.root_y_ws += o_before.y - body.rotate_body(o).y + (dy - moved);
+}
+
+// Each girdle's target height: the mean ground under its feet (a swinging foot counts where
+// it is between lift-off and landing), raised halfway to a higher step under the girdle, plus
+// its standing height and the bob; a foot hovering above a lower step brings it down.
+void girdle_heights(Placement& p, std::vector<float>& height) {
+  const AnimRig& rig = p.ctx.rig;
+  const AnimatorParams& params = p.ctx.params;
+  for (size_t g = 0; g < rig.girdles.size(); ++g) {
+    const RigGirdle& girdle = rig.girdles[g];
+    float sum = 0.0f;
+    for (int leg : girdle.legs) {
+      const FootState& f = p.feet.of_leg(leg);
+      sum += f.state == LegState::kStance ? f.pos_ws.y : f.from_ws.y + std::clamp(f.progress, 0.0f, 1.0f) * (f.to_ws.y - f.from_ws.y);
+    }
+    float ground = sum / static_cast<float>(girdle.legs.size());
+    // On stairs the feet straddle steps; a girdle over a higher step rises with it, so the
+    // knees stay clear of the step they pass over.
+    const float gx = p.body.girdle_ws(rig, static_cast<int>(g)).x;
+    const float half = kGirdleGroundHalfOfRest * girdle.rest_height;
+    if (auto below = ground_below(p.ctx.level, gx - half, gx + half, ground + params.max_step_up * girdle.step_height,
+                                  params.max_step_up * girdle.step_height)) {
+      ground = std::max(ground, 0.5f * (ground + below->height_ws));
+    }
+    height[g] = ground + girdle.rest_height * params.stance_height + p.in.bob;
+    // A foot waiting above a lower step (see the swing) brings its girdle down to it, but not
+    // so far that a leg on the ground folds up (its knee would reach into the ground).
+    float floor = -1e30f, lowest = height[g];
+    for (int leg : girdle.legs) {
+      const FootState& f = p.feet.of_leg(leg);
+      if (f.state == LegState::kStance) floor = std::max(floor, f.pos_ws.y + kLowestGirdleOfRest * girdle.rest_height);
+      if (f.state != LegState::kSwing || f.hover <= 0.0f) continue;
+      const glm::vec2 foot = f.to_ws;
+      const float r = kFootReach * rig.legs[leg].contact_reach;
+      const float dx = std::min(std::fabs(foot.x - gx), 0.95f * r);
+      lowest = std::min(lowest, foot.y + std::sqrt(r * r - dx * dx));
+    }
+    height[g] = std::min(height[g], std::max(lowest, floor));
+  }
+}
+
+// The root height and pitch that put the girdles at their heights.
+void body_target(Placement& p, const std::vector<float>& height, float* target_root, float* target_pitch) {
+  const AnimRig& rig = p.ctx.rig;
+  const glm::vec2 root_rest(0.0f, rig.root_rest_y);
+  const float angle_extra = p.body.lean;
+  if (rig.girdles.size() >= 2) {
+    const glm::vec2 df = rig.girdles.front().joint_ms - root_rest, db = rig.girdles.back().joint_ms - root_rest;
+    const glm::vec2 d = df - db;  // the rest chord between the girdles
+    const float len = std::sqrt(d.x * d.x + d.y * d.y);
+    const float dy = height.front() - height.back();
+    const float total = std::asin(std::clamp(dy / std::max(len, 1e-4f), -0.9f, 0.9f)) - fast_atan2(d.y, d.x);
+    *target_pitch = std::clamp(wrap_angle(total - angle_extra), -kMaxTargetPitch, kMaxTargetPitch);
+    const float a = *target_pitch + angle_extra;
+    const float c = std::cos(a), s = std::sin(a);
+    const float df_y = s * df.x + c * df.y, db_y = s * db.x + c * db.y;  // rotate(·, a).y
+    *target_root = 0.5f * (height.front() - df_y + height.back() - db_y);
+    return;
+  }
+  // A shoulder far ahead of the only girdle (a long-bodied bird) would run into the steps of
+  // a steep flight before the legs climb them: the body pitches up so the shoulder keeps its
+  // height above the ground ahead of it (a quarter second ahead).
+  const glm::vec2 shoulder = rig.front_shoulder;
+  if (shoulder.x > 0.0f) {
+    const float ground = height.front() - rig.girdles.front().rest_height * p.ctx.params.stance_height;
+    const float sx = p.body.girdle_ws(rig, 0).x + p.body.facing * shoulder.x;
+    const float ahead = p.body.facing * p.in.speed * kShoulderLookAhead;
+    const float half = 0.05f * rig.hip_height;
+    const float top = ground + rig.front_slack + 0.6f * shoulder.x;  // the most a turn gets over
+    if (auto below = ground_below(p.ctx.level, std::min(sx, sx + ahead) - half, std::max(sx, sx + ahead) + half, top,
+                                  top - ground + shoulder.x)) {
+      const float rise = below->height_ws - ground - rig.front_slack;
+      if (rise > 0.0f) *target_pitch = std::asin(std::min(rise / shoulder.x, 0.6f));
+    }
+  }
+  const glm::vec2 d = rig.girdles.front().joint_ms - root_rest;
+  *target_root = height.front() - rotate(d, *target_pitch + angle_extra).y;
+}
+
+// [SECTION] clamps, in their order ------------------------------------------------------------
+
+// 1. Never over-extend a leg on the ground: lower its girdle (hard clamp, no smoothing; again
+// when that moved it, as a rolling foot's reach depends on where the joint is). The end
+// girdles turn the body about each other, so a hind leg left on a lower step pitches the body
+// up instead of pulling the shoulders down into the steps ahead. Returns how far each girdle
+// may still rise with its feet in reach (room).
+void keep_stance_legs_in_reach(Placement& p, std::vector<float>& need, std::vector<float>& room) {
+  const AnimRig& rig = p.ctx.rig;
+  const size_t n_groups = rig.girdles.size();
+  for (int pass = 0; pass < 3; ++pass) {
+    std::fill(need.begin(), need.end(), 0.0f);
+    std::fill(room.begin(), room.end(), 1e30f);
+    for (size_t i = 0; i < rig.legs.size(); ++i) {
+      const RigLeg& info = rig.legs[i];
+      const FootState& f = p.feet.of_leg(static_cast<int>(i));
+      // On the turn tick, swinging feet (taken over by other legs) must stay in reach too.
+      if (f.state != LegState::kStance && !(p.in.turning && !f.easing)) continue;
+      const glm::vec2 joint = p.body.to_fs(p.body.girdle_ws(rig, info.girdle));
+      float r;
+      const glm::vec2 anchor = leg_anchor(p.ctx, p.body, static_cast<int>(i), p.body.to_fs(f.pos_ws), joint,
+                                          f.state == LegState::kStance ? f.stance_clear : f.swing_clear, &r);
+      const float dx = std::fabs(anchor.x - joint.x);
+      if (dx >= r) continue;
+      const float allowed = anchor.y + std::sqrt(r * r - dx * dx);
+      need[info.girdle] = std::max(need[info.girdle], joint.y - allowed);
+      room[info.girdle] = std::min(room[info.girdle], allowed - joint.y);
+      // A foot left behind and below (stairs) that drags the body down lifts on the next tick
+      // rather than fold the other legs into the step ahead.
+      if (pass == 0 && f.state == LegState::kStance && anchor.x < joint.x &&
+          joint.y - allowed > kDragLiftOfRest * rig.girdles[info.girdle].rest_height) {
+        p.handoff.lift_now[p.feet.foot_of_leg[i]] = 1;
+      }
+    }
+    // Turning the body moves the other girdle's joint sideways a little: the last pass lowers
+    // the whole body, which keeps every joint's x.
+    float most = 0.0f;
+    for (float d : need) most = std::max(most, d);
+    if (most <= 0.0f) break;
+    for (size_t g = 0; g < n_groups; ++g) {
+      if (need[g] <= 0.0f) continue;
+      if (pass < 2) move_girdle(p, static_cast<int>(g), -need[g]);
+      room[g] += need[g];
+    }
+    if (pass == 2) p.body.root_y_ws -= most;
+  }
+}
+
+// 2. Nor fold a leg on the ground tighter than it can (short legs with long shins on a low
+// body): raise the body until each stance ankle is at least the folded length away.
+void keep_stance_legs_unfolded(Placement& p, std::vector<float>& room) {
+  const AnimRig& rig = p.ctx.rig;
+  float fold_raise = 0.0f;
+  for (size_t i = 0; i < rig.legs.size(); ++i) {
+    const FootState& f = p.feet.of_leg(static_cast<int>(i));
+    if (f.state != LegState::kStance) continue;
+    const float fold = rig.legs[i].fold;
+    const glm::vec2 joint = p.body.to_fs(p.body.girdle_ws(rig, rig.legs[i].girdle));
+    // The ankle lies within a foot's length of the contact point.
+    if (glm::length(p.body.to_fs(f.pos_ws) - joint) - rig.legs[i].foot_span >= fold) continue;
+    glm::vec2 dir;
+    const glm::vec2 ankle = leg_ankle(p.ctx, p.body, static_cast<int>(i), p.body.to_fs(f.pos_ws), joint, true, f.stance_clear, &dir, nullptr);
+    const float dx = std::fabs(ankle.x - joint.x);
+    if (dx < fold) fold_raise = std::max(fold_raise, ankle.y + std::sqrt(fold * fold - dx * dx) - joint.y);
+  }
+  if (fold_raise > 0.0f) {
+    p.body.root_y_ws += fold_raise;
+    for (float& r : room) r = std::max(r - fold_raise, 0.0f);
+  }
+}
+
+// 3. Nor kneel: a leg folded so far that its knee would touch the ground (sprawling legs on a
+// low body, or lifted in a swing) raises its girdle until the knee clears the ground under
+// it. A swinging leg's knee raises it only as far as the legs on the ground allow (their feet
+// must not slide); past that the swing itself lifts and tucks the leg (leg IK). With the foot
+// in place a raised joint lifts the knee by less than itself: up to four passes, as long as
+// some girdle moves.
+void keep_knees_off_ground(Placement& p, std::vector<float>& stance_up, std::vector<float>& swing_up, std::vector<float>& room) {
+  const AnimRig& rig = p.ctx.rig;
+  const Level& level = p.ctx.level;
+  for (int pass = 0; pass < 4; ++pass) {
+    std::fill(stance_up.begin(), stance_up.end(), 0.0f);
+    std::fill(swing_up.begin(), swing_up.end(), 0.0f);
+    for (size_t i = 0; i < rig.legs.size(); ++i) {
+      const FootState& f = p.feet.of_leg(static_cast<int>(i));
+      const bool stance = f.state == LegState::kStance;
+      const RigLeg& info = rig.legs[i];
+      const glm::vec2 joint = p.body.to_fs(p.body.girdle_ws(rig, info.girdle));
+      const float margin = kKneeMarginOfReach * info.reach;
+      // The knee is no lower than a thigh below the joint nor a shin below the ankle: cheap
+      // tests before the IK (unless steps rise near the foot).
+      const bool steps_near = !(stance ? f.stance_reach_clear : f.swing_clear).clear_above(f.pos_ws.y + margin);
+      if (!steps_near && joint.y - info.upper > f.pos_ws.y + margin) continue;
+      glm::vec2 dir;
+      const glm::vec2 ankle = leg_ankle(p.ctx, p.body, static_cast<int>(i), p.body.to_fs(f.pos_ws), joint, true,
+                                        stance ? f.stance_clear : f.swing_clear, &dir, nullptr);
+      if (!steps_near && ankle.y - info.lower > f.pos_ws.y + margin) continue;
+      const TwoBoneIkResult ik = solve_two_bone_ik_directions(joint, info.upper, info.lower, ankle, info.bend);
+      const glm::vec2 knee = p.body.to_ws(ik.middle);
+      float& up = stance ? stance_up[info.girdle] : swing_up[info.girdle];
+      if (auto ground = ground_below(level, knee.x - 0.005f, knee.x + 0.005f, knee.y + info.reach, 2.0f * info.reach)) {
+        up = std::max(up, ground->height_ws + margin - knee.y);
+      }
+      // On steps a thigh or shin may cross the edge of a step beside the knee (a swinging leg
+      // far back down a flight, say), as may a shin coming up to a foot on the edge of a ledge
+      // from a knee below it.
+      if (steps_near || knee.y < f.pos_ws.y + margin) {
+        const glm::vec2 hip = p.body.to_ws(joint), heel = p.body.to_ws(ik.end);
+        up = std::max({up, raise_to_clear(hip, knee, level, p.ctx.hits), raise_to_clear(knee, heel, level, p.ctx.hits)});
+      }
+    }
+    bool moved = false;
+    for (size_t g = 0; g < rig.girdles.size(); ++g) {
+      const float up = std::min(std::max(stance_up[g], std::min(swing_up[g], room[g])), kMaxKneeRaiseOfHip * rig.hip_height);
+      if (up <= 0.0f) continue;
+      move_girdle(p, static_cast<int>(g), up);
+      room[g] = std::max(room[g] - up, 0.0f);
+      moved = true;
+    }
+    if (!moved) break;
+  }
+}
+
+// How far a shoulder at `shoulder` (world) must rise to keep kShoulderKeepOutOfHip above the
+// ground under it (looked for from half a standing height, plus `extra`, above it).
+float shoulder_need(const Placement& p, glm::vec2 shoulder, float extra) {
+  const float hip = p.ctx.rig.hip_height;
+  const float half = 0.05f * hip;
+  auto below = ground_below(p.ctx.level, shoulder.x - half, shoulder.x + half, shoulder.y + 0.5f * hip + extra, 100.0f);
+  return below ? below->height_ws + kShoulderKeepOutOfHip * hip - shoulder.y : 0.0f;
+}
+
+// 4. The shoulder far ahead of a single girdle meeting a step: the body turns up about the
+// girdle (the feet stay in reach) rather than rise (the pitch target follows more slowly).
+void pitch_for_front_shoulder(Placement& p) {
+  const AnimRig& rig = p.ctx.rig;
+  if (!(rig.front_shoulder.x > 0.0f)) return;
+  const glm::vec2 rel = rig.girdles.front().joint_ms - glm::vec2(0.0f, rig.root_rest_y);
+  for (int pass = 0; pass < 2; ++pass) {
+    const float need = shoulder_need(p, p.body.body_point_ws(rig, rig.girdles.front().joint_ms + rig.front_shoulder), 0.0f);
+    if (need <= 0.0f) break;
+    const float girdle_y = p.body.rotate_body(rel).y;
+    p.body.pitch = std::min(p.body.pitch + std::asin(std::min(need / rig.front_shoulder.x, 0.9f)), kMaxPitch);
+    p.body.root_y_ws += girdle_y - p.body.rotate_body(rel).y;
+  }
+}
+
+// 5. Whatever the legs ask, a girdle never sinks into the ground under it: it keeps an
+// eighth of its standing height above the highest ground there (a leg may stretch, the body
+// stays out). Ground the body came down past on this tick (`fell`) counts too (clamp 1 may
+// pull it down further than the queries look up). Shoulders carrying arms, wings or fins too,
+// and folded wings do not cut a step's corner (a wall, too high to rise over, is the wall
+// sweep's business).
+void keep_body_out_of_ground(Placement& p, float fell) {
+  const AnimRig& rig = p.ctx.rig;
+  float raise = 0.0f;
+  for (size_t g = 0; g < rig.girdles.size(); ++g) {
+    const glm::vec2 joint = p.body.girdle_ws(rig, static_cast<int>(g));
+    const float rest = rig.girdles[g].rest_height;
+    const float half = kGirdleKeepOutHalfOfRest * rest;
+    if (auto below = ground_below(p.ctx.level, joint.x - half, joint.x + half, joint.y + 0.5f * rest + fell, 100.0f)) {
+      raise = std::max(raise, below->height_ws + kGirdleKeepOutOfRest * rest - joint.y);
+    }
+  }
+  auto keep_shoulder_out = [&](const RigLimb& limb) {
+    raise = std::max(raise, shoulder_need(p, p.body.body_point_ws(rig, bone_start(rig.model_rest[limb.bones[0]])), fell));
+  };
+  for (const RigLimb& a : rig.outline_arms) keep_shoulder_out(a);
+  for (const RigLimb& w : rig.outline_wings) keep_shoulder_out(w);
+  for (const RigLimb& w : rig.outline_wings) {
+    glm::vec2 a = p.body.body_point_ws(rig, bone_start(rig.model_rest[w.bones[0]]), raise);
+    for (int b : w.bones) {
+      const glm::vec2 e = p.body.body_point_ws(rig, bone_end(rig.model_rest[b], rig.skeleton.length(b)), raise);
+      const float need = raise_to_clear(a, e, p.ctx.level, p.ctx.hits);
+      if (need < 0.5f * rig.hip_height) raise += need;
+      a = e;
+    }
+  }
+  for (const RigLimb& f : rig.outline_fins) keep_shoulder_out(f);
+  p.body.root_y_ws += raise;
+}
+
+}  // namespace
+
+// [SECTION] place_body --------------------------------------------------------------------------
+
+void place_body(const AnimContext& ctx, const PlacementInputs& in, const FootSet& feet, BodyFrame& body, BodyState& state,
+                TickHandoff& handoff) {
+  std::fill(handoff.lift_now.begin(), handoff.lift_now.end(), 0);
+  Placement p{ctx, in, feet, body, state, handoff};
+  const AnimRig& rig = ctx.rig;
+  const float old_root = body.root_y_ws;
+  float target_root = body.root_y_ws, target_pitch = 0.0f;
+  const size_t n = rig.girdles.size();
+  // Scratch per girdle (a creature has a few).
+  thread_local std::vector<float> height, need, room, swing_up;
+  height.resize(n);
+  need.resize(n);
+  room.resize(n);
+  swing_up.resize(n);
+  if (rig.girdles.empty()) {
+    // Legless: follow the highest ground under the body, lifted lately so that the wave keeps
+    // the body out of the ground (held there, settling back slowly, rather than pulled down
+    // and lifted again every tick).
+    auto hit = ground_below(ctx.level, body.x_ws - rig.body_half_length, body.x_ws + rig.body_half_length,
+                            body.root_y_ws + rig.hip_height, 100.0f);
+    if (in.dt > 0.0f) state.body_lift *= std::exp(-in.dt);
+    target_root = (hit ? hit->height_ws : body.root_y_ws - rig.root_rest_y) + rig.root_rest_y + state.body_lift;
+  } else {
+    girdle_heights(p, height);
+    body_target(p, height, &target_root, &target_pitch);
+  }
+  const bool snap = in.snap || in.dt <= 0.0f;
+  body.pitch = approach(body.pitch, target_pitch, snap ? 0.0f : in.keep_pitch);
+  state.pitch_target = target_pitch;
+  body.root_y_ws = approach(body.root_y_ws, target_root, snap ? 0.0f : in.keep_root);
+
+  keep_stance_legs_in_reach(p, need, room);
+  keep_stance_legs_unfolded(p, room);
+  keep_knees_off_ground(p, need, swing_up, room);
+  pitch_for_front_shoulder(p);
+  keep_body_out_of_ground(p, rig.girdles.empty() ? 0.0f : std::max(old_root - body.root_y_ws, 0.0f));
+  state.root_vy = in.dt > 0.0f ? (body.root_y_ws - old_root) / in.dt : 0.0f;
+}
+
+}  // namespace ossa::anim

@@ -1,0 +1,42 @@
+#pragma once
+// Body placement (DESIGN.md §7, stage 6): the root's height, the body's pitch and lean from
+// where the feet are. Each girdle's height = the ground under its feet + its standing height
+// + the pelvis bob; the spine pitches between the girdles. Then the clamps, as named
+// functions in this order (a later one may only raise what an earlier one lowered, never
+// undo a hard limit):
+//   1. keep_stance_legs_in_reach   lower a girdle (turning the body about the other end) so
+//                                  that no stance leg over-extends; hard, not smoothed;
+//   2. keep_stance_legs_unfolded   raise the body so no stance leg folds tighter than it can;
+//   3. keep_knees_off_ground       raise a girdle until each knee clears the ground (a
+//                                  swinging leg's knee only as far as 1. leaves room);
+//   4. pitch_for_front_shoulder    a single girdle's shoulder far ahead turns the body up;
+//   5. keep_body_out_of_ground     girdles, shoulders and folded wings stay above the ground.
+//
+// Inputs: AnimContext, the feet, the gait, the bob; in/out: the body frame and BodyState.
+// Heights in world metres; angles radians.
+
+#include "ossa/anim/anim_state.h"
+#include "ossa/anim/gait_clock.h"
+
+namespace ossa::anim {
+
+struct BodyState {
+  float pitch_target = 0.0f;  // the pitch of the ground under the girdles, radians
+  float root_vy = 0.0f;       // vertical speed of the root, m/s (drives the tail)
+  float body_lift = 0.0f;     // legless: how far the wave has lately lifted the body, metres
+};
+
+struct PlacementInputs {
+  float dt = 0.0f;            // seconds; 0 places at once (reset)
+  float speed = 0.0f;         // m/s along the facing
+  float bob = 0.0f;           // pelvis bob (or idle breathing), metres
+  bool snap = false;          // take the new height and pitch at once (a turn)
+  bool turning = false;       // this tick mirrored the creature (swinging feet count as stance)
+  float keep_pitch = 0.0f;    // smoothing exp(-rate·dt) of the pitch and the root height
+  float keep_root = 0.0f;
+};
+
+void place_body(const AnimContext& ctx, const PlacementInputs& in, const FootSet& feet, BodyFrame& body, BodyState& state,
+                TickHandoff& handoff);
+
+}  // namespace ossa::anim

@@ -1,0 +1,138 @@
+#include "ossa/anim/foothold.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "ossa/anim/animator_params.h"
+#include "ossa/anim/ground_profile.h"
+
+namespace ossa::anim {
+
+namespace {
+
+// find_landing tries at most this many candidate spots.
+constexpr int kLandingCandidates = 600;
+// Candidates step by this fraction of the stride (shorter) and a quarter of it (longer), and
+// never by less than kMinLandingStep of the foot's length.
+constexpr float kLandingStepOfStride = 0.025f;
+constexpr float kMaxLongerOfStride = 0.25f;
+constexpr float kShortestAheadOfStride = 0.05f;
+
+// The foot's horizontal extent relative to its contact point, in world x (facing applied).
+struct FootSpan {
+  float lo = 0.0f, hi = 0.0f;
+};
+FootSpan foot_span_ws(const RigLeg& leg, int facing) {
+  const float a = facing * std::min({0.0f, leg.ankle_rel_ms.x, leg.tip_rel_ms.x});
+  const float b = facing * std::max({0.0f, leg.ankle_rel_ms.x, leg.tip_rel_ms.x});
+  return {std::min(a, b), std::max(a, b)};
+}
+// The height of the box a foot needs above its contact point.
+float foot_height(const RigLeg& leg) { return std::max({0.02f, leg.ankle_rel_ms.y, 0.3f * leg.foot_length}); }
+
+}  // namespace
+
+bool foot_fits(const FootholdInputs& in, int leg, glm::vec2 contact_ws) {
+  const RigLeg& info = in.ctx.rig.legs[leg];
+  const FootSpan span = foot_span_ws(info, in.body.facing);
+  const Box foot_box{{contact_ws.x + span.lo - 0.008f, contact_ws.y + 0.0005f},
+                     {contact_ws.x + span.hi + 0.008f, contact_ws.y + foot_height(info)}};
+  return !in.ctx.level.overlaps(foot_box);
+}
+
+bool reaches(const FootholdInputs& in, int leg, glm::vec2 p_ws) {
+  const RigLeg& info = in.ctx.rig.legs[leg];
+  return glm::length(in.body.to_fs(p_ws) - in.body.to_fs(in.body.girdle_ws(in.ctx.rig, info.girdle))) <=
+         kFootReach * info.contact_reach;
+}
+
+namespace {
+
+bool nearest_fit_within(const FootholdInputs& in, int leg, glm::vec2 near_ws, glm::vec2* spot, bool in_reach) {
+  // Centimetre by centimetre either way, up to half a leg's length, on ground within a step
+  // (one every leg pair could follow up, as in find_landing).
+  const AnimRig& rig = in.ctx.rig;
+  const RigLeg& info = rig.legs[leg];
+  const float up = in.ctx.params.max_step_up * rig.climb_height;
+  const float down = in.ctx.params.max_step_down * rig.girdles[info.girdle].rest_height;
+  // A flat foot stands on the highest ground under its sole.
+  const float sole = rig.flat_contact ? in.body.facing * info.foot_length : 0.0f;
+  const float sole_lo = std::min(sole, 0.0f) - 0.005f, sole_hi = std::max(sole, 0.0f) + 0.005f;
+  const int n = std::max(1, static_cast<int>(0.5f * (info.reach + info.foot_length) / 0.01f));
+  for (int k = 0; k <= 2 * n; ++k) {
+    const float x = near_ws.x + 0.01f * static_cast<float>(k % 2 == 0 ? k / 2 : -(k + 1) / 2);
+    auto hit = ground_below(in.ctx.level, x + sole_lo, x + sole_hi, near_ws.y + up, up + down);
+    if (!hit) continue;
+    const glm::vec2 p(x, hit->height_ws);
+    if (in_reach && !reaches(in, leg, p)) continue;
+    if (foot_fits(in, leg, p)) {
+      *spot = p;
+      return true;
+    }
+  }
+  return false;
+}
+
+}  // namespace
+
+bool nearest_fit(const FootholdInputs& in, int leg, glm::vec2 near_ws, glm::vec2* spot, bool prefer_reach) {
+  return (prefer_reach && nearest_fit_within(in, leg, near_ws, spot, true)) || nearest_fit_within(in, leg, near_ws, spot, false);
+}
+
+bool find_landing(const FootholdInputs& in, int leg, glm::vec2 foot_ws, float x_wanted, glm::vec2* landing) {
+  const AnimRig& rig = in.ctx.rig;
+  const RigLeg& info = rig.legs[leg];
+  const RigGirdle& girdle = rig.girdles[info.girdle];
+  const int facing = in.body.facing;
+  const float up = in.ctx.params.max_step_up * rig.climb_height;
+  const float down = in.ctx.params.max_step_down * girdle.rest_height;
+  // A step down counts from the foot, or from the ground its girdle stands over when the foot
+  // stands higher (a foot left up on a step steps back down as far as its girdle stands).
+  const float lowest = std::min(foot_ws.y, in.body.girdle_ws(rig, info.girdle).y - girdle.rest_height) - down;
+  const FootSpan span = foot_span_ws(info, facing);
+  const float span_lo = span.lo - 0.01f, span_hi = span.hi + 0.01f;
+  const float height = foot_height(info);
+  const float stride = in.stride;
+  const float stepx = std::max(kLandingStepOfStride * stride, 0.005f);
+  const float shortest = facing * (x_wanted - foot_ws.x) - kShortestAheadOfStride * stride;
+  const float longest = kMaxLongerOfStride * stride;
+  for (int k = 0; k <= kLandingCandidates; ++k) {
+    const int n = (k + 1) / 2;
+    const float d = k % 2 == 1 ? -stepx * static_cast<float>(n) : 0.25f * stepx * static_cast<float>(n);
+    if (-d > shortest) {
+      if (k % 2 == 1) continue;
+      if (d > longest) break;
+    } else if (k % 2 == 0 && d > longest) {
+      continue;
+    }
+    if (d > longest) continue;
+    const float x = x_wanted + facing * d;
+    auto hit = ground_below(in.ctx.level, x + span_lo, x + span_hi, foot_ws.y + up, foot_ws.y + up - lowest);
+    if (!hit) continue;
+    const float y = hit->height_ws;
+    const Box foot_box{{x + span_lo + 0.002f, y + 0.002f}, {x + span_hi - 0.002f, y + height}};
+    if (in.ctx.level.overlaps(foot_box)) continue;
+    // Down a step the shin comes from above and behind: keep the foot off the riser it steps
+    // down from, or the shin cuts the step's edge.
+    const float back = facing > 0 ? x + span_lo : x + span_hi;
+    const float gap = 0.25f * girdle.rest_height;
+    const Box behind{{std::min(back, back - facing * gap), y + 0.02f}, {std::max(back, back - facing * gap), y + up}};
+    if (k + 1 < kLandingCandidates && in.ctx.level.overlaps(behind)) continue;
+    *landing = {x, y};
+    return true;
+  }
+  return false;
+}
+
+float landing_x(const FootholdInputs& in, int leg, float speed, float swing_phase) {
+  const RigLeg& info = in.ctx.rig.legs[leg];
+  // The stance is centred with the contact point under the girdle joint, where the leg's
+  // reach forward and back is the same.
+  if (swing_phase < 0.0f) swing_phase = 1.0f - in.duty;
+  const float frequency = speed > 0.0f ? speed / std::max(in.stride, 1e-3f) : 0.0f;
+  const float t_swing = frequency > 0.0f ? swing_phase / frequency : 0.0f;
+  const float girdle_td = in.body.girdle_ws(in.ctx.rig, info.girdle).x + in.body.facing * speed * t_swing;
+  return girdle_td + in.body.facing * 0.5f * in.duty * in.stride;
+}
+
+}  // namespace ossa::anim

@@ -1,0 +1,47 @@
+#pragma once
+// Foothold planner (DESIGN.md §7, stage 4): where a lifting foot lands. A landing is on ground
+// the leg pairs can follow (no higher than max_step_up of the climb height, no deeper than
+// max_step_down of the girdle's standing height), the whole foot fits there, and the shin
+// coming down from above and behind clears the ground it steps down from (a riser, read from
+// the ground profile; a tile slope of small steps is not one). find_landing is the one
+// planner that lift-off, stop, turn and reset all use.
+//
+// Inputs: AnimContext, the body frame, the stride; positions in world space (_ws), metres.
+
+#include <glm/vec2.hpp>
+
+#include "ossa/anim/anim_state.h"
+
+namespace ossa::anim {
+
+struct FootholdInputs {
+  const AnimContext& ctx;
+  const BodyFrame& body;
+  float stride = 0.0f;  // metres per cycle (GaitState::stride)
+  float duty = 0.65f;   // GaitState::duty
+};
+
+// The landing of leg `leg`, whose foot stands at foot_ws, nearest to x_wanted: the planned spot
+// first, then the nearest shorter or slightly longer steps (as short as just ahead of the
+// foot, at most a quarter stride longer). False: no foothold (a wall too tall, a drop too deep).
+bool find_landing(const FootholdInputs& in, int leg, glm::vec2 foot_ws, float x_wanted, glm::vec2* landing);
+
+// Where leg `leg` would land if it lifted now at `speed` m/s (swing_phase < 0: a full swing):
+// half a stance ahead of where its girdle will be at touch-down [T 4.4.1].
+float landing_x(const FootholdInputs& in, int leg, float speed, float swing_phase = -1.0f);
+
+// Does leg `leg`'s foot, standing at contact_ws as the creature now faces, clear every box?
+bool foot_fits(const FootholdInputs& in, int leg, glm::vec2 contact_ws);
+
+// The nearest place to near_ws (either way along the ground, up to half a leg's length) where
+// leg `leg`'s foot fits; prefer_reach: one the leg reaches from where its girdle is now, if
+// there is one.
+bool nearest_fit(const FootholdInputs& in, int leg, glm::vec2 near_ws, glm::vec2* spot, bool prefer_reach = false);
+
+// Does leg `leg` reach p_ws (within kFootReach of its reach) from where its girdle is now?
+bool reaches(const FootholdInputs& in, int leg, glm::vec2 p_ws);
+
+// A foothold counts as in reach within this fraction of the leg's contact reach.
+inline constexpr float kFootReach = 0.97f;
+
+}  // namespace ossa::anim

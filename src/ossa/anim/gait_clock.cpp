@@ -1,0 +1,142 @@
+#include "ossa/anim/gait_clock.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "ossa/anim/anim_math.h"
+
+namespace ossa {
+
+const char* gait_name(Gait gait) {
+  switch (gait) {
+    case Gait::kIdle: return "idle";
+    case Gait::kWalk: return "walk";
+    case Gait::kRun: return "run";
+    case Gait::kTrot: return "trot";
+    case Gait::kGallop: return "gallop";
+    case Gait::kCrawl: return "crawl";
+  }
+  return "unknown";
+}
+
+namespace anim {
+
+namespace {
+
+// The gait blends ramp between these fractions of their Froude numbers.
+constexpr float kTrotBandLow = 0.7f, kTrotBandHigh = 1.3f;
+constexpr float kGallopBandLow = 0.85f, kGallopBandHigh = 1.15f;
+// Alexander's relation λ ≈ 2.3·h·Fr^0.3 [DESIGN.md §7].
+constexpr float kStrideOfHip = 2.3f;
+constexpr float kStrideFroudeExponent = 0.3f;
+// A stance foot half a stance ahead or behind its girdle stays within this fraction of the
+// leg's horizontal reach.
+constexpr float kStanceReachUse = 0.9f;
+// The stride is at least this many hip heights.
+constexpr float kMinStrideOfHip = 0.25f;
+// Phase offsets ease towards their targets at this many cycles per second (× the
+// interpolation speed multiplier).
+constexpr float kOffsetEaseRate = 0.6f;
+
+}  // namespace
+
+float walk_speed(const AnimRig& rig, const AnimatorParams& params) { return std::sqrt(0.5f * params.gravity * rig.hip_height); }
+float run_speed(const AnimRig& rig, const AnimatorParams& params) { return std::sqrt(2.5f * params.gravity * rig.hip_height); }
+
+void update_gait(const AnimRig& rig, const AnimatorParams& params, float speed, float keep_run, float keep_gait,
+                 GaitState& gait) {
+  gait.froude = speed * speed / (params.gravity * rig.hip_height);
+  gait.run_factor = approach(gait.run_factor, smoothstep(params.run_froude_start, params.run_froude_end, gait.froude), keep_run);
+  float trot = smoothstep(kTrotBandLow * params.trot_froude, kTrotBandHigh * params.trot_froude, gait.froude);
+  float gallop = smoothstep(kGallopBandLow * params.gallop_froude, kGallopBandHigh * params.gallop_froude, gait.froude);
+  if (params.gait_override != GaitOverride::kAuto) {
+    trot = params.gait_override == GaitOverride::kWalk ? 0.0f : 1.0f;
+    gallop = params.gait_override == GaitOverride::kGallop ? 1.0f : 0.0f;
+  }
+  gait.trot_factor = approach(gait.trot_factor, trot, keep_gait);
+  gait.gallop_factor = approach(gait.gallop_factor, gallop, keep_gait);
+  gait.duty = params.duty_walk + (params.duty_run - params.duty_walk) * gait.run_factor;
+
+  // Stride: Alexander's relation, limited so that a stance foot half a stance ahead or
+  // behind its girdle stays within reach.
+  if (gait.froude != gait.stride_froude) {
+    gait.stride_froude = gait.froude;
+    gait.stride_pow = std::pow(std::max(gait.froude, 1e-4f), kStrideFroudeExponent);
+  }
+  const float stride = kStrideOfHip * rig.hip_height * gait.stride_pow * params.step_distance_multiplier;
+  if (params.stance_height != gait.reach_stance_height) {
+    gait.reach_stance_height = params.stance_height;
+    gait.min_reach_x = 1e30f;
+    for (const RigLeg& leg : rig.legs) {
+      const float h = rig.girdles[leg.girdle].rest_height * params.stance_height;
+      gait.min_reach_x = std::min(gait.min_reach_x, std::sqrt(std::max(leg.contact_reach * leg.contact_reach - h * h, 0.0f)));
+    }
+  }
+  // The shortest reach limits most: x ↦ 1.8 x / duty is monotonic also in float arithmetic.
+  const float max_stride = std::min(1e30f, 2.0f * kStanceReachUse * gait.min_reach_x / std::max(gait.duty, 0.2f));
+  const float min_stride = kMinStrideOfHip * rig.hip_height;
+  gait.stride = std::clamp(stride, min_stride, std::max(max_stride, min_stride));
+  gait.frequency = speed > 0.0f ? speed / gait.stride : 0.0f;
+
+  if (rig.legs.empty()) {
+    gait.gait = speed > 0.0f ? Gait::kCrawl : Gait::kIdle;
+  } else if (speed <= 0.0f) {
+    gait.gait = Gait::kIdle;
+  } else if (rig.girdles.size() == 1) {
+    gait.gait = gait.run_factor > 0.5f ? Gait::kRun : Gait::kWalk;
+  } else {
+    gait.gait = gait.gallop_factor > 0.5f ? Gait::kGallop : gait.trot_factor > 0.5f ? Gait::kTrot : Gait::kWalk;
+  }
+}
+
+float leg_phase_offset(const AnimRig& rig, int leg, float trot_factor, float gallop_factor) {
+  const RigLeg& info = rig.legs[leg];
+  const bool far = info.side == Side::kFar;
+  const int n = static_cast<int>(rig.girdles.size());
+  if (n == 1) return far ? 0.5f : 0.0f;
+  if (n == 2) {
+    const bool front = info.girdle == 0;
+    // Footfall patterns as phase offsets (hind near = 0): lateral-sequence walk, trot
+    // (diagonal pairs), transverse gallop.
+    const float walk = front ? (far ? 0.75f : 0.25f) : (far ? 0.5f : 0.0f);
+    const float trot = front ? (far ? 0.0f : 0.5f) : (far ? 0.5f : 0.0f);
+    const float gallop = front ? (far ? 0.62f : 0.5f) : (far ? 0.12f : 0.0f);
+    return circular_lerp(circular_lerp(walk, trot, trot_factor), gallop, gallop_factor);
+  }
+  // More pairs: a metachronal (tripod-like) wave, alternating down the body.
+  const float near = static_cast<float>(info.girdle % 2) * 0.5f;
+  return far ? frac(near + 0.5f) : near;
+}
+
+void update_target_offsets(const AnimRig& rig, GaitState& gait) {
+  // The offsets follow the gait blend; a change below 1e-4 of it moves them by less than
+  // 1e-4 of a cycle, which the feet's own easing towards them swallows.
+  if (std::fabs(gait.trot_factor - gait.offsets_trot) < 1e-4f && std::fabs(gait.gallop_factor - gait.offsets_gallop) < 1e-4f &&
+      gait.target_offset.size() == rig.legs.size()) {
+    return;
+  }
+  gait.offsets_trot = gait.trot_factor;
+  gait.offsets_gallop = gait.gallop_factor;
+  gait.target_offset.resize(rig.legs.size());
+  for (size_t i = 0; i < rig.legs.size(); ++i) {
+    gait.target_offset[i] = leg_phase_offset(rig, static_cast<int>(i), gait.trot_factor, gait.gallop_factor);
+  }
+}
+
+void start_clock(GaitState& gait, FootSet& feet, int lead) {
+  gait.moving = true;
+  gait.phase = frac(gait.duty - feet.of_leg(lead).offset);
+  for (FootState& f : feet.feet) f.phase_prev = frac(gait.phase + f.offset);
+}
+
+LegPhase advance_leg_phase(const GaitState& gait, FootState& f, float target_offset, bool starting, float ism, float dt) {
+  f.offset = circular_lerp(f.offset, target_offset,
+                           std::min(1.0f, kOffsetEaseRate * ism * dt / std::max(std::fabs(phase_diff(f.offset, target_offset)), 1e-6f)));
+  LegPhase out;
+  out.phase = frac(gait.phase + f.offset);
+  if (f.state == LegState::kStance) out.lift_due = starting ? out.phase >= gait.duty : crossed(f.phase_prev, out.phase, gait.duty);
+  return out;
+}
+
+}  // namespace anim
+}  // namespace ossa

@@ -1,0 +1,74 @@
+#pragma once
+// Gait clock (DESIGN.md §7, stage 2): one phase φ ∈ [0, 1) per creature advancing at f = v/λ,
+// the gait blend by Froude number Fr = v²/(g·h), the duty factor β, the stride λ and each
+// leg's phase offset. Needs no level.
+//
+// Inputs: the rig (girdles, legs, reach), AnimatorParams, the speed (m/s) and the per-tick
+// smoothing factors. Output: GaitState. Stride in metres, frequency in cycles per second,
+// phases in cycles.
+
+#include <cstdint>
+#include <vector>
+
+#include "ossa/anim/anim_rig.h"
+#include "ossa/anim/anim_state.h"
+#include "ossa/anim/animator_params.h"
+
+namespace ossa {
+
+enum class Gait : uint8_t { kIdle, kWalk, kRun, kTrot, kGallop, kCrawl };
+const char* gait_name(Gait gait);
+
+namespace anim {
+
+struct GaitState {
+  float phase = 0.0f;          // cycles, [0, 1)
+  float frequency = 0.0f;      // cycles per second
+  float stride = 0.0f;         // metres per cycle
+  float duty = 0.65f;          // fraction of a cycle a foot is on the ground
+  float froude = 0.0f;
+  float run_factor = 0.0f;     // walk→run blend in [0, 1]
+  float trot_factor = 0.0f;    // walk→trot blend of the phase offsets
+  float gallop_factor = 0.0f;  // trot→gallop blend
+  Gait gait = Gait::kIdle;
+  bool moving = false;         // the clock runs (legs step)
+
+  // Caches: the legs' target offsets at (offsets_trot, offsets_gallop), Fr^0.3 at
+  // stride_froude, the shortest stance reach at reach_stance_height.
+  std::vector<float> target_offset;
+  float offsets_trot = -1.0f, offsets_gallop = -1.0f;
+  float stride_froude = -1.0f, stride_pow = 0.0f;
+  float reach_stance_height = NAN, min_reach_x = 0.0f;
+};
+
+// Froude, walk→run and gait blends, duty factor, stride, frequency and gait name for `speed`.
+// keep_run and keep_gait are the smoothing factors exp(-rate·dt) of the run and gait blends.
+void update_gait(const AnimRig& rig, const AnimatorParams& params, float speed, float keep_run, float keep_gait,
+                 GaitState& gait);
+
+// Leg `leg`'s phase offset for the gait blend: bipeds alternate; two pairs blend the
+// lateral-sequence walk, the trot (diagonal pairs) and the transverse gallop; more pairs
+// make a metachronal wave.
+float leg_phase_offset(const AnimRig& rig, int leg, float trot_factor, float gallop_factor);
+
+// gait.target_offset of every leg, when the gait blend moved.
+void update_target_offsets(const AnimRig& rig, GaitState& gait);
+
+// Starts the clock so that leg `lead`'s foot lifts now (its first step is half a stride).
+void start_clock(GaitState& gait, FootSet& feet, int lead);
+
+// Advances leg `leg`'s foot by one tick of the running clock: its offset eases towards the
+// target (interpolation speed `ism`), and it returns the foot's local phase and whether the
+// phase crossed the duty factor (lift-off is due). `starting`: the clock started this tick.
+struct LegPhase {
+  float phase = 0.0f;
+  bool lift_due = false;
+};
+LegPhase advance_leg_phase(const GaitState& gait, FootState& foot, float target_offset, bool starting, float ism, float dt);
+
+// Walk and run reference speeds (Froude 0.5 and 2.5), m/s.
+float walk_speed(const AnimRig& rig, const AnimatorParams& params);
+float run_speed(const AnimRig& rig, const AnimatorParams& params);
+
+}  // namespace anim
+}  // namespace ossa

@@ -1,0 +1,211 @@
+#include "ossa/anim/leg_ik.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "ossa/anim/anim_math.h"
+#include "ossa/math/two_bone_ik.h"
+
+namespace ossa::anim {
+
+namespace {
+
+// A rolled foot that would sweep into a step turns back by bisection in this many halvings.
+constexpr int kRollBisections = 6;
+constexpr int kTuckBisections = 6;
+// A swinging leg's escape path: lifted to at most this many leg lengths below the joint,
+// tucked this far under it, drawn back a foot's length plus this much of the leg.
+constexpr float kLiftBelowJointOfLeg = 0.3f;
+constexpr float kTuckBelowJointOfLeg = 0.45f;
+constexpr float kDrawBackOfLeg = 0.02f;
+
+// leg_ankle's rare part, out of line so that the common one stays small: turns a rolled foot
+// back until it clears the level; false if it already did.
+[[gnu::noinline]] bool limit_foot_roll(const AnimContext& ctx, const BodyFrame& body, int leg, glm::vec2 contact_fs,
+                                       glm::vec2* foot_dir) {
+  const RigLeg& info = ctx.rig.legs[leg];
+  const float F = info.foot_span;
+  auto clear = [&](glm::vec2 u) {
+    const glm::vec2 seg[2] = {body.to_ws(contact_fs - F * u), body.to_ws(contact_fs)};
+    return !polyline_hits_level(ctx.level, seg, 2, ctx.hits);
+  };
+  if (clear(*foot_dir)) return false;
+  const glm::vec2 rest = info.foot_dir_ms;
+  const float full = std::atan2(rest.x * foot_dir->y - rest.y * foot_dir->x, glm::dot(rest, *foot_dir));
+  float lo = 0.0f, hi = 1.0f;  // fractions of the roll: lo clears, hi does not
+  for (int k = 0; k < kRollBisections; ++k) {
+    const float mid = 0.5f * (lo + hi);
+    (clear(rotate(rest, mid * full)) ? lo : hi) = mid;
+  }
+  *foot_dir = lo > 0.0f ? rotate(rest, lo * full) : rest;
+  return true;
+}
+
+}  // namespace
+
+glm::vec2 leg_ankle(const AnimContext& ctx, const BodyFrame& body, int leg, glm::vec2 contact_fs, glm::vec2 joint_fs,
+                    bool level_aware, const Clearance& near, glm::vec2* foot_dir, bool* limited) {
+  // Hooves and toes roll: with the contact point c fixed, the ankle a(θ) = c - F·u(θ) lies on
+  // a circle of the foot's length F around it. The leg (joint j → ankle) reaches r, so
+  // |a - j| <= r, i.e. u(θ)·d >= q with d = c - j and q = (|d|² + F² - r²) / 2F: an arc of
+  // directions within β = acos(q / |d|) of d. The foot keeps its rest direction inside the
+  // arc and turns to the arc's nearer end outside it (into line with d when it is empty).
+  const RigLeg& info = ctx.rig.legs[leg];
+  *foot_dir = info.foot_dir_ms;
+  if (limited) *limited = false;
+  const float F = info.foot_span;
+  if (F <= 0.0f) return contact_fs;  // flat contact: the contact point is the ankle
+  const glm::vec2 d = contact_fs - joint_fs;
+  const float r = info.leg_reach;
+  const float dd = glm::dot(d, d);
+  const float q = (dd + F * F - r * r) / (2.0f * F);
+  if (glm::dot(d, info.foot_dir_ms) < q && dd > 1e-12f) {
+    const float len = std::sqrt(dd);
+    const glm::vec2 n = d / len;
+    const float cos_b = std::min(q / len, 1.0f);
+    const float sin_b = std::sqrt(std::max(1.0f - cos_b * cos_b, 0.0f));
+    // The side of d the rest direction lies on.
+    const float side = n.x * info.foot_dir_ms.y - n.y * info.foot_dir_ms.x >= 0.0f ? 1.0f : -1.0f;
+    *foot_dir = {cos_b * n.x - side * sin_b * n.y, side * sin_b * n.x + cos_b * n.y};
+    if (level_aware && *foot_dir != info.foot_dir_ms && !near.clear_above(std::min(contact_fs.y, contact_fs.y - F * foot_dir->y)) &&
+        limit_foot_roll(ctx, body, leg, contact_fs, foot_dir) && limited) {
+      *limited = true;
+    }
+  }
+  return contact_fs - F * *foot_dir;
+}
+
+glm::vec2 leg_anchor(const AnimContext& ctx, const BodyFrame& body, int leg, glm::vec2 contact_fs, glm::vec2 joint_fs,
+                     const Clearance& near, float* radius) {
+  glm::vec2 dir;
+  bool limited = false;
+  const glm::vec2 ankle = leg_ankle(ctx, body, leg, contact_fs, joint_fs, true, near, &dir, &limited);
+  if (!limited) {
+    *radius = ctx.rig.legs[leg].contact_reach;
+    return contact_fs;
+  }
+  *radius = kReachLimit * ctx.rig.legs[leg].reach;
+  return ankle;
+}
+
+bool stance_leg_hits(const AnimContext& ctx, const BodyFrame& body, int leg, const FootState& f, glm::vec2 joint_fs) {
+  const RigLeg& info = ctx.rig.legs[leg];
+  const glm::vec2 contact = body.to_fs(f.pos_ws);
+  glm::vec2 dir;
+  const glm::vec2 ankle = leg_ankle(ctx, body, leg, contact, joint_fs, true, f.stance_clear, &dir, nullptr);
+  const TwoBoneIkResult ik = solve_two_bone_ik_directions(joint_fs, info.upper, info.lower, ankle, info.bend);
+  const glm::vec2 tip = ik.end + info.foot_length * dir;
+  const glm::vec2 p[4] = {body.to_ws(joint_fs), body.to_ws(ik.middle), body.to_ws(ik.end), body.to_ws(tip)};
+  return polyline_hits_level(ctx.level, p, info.foot_length > 0.0f ? 4 : 3, ctx.hits);
+}
+
+bool LegIkJob::validate() const {
+  return ctx && body && feet && pose && model_fs && leg_dirs && feet->foot_of_leg.size() == ctx->rig.legs.size() &&
+         leg_dirs->size() == ctx->rig.legs.size() && model_fs->size() == static_cast<size_t>(ctx->rig.skeleton.bone_count());
+}
+
+bool LegIkJob::run() const {
+  if (!validate()) return false;
+  const AnimContext& c = *ctx;
+  const BodyFrame& b = *body;
+  std::vector<Mat2x3>& model = *model_fs;
+  for (size_t i = 0; i < c.rig.legs.size(); ++i) {
+    const int leg = static_cast<int>(i);
+    const RigLeg& info = c.rig.legs[i];
+    const FootState& f = feet->of_leg(leg);
+    const glm::vec2 joint = model[info.girdle_bone].apply(pose->locals[info.bones[0]].offset_ls);
+    glm::vec2 contact = b.to_fs(f.pos_ws);
+    if (f.state == LegState::kSwing) {
+      // A swinging foot out of reach below stays at the lowest point the leg reaches, right
+      // above its path, instead of being dragged along the line to it (into a step's corner).
+      const float r = info.contact_reach;
+      const float dx = contact.x - joint.x;
+      const float len = glm::length(contact - joint);
+      if (len > r && std::fabs(dx) < r && contact.y < joint.y) {
+        contact.y = joint.y - std::sqrt(r * r - dx * dx);
+      } else if (len > r) {  // out of reach to the side: towards it, as far as the leg reaches
+        contact = joint + (contact - joint) * (r / len);
+      }
+    }
+    glm::vec2 foot_dir;
+    const Clearance& near = f.state == LegState::kStance ? f.stance_clear : f.swing_clear;
+    glm::vec2 ankle = leg_ankle(c, b, leg, contact, joint, true, near, &foot_dir, nullptr);
+    if (f.state == LegState::kSwing) {
+      // The same for the ankle when the foot could not roll far enough.
+      const float r = info.leg_reach;
+      const float dx = ankle.x - joint.x;
+      if (glm::length(ankle - joint) > r && std::fabs(dx) < r && ankle.y < joint.y) {
+        ankle.y = joint.y - std::sqrt(r * r - dx * dx);
+      }
+      // A foot lifted closer to the joint than the leg folds (short legs, high swings) moves
+      // out sideways to where the folded leg reaches, not down through the ground.
+      const float fold = info.fold;
+      const glm::vec2 d = ankle - joint;
+      if (glm::dot(d, d) < fold * fold && std::fabs(d.y) < fold) {
+        ankle.x = joint.x + (d.x >= 0.0f ? 1.0f : -1.0f) * std::sqrt(fold * fold - d.y * d.y);
+      }
+    }
+    auto leg_ik = [&](glm::vec2 target) {  // directions only: the angles are for pose() (lazily)
+      return solve_two_bone_ik_directions(joint, info.upper, info.lower, target, info.bend);
+    };
+    TwoBoneIkResult ik = leg_ik(ankle);
+    if (f.state == LegState::kSwing) {
+      // A knee, shin or foot swinging into a step lifts the foot until the whole leg clears.
+      const float F = info.foot_length;  // ankle to toe (to the contact point, or along a flat foot)
+      glm::vec2 dir = foot_dir;  // the foot's direction for the candidate being tested
+      auto leg_hits = [&](const TwoBoneIkResult& r) {
+        const glm::vec2 tip = r.end + F * dir;
+        const glm::vec2 p[4] = {b.to_ws(joint), b.to_ws(r.middle), b.to_ws(r.end), b.to_ws(tip)};
+        return polyline_hits_level(c.level, p, F > 0.0f ? 4 : 3, c.hits);
+      };
+      // Candidates run from the planned ankle straight up, then in towards a tuck under the
+      // joint; the first (bisected) that clears wins.
+      const glm::vec2 up = glm::vec2(ankle.x, std::max(ankle.y, joint.y - kLiftBelowJointOfLeg * info.reach));
+      const glm::vec2 tuck = joint + glm::vec2(0.0f, -kTuckBelowJointOfLeg * info.reach);
+      // Last, drawn back from under the joint by a foot's length (a toe against a riser).
+      const glm::vec2 back = tuck - glm::vec2(F + kDrawBackOfLeg * info.reach, 0.0f);
+      // A lifted foot turns back from its roll to hang in its rest direction; drawn back, it
+      // folds up behind the ankle.
+      const glm::vec2 folded(-0.98f, 0.2f);
+      auto candidate = [&](float t) {  // t in [0, 3]: 0 planned, 1 lifted, 2 tucked, 3 back
+        const glm::vec2 a = t <= 1.0f   ? glm::mix(ankle, up, t)
+                            : t <= 2.0f ? glm::mix(up, tuck, t - 1.0f)
+                                        : glm::mix(tuck, back, t - 2.0f);
+        const glm::vec2 d = t <= 1.0f   ? glm::mix(foot_dir, info.foot_dir_ms, t)
+                            : t <= 2.0f ? info.foot_dir_ms
+                                        : glm::mix(info.foot_dir_ms, folded, t - 2.0f);
+        dir = d / std::max(glm::length(d), 1e-6f);
+        return leg_ik(a);
+      };
+      const float min_y = std::min({joint.y, ik.middle.y, ik.end.y, ik.end.y + F * foot_dir.y});
+      if (!near.clear_above(min_y) && leg_hits(ik)) {
+        float lo = 0.0f, hi = -1.0f;
+        for (float t : {1.0f, 2.0f, 3.0f}) {
+          if (!leg_hits(candidate(t))) {
+            hi = t;
+            break;
+          }
+          lo = t;
+        }
+        if (hi > 0.0f) {
+          for (int k = 0; k < kTuckBisections; ++k) {
+            const float mid = 0.5f * (lo + hi);
+            (leg_hits(candidate(mid)) ? lo : hi) = mid;
+          }
+          ik = candidate(hi);
+          foot_dir = dir;
+        }
+      }
+    }
+    (*leg_dirs)[i] = {ik.upper_dir, ik.lower_dir, foot_dir};
+    // The chain's matrices straight from the solution's directions (no trigonometry).
+    const Mat2x3 upper = frame_matrix(ik.upper_dir, joint);
+    const Mat2x3 lower = frame_matrix(ik.lower_dir, upper.apply(pose->locals[info.bones[1]].offset_ls));
+    model[info.bones[0]] = upper;
+    model[info.bones[1]] = lower;
+    model[info.bones[2]] = frame_matrix(foot_dir, lower.apply(pose->locals[info.bones[2]].offset_ls));
+  }
+  return true;
+}
+
+}  // namespace ossa::anim

@@ -1,0 +1,75 @@
+#include "ossa/anim/level_probe.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace ossa::anim {
+
+std::optional<GroundHit> ground_below(const Level& level, float x0, float x1, float from_y, float max_drop) {
+  return level.ground_height_below(std::min(x0, x1), std::max(x0, x1), from_y, std::max(max_drop, 0.0f));
+}
+
+bool polyline_hits_level(const Level& level, const glm::vec2* p, int n, std::vector<int>& hits) {
+  glm::vec2 lo = p[0], hi = p[0];
+  for (int i = 1; i < n; ++i) {
+    lo = glm::min(lo, p[i]);
+    hi = glm::max(hi, p[i]);
+  }
+  hits.clear();
+  level.overlapping(Box{lo, hi}, hits);
+  for (int h : hits) {
+    const Box& box = level.box(h);
+    for (int i = 0; i + 1 < n; ++i) {
+      const glm::vec2 a = p[i], b = p[i + 1];
+      float t0 = 0.0f, t1 = 1.0f;
+      bool inside = true;
+      for (int axis = 0; axis < 2 && inside; ++axis) {
+        const float lo_a = box.min_ws[axis] + 1e-3f, hi_a = box.max_ws[axis] - 1e-3f;
+        const float d = b[axis] - a[axis];
+        if (std::fabs(d) < 1e-9f) {
+          inside = a[axis] > lo_a && a[axis] < hi_a;
+        } else {
+          float u0 = (lo_a - a[axis]) / d, u1 = (hi_a - a[axis]) / d;
+          if (u0 > u1) std::swap(u0, u1);
+          t0 = std::max(t0, u0);
+          t1 = std::min(t1, u1);
+          inside = t0 < t1;
+        }
+      }
+      if (inside) return true;
+    }
+  }
+  return false;
+}
+
+float raise_to_clear(glm::vec2 a, glm::vec2 b, const Level& level, std::vector<int>& hits) {
+  // Over the part of the box's width the segment spans, its lowest point to the box's top.
+  hits.clear();
+  level.overlapping(Box{glm::min(a, b) - glm::vec2(1e-4f), glm::max(a, b) + glm::vec2(1e-4f)}, hits);
+  float need = 0.0f;
+  for (int h : hits) {
+    const Box& box = level.box(h);
+    const float lo = std::max(std::min(a.x, b.x), box.min_ws.x), hi = std::min(std::max(a.x, b.x), box.max_ws.x);
+    if (lo > hi) continue;
+    auto y_at = [&](float x) { return std::fabs(b.x - a.x) < 1e-6f ? std::min(a.y, b.y) : a.y + (b.y - a.y) * (x - a.x) / (b.x - a.x); };
+    const float y0 = y_at(lo), y1 = y_at(hi);
+    if (std::max(y0, y1) <= box.min_ws.y) continue;  // passes under it
+    need = std::max(need, box.top() - std::min(y0, y1));
+  }
+  return need;
+}
+
+Clearance clearance_in(const Box& region, float base, const Level& level, std::vector<int>& hits) {
+  Clearance c;
+  c.base = base;
+  c.top = -1e30f;
+  hits.clear();
+  level.overlapping(region, hits);
+  for (int h : hits) {
+    const float top = level.box(h).top();
+    if (top > base + 0.5e-3f) c.top = std::max(c.top, top);
+  }
+  return c;
+}
+
+}  // namespace ossa::anim

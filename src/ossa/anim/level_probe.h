@@ -1,0 +1,42 @@
+#pragma once
+// Level probes — the exact geometric questions the animator's stages ask of the level (the
+// ground profile answers the approximate ones): ground below a span, whether a polyline of
+// bones cuts a collider, how far a segment must rise to clear, and what may rise near a foot.
+// Inputs and outputs in world space (_ws), metres.
+
+#include <optional>
+#include <vector>
+
+#include <glm/common.hpp>
+#include <glm/geometric.hpp>
+#include <glm/vec2.hpp>
+
+#include "ossa/level/level.h"
+
+namespace ossa::anim {
+
+// Level::ground_height_below for spans and drops computed from a creature's proportions: any
+// body a genome may describe (a shoulder behind its girdle, a slack below zero) gives a span
+// in either order and a drop that may come out negative, which mean the same span and no drop.
+std::optional<GroundHit> ground_below(const Level& level, float x0, float x1, float from_y, float max_drop);
+
+// Does the polyline p[0] - p[1] - ... pass through the interior of a collider (shrunk by a
+// millimetre)? One query for its bounds, then a Liang-Barsky clip per segment and box.
+// `hits` is scratch.
+bool polyline_hits_level(const Level& level, const glm::vec2* p, int n, std::vector<int>& hits);
+
+// How far the segment a-b must rise (straight up) to leave every box it cuts.
+float raise_to_clear(glm::vec2 a, glm::vec2 b, const Level& level, std::vector<int>& hits);
+
+// What a limb near a foot can meet: colliders whose tops are at most `base` (the ground the
+// foot stands or steps on) and, above that, none higher than `top`. A limb entirely above
+// both meets nothing, so the level need not be asked. The default knows nothing.
+struct Clearance {
+  float base = -1e30f;  // world y, metres
+  float top = 1e30f;    // world y, metres
+  bool clear_above(float min_y) const { return min_y >= base - 0.5e-3f && min_y >= top + 1e-3f; }
+};
+// The clearance of the colliders in `region` above `base`.
+Clearance clearance_in(const Box& region, float base, const Level& level, std::vector<int>& hits);
+
+}  // namespace ossa::anim

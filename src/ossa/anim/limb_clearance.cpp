@@ -1,0 +1,207 @@
+#include "ossa/anim/limb_clearance.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "ossa/anim/anim_math.h"
+#include "ossa/math/two_bone_ik.h"
+
+namespace ossa::anim {
+
+namespace {
+
+constexpr size_t kMaxTailBones = 48;   // keep_tail_clear curls at most this many tail bones
+constexpr float kMaxTailCurl = 1.6f;   // radians over the tail's length
+constexpr size_t kMaxFinBones = 7;
+constexpr int kClearBisections = 6;
+constexpr int kFinBisections = 7;
+// An arm's hand keeps 1 cm plus this many hip heights above the ground.
+constexpr float kArmMargin = 0.01f;
+constexpr float kArmMarginOfHip = 0.02f;
+
+}  // namespace
+
+void keep_arm_above_ground(const AnimContext& ctx, const BodyFrame& body, const RigLimb& arm, const std::vector<Mat2x3>& model,
+                           Pose& pose) {
+  // Long arms of a low body would reach into the ground (or a ledge): lift the wrist with
+  // two-bone IK until elbow, wrist and hand clear the highest ground under the arm; an arm
+  // still in a step (a riser in front) folds towards the shoulder until it clears.
+  const Skeleton& sk = ctx.rig.skeleton;
+  const float l1 = sk.length(arm.bones[0]), l2 = sk.length(arm.bones[1]), l3 = sk.length(arm.bones[2]);
+  struct ArmPose {
+    glm::vec2 shoulder, elbow, wrist, tip;
+    float hand_abs, bend;
+  };
+  auto current = [&] {
+    const Mat2x3 upper = model[arm.girdle_bone] * local_matrix(pose.locals[arm.bones[0]]);
+    const Mat2x3 lower = upper * local_matrix(pose.locals[arm.bones[1]]);
+    const Mat2x3 hand = lower * local_matrix(pose.locals[arm.bones[2]]);
+    ArmPose p{bone_start(upper), bone_start(lower), bone_start(hand), bone_end(hand, l3), bone_angle(hand), 1.0f};
+    const glm::vec2 a = p.elbow - p.shoulder, b = p.wrist - p.shoulder;
+    p.bend = a.x * b.y - a.y * b.x > 0.0f ? 1.0f : -1.0f;  // keep the elbow's side
+    return p;
+  };
+  auto set_wrist = [&](const ArmPose& p, glm::vec2 target) {
+    const TwoBoneIkResult ik = solve_two_bone_ik(p.shoulder, l1, l2, target, p.bend);
+    pose.locals[arm.bones[0]].angle_ls = wrap_angle(ik.upper_angle - bone_angle(model[arm.girdle_bone]));
+    pose.locals[arm.bones[1]].angle_ls = ik.lower_angle;
+    pose.locals[arm.bones[2]].angle_ls = wrap_angle(p.hand_abs - (ik.upper_angle + ik.lower_angle));
+  };
+  for (int pass = 0; pass < 3; ++pass) {
+    const ArmPose p = current();
+    float x0 = 1e30f, x1 = -1e30f, low = 1e30f;
+    for (glm::vec2 q : {p.elbow, p.wrist, p.tip}) {
+      const float xw = body.to_ws(q).x;
+      x0 = std::min(x0, xw);
+      x1 = std::max(x1, xw);
+      low = std::min(low, q.y);
+    }
+    const auto ground = ground_below(ctx.level, x0, x1, p.shoulder.y, 100.0f);
+    const float margin = kArmMargin + kArmMarginOfHip * ctx.rig.hip_height;
+    if (!ground || low >= ground->height_ws + margin) break;
+    set_wrist(p, p.wrist + glm::vec2(0.0f, ground->height_ws + margin - low));
+  }
+  const ArmPose p = current();
+  auto hits = [&](const ArmPose& q) {
+    const glm::vec2 pts[4] = {body.to_ws(q.shoulder), body.to_ws(q.elbow), body.to_ws(q.wrist), body.to_ws(q.tip)};
+    return polyline_hits_level(ctx.level, pts, 4, ctx.hits);
+  };
+  if (!hits(p)) return;
+  // Tucked under the shoulder, else folded up in front of the chest, else up behind it: the
+  // first tuck that clears, approached only as far as needed. The hand keeps its direction,
+  // else (a long hand or flipper reaching into a step ahead) it trails back and down, else
+  // up behind; last, with the elbow bent the other way (a shoulder just above a tread, where
+  // any elbow bent down meets the tread).
+  const float tuck_len = std::max(std::fabs(l1 - l2) + 0.01f, 0.35f * (l1 + l2));
+  for (float bend : {p.bend, -p.bend}) {
+    for (float hand : {p.hand_abs, kPi + 0.3f, kPi - 0.8f}) {
+      ArmPose q = p;
+      q.hand_abs = hand;
+      q.bend = bend;
+      for (glm::vec2 dir : {glm::vec2(-1.0f, -0.3f), glm::vec2(0.4f, 1.0f), glm::vec2(-0.6f, 1.0f)}) {
+        const glm::vec2 tuck = q.shoulder + glm::normalize(dir) * tuck_len;
+        set_wrist(q, tuck);
+        if (hits(current())) continue;
+        float lo = 0.0f, hi = 1.0f;  // fractions of the way to the tuck: lo hits, hi clears
+        for (int k = 0; k < kClearBisections; ++k) {
+          const float mid = 0.5f * (lo + hi);
+          set_wrist(q, glm::mix(q.wrist, tuck, mid));
+          (hits(current()) ? lo : hi) = mid;
+        }
+        set_wrist(q, glm::mix(q.wrist, tuck, hi));
+        return;
+      }
+    }
+  }
+  set_wrist(p, p.shoulder + glm::normalize(glm::vec2(-1.0f, -0.3f)) * tuck_len);
+}
+
+float body_out_of_ground(const AnimContext& ctx, const BodyFrame& body, const std::vector<Mat2x3>& model, const Pose& pose) {
+  // A legless body's wave bends its spine, and the roots of its fins, arms and wings, below
+  // where body placement put them at rest: the whole body rises by the deepest into the
+  // ground. (A limb's root may hang far below its girdle: the ground is looked for from the
+  // girdle.)
+  float raise = 0.0f;
+  auto keep_out = [&](glm::vec2 p_fs, float from_y_fs) {
+    const glm::vec2 p = body.to_ws(p_fs);
+    const float from = body.to_ws({p_fs.x, std::max(from_y_fs, p_fs.y)}).y;
+    if (auto below = ground_below(ctx.level, p.x - 0.02f, p.x + 0.02f, from + ctx.rig.hip_height, 100.0f)) {
+      raise = std::max(raise, below->height_ws - p.y);
+    }
+  };
+  for (int b : ctx.rig.needed_bones) {
+    const glm::vec2 p = bone_start(model[b]);
+    keep_out(p, p.y);
+  }
+  for (const std::vector<RigLimb>* limbs : {&ctx.rig.arms, &ctx.rig.fins, &ctx.rig.wings}) {
+    for (const RigLimb& limb : *limbs) {
+      const Mat2x3& girdle = model[limb.girdle_bone];
+      keep_out(girdle.apply(pose.locals[limb.bones[0]].offset_ls), bone_start(girdle).y);
+    }
+  }
+  return raise;
+}
+
+void keep_tail_clear(const AnimContext& ctx, const BodyFrame& body, const std::vector<Mat2x3>& model, Pose& pose) {
+  // A tail hanging into a step (down a flight, or one rising behind) curls up from its root,
+  // the least that clears, up to kMaxTailCurl over its length. Only asked when ground rises
+  // to within a tail's length of its root.
+  const AnimRig& rig = ctx.rig;
+  Mat2x3 base = model[rig.tail_base_bone] * rig.tail_between_rest;
+  for (int b : rig.tail_between) base = base * local_matrix(pose.locals[b]);
+  const glm::vec2 root = body.to_ws(base.apply(pose.locals[rig.tail[0]].offset_ls));
+  const float len = rig.tail_length;
+  const auto ground = ground_below(ctx.level, root.x - len, root.x + len, root.y + len, 2.0f * len);
+  if (!ground || ground->height_ws < root.y - len) return;
+  const size_t n = std::min<size_t>(rig.tail.size(), kMaxTailBones);
+  glm::vec2 p[kMaxTailBones + 1];
+  auto hits = [&](float turn) {
+    Mat2x3 m = base;
+    for (size_t k = 0; k < n; ++k) {
+      BoneLocal local = pose.locals[rig.tail[k]];
+      local.angle_ls += turn / static_cast<float>(n);
+      m = m * local_matrix(local);
+      p[k] = body.to_ws(bone_start(m));
+      if (k + 1 == n) p[n] = body.to_ws(bone_end(m, rig.skeleton.length(rig.tail[k])));
+    }
+    return polyline_hits_level(ctx.level, p, static_cast<int>(n + 1), ctx.hits);
+  };
+  if (!hits(0.0f)) return;
+  // The turn that raises the tip first; a curled tail may need the other.
+  const float up = body.facing * (p[n].x - p[0].x) < 0.0f ? -1.0f : 1.0f;
+  float most = kMaxTailCurl * up;
+  if (hits(most) && !hits(-most)) most = -most;
+  float lo = 0.0f, hi = 1.0f;  // fractions of the most: lo hits, hi clears (or is the last resort)
+  for (int k = 0; k < kClearBisections; ++k) {
+    const float mid = 0.5f * (lo + hi);
+    (hits(mid * most) ? lo : hi) = mid;
+  }
+  for (size_t k = 0; k < n; ++k) pose.locals[rig.tail[k]].angle_ls += hi * most / static_cast<float>(n);
+}
+
+void keep_fin_clear(const AnimContext& ctx, const BodyFrame& body, const RigLimb& fin, const std::vector<Mat2x3>& model, Pose& pose) {
+  // A fin (or folded wing) trailing into the ground or a step turns up at its root until it
+  // clears.
+  const Skeleton& sk = ctx.rig.skeleton;
+  const size_t n = std::min<size_t>(fin.bones.size(), kMaxFinBones);
+  glm::vec2 p[kMaxFinBones + 1];
+  auto chain = [&] {  // facing space: the fin's joints and its tip
+    Mat2x3 m = model[fin.girdle_bone];
+    for (size_t k = 0; k < n; ++k) {
+      m = m * local_matrix(pose.locals[fin.bones[k]]);
+      p[k] = bone_start(m);
+      if (k + 1 == n) p[n] = bone_end(m, sk.length(fin.bones[k]));
+    }
+  };
+  auto hits = [&] {
+    chain();
+    glm::vec2 w[kMaxFinBones + 1];
+    for (size_t k = 0; k <= n; ++k) w[k] = body.to_ws(p[k]);
+    return polyline_hits_level(ctx.level, w, static_cast<int>(n + 1), ctx.hits);
+  };
+  if (n == 0 || !hits()) return;
+  const float base = pose.locals[fin.bones[0]].angle_ls;
+  const float up = p[n].x >= p[0].x ? 1.0f : -1.0f;  // the turn that raises the tip
+  // The least turn that clears, raising the tip first (up to a quarter turn), then either way
+  // in eighth turns up to three eighths (a step rising right in front of a folded wing).
+  float turn = 0.0f;
+  auto clears = [&](float t) {
+    pose.locals[fin.bones[0]].angle_ls = base + t;
+    return !hits();
+  };
+  for (float t : {0.5f * kPi * up, 0.25f * kPi * -up, 0.75f * kPi * up, 0.5f * kPi * -up, 0.75f * kPi * -up}) {
+    if (clears(t)) {
+      turn = t;
+      break;
+    }
+  }
+  if (turn == 0.0f) turn = 0.5f * kPi * up;  // nothing clears: the tip up, as before
+  float lo = 0.0f, hi = 1.0f;  // fractions of the turn: lo hits, hi clears (or is the last resort)
+  for (int k = 0; k < kFinBisections; ++k) {
+    const float mid = 0.5f * (lo + hi);
+    (clears(mid * turn) ? hi : lo) = mid;
+  }
+  pose.locals[fin.bones[0]].angle_ls = wrap_angle(base + hi * turn);
+}
+
+}  // namespace ossa::anim

@@ -1,0 +1,258 @@
+#include "ossa/anim/swing.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "ossa/anim/anim_math.h"
+#include "ossa/anim/animator_params.h"
+#include "ossa/anim/leg_ik.h"
+
+namespace ossa::anim {
+
+namespace {
+
+// Clearance the raised path keeps above a box, metres.
+constexpr float kSwingClearance = 0.01f;
+// A path that would have to rise more than this many leg-plus-foot lengths meets a wall.
+constexpr float kMaxRaiseOfLeg = 2.0f;
+constexpr int kRaiseIterations = 8;
+// Below this bump (near lift-off and touch-down) a needed raise counts as at this bump.
+constexpr float kMinBump = 0.1f;
+
+}  // namespace
+
+SwingShape step_shape(const SplinePrototypes& prototypes, float run_factor, float lift, float rate, bool easing) {
+  return {prototypes[PrototypeId::kLegSwingX].blended(run_factor), prototypes[PrototypeId::kLegSwingY].blended(run_factor),
+          lift, rate, easing};
+}
+
+SwingShape ease_shape(float ease_time) {
+  return {HermiteSpline({{0.0f, 0.0f, 1.0f}, {1.0f, 1.0f, 1.0f}}), HermiteSpline({{0.0f, 0.0f, 0.0f}, {1.0f, 0.0f, 0.0f}}), 0.0f,
+          1.0f / std::max(ease_time, 0.01f), true};
+}
+
+glm::vec2 swing_point(const FootState& f, float s) {
+  // The blended prototype shapes the step [T 4.4.1]; on steps the foot rises before it moves
+  // forward (up) or moves over before it descends (down), so it never clips a riser's corner.
+  const float up = f.to_ws.y - f.from_ws.y;
+  const float sx = up > 0.0f ? std::clamp((s - 0.12f) / 0.88f, 0.0f, 1.0f)
+                 : up < 0.0f ? std::clamp(s / 0.85f, 0.0f, 1.0f) : s;
+  const float ease = up >= 0.0f ? smoothstep(0.0f, 0.55f, s) : smoothstep(0.45f, 1.0f, s);
+  const float along = prototype_range(PrototypeId::kLegSwingX).clamp(f.swing_x.position(sx));
+  const float lift = prototype_range(PrototypeId::kLegSwingY).clamp(f.swing_y.position(s));
+  return {f.from_ws.x + along * (f.to_ws.x - f.from_ws.x),
+          f.from_ws.y + ease * up + f.lift * lift + (f.raise != 0.0f ? f.raise * bump(s) : 0.0f)};
+}
+
+void update_stance_clearance(const AnimContext& ctx, FootState& f) {
+  // Any leg's foot may stand here after a turn: the longest foot's circle around the contact,
+  // and as far as any leg reaches from it (the steps between a foot and its girdle).
+  const float r = ctx.rig.longest_foot_reach;
+  f.stance_clear = clearance_in(Box{f.pos_ws - glm::vec2(r), f.pos_ws + glm::vec2(r)}, f.pos_ws.y, ctx.level, ctx.hits);
+  const float reach = ctx.rig.longest_contact_reach;
+  f.stance_reach_clear =
+      clearance_in(Box{f.pos_ws - glm::vec2(reach, 0.0f), f.pos_ws + glm::vec2(reach)}, f.pos_ws.y, ctx.level, ctx.hits);
+}
+
+void update_swing_clearance(const AnimContext& ctx, int leg, FootState& f) {
+  // Everything the leg may sweep through on this swing: around the path, a leg's length
+  // to either side and two above.
+  const RigLeg& info = ctx.rig.legs[leg];
+  const float reach = info.reach + info.foot_span;
+  const glm::vec2 lo = glm::min(f.from_ws, f.to_ws), hi = glm::max(f.from_ws, f.to_ws);
+  f.swing_clear =
+      clearance_in(Box{lo - glm::vec2(1.5f * reach, reach), hi + glm::vec2(1.5f * reach, 2.0f * reach)}, lo.y, ctx.level, ctx.hits);
+}
+
+bool raise_for_clearance(const AnimContext& ctx, int facing, int leg, FootState& f) {
+  const RigLeg& info = ctx.rig.legs[leg];
+  const glm::vec2 ankle_rel = info.ankle_rel_ms;
+  const glm::vec2 tip_rel = info.tip_rel_ms;
+  // What rises near the path (kept: the leg IK tests the swinging leg against it too). When
+  // nothing rises above its lower end (flat ground, or down a slope), a coarse check that the
+  // curve stays above that suffices.
+  update_swing_clearance(ctx, leg, f);
+  if (f.swing_clear.top < f.swing_clear.base) {
+    const float lowest = std::min(f.from_ws.y, f.to_ws.y) - std::min(0.0f, ankle_rel.y);
+    bool above = true;
+    for (int k = 1; k < 12 && above; ++k) above = swing_point(f, static_cast<float>(k) / 12.0f).y >= lowest;
+    if (above) return true;
+  }
+  Box foot[kSwingSamples];
+  // A foot that stands pressed against a step (turned round on a narrow tread) only has to
+  // clear it once it has left it.
+  auto foot_box = [&](float s) {
+    const glm::vec2 p = swing_point(f, s);
+    const glm::vec2 q = p + glm::vec2(facing * ankle_rel.x, ankle_rel.y);
+    const glm::vec2 r = p + glm::vec2(facing * tip_rel.x, tip_rel.y);
+    // A little narrower than find_landing's test, so a landing it found clears at its end.
+    return Box{glm::min(glm::min(p, q), r) - glm::vec2(0.006f, 0.0f), glm::max(glm::max(p, q), r) + glm::vec2(0.006f, 0.005f)};
+  };
+  foot[0] = foot_box(0.0f);
+  std::vector<int>& hits = ctx.hits;
+  for (int iter = 0; iter < kRaiseIterations; ++iter) {
+    // The foot's box at each sample, then the colliders near the whole path in one query.
+    Box path{glm::vec2(1e30f), glm::vec2(-1e30f)};
+    for (int k = 1; k < kSwingSamples; ++k) {
+      foot[k] = foot_box(static_cast<float>(k) / kSwingSamples);
+      path.min_ws = glm::min(path.min_ws, foot[k].min_ws);
+      path.max_ws = glm::max(path.max_ws, foot[k].max_ws);
+    }
+    hits.clear();
+    ctx.level.overlapping(path, hits);
+    float need = 0.0f;
+    for (int h : hits) {
+      const Box& box = ctx.level.box(h);
+      int k = 1;
+      if (box.overlaps(foot[0])) {
+        while (k < kSwingSamples && box.overlaps(foot[k])) ++k;
+      }
+      for (; k < kSwingSamples; ++k) {
+        if (!box.overlaps(foot[k])) continue;
+        const float depth = box.top() + kSwingClearance - foot[k].min_ws.y;
+        need = std::max(need, depth / std::max(bump(static_cast<float>(k) / kSwingSamples), kMinBump));
+      }
+    }
+    if (need <= 0.0f) return true;
+    f.raise += need;
+    if (f.raise > kMaxRaiseOfLeg * (info.reach + info.foot_span)) break;  // a wall, not a step
+  }
+  return false;
+}
+
+bool begin_swing(const AnimContext& ctx, const BodyFrame& body, int leg, FootState& f, glm::vec2 to_ws, const SwingShape& shape) {
+  f.state = LegState::kSwing;
+  f.from_ws = f.pos_ws;
+  f.to_ws = to_ws;
+  f.swing_x = shape.swing_x;
+  f.swing_y = shape.swing_y;
+  f.lift = shape.lift;
+  f.raise = 0.0f;
+  f.progress = 0.0f;
+  f.rate = shape.rate;
+  f.easing = shape.easing;
+  return raise_for_clearance(ctx, body.facing, leg, f);
+}
+
+bool set_new_splines(const FootholdInputs& in, const SplinePrototypes& prototypes, float run_factor, float speed, int leg,
+                     FootState& f, float swing_phase) {
+  glm::vec2 landing;
+  if (!find_landing(in, leg, f.pos_ws, landing_x(in, leg, speed, swing_phase), &landing)) return false;
+  const float reach = in.ctx.rig.legs[leg].reach;
+  if (!begin_swing(in.ctx, in.body, leg, f, landing, step_shape(prototypes, run_factor, reach, 1.0f / std::max(swing_phase, 0.05f), false))) {
+    f.state = LegState::kStance;
+    f.to_ws = f.from_ws;
+    return false;
+  }
+  return true;
+}
+
+void start_ease(const FootholdInputs& in, int leg, FootState& f, const glm::vec2* to) {
+  glm::vec2 landing;
+  if (to) {
+    landing = *to;
+  } else if (!find_landing(in, leg, f.pos_ws, f.pos_ws.x, &landing)) {
+    landing = f.to_ws;
+  }
+  // Set down where the leg reaches from where the body stopped: drawn in towards the joint.
+  if (!to && !reaches(in, leg, landing)) {
+    const RigLeg& info = in.ctx.rig.legs[leg];
+    const glm::vec2 joint = in.body.to_fs(in.body.girdle_ws(in.ctx.rig, info.girdle));
+    const float reach = kFootReach * info.contact_reach;
+    const float h = joint.y - landing.y;
+    const float reach_x = 0.9f * std::sqrt(std::max(reach * reach - h * h, 0.0f));
+    const float dx = std::clamp(in.body.to_fs(landing).x - joint.x, -reach_x, reach_x);
+    glm::vec2 spot;
+    if (nearest_fit(in, leg, in.body.to_ws({joint.x + dx, landing.y}), &spot, true)) landing = spot;
+  }
+  begin_swing(in.ctx, in.body, leg, f, landing, ease_shape(in.ctx.params.stop_ease_time));
+}
+
+void step_to(const FootholdInputs& in, int leg, FootState& f, glm::vec2 spot) {
+  start_ease(in, leg, f, &spot);
+  // Already lifted on this tick: the first sample of a path cleared from the second on.
+  f.progress = 1.0f / static_cast<float>(kSwingSamples);
+  f.pos_ws = swing_point(f, f.progress);
+}
+
+namespace {
+
+// A step re-aims when its landing is more than this fraction of the stride beyond the wanted
+// one, until this much of the swing is done.
+constexpr float kReaimOfStride = 0.08f;
+constexpr float kReaimUntil = 0.9f;
+
+}  // namespace
+
+bool advance_swing(const FootholdInputs& in, const SwingTick& tick, int leg, FootState& f) {
+  const AnimContext& ctx = in.ctx;
+  const BodyFrame& body = in.body;
+  const int facing = body.facing;
+  if (f.easing) f.progress += f.rate * tick.dt;
+  if (!f.easing && f.progress < kReaimUntil && tick.moving) {
+    const float remaining = (1.0f - f.progress) / std::max(f.rate, 1e-3f);
+    const float wanted = landing_x(in, leg, tick.speed, remaining);
+    if (facing * (f.to_ws.x - wanted) > kReaimOfStride * in.stride) {
+      glm::vec2 landing;
+      if (find_landing(in, leg, f.pos_ws, wanted, &landing) && facing * (landing.x - f.to_ws.x) < 0.0f) {
+        const glm::vec2 old_to = f.to_ws;
+        const float old_raise = f.raise;
+        f.to_ws = landing;
+        if (!raise_for_clearance(ctx, facing, leg, f)) {  // keep the old landing
+          f.to_ws = old_to;
+          f.raise = old_raise;
+          update_swing_clearance(ctx, leg, f);
+        }
+      }
+    }
+  }
+  if (f.progress >= 1.0f && !foot_fits(in, leg, f.to_ws)) {
+    // Planned facing the other way (the creature turned meanwhile): the foot would reach into
+    // a step. It moves on to the nearest place it fits.
+    glm::vec2 spot;
+    if (nearest_fit(in, leg, f.to_ws, &spot, true) && glm::length(spot - f.to_ws) > 1e-4f) {
+      step_to(in, leg, f, spot);
+      return false;
+    }
+  }
+  if (f.progress >= 1.0f && !f.easing && tick.moving) {
+    // A foot stepping down further than the leg reaches from the still-high body waits above
+    // its landing point while the body comes down to it (body placement lowers the girdle).
+    const RigLeg& info = ctx.rig.legs[leg];
+    const glm::vec2 joint = body.to_fs(body.girdle_ws(ctx.rig, info.girdle));
+    float r;
+    const glm::vec2 anchor = leg_anchor(ctx, body, leg, body.to_fs(f.to_ws), joint, f.swing_clear, &r);
+    if (glm::length(anchor - joint) > r && std::fabs(anchor.x - joint.x) < r) {
+      if (f.hover < kMaxHoverSeconds) {
+        f.hover += tick.dt;
+        f.progress = 1.0f;
+        f.pos_ws = f.to_ws;
+        return false;
+      }
+      // The body did not come down in time (other feet hold it up): set the foot down on the
+      // nearest place below the joint it reaches instead, from where it hangs now.
+      glm::vec2 spot;
+      const glm::vec2 below_joint = body.to_ws({joint.x, f.to_ws.y});
+      if (nearest_fit(in, leg, below_joint, &spot) && reaches(in, leg, spot)) {
+        const float R = info.contact_reach;
+        const float dxj = body.to_fs(f.to_ws).x - joint.x;
+        f.pos_ws = body.to_ws({body.to_fs(f.to_ws).x, joint.y - std::sqrt(std::max(R * R - dxj * dxj, 0.0f))});
+        start_ease(in, leg, f, &spot);
+        f.hover = 0.0f;
+        return false;
+      }
+    }
+  }
+  if (f.progress >= 1.0f) {
+    f.hover = 0.0f;
+    f.state = LegState::kStance;
+    f.pos_ws = f.to_ws;
+    f.easing = false;
+    update_stance_clearance(ctx, f);
+    return true;
+  }
+  f.pos_ws = swing_point(f, std::clamp(f.progress, 0.0f, 1.0f));
+  return false;
+}
+
+}  // namespace ossa::anim

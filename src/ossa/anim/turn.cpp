@@ -1,0 +1,82 @@
+#include "ossa/anim/turn.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "ossa/anim/animator_params.h"
+#include "ossa/anim/swing.h"
+
+namespace ossa::anim {
+
+namespace {
+
+// A foot counts as in reach after the turn within this fraction of its leg's horizontal reach.
+constexpr float kTurnReachUse = 0.95f;
+// A leg stepping under its girdle after the turn lifts half a leg's length, over this many seconds.
+constexpr float kTurnStepLiftOfLeg = 0.5f;
+constexpr float kTurnStepSeconds = 0.3f;
+
+}  // namespace
+
+void turn_round(const AnimContext& ctx, const SplinePrototypes& prototypes, float run_factor, float stride, float duty,
+                BodyFrame& body, FootSet& feet) {
+  const AnimRig& rig = ctx.rig;
+  const int n = static_cast<int>(rig.girdles.size());
+  if (n > 0) {
+    std::vector<int> old = feet.foot_of_leg;
+    const float shift = rig.girdles.front().joint_ms.x + rig.girdles.back().joint_ms.x;
+    for (int g = 0; g < n; ++g) {
+      const RigGirdle& mine = rig.girdles[g];
+      const RigGirdle& other = rig.girdles[n - 1 - g];
+      for (size_t k = 0; k < mine.legs.size(); ++k) {
+        const int src = other.legs[std::min(k, other.legs.size() - 1)];
+        feet.foot_of_leg[mine.legs[k]] = old[src];
+      }
+    }
+    // Girdles of unequal size could map two legs to one foot; fall back to identity then.
+    std::vector<int> seen(feet.feet.size(), 0);
+    bool ok = true;
+    for (int f : feet.foot_of_leg) ok &= (seen[f]++ == 0);
+    if (!ok) feet.foot_of_leg = old;
+    body.x_ws += body.facing * shift;
+  }
+  body.facing = -body.facing;
+  body.lean = 0.0f;
+  const FootholdInputs in{ctx, body, stride, duty};
+  // Girdles spaced unevenly along the body (three leg pairs) cannot all land on feet: a leg
+  // whose foot (standing or in the air) is now out of reach lifts from the nearest foot on the
+  // ground it reaches and steps under its girdle. A foot in the air heading out of reach (to
+  // where the body was going) steps under its girdle from where it is.
+  for (size_t i = 0; i < rig.legs.size(); ++i) {
+    const int leg = static_cast<int>(i);
+    FootState& f = feet.of_leg(leg);
+    const RigLeg& info = rig.legs[i];
+    const float h = rig.girdles[info.girdle].rest_height * ctx.params.stance_height;
+    const float reach_x = kTurnReachUse * std::sqrt(std::max(info.contact_reach * info.contact_reach - h * h, 0.0f));
+    const float joint_x = body.girdle_ws(rig, info.girdle).x;
+    const bool foot_in_reach = std::fabs(f.pos_ws.x - joint_x) <= reach_x;
+    if (foot_in_reach && (f.state == LegState::kStance || std::fabs(f.to_ws.x - joint_x) <= reach_x)) continue;
+    if (!foot_in_reach) {  // from the nearest foot on the ground in reach, else from where it is
+      const FootState* from = nullptr;
+      for (const FootState& other : feet.feet) {
+        if (&other == &f || other.state != LegState::kStance || std::fabs(other.pos_ws.x - joint_x) > reach_x) continue;
+        if (!from || std::fabs(other.pos_ws.x - joint_x) < std::fabs(from->pos_ws.x - joint_x)) from = &other;
+      }
+      if (from) f.pos_ws = from->pos_ws;
+    }
+    glm::vec2 landing;
+    if (!find_landing(in, leg, f.pos_ws, joint_x, &landing)) landing = f.pos_ws;
+    begin_swing(ctx, body, leg, f, landing, step_shape(prototypes, run_factor, kTurnStepLiftOfLeg * info.reach, 1.0f / kTurnStepSeconds, true));
+  }
+  // Feet now point the other way: one that would reach into a step takes a quick step to the
+  // nearest place it fits (already lifted on this tick).
+  for (size_t i = 0; i < rig.legs.size(); ++i) {
+    const int leg = static_cast<int>(i);
+    FootState& f = feet.of_leg(leg);
+    if (f.state != LegState::kStance || foot_fits(in, leg, f.pos_ws)) continue;
+    glm::vec2 landing;
+    if (nearest_fit(in, leg, f.pos_ws, &landing, true)) step_to(in, leg, f, landing);
+  }
+}
+
+}  // namespace ossa::anim
