@@ -340,6 +340,21 @@ void keep_body_out_of_ground(Placement& p, float fell) {
   p.body.root_y_ws += raise;
 }
 
+// 6. The raising clamps (2, 3, 5) may stretch a stance leg again past its reach (a girdle over
+// a higher step lifts the body while another girdle's feet stand lower): such a foot lifts at
+// the next chance instead of sliding (the gait clock reads the hand-off).
+void release_overstretched_feet(Placement& p) {
+  const AnimRig& rig = p.ctx.rig;
+  for (size_t i = 0; i < rig.legs.size(); ++i) {
+    const FootState& f = p.feet.of_leg(static_cast<int>(i));
+    if (f.state != LegState::kStance) continue;
+    const glm::vec2 joint = p.body.to_fs(p.body.girdle_ws(rig, rig.legs[i].girdle));
+    float r;
+    const glm::vec2 anchor = leg_anchor(p.ctx, p.body, static_cast<int>(i), p.body.to_fs(f.pos_ws), joint, f.stance_clear, &r);
+    if (glm::length(anchor - joint) > r) p.handoff.lift_now[p.feet.foot_of_leg[i]] = 1;
+  }
+}
+
 }  // namespace
 
 // [SECTION] place_body --------------------------------------------------------------------------
@@ -380,6 +395,7 @@ void place_body(const AnimContext& ctx, const PlacementInputs& in, const FootSet
   keep_knees_off_ground(p, need, swing_up, room);
   pitch_for_front_shoulder(p);
   keep_body_out_of_ground(p, rig.girdles.empty() ? 0.0f : std::max(old_root - body.root_y_ws, 0.0f));
+  release_overstretched_feet(p);
   state.root_vy = in.dt > 0.0f ? (body.root_y_ws - old_root) / in.dt : 0.0f;
 }
 

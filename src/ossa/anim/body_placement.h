@@ -10,7 +10,9 @@
 //   3. keep_knees_off_ground       raise a girdle until each knee clears the ground (a
 //                                  swinging leg's knee only as far as 1. leaves room);
 //   4. pitch_for_front_shoulder    a single girdle's shoulder far ahead turns the body up;
-//   5. keep_body_out_of_ground     girdles, shoulders and folded wings stay above the ground.
+//   5. keep_body_out_of_ground     girdles, shoulders and folded wings stay above the ground;
+//   6. release_overstretched_feet  a stance leg the raising clamps stretched past its reach
+//                                  lifts at the next chance (TickHandoff::lift_now).
 //
 // Inputs: AnimContext, the feet, the gait, the bob; in/out: the body frame and BodyState.
 // Heights in world metres; angles radians.

@@ -12,11 +12,24 @@ namespace {
 
 // find_landing tries at most this many candidate spots.
 constexpr int kLandingCandidates = 600;
-// Candidates step by this fraction of the stride (shorter) and a quarter of it (longer), and
-// never by less than kMinLandingStep of the foot's length.
+// Candidates step back by this fraction of the stride (5 mm at least) and forward by a quarter
+// of that, from at most kShortestAheadOfStride behind the planned spot to kMaxLongerOfStride
+// beyond it.
 constexpr float kLandingStepOfStride = 0.025f;
 constexpr float kMaxLongerOfStride = 0.25f;
 constexpr float kShortestAheadOfStride = 0.05f;
+
+// Down a step the shin comes from above and behind: the ground within this fraction of the
+// girdle's rest height behind a landing must stay below the line rising at kShinSlope from
+// the foot, kRiserOfRest of the rest height (or the ankle's height, if more) above it. The
+// ground is read from the profile as a slope where it is a run of small steps (treads under
+// kSlopeTreadOfRest, rises under kSlopeRiseOfTread of that), so a tile hill is walked down
+// like a ramp, and a real step keeps its riser.
+constexpr float kRiserGapOfRest = 0.25f;
+constexpr float kRiserOfRest = 0.1f;
+constexpr float kShinSlope = 1.0f;
+constexpr float kSlopeTreadOfRest = 0.5f;
+constexpr float kSlopeRiseOfTread = 0.5f;
 
 // The foot's horizontal extent relative to its contact point, in world x (facing applied).
 struct FootSpan {
@@ -29,6 +42,32 @@ FootSpan foot_span_ws(const RigLeg& leg, int facing) {
 }
 // The height of the box a foot needs above its contact point.
 float foot_height(const RigLeg& leg) { return std::max({0.02f, leg.ankle_rel_ms.y, 0.3f * leg.foot_length}); }
+
+// Would a foot landing at height y with its back edge at `back` have the shin cut a riser
+// behind it?
+bool riser_behind(const FootholdInputs& in, const RigLeg& info, float rest_height, float back, float y, float up) {
+  const float gap = kRiserGapOfRest * rest_height;
+  const int behind = -in.body.facing;
+  const float lo = std::min(back, back + behind * gap), hi = std::max(back, back + behind * gap);
+  const GroundProfile& ground = in.ctx.ground;
+  if (!ground.covers(in.ctx.level, lo, hi, y, y + up)) {
+    // Outside the profile (a level edited under a standing creature is re-sampled on the next
+    // tick): no ground between a tread's height and a step above it.
+    return in.ctx.level.overlaps(Box{{lo, y + 0.02f}, {hi, y + up}});
+  }
+  const float tol = std::max(info.ankle_rel_ms.y, kRiserOfRest * rest_height);
+  const float tread = kSlopeTreadOfRest * rest_height;
+  const float rise = kSlopeRiseOfTread * tread;
+  const float step = ground.step();
+  for (int i = ground.column_of(lo), end = ground.column_of(hi); i <= end; ++i) {
+    if (std::isnan(ground.column(i))) continue;
+    const float x_lo = ground.x0() + static_cast<float>(i) * step;
+    const float d = std::max(0.0f, behind > 0 ? x_lo - back : back - (x_lo + step));
+    const float surface = ground.surface_line(x_lo + 0.5f * step, tread, rise);
+    if (surface > y + tol + kShinSlope * d) return true;
+  }
+  return false;
+}
 
 }  // namespace
 
@@ -115,9 +154,7 @@ bool find_landing(const FootholdInputs& in, int leg, glm::vec2 foot_ws, float x_
     // Down a step the shin comes from above and behind: keep the foot off the riser it steps
     // down from, or the shin cuts the step's edge.
     const float back = facing > 0 ? x + span_lo : x + span_hi;
-    const float gap = 0.25f * girdle.rest_height;
-    const Box behind{{std::min(back, back - facing * gap), y + 0.02f}, {std::max(back, back - facing * gap), y + up}};
-    if (k + 1 < kLandingCandidates && in.ctx.level.overlaps(behind)) continue;
+    if (k + 1 < kLandingCandidates && riser_behind(in, info, girdle.rest_height, back, y, up)) continue;
     *landing = {x, y};
     return true;
   }

@@ -72,6 +72,6 @@ bool advance_swing(const FootholdInputs& in, const SwingTick& tick, int leg, Foo
 inline constexpr float kMaxHoverSeconds = 0.5f;
 
 // The path is sampled this many times when checked against the level.
-inline constexpr int kSwingSamples = 48;
+inline constexpr int kSwingSamples = 96;
 
 }  // namespace ossa::anim

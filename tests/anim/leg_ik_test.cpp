@@ -1,0 +1,81 @@
+#include "ossa/anim/leg_ik.h"
+
+#include <catch2/catch.hpp>
+
+#include <cmath>
+
+#include "ossa/math/rng.h"
+#include "shared/level_scenes.h"
+#include "shared/scenes.h"
+#include "stage_scene.h"
+
+using namespace ossa;
+
+TEST_CASE("leg IK: a reachable foot keeps its rest angle, a far one rolls until the leg reaches", "[anim][ik]") {
+  const test::StageScene s(scenes::quadruped(), scenes::flat_level(40.0f), 10.0f);
+  const AnimRig& rig = *s.rig;
+  const anim::Clearance open;  // knows nothing: the level is asked
+  Rng rng(3);
+  for (size_t i = 0; i < rig.legs.size(); ++i) {
+    const RigLeg& leg = rig.legs[i];
+    REQUIRE(leg.foot_span > 0.0f);  // the horse stands on hoof tips
+    for (int k = 0; k < 200; ++k) {
+      const glm::vec2 joint(0.0f, rig.girdles[leg.girdle].rest_height);
+      const float angle = rng.uniform(-2.6f, -0.5f);
+      const float dist = rng.uniform(0.3f, 1.0f) * leg.contact_reach;
+      const glm::vec2 contact = joint + dist * glm::vec2(std::cos(angle), std::sin(angle));
+      glm::vec2 dir;
+      const glm::vec2 ankle = anim::leg_ankle(s.ctx, s.body, static_cast<int>(i), contact, joint, false, open, &dir, nullptr);
+      // The foot bone keeps its length and ends at the contact point.
+      CHECK(glm::length(contact - ankle) == Approx(leg.foot_span).epsilon(1e-4));
+      CHECK(glm::length(dir) == Approx(1.0f).epsilon(1e-4));
+      if (glm::length(contact + (-leg.foot_span) * leg.foot_dir_ms - joint) <= leg.leg_reach) {
+        CHECK(dir == leg.foot_dir_ms);  // in reach as it stands: no roll
+      } else {
+        CHECK(glm::length(ankle - joint) <= leg.leg_reach * 1.0001f);  // rolled just enough
+      }
+    }
+  }
+}
+
+TEST_CASE("leg IK job: every stance foot is reached, knees bend their way, both facings", "[anim][ik]") {
+  for (const Creature& c : {scenes::quadruped(), scenes::biped(), scenes::three_leg_pairs()}) {
+    for (int facing : {1, -1}) {
+      const test::StageScene s(c, scenes::flat_level(40.0f), 10.0f, facing);
+      const AnimRig& rig = *s.rig;
+      std::vector<Mat2x3> model = rig.model_rest;
+      Pose pose = rig.rest_pose;
+      // The body where the scene stands it (root at its standing height, level).
+      pose.locals[rig.root].offset_ls = {0.0f, s.body.root_y_ws};
+      const std::vector<Mat2x3> placed = model_matrices(rig.skeleton, pose.locals);
+      model = placed;
+      anim::FootSet feet;
+      feet.feet.resize(rig.legs.size());
+      for (size_t i = 0; i < rig.legs.size(); ++i) {
+        feet.foot_of_leg.push_back(static_cast<int>(i));
+        const glm::vec2 joint = s.body.to_ws(bone_start(placed[rig.legs[i].bones[0]]));
+        feet.feet[i].pos_ws = {joint.x + facing * 0.2f * rig.legs[i].reach, 0.0f};
+      }
+      std::vector<std::array<glm::vec2, 3>> dirs(rig.legs.size());
+      anim::LegIkJob job{&s.ctx, &s.body, &feet, &pose, &model, &dirs};
+      REQUIRE(job.validate());
+      REQUIRE(job.run());
+      for (size_t i = 0; i < rig.legs.size(); ++i) {
+        const RigLeg& leg = rig.legs[i];
+        const int b = leg.contact_bone;
+        const glm::vec2 reached = s.body.to_ws(bone_end(model[b], rig.skeleton.length(b)));
+        INFO(c.name << " facing " << facing << " leg " << i);
+        CHECK(glm::length(reached - feet.feet[i].pos_ws) < 1e-3f);
+        // The knee bends to the chain's side in facing space (mirrored in the world).
+        const glm::vec2 hip = bone_start(model[leg.bones[0]]), knee = bone_start(model[leg.bones[1]]),
+                        ankle = bone_start(model[leg.bones[2]]);
+        const float side = (knee.x - hip.x) * (ankle.y - hip.y) - (knee.y - hip.y) * (ankle.x - hip.x);
+        CHECK(side * leg.bend <= 1e-6f);
+      }
+      anim::LegIkJob incomplete = job;
+      incomplete.feet = nullptr;
+      CHECK_FALSE(incomplete.validate());
+      CHECK_FALSE(incomplete.run());
+    }
+  }
+}
