@@ -266,7 +266,12 @@ TEST_CASE("legless swimmers crawl with their fins and spine out of the ground", 
     REQUIRE(c.limbs.size() >= 2);
     Walker w = make_walker(c, rough, rough.spawn_ws + glm::vec2(0.0f, 1.0f));
     const SimResult r = run_script(*w.player, rough, script("walk:0.6:10,stop:1,walk:-0.6:5"), 120);
-    CHECK(r.x_reached > 0.0f);
+    REQUIRE(r.segments.size() == 3);
+    // They crawl: at least 90 % of the commanded distance out (10 s) and back (5 s).
+    const float speed = r.segments[0].commanded_speed;
+    REQUIRE(speed > 0.1f);
+    CHECK(r.x_max_m - rough.spawn_ws.x >= 0.9f * speed * 10.0f);
+    CHECK(r.x_max_m - r.x_reached >= 0.9f * speed * 5.0f);
     CHECK(r.probe.max_penetration_m <= 0.001f);  // fins are limbs: the probe measures them
     CHECK(r.probe.nan_count == 0);
   }
