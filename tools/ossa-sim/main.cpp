@@ -285,7 +285,9 @@ int main(int argc, char** argv) {
     out["max_penetration_m"] = probe.max_penetration_m;
     out["min_swing_clearance_m"] = probe.min_swing_clearance_m > 1e8f ? 0.0f : probe.min_swing_clearance_m;
     out["steps"] = a.steps();
-    out["x_reached"] = a.x();
+    out["x_reached"] = result.x_reached;  // the final x (SimResult::x_reached)
+    out["x_max_m"] = result.x_max_m;
+    out["blocked_s"] = result.blocked_s;
     out["hip_height_m"] = a.hip_height();
     out["nan_count"] = probe.nan_count;
     char hash[32];

@@ -62,6 +62,8 @@ SimResult run_script(Entity& entity, const Level& level, const std::vector<Scrip
   SimResult result;
   const float dt = 1.0f / static_cast<float>(tick_hz);
   long long tick = 0;
+  result.x_max_m = entity.animator().x();
+  int blocked_ticks = 0;
   for (const ScriptSegment& seg : script) {
     const Controls controls = seg.controls();
     SegmentMetrics m;
@@ -85,6 +87,8 @@ SimResult run_script(Entity& entity, const Level& level, const std::vector<Scrip
       result.update_seconds += std::chrono::duration<float>(std::chrono::steady_clock::now() - start).count();
       const Animator& a = entity.animator();
       result.probe.observe(a, level);
+      result.x_max_m = std::max(result.x_max_m, a.x());
+      blocked_ticks += a.blocked() ? 1 : 0;
       if (t == warmup) x_start = a.x();
       if (t > warmup) {
         stride += a.stride_length();
@@ -120,6 +124,7 @@ SimResult run_script(Entity& entity, const Level& level, const std::vector<Scrip
     result.segments.push_back(m);
   }
   result.x_reached = entity.animator().x();
+  result.blocked_s = static_cast<float>(blocked_ticks) * dt;
   result.steps = entity.animator().steps();
   return result;
 }

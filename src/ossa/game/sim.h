@@ -61,7 +61,15 @@ class SimProbe {
 struct SimResult {
   std::vector<SegmentMetrics> segments;
   SimProbe probe;
-  float x_reached = 0.0f;
+  float x_reached = 0.0f;   // m, world x of the root (Animator::x()) after the last tick: the
+                            // final x, not the furthest (a run that turns back ends short of it)
+  float x_max_m = 0.0f;     // m, the largest Animator::x() at the start or after any tick: how
+                            // far right (+x) the creature got. For a script that walks right
+                            // first (as ossa-sim's and the tests' do) this is the furthest point
+                            // from the spawn in its direction of travel, however far it came
+                            // back afterwards; a script that only goes left gives the start x
+  float blocked_s = 0.0f;   // s, simulated time with Animator::blocked() set after the tick
+                            // (ticks × 1 / tick_hz): stopped at a wall, a step or a gap
   int steps = 0;
   float update_seconds = 0.0f;  // wall time spent in Entity::step
 };

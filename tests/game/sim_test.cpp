@@ -1,0 +1,54 @@
+#include "ossa/game/sim.h"
+
+#include <catch2/catch.hpp>
+
+#include <memory>
+
+#include "ossa/game/player.h"
+#include "shared/level_scenes.h"
+#include "shared/scenes.h"
+
+using namespace ossa;
+
+namespace {
+
+SimResult run_horse(const Level& level, const char* text) {
+  auto creature = std::make_shared<const Creature>(scenes::quadruped());
+  Player player(creature, SplinePrototypes::defaults());
+  player.animator().reset({2.0f, 1.0f}, level);
+  return run_script(player, level, parse_script(text).value(), 120);
+}
+
+}  // namespace
+
+TEST_CASE("parse_script reads walk, run and stop segments and names the bad one", "[game][sim]") {
+  const auto ok = parse_script("walk:0.5:10,run:-1:6,stop:2");
+  REQUIRE(ok.ok());
+  REQUIRE(ok->size() == 3);
+  CHECK((*ok)[1].mode == "run");
+  CHECK((*ok)[1].stick == -1.0f);
+  CHECK((*ok)[2].controls().move_x == 0.0f);
+  const auto bad = parse_script("walk:0.5:1,fly:1:2");
+  REQUIRE_FALSE(bad.ok());
+  CHECK_THAT(bad.message(), Catch::Contains("segment 1"));
+}
+
+TEST_CASE("x_reached is the final x, x_max_m the furthest right, blocked_s the time at a wall", "[game][sim]") {
+  SECTION("there and back on flat ground: never blocked, ends short of its furthest point") {
+    const Level flat = scenes::flat_level(100.0f);
+    const SimResult r = run_horse(flat, "walk:0.5:4,stop:1,walk:-0.5:3");
+    CHECK(r.blocked_s == 0.0f);
+    CHECK(r.x_max_m > 5.0f);
+    CHECK(r.x_reached < r.x_max_m - 2.0f);
+  }
+  SECTION("into a wall: blocked most of the time, the furthest x in front of the wall") {
+    Level wall = scenes::flat_level(40.0f);
+    wall.add_box(Box::from_corner(8.0f, 0.0f, 0.5f, 3.0f));
+    const SimResult r = run_horse(wall, "walk:0.6:10");
+    CHECK(r.x_max_m < 8.0f);
+    CHECK(r.x_max_m > 5.0f);
+    CHECK(r.x_reached == r.x_max_m);  // it stopped where it got furthest
+    CHECK(r.blocked_s > 4.0f);
+    CHECK(r.blocked_s <= 10.0f);
+  }
+}
