@@ -22,14 +22,10 @@ constexpr float kShortestAheadOfStride = 0.05f;
 // Down a step the shin comes from above and behind: the ground within this fraction of the
 // girdle's rest height behind a landing must stay below the line rising at kShinSlope from
 // the foot, kRiserOfRest of the rest height (or the ankle's height, if more) above it. The
-// ground is read from the profile as a slope where it is a run of small steps (treads under
-// kSlopeTreadOfRest, rises under kSlopeRiseOfTread of that), so a tile hill is walked down
-// like a ramp, and a real step keeps its riser.
+// ground is read from the profile as a slope where it is a run of small steps (foothold.h),
+// so a tile hill is walked down like a ramp, and a real step keeps its riser.
 constexpr float kRiserGapOfRest = 0.25f;
-constexpr float kRiserOfRest = 0.1f;
 constexpr float kShinSlope = 1.0f;
-constexpr float kSlopeTreadOfRest = 0.5f;
-constexpr float kSlopeRiseOfTread = 0.5f;
 
 // The foot's horizontal extent relative to its contact point, in world x (facing applied).
 struct FootSpan {
@@ -57,7 +53,7 @@ bool riser_behind(const FootholdInputs& in, const RigLeg& info, float rest_heigh
   }
   const float tol = std::max(info.ankle_rel_ms.y, kRiserOfRest * rest_height);
   const float tread = kSlopeTreadOfRest * rest_height;
-  const float rise = kSlopeRiseOfTread * tread;
+  const float rise = kRiserOfRest * rest_height;
   const float step = ground.step();
   for (int i = ground.column_of(lo), end = ground.column_of(hi); i <= end; ++i) {
     if (std::isnan(ground.column(i))) continue;

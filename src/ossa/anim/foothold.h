@@ -41,6 +41,12 @@ bool nearest_fit(const FootholdInputs& in, int leg, glm::vec2 near_ws, glm::vec2
 // Does leg `leg` reach p_ws (within kFootReach of its reach) from where its girdle is now?
 bool reaches(const FootholdInputs& in, int leg, glm::vec2 p_ws);
 
+// How the ground profile is read for a girdle of rest height h: a run of treads narrower than
+// kSlopeTreadOfRest·h with rises no higher than kRiserOfRest·h is a slope (a tile hill); a
+// jump of more than kRiserOfRest·h in that reading is a riser (a flight of stairs is steps).
+inline constexpr float kSlopeTreadOfRest = 0.5f;
+inline constexpr float kRiserOfRest = 0.1f;
+
 // A foothold counts as in reach within this fraction of the leg's contact reach.
 inline constexpr float kFootReach = 0.97f;
 

@@ -64,10 +64,12 @@ float GroundProfile::surface_line(float x_ws, float tread, float riser) const {
   const int i = column_of(x_ws);
   const float y = heights_[i];
   if (std::isnan(y)) return y;
-  // The tread under x: the columns either side at the same height.
+  // The tread under x: the columns either side at the same height (walked no further than a
+  // tread may be wide).
+  const int most = static_cast<int>(tread / step_) + 1;
   int a = i, b = i;
-  while (a > 0 && heights_[a - 1] == y) --a;
-  while (b + 1 < size() && heights_[b + 1] == y) ++b;
+  while (a > 0 && heights_[a - 1] == y && b - a < most) --a;
+  while (b + 1 < size() && heights_[b + 1] == y && b - a < most) ++b;
   const float width = static_cast<float>(b - a + 1) * step_;
   if (width > tread) return y;
   const float mid = x0_ + (static_cast<float>(a + b + 1) * 0.5f) * step_;
@@ -77,12 +79,25 @@ float GroundProfile::surface_line(float x_ws, float tread, float riser) const {
   if (j < 0 || j >= size() || std::isnan(heights_[j]) || std::fabs(heights_[j] - y) > riser) return y;
   const float y2 = heights_[j];
   int c = j, d = j;
-  while (c > 0 && heights_[c - 1] == y2) --c;
-  while (d + 1 < size() && heights_[d + 1] == y2) ++d;
+  while (c > 0 && heights_[c - 1] == y2 && d - c < most) --c;
+  while (d + 1 < size() && heights_[d + 1] == y2 && d - c < most) ++d;
   if (static_cast<float>(d - c + 1) * step_ > tread) return y;
   const float mid2 = x0_ + (static_cast<float>(c + d + 1) * 0.5f) * step_;
+  if (std::fabs(y2 - y) > kMaxSlope * std::fabs(mid2 - mid)) return y;  // too steep: steps
   const float t = (x_ws - mid) / (mid2 - mid);
   return y + t * (y2 - y);
+}
+
+float GroundProfile::largest_jump(float a_ws, float b_ws, float tread, float riser) const {
+  if (a_ws > b_ws) std::swap(a_ws, b_ws);
+  float most = 0.0f;
+  float prev = surface_line(x0_ + (static_cast<float>(column_of(a_ws)) + 0.5f) * step_, tread, riser);
+  for (int i = column_of(a_ws) + 1, end = column_of(b_ws); i <= end; ++i) {
+    const float y = surface_line(x0_ + (static_cast<float>(i) + 0.5f) * step_, tread, riser);
+    if (!std::isnan(y) && !std::isnan(prev)) most = std::max(most, std::fabs(y - prev));
+    prev = y;
+  }
+  return most;
 }
 
 float GroundProfile::rise_above(float x_from, int dir, float length, float y0, float slope) const {

@@ -45,9 +45,16 @@ class GroundProfile {
 
   // The surface under x read as a slope: the height of the line through the middles of the
   // treads either side (a tread is a run of columns at one height), when the two treads are
-  // each narrower than `tread` metres and the rise between them below `riser` metres; else the
-  // column's own height (a real step keeps its riser). NaN over a gap.
+  // each narrower than `tread` metres, the rise between them at most `riser` metres and the
+  // line no steeper than kMaxSlope; else the column's own height (a real step, or a steep
+  // flight of small ones, keeps its risers). NaN over a gap.
+  static constexpr float kMaxSlope = 0.7f;  // rise over run, about 35°
   float surface_line(float x_ws, float tread, float riser) const;
+
+  // The largest jump (metres) between neighbouring columns over [a_ws, b_ws] of the surface
+  // read as a slope (surface_line with the same tread and riser): 0 on flat ground and on a
+  // tile slope read as a ramp, a riser's height at a real step; a gap counts as no jump.
+  float largest_jump(float a_ws, float b_ws, float tread, float riser) const;
 
   // The largest amount (metres, possibly negative) by which the ground over the columns from
   // x_from towards `dir` (±1) for `length` metres rises above the line y = y0 + slope·d, where
