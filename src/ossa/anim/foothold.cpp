@@ -54,6 +54,9 @@ bool riser_behind(const FootholdInputs& in, const RigLeg& info, float rest_heigh
   const float tol = std::max(info.ankle_rel_ms.y, kRiserOfRest * rest_height);
   const float tread = kSlopeTreadOfRest * rest_height;
   const float rise = kRiserOfRest * rest_height;
+  // A real riser behind (a step, not a slope's tile): no ground between the tread's height and
+  // a step above it, as the shin would cut its edge.
+  if (ground.largest_jump(lo, hi, tread, rise) > rise) return in.ctx.level.overlaps(Box{{lo, y + 0.02f}, {hi, y + up}});
   const float step = ground.step();
   for (int i = ground.column_of(lo), end = ground.column_of(hi); i <= end; ++i) {
     if (std::isnan(ground.column(i))) continue;
