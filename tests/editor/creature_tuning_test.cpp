@@ -117,7 +117,7 @@ TEST_CASE("creature panel: genome save/load, SVG export, variation and callbacks
 TEST_CASE("tuning: every field has a unit and a range holding its default; edits clamp and undo", "[editor]") {
   const AnimatorParams defaults;
   const auto fields = tuning_fields();
-  REQUIRE(fields.size() == 18);
+  REQUIRE(fields.size() == 21);
   for (const TuningField& f : fields) {
     INFO(f.name);
     REQUIRE(std::string(f.unit).size() > 0);

@@ -13,7 +13,7 @@ std::span<const TuningField> tuning_fields() {
   using P = AnimatorParams;
   // Ranges as documented in animator_params.h; the tail and crawl fields have none there,
   // so these are wide bounds around the defaults.
-  static const std::array<TuningField, 18> kFields = {{
+  static const std::array<TuningField, 21> kFields = {{
       {"step_distance_multiplier", "x stride", 0.3f, 2.0f, &P::step_distance_multiplier, "[T] scales the stride λ = 2.3·h·Fr^0.3"},
       {"interpolation_speed_multiplier", "x", 0.1f, 5.0f, &P::interpolation_speed_multiplier, "[T] how fast lean, height and gait blend ease"},
       {"max_spine_rotation", "rad", 0.0f, 0.6f, &P::max_spine_rotation, "[T] largest forward lean at full run"},
@@ -29,8 +29,11 @@ std::span<const TuningField> tuning_fields() {
       {"stop_ease_time", "s", 0.05f, 0.3f, &P::stop_ease_time, "time for swinging feet to set down after a stop"},
       {"tail_stiffness", "1/s^2", 1.0f, 400.0f, &P::tail_stiffness, "spring stiffness of the tail's follow-through"},
       {"tail_damping", "ratio", 0.0f, 2.0f, &P::tail_damping, "damping ratio of the tail"},
+      {"tail_max_swing", "rad", 0.0f, 1.5f, &P::tail_max_swing, "largest swing of the tail's spring"},
       {"crawl_amplitude", "rad/vertebra", 0.0f, 0.2f, &P::crawl_amplitude, "travelling wave of legless bodies"},
       {"crawl_waves", "waves/body", 0.25f, 4.0f, &P::crawl_waves, "waves along a legless body"},
+      {"fin_beat", "rad", 0.0f, 0.5f, &P::fin_beat, "amplitude of a fin's slow beat while moving"},
+      {"idle_period", "s", 0.5f, 10.0f, &P::idle_period, "period of the idle breathing"},
       {"gravity", "m/s^2", 1.0f, 30.0f, &P::gravity, "gravity of the Froude number"},
   }};
   return kFields;
