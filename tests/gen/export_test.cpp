@@ -1,6 +1,6 @@
 // Tests of the SVG and OBJ exporters (src/ossa/gen/export_svg.h, export_obj.h) on hand-built
-// creatures (tests/tools/hand_creature.h), and — when the example dataset and generator are
-// available — on all 44 examples.
+// creatures (scenes::hand_built_creature, tests/shared/hand_creature.cpp), and — when the
+// example dataset and generator are available — on all 44 examples.
 
 #include <catch2/catch.hpp>
 
@@ -15,7 +15,6 @@
 #include "ossa/gen/generator.h"
 #include "ossa/gen/skeleton_builder.h"
 #include "shared/scenes.h"
-#include "tools/hand_creature.h"
 #include "tools/xml_check.h"
 
 namespace ossa {
@@ -60,7 +59,7 @@ TEST_CASE("xml checker accepts well-formed and rejects broken documents", "[gen]
 
 TEST_CASE("hand-built creature stands on the ground", "[gen][svg]") {
   for (bool winged : {false, true}) {
-    const Creature c = test::hand_built_creature(winged);
+    const Creature c = scenes::hand_built_creature(winged);
     REQUIRE(c.skeleton.is_valid());
     const std::vector<Mat2x3> m = model_matrices(c.skeleton, c.rest_pose.locals);
     for (const Limb& limb : c.limbs) {
@@ -74,7 +73,7 @@ TEST_CASE("hand-built creature stands on the ground", "[gen][svg]") {
 TEST_CASE("creature SVG is well-formed, draws every bone and orders the layers", "[gen][svg]") {
   for (bool winged : {false, true}) {
     for (ContactMode contact : {ContactMode::kTip, ContactMode::kFlat}) {
-      const Creature c = test::hand_built_creature(winged, contact);
+      const Creature c = scenes::hand_built_creature(winged, contact);
       const std::string svg = creature_svg(c);
       INFO(c.name);
       CHECK(test::xml_error(svg).empty());
@@ -97,7 +96,7 @@ TEST_CASE("creature SVG is well-formed, draws every bone and orders the layers",
 }
 
 TEST_CASE("creature SVG viewBox contains every joint and the ground", "[gen][svg]") {
-  const Creature c = test::hand_built_creature();
+  const Creature c = scenes::hand_built_creature();
   const std::array<float, 4> vb = view_box(creature_svg(c));
   const std::vector<Mat2x3> m = model_matrices(c.skeleton, c.rest_pose.locals);
   for (int i = 0; i < c.skeleton.bone_count(); ++i) {
@@ -113,7 +112,7 @@ TEST_CASE("creature SVG viewBox contains every joint and the ground", "[gen][svg
 }
 
 TEST_CASE("creature SVG escapes names and survives non-finite bones", "[gen][svg]") {
-  Creature c = test::hand_built_creature();
+  Creature c = scenes::hand_built_creature();
   c.name = "<tiger & \"cat\"> 'x'";
   BoneLocal bad;
   bad.offset_ls = {std::numeric_limits<float>::quiet_NaN(), 0.0f};
@@ -136,9 +135,9 @@ TEST_CASE("creature SVG escapes names and survives non-finite bones", "[gen][svg
 
 TEST_CASE("sheet SVG is well-formed with one cell and one label per creature", "[gen][svg]") {
   std::vector<std::pair<std::string, Creature>> list;
-  list.emplace_back("Pferd & <horse>", test::hand_built_creature(false));
-  list.emplace_back("bird", test::hand_built_creature(true));
-  list.emplace_back("flat (Fu\xc3\x9f & <x>)", test::hand_built_creature(false, ContactMode::kFlat));
+  list.emplace_back("Pferd & <horse>", scenes::hand_built_creature(false));
+  list.emplace_back("bird", scenes::hand_built_creature(true));
+  list.emplace_back("flat (Fu\xc3\x9f & <x>)", scenes::hand_built_creature(false, ContactMode::kFlat));
   const std::string svg = sheet_svg(list, 2);
   CHECK(test::xml_error(svg).empty());
   CHECK(count_of(svg, "<svg") == 4);
@@ -151,7 +150,7 @@ TEST_CASE("sheet SVG is well-formed with one cell and one label per creature", "
 
 TEST_CASE("OBJ proxies: one box per bone with 8 vertices and 6 faces", "[gen][obj]") {
   for (bool winged : {false, true}) {
-    const Creature c = test::hand_built_creature(winged);
+    const Creature c = scenes::hand_built_creature(winged);
     const std::string obj = creature_obj(c);
     const int boxes = drawn_bones(c);
     CHECK(creature_obj_box_count(c) == boxes);

@@ -17,7 +17,6 @@
 #include "ossa/render/gltf_export.h"
 #include "ossa/skeleton/pose.h"
 #include "shared/scenes.h"
-#include "tools/hand_creature.h"
 
 namespace ossa {
 namespace {
@@ -87,7 +86,7 @@ void check_round_trip(const Creature& c, const std::string& path) {
 
 TEST_CASE("glTF export of a hand-built creature re-imports with its skeleton", "[gltf]") {
   for (bool winged : {false, true}) {
-    const Creature c = test::hand_built_creature(winged);
+    const Creature c = scenes::hand_built_creature(winged);
     const std::string path = temp_path(c.name + ".gltf");
     const Status st = export_gltf(c, path);
     INFO((st.ok() ? std::string() : st.message()));
@@ -97,7 +96,7 @@ TEST_CASE("glTF export of a hand-built creature re-imports with its skeleton", "
 }
 
 TEST_CASE("glTF export references the atlas only when it exists", "[gltf]") {
-  const Creature c = test::hand_built_creature();
+  const Creature c = scenes::hand_built_creature();
   const std::string atlas = temp_path("atlas.png");
   {
     std::FILE* f = std::fopen(atlas.c_str(), "wb");
@@ -125,14 +124,14 @@ TEST_CASE("glTF export references the atlas only when it exists", "[gltf]") {
 }
 
 TEST_CASE("glTF export fails cleanly on an unwritable path", "[gltf]") {
-  const Creature c = test::hand_built_creature();
+  const Creature c = scenes::hand_built_creature();
   const Status st = export_gltf(c, "/nonexistent-dir/x/y.gltf");
   REQUIRE_FALSE(st.ok());
   CHECK(st.message().find("/nonexistent-dir/x/y") != std::string::npos);
 }
 
 TEST_CASE("glTF export writes its buffer next to it and replaces files atomically", "[gltf]") {
-  const Creature c = test::hand_built_creature();
+  const Creature c = scenes::hand_built_creature();
   const std::string path = temp_path("atomic.gltf");
   const std::string bin = temp_path("atomic.bin");
   std::filesystem::remove(path);

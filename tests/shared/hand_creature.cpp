@@ -1,20 +1,18 @@
-#pragma once
-// A small hand-built Creature for the export tests (tests/gen/export_test.cpp and
-// tests/render/gltf_export_test.cpp): independent of the generator, so the exporters can be
-// tested on a known skeleton. A four-legged animal (or, with `winged`, a two-legged one with
-// wings) with root, neck, back and tail vertebrae, skull, ribs, scapulae, pelves and near/far
-// limbs, posed so that the feet touch y = 0.
+// scenes::hand_built_creature() (shared/scenes.h): a creature built bone by bone, independent
+// of the generator.
+
+#include "shared/scenes.h"
 
 #include <algorithm>
 #include <cmath>
-#include <vector>
 #include <string>
+#include <vector>
 
 #include "ossa/gen/creature.h"
 
-namespace ossa::test {
+namespace ossa::scenes {
 
-namespace hand_detail {
+namespace {
 
 struct Builder {
   Creature c;
@@ -37,13 +35,13 @@ struct Builder {
   }
 };
 
-}  // namespace hand_detail
+}  // namespace
 
 // Leg geometry: upper, lower, foot lengths and absolute angles chosen so that the foot tip of
 // every leg ends on y = 0 when the spine is at `height` (checked by the tests through FK).
-inline Creature hand_built_creature(bool winged = false, ContactMode contact = ContactMode::kTip) {
+Creature hand_built_creature(bool winged, ContactMode contact) {
   constexpr float kPi = 3.14159265f;
-  hand_detail::Builder b;
+  Builder b;
   Creature& c = b.c;
   c.name = winged ? "hand-bird" : "hand-quadruped";
   c.contact = contact;
@@ -164,4 +162,4 @@ inline Creature hand_built_creature(bool winged = false, ContactMode contact = C
   return c;
 }
 
-}  // namespace ossa::test
+}  // namespace ossa::scenes

@@ -40,4 +40,11 @@ Creature biped();
 Creature quadruped();
 Creature three_leg_pairs();
 
+// A small creature built bone by bone, independent of the generator, so the exporters can be
+// tested on a known skeleton (tests/gen/export_test.cpp, tests/render/gltf_export_test.cpp): a
+// four-legged animal (or, with `winged`, a two-legged one with wings) with root, neck, back and
+// tail vertebrae, skull, ribs, scapulae, pelves and near/far limbs, posed so that the feet touch
+// y = 0. Defined in shared/hand_creature.cpp.
+Creature hand_built_creature(bool winged = false, ContactMode contact = ContactMode::kTip);
+
 }  // namespace ossa::scenes
