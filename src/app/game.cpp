@@ -20,6 +20,7 @@
 
 #include "app/game_impl.h"
 #include "ossa/gen/skeleton_builder.h"
+#include "ossa/io/data_dir.h"
 #include "ossa/io/file.h"
 #include "ossa/level/level_io.h"
 #include "ossa/platform/input.h"
@@ -28,11 +29,6 @@ namespace ossa {
 
 // ---- [SECTION] paths and loading ------------------------------------------------------------
 
-std::string ossa_source_dir() {
-  const char* env = std::getenv("OSSA_SOURCE_DIR");
-  return env && *env ? env : OSSA_SOURCE_DIR;
-}
-
 std::string resolve_data_path(const std::string& path) {
   std::error_code ec;
   if (path.empty() || std::filesystem::exists(path, ec) || std::filesystem::path(path).is_absolute()) return path;
@@ -40,7 +36,7 @@ std::string resolve_data_path(const std::string& path) {
   if (const size_t hash = path.rfind('#'); hash != std::string::npos && hash > 0) {
     return resolve_data_path(path.substr(0, hash)) + path.substr(hash);
   }
-  const std::string in_tree = ossa_source_dir() + "/" + path;
+  const std::string in_tree = data_path(path);
   return std::filesystem::exists(in_tree, ec) ? in_tree : path;
 }
 

@@ -130,8 +130,7 @@ class Game {
 };
 
 // Path resolution shared with main: `path` as given when it exists, else relative to the
-// source tree ($OSSA_SOURCE_DIR or the compiled-in one).
+// data folder (data_path(), ossa/io/data_dir.h: $OSSA_SOURCE_DIR or the compiled-in source tree).
 std::string resolve_data_path(const std::string& path);
-std::string ossa_source_dir();
 
 }  // namespace ossa

@@ -17,6 +17,7 @@
 
 #include "ossa/gen/generator.h"
 #include "ossa/gen/skeleton_builder.h"
+#include "ossa/io/data_dir.h"
 #include "ossa/platform/window.h"
 #include "ossa/render/creature_batch.h"
 #include "ossa/render/gl.h"
@@ -31,11 +32,6 @@ using namespace ossa;
 
 constexpr int kCreatures = 1000;
 constexpr int kWidth = 640, kHeight = 360;
-
-std::string source_dir() {
-  const char* env = std::getenv("OSSA_SOURCE_DIR");
-  return env && *env ? env : OSSA_SOURCE_DIR;
-}
 
 // One GL context, renderer, atlas and a batch of 1000 creatures (20 examples and random
 // creatures mixed) with their world matrices, built once per process.
@@ -61,10 +57,10 @@ struct Scene {
     auto r = Renderer::create(default_shader_dir());
     if (!r.ok()) return;
     renderer = std::make_unique<Renderer>(std::move(r.value()));
-    const std::string dir = source_dir() + "/assets/sprites/bones";
+    const std::string dir = data_path("assets/sprites/bones");
     auto set = load_sprite_set(dir + "/sprites.json");
     atlas = std::make_unique<Atlas>(Atlas::build(set.ok() ? set.value() : default_sprite_set(), dir));
-    auto gen = Generator::load(source_dir() + "/assets/creatures/examples.json");
+    auto gen = Generator::load(data_path("assets/creatures/examples.json"));
     if (!gen.ok()) return;
     for (const char* name : {"horse", "kangaroo", "giraffe", "pig", "red deer"}) {
       if (auto g = gen->example(name, 1); g.ok()) {

@@ -5,6 +5,7 @@
 #include <filesystem>
 #include <fstream>
 
+#include "ossa/io/data_dir.h"
 #include "ossa/io/file.h"
 #include "ossa/level/level_io.h"
 #include "ossa/math/rng.h"
@@ -211,7 +212,7 @@ TEST_CASE("level editor: hot reload picks up outside changes, keeps state on par
 TEST_CASE("level editor: Open reads Tiled and LDtk files, Save never writes over them", "[editor]") {
   Fixture f;
   const fs::path dir = temp_dir("tiled_open");
-  const std::string src = std::string(OSSA_SOURCE_DIR) + "/tests/level/data/";
+  const std::string src = ossa::data_path("tests/level/data/");
   // Copies, so that a wrong save could not touch the fixtures.
   for (const char* name : {"tiles_zlib.tmx", "terrain.tsx", "world.ldtk"}) fs::copy_file(src + name, dir / name);
   const std::string tmx = (dir / "tiles_zlib.tmx").string();

@@ -19,13 +19,14 @@
 #include "ossa/game/sim.h"
 #include "ossa/gen/generator.h"
 #include "ossa/gen/skeleton_builder.h"
+#include "ossa/io/data_dir.h"
 #include "ossa/level/level_io.h"
 
 namespace {
 
 std::shared_ptr<const ossa::Creature> horse() {
   static const std::shared_ptr<const ossa::Creature> creature = [] {
-    auto generator = ossa::Generator::load(std::string(OSSA_SOURCE_DIR) + "/assets/creatures/examples.json");
+    auto generator = ossa::Generator::load(ossa::data_path("assets/creatures/examples.json"));
     if (!generator.ok()) {
       std::fprintf(stderr, "fuzz_sim: %s\n", generator.message().c_str());
       std::abort();

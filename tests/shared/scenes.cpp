@@ -1,14 +1,10 @@
 #include "shared/scenes.h"
 
-#include <cstdlib>
+#include "ossa/io/data_dir.h"
 
 namespace ossa::scenes {
 
-std::string source_path(const std::string& relative) {
-  const char* env = std::getenv("OSSA_SOURCE_DIR");
-  std::string root = env && *env ? env : OSSA_SOURCE_DIR;
-  return root + "/" + relative;
-}
+std::string source_path(const std::string& relative) { return data_path(relative); }
 
 }  // namespace ossa::scenes
 

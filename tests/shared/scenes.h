@@ -6,8 +6,9 @@
 
 namespace ossa::scenes {
 
-// Absolute path of a file in the source tree (levels/, assets/, tests/...). Uses the
-// OSSA_SOURCE_DIR environment variable when set (CTest sets it), else the compiled-in one.
+// Absolute path of a file in the source tree (levels/, assets/, tests/...): data_path()
+// (ossa/io/data_dir.h), the OSSA_SOURCE_DIR environment variable when set (CTest sets it),
+// else the compiled-in source tree.
 std::string source_path(const std::string& relative);
 
 }  // namespace ossa::scenes

@@ -19,6 +19,7 @@
 #include "ossa/gen/export_svg.h"
 #include "ossa/gen/generator.h"
 #include "ossa/gen/skeleton_builder.h"
+#include "ossa/io/data_dir.h"
 #include "ossa/io/file.h"
 #include "ossa/io/json.h"
 #include "ossa/render/gltf_export.h"
@@ -165,11 +166,6 @@ Args parse_args(int argc, char** argv) {
   return a;
 }
 
-std::string source_dir() {
-  const char* env = std::getenv("OSSA_SOURCE_DIR");
-  return env && *env ? env : OSSA_SOURCE_DIR;
-}
-
 // "F.creature.json" → "F-3.creature.json"; "F.svg" → "F-3.svg" (suffix before the extension).
 std::string numbered(const std::string& path, int index, int total) {
   if (total <= 1) return path;
@@ -254,7 +250,7 @@ int fail(const std::string& message) {
 
 int run(const Args& a) {
   const std::string dataset_path =
-      a.dataset ? *a.dataset : source_dir() + "/assets/creatures/examples.json";
+      a.dataset ? *a.dataset : data_path("assets/creatures/examples.json");
   std::optional<Generator> generator;
   if (a.example || a.random || a.stats || a.sheet || a.variations) {
     Result<Generator> g = Generator::load(dataset_path);
@@ -339,7 +335,7 @@ int run(const Args& a) {
 
   const int total = static_cast<int>(genomes.size());
   Json summaries = Json::array();
-  const std::string atlas = source_dir() + "/assets/sprites/bones/atlas.png";
+  const std::string atlas = data_path("assets/sprites/bones/atlas.png");
   for (int k = 0; k < total; ++k) {
     const Genome& genome = genomes[static_cast<size_t>(k)];
     Result<Creature> built = build_creature(genome);

@@ -33,6 +33,7 @@
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
 
+#include "ossa/io/data_dir.h"
 #include "ossa/io/file.h"
 #include "ossa/io/json.h"
 #include "ossa/math/transform2d.h"
@@ -525,7 +526,7 @@ int run(const std::filesystem::path& dir) {
 // [SECTION] main
 
 int main(int argc, char** argv) {
-  std::filesystem::path out = std::filesystem::path(OSSA_SOURCE_DIR) / "assets" / "characters";
+  std::filesystem::path out = data_path("assets/characters");
   for (int i = 1; i < argc; ++i) {
     const std::string a = argv[i];
     if (a == "--out" && i + 1 < argc) {

@@ -16,6 +16,7 @@
 #include "ossa/gen/generator.h"
 #include "ossa/gen/genome.h"
 #include "ossa/gen/skeleton_builder.h"
+#include "ossa/io/data_dir.h"
 #include "ossa/level/level_io.h"
 #include "ossa/platform/window.h"
 #include "ossa/render/capture.h"
@@ -65,11 +66,6 @@ struct Args {
 [[noreturn]] void fail(const std::string& message) {
   std::fprintf(stderr, "ossa-render: %s\n", message.c_str());
   std::exit(1);
-}
-
-std::string source_dir() {
-  const char* env = std::getenv("OSSA_SOURCE_DIR");
-  return env && *env ? env : OSSA_SOURCE_DIR;
 }
 
 long parse_int(const std::string& flag, const std::string& text, long lo, long hi) {
@@ -145,7 +141,7 @@ Creature make_creature(const Args& a) {
     if (!g.ok()) fail(g.message());
     genome = std::move(g.value());
   } else {
-    auto generator = Generator::load(source_dir() + "/assets/creatures/examples.json");
+    auto generator = Generator::load(data_path("assets/creatures/examples.json"));
     if (!generator.ok()) fail(generator.message());
     if (a.example) {
       auto g = generator->example(*a.example, a.seed);

@@ -23,6 +23,7 @@
 #include "ossa/game/sim.h"
 #include "ossa/game/player.h"
 #include "ossa/game/world.h"
+#include "ossa/io/data_dir.h"
 #include "ossa/io/file.h"
 #include "ossa/level/level_io.h"
 
@@ -48,11 +49,6 @@ const char* kUsage = R"(usage: ossa-sim (--example NAME | --creature F.creature.
   --trace F.csv    per-tick foot and girdle positions
   --svg F.svg      a strobe of the creature over the level
 )";
-
-std::string source_dir() {
-  const char* env = std::getenv("OSSA_SOURCE_DIR");
-  return env && *env ? env : OSSA_SOURCE_DIR;
-}
 
 [[noreturn]] void fail(const std::string& message) {
   std::fprintf(stderr, "ossa-sim: %s\n", message.c_str());
@@ -178,14 +174,14 @@ int main(int argc, char** argv) {
   Result<std::vector<ScriptSegment>> script = parse_script(*args.script);
   if (!script) fail(script.message());
 
-  const std::string level_path = args.level ? *args.level : source_dir() + "/levels/default.json";
+  const std::string level_path = args.level ? *args.level : data_path("levels/default.json");
   LevelLoadOptions level_options;
   level_options.pixels_per_metre = args.pixels_per_metre;
   Result<Level> level = load_level(level_path, level_options);
   if (!level) fail(level.message());
 
   SplinePrototypes prototypes = SplinePrototypes::defaults();
-  const std::string proto_path = args.prototypes ? *args.prototypes : source_dir() + "/assets/animation/prototypes.json";
+  const std::string proto_path = args.prototypes ? *args.prototypes : data_path("assets/animation/prototypes.json");
   if (args.prototypes || std::ifstream(proto_path).good()) {
     Result<SplinePrototypes> p = load_prototypes(proto_path);
     if (!p) fail(p.message());
@@ -198,7 +194,7 @@ int main(int argc, char** argv) {
     if (!g) fail(g.message());
     genome = *g;
   } else {
-    Result<Generator> gen = Generator::load(source_dir() + "/assets/creatures/examples.json");
+    Result<Generator> gen = Generator::load(data_path("assets/creatures/examples.json"));
     if (!gen) fail(gen.message());
     if (args.example) {
       Result<Genome> g = gen->example(*args.example);

@@ -6,6 +6,7 @@
 #include <cstddef>
 #include <span>
 
+#include "ossa/io/data_dir.h"
 #include "ossa/render/creature_batch.h"
 #include "ossa/render/debug_draw.h"
 #include "ossa/render/gl.h"
@@ -46,16 +47,7 @@ Box Camera2D::visible_box() const {
   return {center_ws - h, center_ws + h};
 }
 
-std::string default_shader_dir() {
-  if (const char* env = std::getenv("OSSA_SOURCE_DIR"); env && *env) {
-    return std::string(env) + "/shaders";
-  }
-#ifdef OSSA_SOURCE_DIR
-  return std::string(OSSA_SOURCE_DIR) + "/shaders";
-#else
-  return "shaders";
-#endif
-}
+std::string default_shader_dir() { return data_path("shaders"); }
 
 Result<Renderer> Renderer::create(const std::string& dir) {
   Renderer r;

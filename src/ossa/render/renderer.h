@@ -61,7 +61,7 @@ struct DrawStats {
   int bones = 0;
 };
 
-// The shader folder: $OSSA_SOURCE_DIR/shaders, else the compiled-in source tree's.
+// The shader folder: data_path("shaders") (ossa/io/data_dir.h).
 std::string default_shader_dir();
 
 class Renderer {

@@ -13,6 +13,7 @@
 #include <stb_rect_pack.h>
 #pragma GCC diagnostic pop
 
+#include "ossa/io/data_dir.h"
 #include "ossa/render/gl.h"
 
 namespace ossa {
@@ -92,16 +93,7 @@ Atlas Atlas::load(const std::string& sprite_dir) {
   return build(sprites, sprite_dir);
 }
 
-std::string default_sprite_dir() {
-  if (const char* env = std::getenv("OSSA_SOURCE_DIR"); env && *env) {
-    return std::string(env) + "/assets/sprites/bones";
-  }
-#ifdef OSSA_SOURCE_DIR
-  return std::string(OSSA_SOURCE_DIR) + "/assets/sprites/bones";
-#else
-  return "assets/sprites/bones";
-#endif
-}
+std::string default_sprite_dir() { return data_path("assets/sprites/bones"); }
 
 Atlas Atlas::build(const SpriteSet& sprites, const std::string& sprite_dir) {
   constexpr int kPadding = 2;  // pixels between sprites, so linear filtering does not bleed

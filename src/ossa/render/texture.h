@@ -58,8 +58,7 @@ struct Atlas {
   static Atlas load(const std::string& sprite_dir);
 };
 
-// The bone sprite folder: $OSSA_SOURCE_DIR/assets/sprites/bones, else the compiled-in source
-// tree's (like default_shader_dir()).
+// The bone sprite folder: data_path("assets/sprites/bones") (ossa/io/data_dir.h).
 std::string default_sprite_dir();
 
 }  // namespace ossa
