@@ -1,14 +1,16 @@
 // Benchmarks for src/ossa/math (see bench_main.cpp for the ratio table).
-//  ik:ossa            TwoBoneIkJob::run with angles (the form forward kinematics uses: both
-//                     angles plus joint positions, bone directions and `reached`)
-//  ik_positions:ossa  the same job with compute_angles = false (positions + directions only)
-//  ik:reference, ik_positions:reference
-//                     a naive law-of-cosines solver: atan2 for the target direction, acos for
-//                     both triangle angles, then cos/sin of both absolute bone angles to build
-//                     the joint positions — the same outputs (angles, positions, directions,
-//                     reached). A positions-only naive solver still needs all of that trig.
-//  hermite:ossa/…     HermiteSpline::position (branchless binary search), 8 keys
-//  hermite:reference/… a linear scan over the keys per evaluation, same Hermite formula
+//  ik:ossa              TwoBoneIkJob::run with compute_angles = false: joint positions and
+//                       bone directions (the two bone matrices, what skinning needs) and `reached`
+//  ik_with_angles:ossa  the same job with compute_angles = true: also both joint angles (the
+//                       form forward kinematics and Pose use)
+//  ik:reference, ik_with_angles:reference
+//                       a naive law-of-cosines solver: atan2 for the target direction, acos for
+//                       both triangle angles, then cos/sin of both absolute bone angles to build
+//                       the joint positions — all the outputs, angles included. It is the
+//                       reference of both rows: a naive solver needs all that trig for the
+//                       positions alone.
+//  hermite:ossa/…       HermiteSpline::position (branchless binary search), 8 keys
+//  hermite:reference/…  a linear scan over the keys per evaluation, same Hermite formula
 // Every benchmark runs over the same pre-generated batch of 1024 inputs per iteration.
 
 #include "ossa/math/hermite.h"

@@ -29,7 +29,8 @@
 // multiplication. The angles, needed by forward kinematics, cost two branch-free fast_atan2
 // (math/angle.h); compute_angles = false skips them. tests/bench/math_bench.cpp measures both
 // forms per solve against a naive solver (atan2 + two acos, then cos/sin of both bones) with
-// the same outputs: "ik" (angles + positions, the form FK uses) and "ik_positions".
+// the same outputs: "ik" (positions + directions, compute_angles = false) and
+// "ik_with_angles" (angles too, the form FK uses).
 //
 // Range: any finite float input gives a finite result; the triangle is solved in double, so
 // millimetre and kilometre chains are equally accurate. The 1e-5 tolerance is relative to the
