@@ -1,6 +1,10 @@
 // main() for ossa-bench: runs every benchmark, then prints, for each benchmark named
 // "<group>:ossa<args>" with a partner "<group>:reference<args>", the ratio of their CPU times.
 // A ratio below 1 means ossa is faster than the reference.
+//
+// With --benchmark_repetitions=N the table uses each benchmark's median over the repetitions
+// (Google Benchmark's "_median" aggregate row), so it works with
+// --benchmark_report_aggregates_only=true too; without repetitions, the single run.
 
 #include <benchmark/benchmark.h>
 
@@ -12,8 +16,17 @@
 
 namespace {
 
+// CPU time per iteration, ns, of one benchmark: the median aggregate when there is one, else
+// the mean aggregate, else the mean of the per-repetition rows.
 struct Timing {
-  double cpu_ns = 0.0;
+  double median_ns = -1.0;
+  double mean_ns = -1.0;
+  double run_sum_ns = 0.0;
+  int runs = 0;
+
+  bool known() const { return median_ns >= 0.0 || mean_ns >= 0.0 || runs > 0; }
+  double cpu_ns() const { return median_ns >= 0.0 ? median_ns : mean_ns >= 0.0 ? mean_ns : run_sum_ns / runs; }
+  const char* source() const { return median_ns >= 0.0 ? "median" : mean_ns >= 0.0 ? "mean" : runs > 1 ? "mean" : "run"; }
 };
 
 class RatioReporter : public benchmark::ConsoleReporter {
@@ -21,8 +34,14 @@ class RatioReporter : public benchmark::ConsoleReporter {
   void ReportRuns(const std::vector<Run>& runs) override {
     ConsoleReporter::ReportRuns(runs);
     for (const Run& r : runs) {
-      if (r.run_type != Run::RT_Iteration || r.error_occurred) continue;
-      const std::string name = r.benchmark_name();
+      if (r.error_occurred) continue;
+      const bool aggregate = r.run_type == Run::RT_Aggregate;
+      if (aggregate && (r.aggregate_unit != benchmark::kTime ||
+                        (r.aggregate_name != "median" && r.aggregate_name != "mean"))) {
+        continue;  // stddev, cv, user statistics
+      }
+      // run_name: the name without the "_median" / "_mean" suffix of aggregate rows.
+      const std::string name = r.run_name.str();
       const size_t colon = name.find(':');
       if (colon == std::string::npos) continue;
       const size_t variant_end = name.find('/', colon);
@@ -36,20 +55,28 @@ class RatioReporter : public benchmark::ConsoleReporter {
                          : r.time_unit == benchmark::kMicrosecond ? 1e3
                          : r.time_unit == benchmark::kMillisecond ? 1e6
                                                                   : 1e9);
-      timings_[key][variant].cpu_ns = ns;
+      Timing& t = timings_[key][variant];
+      if (!aggregate) {
+        t.run_sum_ns += ns;
+        ++t.runs;
+      } else if (r.aggregate_name == "median") {
+        t.median_ns = ns;
+      } else {
+        t.mean_ns = ns;
+      }
       if (std::find(order_.begin(), order_.end(), key) == order_.end()) order_.push_back(key);
     }
   }
 
   void PrintRatios() const {
-    std::printf("\n%-48s %14s %14s %9s\n", "benchmark", "ossa", "reference", "ratio");
+    std::printf("\n%-48s %14s %14s %9s  %s\n", "benchmark", "ossa", "reference", "ratio", "of");
     for (const std::string& key : order_) {
       const auto& variants = timings_.at(key);
       auto ours = variants.find("ossa");
       auto ref = variants.find("reference");
-      if (ours == variants.end() || ref == variants.end()) continue;
-      std::printf("%-48s %11.1f ns %11.1f ns %9.3f\n", key.c_str(), ours->second.cpu_ns,
-                  ref->second.cpu_ns, ours->second.cpu_ns / ref->second.cpu_ns);
+      if (ours == variants.end() || ref == variants.end() || !ours->second.known() || !ref->second.known()) continue;
+      std::printf("%-48s %11.1f ns %11.1f ns %9.3f  %s\n", key.c_str(), ours->second.cpu_ns(),
+                  ref->second.cpu_ns(), ours->second.cpu_ns() / ref->second.cpu_ns(), ours->second.source());
     }
   }
 
