@@ -9,8 +9,9 @@
 //                       the joint positions — all the outputs, angles included. It is the
 //                       reference of both rows: a naive solver needs all that trig for the
 //                       positions alone.
-//  hermite:ossa/…       HermiteSpline::position (branchless binary search), 8 keys
-//  hermite:reference/…  a linear scan over the keys per evaluation, same Hermite formula
+//  hermite:ossa/…       HermiteSpline::position (inline, hermite.h), 8 keys
+//  hermite:reference/…  a linear scan from the first key per evaluation and the textbook Hermite
+//                       basis
 // Every benchmark runs over the same pre-generated batch of 1024 inputs per iteration.
 
 #include "ossa/math/hermite.h"

@@ -64,6 +64,34 @@ TEST_CASE("Hermite: matches a linear-scan reference everywhere", "[math][hermite
   }
 }
 
+TEST_CASE("Hermite: short (scanned) and long (binary-searched) splines pick the same segment", "[math][hermite]") {
+  // Up to 16 keys the segment search is a forward scan, beyond it a binary search: either way
+  // the value at t equals, bit for bit, the two-key spline of the segment that holds t, on the
+  // keys themselves, between them, at both ends and for NaN.
+  Rng rng(14);
+  for (int c = 0; c < 300; ++c) {
+    const HermiteSpline s = random_spline(rng, rng.uniform_int(2, 60));
+    const auto& k = s.keys;
+    const std::size_t n = k.size();
+    auto segment_value = [&](std::size_t i, float t, bool velocity) {
+      const HermiteSpline two({k[i], k[i + 1]});
+      return velocity ? two.velocity(t) : two.position(t);
+    };
+    for (std::size_t i = 0; i + 1 < n; ++i) {
+      INFO(n << " keys, segment " << i);
+      const float inside = static_cast<float>(rng.uniform(k[i].t, k[i + 1].t));
+      for (float t : {k[i].t, inside}) {
+        if (!(t < k[i + 1].t)) continue;
+        REQUIRE(s.position(t) == segment_value(i, t, false));
+        REQUIRE(s.velocity(t) == segment_value(i, t, true));
+      }
+    }
+    CHECK(s.position(k.back().t + 1.0f) == segment_value(n - 2, k.back().t, false));
+    CHECK(s.position(k.front().t - 1.0f) == segment_value(0, k.front().t, false));
+    CHECK(s.position(std::numeric_limits<float>::quiet_NaN()) == k.front().p);
+  }
+}
+
 TEST_CASE("Hermite: C1 across interior keys, velocity is dp/dt", "[math][hermite]") {
   Rng rng(13);
   for (int c = 0; c < 500; ++c) {
