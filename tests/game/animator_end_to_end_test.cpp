@@ -335,7 +335,7 @@ TEST_CASE("turning around moves no foot more than 5 cm and keeps knees bending t
   }
 }
 
-TEST_CASE("bipeds running have a flight phase; walking has none", "[game][anim]") {
+TEST_CASE("bipeds running have a flight phase, walking has none", "[game][anim]") {
   const Level flat = scenes::flat_level(300.0f);
   Walker w = make_walker(scenes::biped(), flat, {2.0f, 1.0f});
   const SimResult r = run_script(*w.player, flat, script("walk:0.4:6,run:1:6"), 120);
@@ -362,7 +362,7 @@ TEST_CASE("quadrupeds walk, trot and gallop by Froude number", "[game][anim]") {
   CHECK(a.stride_length() > 1.5f * walk_stride);
 }
 
-TEST_CASE("a wall stops the walker at its face; a gap too wide stops it at the edge", "[game][anim]") {
+TEST_CASE("a wall stops the walker at its face, a gap too wide stops it at the edge", "[game][anim]") {
   Level wall_level = scenes::flat_level(60.0f);
   wall_level.add_box(Box::from_corner(12.0f, 0.0f, 0.5f, 3.0f));
   Walker w = make_walker(scenes::quadruped(), wall_level, {2.0f, 1.0f});
