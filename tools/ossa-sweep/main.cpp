@@ -28,6 +28,7 @@
 #include "ossa/gen/generator.h"
 #include "ossa/gen/skeleton_builder.h"
 #include "ossa/game/player.h"
+#include "ossa/io/data_dir.h"
 #include "ossa/io/file.h"
 #include "ossa/io/json.h"
 #include "ossa/level/level_io.h"
@@ -62,10 +63,6 @@ const char* kUsage = R"(usage: ossa-sweep [--slopes-check] [--level F]... [--exa
   --json OUT.json  every run's figures
 )";
 
-std::string source_dir() {
-  const char* env = std::getenv("OSSA_SOURCE_DIR");
-  return env && *env ? env : OSSA_SOURCE_DIR;
-}
 
 [[noreturn]] void fail(const std::string& message) {
   std::fprintf(stderr, "ossa-sweep: %s\n", message.c_str());
@@ -127,15 +124,15 @@ struct Setup {
 Setup load_setup(const Args& args) {
   Setup s;
   std::vector<std::string> paths = args.levels;
-  if (paths.empty() && args.slopes_check) paths.push_back(source_dir() + "/levels/slopes.json");
+  if (paths.empty() && args.slopes_check) paths.push_back(data_path("levels/slopes.json"));
   if (paths.empty()) {
     std::error_code ec;
-    for (const auto& entry : std::filesystem::directory_iterator(source_dir() + "/levels", ec)) {
+    for (const auto& entry : std::filesystem::directory_iterator(data_path("levels"), ec)) {
       if (entry.path().extension() == ".json") paths.push_back(entry.path().string());
     }
-    if (ec) fail(source_dir() + "/levels: " + ec.message());
+    if (ec) fail(data_path("levels") + ": " + ec.message());
     std::sort(paths.begin(), paths.end());
-    if (paths.empty()) fail(source_dir() + "/levels: no level files");
+    if (paths.empty()) fail(data_path("levels") + ": no level files");
   }
   for (const std::string& path : paths) {
     Result<Level> level = load_level(path);
@@ -143,13 +140,13 @@ Setup load_setup(const Args& args) {
     s.levels.push_back(std::move(*level));
     s.level_names.push_back(std::filesystem::path(path).filename().string());
   }
-  const std::string proto_path = source_dir() + "/assets/animation/prototypes.json";
+  const std::string proto_path = data_path("assets/animation/prototypes.json");
   if (std::ifstream(proto_path).good()) {
     Result<SplinePrototypes> p = load_prototypes(proto_path);
     if (!p) fail(p.message());
     s.prototypes = *p;
   }
-  Result<Generator> gen = Generator::load(source_dir() + "/assets/creatures/examples.json");
+  Result<Generator> gen = Generator::load(data_path("assets/creatures/examples.json"));
   if (!gen) fail(gen.message());
   std::vector<std::string> names = args.examples;
   if (names.empty()) {

@@ -55,14 +55,16 @@ Animator::Animator(const Creature& creature, std::shared_ptr<const AnimRig> rig,
   }
   handoff_.lift_now.assign(legs, 0);
   leg_dirs_.resize(legs);
+  // Which of the creature's limbs each rig leg drives (the rig knows bones, not limbs).
+  leg_limb_.assign(legs, 0);
+  for (size_t i = 0; i < legs; ++i) {
+    for (size_t l = 0; l < creature.limbs.size(); ++l) {
+      if (creature.limbs[l].bones == rig_->legs[i].bones) leg_limb_[i] = static_cast<int>(l);
+    }
+  }
 }
 
-const Limb& Animator::leg_limb(int leg) const {
-  for (const Limb& limb : creature_->limbs) {
-    if (limb.bones == rig_->legs[leg].bones) return limb;
-  }
-  return creature_->limbs.front();
-}
+const Limb& Animator::leg_limb(int leg) const { return creature_->limbs[leg_limb_[leg]]; }
 
 // ---- Output ---------------------------------------------------------------------------------
 

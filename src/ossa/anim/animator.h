@@ -140,6 +140,7 @@ class Animator {
 
   const Creature* creature_;
   std::shared_ptr<const AnimRig> rig_;
+  std::vector<int> leg_limb_;        // per leg: its index in creature().limbs
   SplinePrototypes spline_prototypes_;
   AnimatorParams params_;
 

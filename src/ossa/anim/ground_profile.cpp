@@ -100,18 +100,5 @@ float GroundProfile::largest_jump(float a_ws, float b_ws, float tread, float ris
   return most;
 }
 
-float GroundProfile::rise_above(float x_from, int dir, float length, float y0, float slope) const {
-  float most = -1e30f;
-  const int i0 = column_of(x_from), i1 = column_of(x_from + static_cast<float>(dir) * length);
-  for (int i = std::min(i0, i1), end = std::max(i0, i1); i <= end; ++i) {
-    const float y = heights_[i];
-    if (std::isnan(y)) continue;
-    // The column's nearest point to x_from.
-    const float lo = x0_ + static_cast<float>(i) * step_, hi = lo + step_;
-    const float d = std::max(0.0f, dir > 0 ? lo - x_from : x_from - hi);
-    most = std::max(most, y - (y0 + slope * d));
-  }
-  return most;
-}
 
 }  // namespace ossa

@@ -56,12 +56,6 @@ class GroundProfile {
   // tile slope read as a ramp, a riser's height at a real step; a gap counts as no jump.
   float largest_jump(float a_ws, float b_ws, float tread, float riser) const;
 
-  // The largest amount (metres, possibly negative) by which the ground over the columns from
-  // x_from towards `dir` (±1) for `length` metres rises above the line y = y0 + slope·d, where
-  // d is the distance from x_from. A shin coming down at `slope` behind a foot clears the
-  // ground when this is below zero.
-  float rise_above(float x_from, int dir, float length, float y0, float slope) const;
-
  private:
   std::vector<float> heights_;
   float x0_ = 0.0f, step_ = 1.0f, top_ = 0.0f, depth_ = 0.0f;
