@@ -47,7 +47,8 @@ const char* prototype_name(PrototypeId id);
 // The values each prototype may take, in its own unit (see above). The loader and the spline
 // editor keep keys inside it, and the animator clamps the evaluated value to it (tangents can
 // overshoot between keys), so no accepted prototype can break the walk: the stance feet stay
-// planted within 1 mm however the keys are set (tests/anim/spline_prototypes_test.cpp).
+// planted within 1 mm however the keys are set (tests/game/animator_end_to_end_test.cpp,
+// "prototypes at the loader's limits").
 //   leg_swing_x [-0.5, 1.5]  the foot may reach past its landing and come back;
 //   leg_swing_y [0, 1]       a foot never dips below the line from lift-off to touch-down;
 //   pelvis_y, idle_y [-0.0625, 0.0625] leg lengths: a bob the stance legs can always follow;
