@@ -8,6 +8,7 @@
 #include "ossa/game/player.h"
 #include "ossa/game/sim.h"
 #include "ossa/io/file.h"
+#include "ossa/io/json.h"
 #include "ossa/level/ldtk.h"
 #include "ossa/level/level_io.h"
 #include "ossa/level/level_load.h"
@@ -253,6 +254,13 @@ TEST_CASE("malformed Tiled maps fail naming the file, the layer and the expectat
   CHECK_THAT(r.message(), Catch::Contains("m.tmj: tilesets[0].source: external tileset: ") && Catch::Contains("missing.tsx"));
   // XML: not XML, not a map, a bad number.
   CHECK_THAT(load_error("<map><layer", "x.tmx"), Catch::Contains("x.tmx: not valid XML at byte"));
+  // A name with bytes that are not UTF-8 (found by the fuzzer: saving it threw).
+  CHECK(load_error("<map orientation=\"orthogonal\">\n<properties><property name=\"name\" value=\"o\x9d\xfets\"/></properties></map>",
+                   "x.tmx") == "x.tmx: not valid UTF-8 at byte 73 (line 2); save the map as UTF-8");
+  CHECK(first_invalid_utf8("plain \xc3\xa9t\xc3\xa9 \xf0\x9f\x90\x8e") == std::string_view::npos);
+  CHECK(first_invalid_utf8("ab\xc0\xaf") == 2);      // overlong '/'
+  CHECK(first_invalid_utf8("a\xed\xa0\x80") == 1);  // a UTF-16 surrogate
+  CHECK(first_invalid_utf8("ab\xe2\x82") == 2);      // cut short
   CHECK_THAT(load_error("<tileset/>", "x.tmx"), Catch::Contains("expected a Tiled map (root element <map>), got <tileset>"));
   CHECK_THAT(load_error(R"(<map orientation="orthogonal" width="2" height="2" tilewidth="32" tileheight="32"><layer name="g" width="two" height="2"><data encoding="csv">1,1,1,1</data></layer></map>)", "x.tmx"),
              Catch::Contains("x.tmx: layers[0].width: expected a number, got \"two\""));

@@ -31,6 +31,12 @@ std::string json_path(std::string_view parent, size_t index);
 // show 0.9 rather than 0.8999999761581421 and still load back to the same float.
 double json_float(float value);
 
+// The byte offset of the first byte that is not part of a well-formed UTF-8 sequence
+// (overlong forms, surrogates and code points past U+10FFFF count as ill-formed), or
+// std::string_view::npos when all of `text` is UTF-8. JSON text must be UTF-8: strings from
+// other sources (XML attributes) are checked with this before they go into a Json.
+size_t first_invalid_utf8(std::string_view text);
+
 // A short description of a value for messages: `a string "abc"`, `-2`, `an array`.
 std::string describe_json(const Json& value);
 

@@ -152,9 +152,11 @@ struct Tileset {
 };
 
 struct Importer {
+  explicit Importer(JsonReader reader) : r(std::move(reader)) {}
+
   JsonReader r;
-  double ppm;
-  double map_h_px;
+  double ppm = 1.0;
+  double map_h_px = 0.0;
   std::vector<Box> boxes;
   std::optional<glm::vec2> spawn;
   std::string spawn_path;
@@ -499,7 +501,9 @@ Result<Level> import_tiled_json(const Json& map, std::string_view file, const Ti
                                 LevelLoadReport* report) {
   OSSA_ASSERT(options.pixels_per_metre > 0.0f && std::isfinite(options.pixels_per_metre),
               "TiledOptions::pixels_per_metre must be > 0");
-  Importer im{JsonReader{std::string(file)}, options.pixels_per_metre, 0.0, {}, {}, {}, {}, false, &options, 0.0, 0.0, {}, 0, 0};
+  Importer im{JsonReader{std::string(file)}};
+  im.ppm = options.pixels_per_metre;
+  im.options = &options;
   JsonReader& r = im.r;
   if (!r.expect_object(map, "")) return r.error();
   if (r.has(map, "type") && r.string(map, "", "type") != "map") {

@@ -224,6 +224,12 @@ struct Converter {
 };
 
 Result<pugi::xml_document*> parse_xml(pugi::xml_document& doc, std::string_view text, std::string_view file) {
+  // Names and properties become JSON strings, which must be UTF-8 (and XML declares it here).
+  if (const size_t bad = first_invalid_utf8(text); bad != std::string_view::npos) {
+    const size_t line = 1 + static_cast<size_t>(std::count(text.begin(), text.begin() + static_cast<std::ptrdiff_t>(bad), '\n'));
+    return Error::at(file, "", "not valid UTF-8 at byte " + std::to_string(bad) + " (line " + std::to_string(line) +
+                                   "); save the map as UTF-8");
+  }
   const pugi::xml_parse_result pr = doc.load_buffer(text.data(), text.size(), pugi::parse_default, pugi::encoding_utf8);
   if (!pr) {
     return Error::at(file, "", std::string("not valid XML at byte ") + std::to_string(pr.offset) + ": " + pr.description());
