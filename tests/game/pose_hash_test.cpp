@@ -34,10 +34,10 @@ struct ExpectedHash {
 };
 
 constexpr ExpectedHash kExpected[] = {
-    {"default.json", 0x74553934fdf85addull},
-    {"rough.json", 0x8e687f62301c3807ull},
+    {"default.json", 0x0c244bcee2279abcull},
+    {"rough.json", 0xefd5cc9b466a36f6ull},
     {"stairs.json", 0x21d92ce95b370a32ull},
-    {"slopes.json", 0x8ec771abc5f8f9ccull},
+    {"slopes.json", 0x5b3c36ab2c421bf2ull},
 };
 
 std::string hex(uint64_t v) {

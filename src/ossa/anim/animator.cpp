@@ -206,7 +206,7 @@ bool Animator::way_ahead_open(const Level& level, float speed) {
   const AnimContext ctx = context(level);
   const FootholdInputs in{ctx, body_, gait_.stride, gait_.duty};
   glm::vec2 landing;
-  return find_landing(in, block_.leg, feet_.of_leg(block_.leg).pos_ws, landing_x(in, block_.leg, speed), &landing);
+  return find_landing(in, block_.leg, step_from(feet_.of_leg(block_.leg)), landing_x(in, block_.leg, speed), &landing);
 }
 
 void Animator::update(float dt, float desired_velocity, const Level& level) {

@@ -4,14 +4,19 @@
 #include <cmath>
 
 #include "ossa/anim/animator_params.h"
+#include "ossa/anim/foothold.h"
+#include "ossa/anim/ground_profile.h"
 #include "ossa/anim/leg_ik.h"
 
 namespace ossa::anim {
 
 namespace {
 
-// Near steps the body outruns a foot behind by at most this fraction of its leg's reach.
+// Near steps the body outruns a foot behind by at most this fraction of its leg's reach,
+// unless the ground within reach is a slope (no riser) that the leg stretched straight at its
+// full reach passes this many hip heights above (less within a shin's length of the foot).
 constexpr float kStepReach = 0.8f;
+constexpr float kLegLineMarginOfHip = 0.08f;
 // The wall sweep ignores the lowest part of the body this many hip heights high (the legs'
 // business), and meets walls this far early: 3 cm plus this many hip heights.
 constexpr float kSweepFloorOfHip = 0.3f;
@@ -42,6 +47,52 @@ bool body_bound_ws(const AnimRig& rig, const BodyFrame& body, const std::vector<
   *bound = Box{{std::min(x0, x1), y[0]}, {std::max(x0, x1), y[1]}};
   *top_y = m.apply(rig.body_top).y;
   return std::isfinite(x0) && std::isfinite(x1) && std::isfinite(y[0]) && std::isfinite(y[1]) && std::isfinite(*top_y);
+}
+
+// Does the straight line from the anchor to the joint (facing space) pass above the ground
+// profile's columns between them, away from the anchor's own tread (the first `skip` metres),
+// by `margin` from `ramp` metres on (and by a share of it nearer the foot, where the shin
+// meets the ground)? False where the profile does not reach.
+bool leg_line_clears(const AnimContext& ctx, const BodyFrame& body, glm::vec2 anchor_fs, glm::vec2 joint_fs, float margin,
+                     float skip, float ramp) {
+  const GroundProfile& g = ctx.ground;
+  const float run = joint_fs.x - anchor_fs.x;
+  if (g.empty() || !(run > skip)) return run > 0.0f && !g.empty();
+  const float xa = body.to_ws(anchor_fs).x, xj = body.to_ws(joint_fs).x;
+  const float lo = std::min(xa, xj), hi = std::max(xa, xj);
+  if (lo < g.x0() || hi > g.x0() + g.step() * static_cast<float>(g.size())) return false;
+  const float slope = (joint_fs.y - anchor_fs.y) / run;
+  for (int i = g.column_of(lo), end = g.column_of(hi); i <= end; ++i) {
+    const float h = g.column(i);
+    if (std::isnan(h)) continue;
+    const float c0 = g.x0() + g.step() * static_cast<float>(i);
+    // The column's span in facing x from the anchor, clipped to the line's run; the line is
+    // lowest at its near end.
+    const float d0 = std::fabs(c0 - xa), d1 = std::fabs(c0 + g.step() - xa);
+    const float d = std::clamp(std::min(d0, d1), 0.0f, run);
+    if (std::max(d0, d1) < skip) continue;
+    const float at = std::max(d, skip);
+    if (anchor_fs.y + slope * at - h < margin * std::min(at / ramp, 1.0f)) return false;
+  }
+  return true;
+}
+
+// Is the ground within a leg's reach of a foot behind (anchor) and of where its joint may go
+// a slope (a tile hill read as a ramp: no riser in it), and does the leg stretched straight
+// clear it?
+bool on_slope(const AnimContext& ctx, const BodyFrame& body, const RigLeg& info, glm::vec2 anchor_fs, glm::vec2 joint_fs) {
+  const float rest = ctx.rig.girdles[info.girdle].rest_height;
+  const float rise = kRiserOfRest * rest;
+  const float reach = info.contact_reach;
+  const float xa = body.to_ws(anchor_fs - glm::vec2(reach, 0.0f)).x, xj = body.to_ws(joint_fs + glm::vec2(reach, 0.0f)).x;
+  // A ramp (or a tile slope read as one) rises by at most kMaxSlope per column; a larger jump
+  // is a riser, however small (uneven ground of wide treads is not a slope).
+  const float ramp = std::max(1.5f * GroundProfile::kMaxSlope * ctx.ground.step(), 0.5f * rise);
+  if (ctx.ground.empty() || ctx.ground.largest_jump(std::min(xa, xj), std::max(xa, xj), kSlopeTreadOfRest * rest, rise) > ramp) {
+    return false;
+  }
+  return leg_line_clears(ctx, body, anchor_fs, joint_fs, kLegLineMarginOfHip * ctx.rig.hip_height, info.foot_span,
+                         std::max(info.lower, 1e-3f));
 }
 
 }  // namespace
@@ -200,10 +251,11 @@ float limit_by_legs(const AnimContext& ctx, const BodyFrame& body, const FootSet
     const float h = joint.y - anchor.y;
     // Near steps a foot behind keeps the joint within kStepReach of the leg's reach: a leg
     // stretched back across a flight of stairs would cut the edges between.
-    const bool near_steps =
-        anchor.x < joint.x && !(stance ? f.stance_reach_clear : f.swing_clear).clear_above(anchor.y + 0.1f * rig.hip_height);
     // How far forward the joint may go with this foot still in reach (facing x).
     const float level_reach = std::sqrt(std::max(r * r - h * h, 0.0f));
+    const bool near_steps =
+        anchor.x < joint.x && !(stance ? f.stance_reach_clear : f.swing_clear).clear_above(anchor.y + 0.1f * rig.hip_height) &&
+        !on_slope(ctx, body, info, anchor, {anchor.x + level_reach, joint.y});
     const float near_reach = std::max(std::sqrt(std::max(kStepReach * kStepReach * r * r - h * h, 0.0f)), 0.5f * level_reach);
     const float ahead = anchor.x + (near_steps ? near_reach : level_reach) - joint.x;
     dx = facing * std::min(std::fabs(dx), std::max(ahead, 0.0f));

@@ -150,6 +150,11 @@ bool find_landing(const FootholdInputs& in, int leg, glm::vec2 foot_ws, float x_
     const float y = hit->height_ws;
     const Box foot_box{{x + span_lo + 0.002f, y + 0.002f}, {x + span_hi - 0.002f, y + height}};
     if (in.ctx.level.overlaps(foot_box)) continue;
+    // Nothing between the foot and its landing rises more than a step above both: the foot
+    // would have to be lifted over a wall (the swing could raise it, the leg could not).
+    const float wall = std::max(foot_ws.y, y) + up;
+    const float between_lo = std::min(foot_ws.x, x) + 0.001f, between_hi = std::max(foot_ws.x, x) - 0.001f;
+    if (between_lo < between_hi && in.ctx.level.overlaps(Box{{between_lo, wall}, {between_hi, wall + 0.001f}})) continue;
     // Down a step the shin comes from above and behind: keep the foot off the riser it steps
     // down from, or the shin cuts the step's edge.
     const float back = facing > 0 ? x + span_lo : x + span_hi;

@@ -21,6 +21,11 @@ struct FootholdInputs {
   float duty = 0.65f;   // GaitState::duty
 };
 
+// Where a foot steps from, for find_landing's step limits: where it stands, or where a
+// swinging foot lifted off (not the air it is in: a foot high over a wall would find the
+// wall's top within a step of it).
+inline glm::vec2 step_from(const FootState& f) { return f.state == LegState::kSwing ? f.from_ws : f.pos_ws; }
+
 // The landing of leg `leg`, whose foot stands at foot_ws, nearest to x_wanted: the planned spot
 // first, then the nearest shorter or slightly longer steps (as short as just ahead of the
 // foot, at most a quarter stride longer). False: no foothold (a wall too tall, a drop too deep).

@@ -151,7 +151,7 @@ void start_ease(const FootholdInputs& in, int leg, FootState& f, const glm::vec2
   glm::vec2 landing;
   if (to) {
     landing = *to;
-  } else if (!find_landing(in, leg, f.pos_ws, f.pos_ws.x, &landing)) {
+  } else if (!find_landing(in, leg, step_from(f), f.pos_ws.x, &landing)) {
     landing = f.to_ws;
   }
   // Set down where the leg reaches from where the body stopped: drawn in towards the joint.
@@ -194,7 +194,7 @@ bool advance_swing(const FootholdInputs& in, const SwingTick& tick, int leg, Foo
     const float wanted = landing_x(in, leg, tick.speed, remaining);
     if (facing * (f.to_ws.x - wanted) > kReaimOfStride * in.stride) {
       glm::vec2 landing;
-      if (find_landing(in, leg, f.pos_ws, wanted, &landing) && facing * (landing.x - f.to_ws.x) < 0.0f) {
+      if (find_landing(in, leg, step_from(f), wanted, &landing) && facing * (landing.x - f.to_ws.x) < 0.0f) {
         const glm::vec2 old_to = f.to_ws;
         const float old_raise = f.raise;
         f.to_ws = landing;
