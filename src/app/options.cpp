@@ -1,7 +1,8 @@
 #include "app/options.h"
 
-#include <cerrno>
 #include <cstdlib>
+
+#include "ossa/io/parse_arg.h"
 
 namespace ossa {
 
@@ -42,21 +43,6 @@ gamepad: left stick walks (half throw = walk speed, full = run), A/RB/RT run, Y 
       X random creature, Back HUD, Start replay
 )";
 
-namespace {
-
-Result<long> parse_int(const std::string& flag, const std::string& text, long lo, long hi) {
-  char* end = nullptr;
-  errno = 0;
-  const long v = std::strtol(text.c_str(), &end, 10);
-  if (text.empty() || *end != '\0' || errno != 0 || v < lo || v > hi) {
-    return Error{flag + ": expected an integer in [" + std::to_string(lo) + ", " + std::to_string(hi) +
-                 "], got \"" + text + "\""};
-  }
-  return v;
-}
-
-}  // namespace
-
 Result<ParsedArgs> parse_game_args(const std::vector<std::string>& args) {
   ParsedArgs p;
   GameOptions& o = p.options;
@@ -72,7 +58,7 @@ Result<ParsedArgs> parse_game_args(const std::vector<std::string>& args) {
     };
     auto number = [&](long lo, long hi, auto& out) -> Status {
       if (!value()) return Error{flag + ": missing value"};
-      auto n = parse_int(flag, v, lo, hi);
+      auto n = parse_int_arg(flag, v, lo, hi);
       if (!n.ok()) return n.error();
       out = static_cast<std::remove_reference_t<decltype(out)>>(n.value());
       return {};
@@ -144,8 +130,8 @@ Result<ParsedArgs> parse_game_args(const std::vector<std::string>& args) {
         s = Error{flag + ": missing value"};
       } else {
         const size_t x = v.find('x');
-        auto w = parse_int(flag + " width", x == std::string::npos ? v : v.substr(0, x), 16, 8192);
-        auto h = parse_int(flag + " height", x == std::string::npos ? "" : v.substr(x + 1), 16, 8192);
+        auto w = parse_int_arg(flag + " width", x == std::string::npos ? v : v.substr(0, x), 16, 8192);
+        auto h = parse_int_arg(flag + " height", x == std::string::npos ? "" : v.substr(x + 1), 16, 8192);
         if (!w.ok() || !h.ok()) s = Error{flag + ": expected WIDTHxHEIGHT with sides in [16, 8192], got \"" + v + "\""};
         else o.width = static_cast<int>(w.value()), o.height = static_cast<int>(h.value());
       }

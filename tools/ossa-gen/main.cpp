@@ -22,6 +22,7 @@
 #include "ossa/io/data_dir.h"
 #include "ossa/io/file.h"
 #include "ossa/io/json.h"
+#include "ossa/io/parse_arg.h"
 #include "ossa/render/gltf_export.h"
 
 namespace {
@@ -79,14 +80,9 @@ struct UsageError {
 [[noreturn]] void usage_error(const std::string& message) { throw UsageError{message}; }
 
 long long parse_int(const std::string& flag, const std::string& text, long long lo, long long hi) {
-  char* end = nullptr;
-  errno = 0;
-  const long long v = std::strtoll(text.c_str(), &end, 10);
-  if (text.empty() || *end != '\0' || errno == ERANGE || v < lo || v > hi) {
-    usage_error(flag + ": expected an integer in [" + std::to_string(lo) + ", " +
-                std::to_string(hi) + "], got \"" + text + "\"");
-  }
-  return v;
+  Result<long long> v = parse_int_arg(flag, text, lo, hi);
+  if (!v) usage_error(v.message());
+  return *v;
 }
 
 // A finite number in [lo, hi] (or (lo, hi] when lo_open); the message names the flag and

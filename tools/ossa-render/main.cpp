@@ -4,7 +4,6 @@
 // runs with no display. Every failure prints one clear message and exits non-zero.
 
 #include <algorithm>
-#include <cerrno>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
@@ -17,6 +16,7 @@
 #include "ossa/gen/genome.h"
 #include "ossa/gen/skeleton_builder.h"
 #include "ossa/io/data_dir.h"
+#include "ossa/io/parse_arg.h"
 #include "ossa/level/level_io.h"
 #include "ossa/platform/window.h"
 #include "ossa/render/capture.h"
@@ -68,15 +68,10 @@ struct Args {
   std::exit(1);
 }
 
-long parse_int(const std::string& flag, const std::string& text, long lo, long hi) {
-  char* end = nullptr;
-  errno = 0;
-  const long v = std::strtol(text.c_str(), &end, 10);
-  if (text.empty() || *end != '\0' || errno != 0 || v < lo || v > hi) {
-    fail(flag + ": expected an integer in [" + std::to_string(lo) + ", " + std::to_string(hi) +
-         "], got \"" + text + "\"");
-  }
-  return v;
+long long parse_int(const std::string& flag, const std::string& text, long long lo, long long hi) {
+  Result<long long> v = parse_int_arg(flag, text, lo, hi);
+  if (!v) fail(v.message());
+  return *v;
 }
 
 Args parse_args(int argc, char** argv) {

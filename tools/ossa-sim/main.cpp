@@ -6,6 +6,7 @@
 //
 // Every failure prints one line naming what was wrong and exits with status 1.
 
+#include <cerrno>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -25,6 +26,7 @@
 #include "ossa/game/world.h"
 #include "ossa/io/data_dir.h"
 #include "ossa/io/file.h"
+#include "ossa/io/parse_arg.h"
 #include "ossa/level/level_io.h"
 
 using namespace ossa;
@@ -63,14 +65,10 @@ struct Args {
   float pixels_per_metre = 32.0f;  // LevelLoadOptions::pixels_per_metre
 };
 
-long long parse_int(const std::string& flag, const char* text, long long lo, long long hi) {
-  char* end = nullptr;
-  errno = 0;
-  const long long v = std::strtoll(text, &end, 10);
-  if (errno || end == text || *end || v < lo || v > hi) {
-    fail(flag + ": expected an integer in [" + std::to_string(lo) + ", " + std::to_string(hi) + "], got \"" + text + "\"");
-  }
-  return v;
+long long parse_int(const std::string& flag, const std::string& text, long long lo, long long hi) {
+  Result<long long> v = parse_int_arg(flag, text, lo, hi);
+  if (!v) fail(v.message());
+  return *v;
 }
 
 float parse_scale(const std::string& flag, const std::string& text) {
@@ -97,12 +95,12 @@ Args parse_args(int argc, char** argv) {
     } else if (f == "--example") a.example = value();
     else if (f == "--creature") a.creature = value();
     else if (f == "--random") a.random = true;
-    else if (f == "--seed") a.seed = static_cast<uint64_t>(parse_int(f, value().c_str(), 0, 1LL << 62));
+    else if (f == "--seed") a.seed = static_cast<uint64_t>(parse_int(f, value(), 0, 1LL << 62));
     else if (f == "--level") a.level = value();
     else if (f == "--pixels-per-metre") a.pixels_per_metre = parse_scale(f, value());
     else if (f == "--script") a.script = value();
-    else if (f == "--hz") a.hz = static_cast<int>(parse_int(f, value().c_str(), 30, 480));
-    else if (f == "--count") a.count = static_cast<int>(parse_int(f, value().c_str(), 1, 100000));
+    else if (f == "--hz") a.hz = static_cast<int>(parse_int(f, value(), 30, 480));
+    else if (f == "--count") a.count = static_cast<int>(parse_int(f, value(), 1, 100000));
     else if (f == "--prototypes") a.prototypes = value();
     else if (f == "--json") a.json = true;
     else if (f == "--trace") a.trace = value();

@@ -31,6 +31,7 @@
 #include "ossa/io/data_dir.h"
 #include "ossa/io/file.h"
 #include "ossa/io/json.h"
+#include "ossa/io/parse_arg.h"
 #include "ossa/level/level_io.h"
 #include "sweep_run.h"
 
@@ -79,13 +80,9 @@ struct Args {
 };
 
 long long parse_int(const std::string& flag, const std::string& text, long long lo, long long hi) {
-  char* end = nullptr;
-  errno = 0;
-  const long long v = std::strtoll(text.c_str(), &end, 10);
-  if (errno || text.empty() || *end || v < lo || v > hi) {
-    fail(flag + ": expected an integer in [" + std::to_string(lo) + ", " + std::to_string(hi) + "], got \"" + text + "\"");
-  }
-  return v;
+  Result<long long> v = parse_int_arg(flag, text, lo, hi);
+  if (!v) fail(v.message());
+  return *v;
 }
 
 Args parse_args(int argc, char** argv) {

@@ -1,0 +1,21 @@
+#include "ossa/io/parse_arg.h"
+
+#include <cerrno>
+#include <cstdlib>
+#include <string>
+
+namespace ossa {
+
+Result<long long> parse_int_arg(std::string_view flag, std::string_view text, long long lo, long long hi) {
+  const std::string s(text);
+  char* end = nullptr;
+  errno = 0;
+  const long long v = std::strtoll(s.c_str(), &end, 10);
+  if (s.empty() || *end != '\0' || errno != 0 || v < lo || v > hi) {
+    return Error{std::string(flag) + ": expected an integer in [" + std::to_string(lo) + ", " + std::to_string(hi) +
+                 "], got \"" + s + "\""};
+  }
+  return v;
+}
+
+}  // namespace ossa
