@@ -50,16 +50,6 @@ int GroundProfile::column_of(float x_ws) const {
   return static_cast<int>(std::clamp(i, 0.0f, static_cast<float>(size() - 1)));
 }
 
-std::optional<float> GroundProfile::highest(float a_ws, float b_ws) const {
-  if (a_ws > b_ws) std::swap(a_ws, b_ws);
-  float best = kNoGround;
-  for (int i = column_of(a_ws), end = column_of(b_ws); i <= end; ++i) {
-    if (heights_[i] > best || (std::isnan(best) && !std::isnan(heights_[i]))) best = heights_[i];
-  }
-  if (std::isnan(best)) return std::nullopt;
-  return best;
-}
-
 float GroundProfile::surface_line(float x_ws, float tread, float riser) const {
   const int i = column_of(x_ws);
   const float y = heights_[i];

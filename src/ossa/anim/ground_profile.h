@@ -13,7 +13,6 @@
 // level. World space (_ws), metres.
 
 #include <cstdint>
-#include <optional>
 #include <vector>
 
 #include "ossa/level/level.h"
@@ -39,9 +38,6 @@ class GroundProfile {
   float column(int i) const { return heights_[i]; }
   // The column holding x (clamped to the profile).
   int column_of(float x_ws) const;
-
-  // Highest ground under [a, b] (the columns it touches), or nullopt (a gap).
-  std::optional<float> highest(float a_ws, float b_ws) const;
 
   // The surface under x read as a slope: the height of the line through the middles of the
   // treads either side (a tread is a run of columns at one height), when the two treads are
