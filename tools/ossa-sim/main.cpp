@@ -35,7 +35,7 @@ namespace {
 
 const char* kUsage = R"(usage: ossa-sim (--example NAME | --creature F.creature.json | --random --seed N)
                 [--level F] --script "mode:stick:seconds,..." [--hz 120] [--count N]
-                [--prototypes F] [--json] [--trace F.csv] [--svg F.svg]
+                [--prototypes F] [--json] [--trace F.csv] [--svg F.svg [--svg-window FROM:TO[:EVERY]]]
   --example NAME   one of the 44 example animals (English or German name)
   --creature F     a saved genome (.creature.json)
   --random         a random creature (with --seed N, default 1)
@@ -49,7 +49,9 @@ const char* kUsage = R"(usage: ossa-sim (--example NAME | --creature F.creature.
   --prototypes F   spline prototypes (default: assets/animation/prototypes.json)
   --json           print the metrics as JSON
   --trace F.csv    per-tick foot and girdle positions
-  --svg F.svg      a strobe of the creature over the level
+  --svg F.svg      a strobe of the creature over the level (a pose every 0.4 s)
+  --svg-window FROM:TO[:EVERY]  the strobe's poses from FROM to TO seconds, one every EVERY
+                   seconds (default 0.4): a close look at a moment
 )";
 
 [[noreturn]] void fail(const std::string& message) {
@@ -63,6 +65,7 @@ struct Args {
   uint64_t seed = 1;
   int hz = 120, count = 1;
   float pixels_per_metre = 32.0f;  // LevelLoadOptions::pixels_per_metre
+  float svg_from = 0.0f, svg_to = 1e30f, svg_every = 0.4f;  // seconds (--svg-window)
 };
 
 long long parse_int(const std::string& flag, const std::string& text, long long lo, long long hi) {
@@ -79,6 +82,35 @@ float parse_scale(const std::string& flag, const std::string& text) {
     fail(flag + ": expected a number in (0, 1000000], got \"" + text + "\"");
   }
   return static_cast<float>(v);
+}
+
+// --svg-window FROM:TO[:EVERY], seconds: 0 <= FROM < TO, 1/hz <= EVERY.
+void parse_svg_window(const std::string& flag, const std::string& text, Args& a) {
+  float v[3] = {0.0f, 0.0f, a.svg_every};
+  int n = 0;
+  const char* p = text.c_str();
+  while (n < 3) {
+    char* end = nullptr;
+    errno = 0;
+    const double d = std::strtod(p, &end);
+    if (errno || end == p || !std::isfinite(d) || d < 0.0 || d > 1e6) break;
+    v[n++] = static_cast<float>(d);
+    if (*end == '\0') {
+      p = end;
+      break;
+    }
+    if (*end != ':') {
+      n = 0;
+      break;
+    }
+    p = end + 1;
+  }
+  if (n < 2 || *p != '\0' || !(v[0] < v[1]) || !(v[2] > 0.0f)) {
+    fail(flag + ": expected FROM:TO[:EVERY] in seconds (0 <= FROM < TO, EVERY > 0), got \"" + text + "\"");
+  }
+  a.svg_from = v[0];
+  a.svg_to = v[1];
+  a.svg_every = v[2];
 }
 
 Args parse_args(int argc, char** argv) {
@@ -105,6 +137,7 @@ Args parse_args(int argc, char** argv) {
     else if (f == "--json") a.json = true;
     else if (f == "--trace") a.trace = value();
     else if (f == "--svg") a.svg = value();
+    else if (f == "--svg-window") parse_svg_window(f, value(), a);
     else fail("unknown option " + f + " (see --help)");
   }
   if (static_cast<int>(a.example.has_value()) + a.creature.has_value() + a.random != 1) {
@@ -228,7 +261,7 @@ int main(int argc, char** argv) {
   }
   int total_ticks = 0;
   for (const ScriptSegment& s : *script) total_ticks += static_cast<int>(std::lround(s.seconds * args.hz));
-  const int shot_every = std::max(1, static_cast<int>(0.4f * args.hz));
+  const int shot_every = std::max(1, static_cast<int>(std::lround(args.svg_every * static_cast<float>(args.hz))));
   std::vector<Snapshot> shots;
   double extra_seconds = 0.0;
   const float dt = 1.0f / static_cast<float>(args.hz);
@@ -251,7 +284,8 @@ int main(int argc, char** argv) {
       }
       trace << "\n";
     }
-    if (tick % shot_every == 0) shots.push_back({a.world_matrices()});
+    const float t = static_cast<float>(tick) * dt;
+    if (args.svg && t >= args.svg_from && t <= args.svg_to && tick % shot_every == 0) shots.push_back({a.world_matrices()});
   });
   const SimProbe& probe = result.probe;
   const std::vector<SegmentMetrics>& segments = result.segments;
