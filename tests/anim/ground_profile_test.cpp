@@ -2,6 +2,7 @@
 
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <cmath>
 
 #include "shared/level_scenes.h"
@@ -33,33 +34,76 @@ TEST_CASE("ground profile: every column is the level's ground below its span", "
 }
 
 TEST_CASE("ground profile: a run of small steps reads as a slope, a real step keeps its riser", "[anim][profile]") {
-  // 18°: 5 cm columns, each 1.6 cm higher.
+  // 18°: 5 cm columns, each 1.6 cm higher, from flat ground at x = 2 up to a 3 m plateau.
   const Level tiles = test::tile_slope_level(2.0f, 40, 0.05f, 0.016f);
   GroundProfile profile;
   profile.build(tiles, 0.0f, 8.0f, 2.0f, 3.0f, 0.01f);
-  const float slope = 0.016f / 0.05f;
-  for (float x = 2.2f; x < 3.8f; x += 0.0123f) {
-    const float line = profile.surface_line(x, 0.1f, 0.05f);
-    // The line through the treads' middles: within half a rise of the ideal ramp, and never
-    // flat over a whole tread.
-    const float ideal = (x - 2.0f) * slope + 0.5f * 0.016f;
-    CHECK(line == Approx(ideal).margin(0.5f * 0.016f + 1e-4f));
+  const SlopeReading reading{0.1f, 0.05f, 0.0f, 0.01f};
+  const float slope = 0.016f / 0.05f, top = 40 * 0.016f;
+  for (float x = 1.5f; x < 4.5f; x += 0.0123f) {
+    const float line = profile.surface_line(x, reading);
+    // The line through the treads' middles, running into the flat ground below and the
+    // plateau above: within half a rise of the ideal ramp (a rise where it meets the flat,
+    // within a tread of the ends), and never flat over a whole tread.
+    const float ideal = std::clamp((x - 2.0f) * slope + 0.5f * 0.016f, 0.0f, top);
+    const bool end = std::fabs(x - 2.0f) < 0.1f || std::fabs(x - 4.0f) < 0.1f;
+    CHECK(line == Approx(ideal).margin((end ? 1.0f : 0.5f) * 0.016f + 1e-4f));
   }
+  // No jump anywhere, the slope's ends included: a creature walks it like a ramp.
+  CHECK(profile.largest_jump(1.0f, 5.0f, reading) <= 0.6f * 0.016f);
   // Treads of 30 cm are steps, not a slope: the surface is the tread's own height.
   const Level stairs = scenes::stairs_level(6, 0.15f, 0.3f);
   GroundProfile steps;
   steps.build(stairs, -2.0f, 10.0f, 3.0f, 4.0f, 0.01f);
   for (int i = 0; i < steps.size(); ++i) {
     const float x = steps.x0() + (static_cast<float>(i) + 0.5f) * steps.step();
-    if (!std::isnan(steps.column(i))) CHECK(steps.surface_line(x, 0.1f, 0.05f) == steps.column(i));
+    if (!std::isnan(steps.column(i))) CHECK(steps.surface_line(x, reading) == steps.column(i));
   }
+  CHECK(steps.largest_jump(-1.0f, 9.0f, reading) == Approx(0.15f).margin(1e-4f));
   // A gap is no ground.
   const Level gap({Box::from_corner(0.0f, -1.0f, 2.0f, 1.0f), Box::from_corner(2.5f, -1.0f, 2.0f, 1.0f)}, {1.0f, 0.0f});
   GroundProfile holes;
   holes.build(gap, 0.0f, 4.5f, 1.0f, 2.0f, 0.01f);
   for (float x = 2.1f; x < 2.4f; x += 0.01f) CHECK(std::isnan(holes.column(holes.column_of(x))));
-  CHECK(std::isnan(holes.surface_line(2.25f, 0.1f, 0.05f)));
+  CHECK(std::isnan(holes.surface_line(2.25f, reading)));
   CHECK(holes.column(holes.column_of(1.95f)) == 0.0f);
+}
+
+TEST_CASE("ground profile: treads narrower than the foot are a slope whatever their rise", "[anim][profile]") {
+  // 30°: 3 cm columns rising 1.73 cm each, more than the 1 cm riser a small creature's legs
+  // count as a slope; a 5 cm foot cannot stand on one tread, so it is a slope all the same.
+  const Level tiles = test::tile_slope_level(2.0f, 20, 0.03f, 0.0173f);
+  GroundProfile profile;
+  profile.build(tiles, 0.0f, 6.0f, 1.0f, 2.0f, 0.005f);
+  const SlopeReading legs{0.1f, 0.01f, 0.0f, 0.005f};
+  SlopeReading foot = legs;
+  foot.foot = 0.05f;
+  CHECK(profile.largest_jump(1.5f, 3.0f, legs) == Approx(0.0173f).margin(1e-4f));
+  CHECK(profile.largest_jump(1.5f, 3.0f, foot) < 0.5f * 0.0173f);
+  // No steeper than GroundProfile::kMaxSlope, though: 3 cm treads rising 2.5 cm are steps.
+  const Level steep = test::tile_slope_level(2.0f, 20, 0.03f, 0.025f);
+  GroundProfile steep_profile;
+  steep_profile.build(steep, 0.0f, 6.0f, 1.0f, 2.0f, 0.005f);
+  CHECK(steep_profile.largest_jump(1.5f, 3.0f, foot) == Approx(0.025f).margin(1e-4f));
+}
+
+TEST_CASE("ground profile: slope_top walks the slope to its first real riser", "[anim][profile]") {
+  // A tile hill from x = 2 up to a plateau at 0.64 m (x 4 to 7), and a 40 cm wall on it at 5.
+  std::vector<Box> boxes = test::tile_slope_level(2.0f, 40, 0.05f, 0.016f).colliders();
+  boxes.push_back(Box::from_corner(5.0f, 0.64f, 0.3f, 0.4f));
+  const Level level(boxes, {1.0f, 0.0f});
+  GroundProfile profile;
+  profile.build(level, -2.0f, 9.0f, 2.0f, 3.0f, 0.01f);
+  const SlopeReading reading{0.1f, 0.05f, 0.0f, 0.01f};
+  // From the flat ground below, the hill's top is reached either way round.
+  CHECK(profile.slope_top(1.0f, 3.5f, 4.5f, reading) == Approx(0.64f).margin(1e-4f));
+  CHECK(profile.slope_top(4.5f, 0.5f, 1.5f, reading) == Approx(0.0f).margin(1e-4f));
+  CHECK(profile.slope_top(1.0f, 0.5f, 3.0f, reading) == Approx(0.5f * 0.64f).margin(0.02f));
+  // The wall is a riser: the walk stops before it, and the part beyond it is not reached.
+  CHECK(profile.slope_top(1.0f, 3.5f, 5.5f, reading) == Approx(0.64f).margin(1e-4f));
+  CHECK(std::isnan(profile.slope_top(1.0f, 5.4f, 6.0f, reading)));
+  // Beyond the profile it cannot vouch for anything.
+  CHECK(std::isnan(profile.slope_top(1.0f, 8.0f, 10.0f, reading)));
 }
 
 TEST_CASE("ground profile: knows when it must be sampled again", "[anim][profile]") {

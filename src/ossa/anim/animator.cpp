@@ -179,19 +179,22 @@ void Animator::reset(glm::vec2 position_ws, const Level& level, int facing) {
 void Animator::refresh_ground(const Level& level) {
   // Stage 1: the profile covers the body, a reach and kProfileSpanStrides strides either side.
   const AnimRig& rig = *rig_;
-  const float reach = rig.body_half_length + rig.longest_contact_reach;
+  // The root need not be the middle of the body: a whole body length either side.
+  const float reach = 2.0f * rig.body_half_length + rig.longest_contact_reach;
   const float span = reach + kProfileSpanStrides * std::max(gait_.stride, rig.hip_height);
   const float x0 = body_.x_ws - span, x1 = body_.x_ws + span;
+  // Above the root: a hip height, or as high as the steepest slope rises over the body and a
+  // leg's reach (a long, low body meets the hill ahead above its own height).
+  const float above = std::max(kProfileAboveOfHip * rig.hip_height, GroundProfile::kMaxSlope * reach);
   const float lo = body_.root_y_ws - 0.75f * kProfileBelowOfHip * rig.hip_height;
-  const float hi = body_.root_y_ws + 0.5f * kProfileAboveOfHip * rig.hip_height;
+  const float hi = body_.root_y_ws + 0.5f * above;
   if (ground_.covers(level, x0, x1, lo, hi)) return;
   float size = 1e30f;
   for (const RigLeg& leg : rig.legs) size = std::min(size, std::max(leg.foot_length, 0.25f * leg.reach));
   if (rig.legs.empty()) size = rig.hip_height;
   const float step = std::clamp(kProfileStepOfFoot * size, 0.005f, 0.02f);
   // Twice the window, so that it lasts for a while.
-  ground_.build(level, x0 - span, x1 + span, body_.root_y_ws + kProfileAboveOfHip * rig.hip_height,
-                (kProfileAboveOfHip + kProfileBelowOfHip) * rig.hip_height, step);
+  ground_.build(level, x0 - span, x1 + span, body_.root_y_ws + above, above + kProfileBelowOfHip * rig.hip_height, step);
 }
 
 void Animator::block(int leg) {

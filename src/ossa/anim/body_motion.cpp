@@ -81,14 +81,11 @@ bool leg_line_clears(const AnimContext& ctx, const BodyFrame& body, glm::vec2 an
 // a slope (a tile hill read as a ramp: no riser in it), and does the leg stretched straight
 // clear it?
 bool on_slope(const AnimContext& ctx, const BodyFrame& body, const RigLeg& info, glm::vec2 anchor_fs, glm::vec2 joint_fs) {
-  const float rest = ctx.rig.girdles[info.girdle].rest_height;
-  const float rise = kRiserOfRest * rest;
+  const SlopeReading reading = girdle_slope_reading(ctx, info.girdle);
   const float reach = info.contact_reach;
   const float xa = body.to_ws(anchor_fs - glm::vec2(reach, 0.0f)).x, xj = body.to_ws(joint_fs + glm::vec2(reach, 0.0f)).x;
-  // A ramp (or a tile slope read as one) rises by at most kMaxSlope per column; a larger jump
-  // is a riser, however small (uneven ground of wide treads is not a slope).
-  const float ramp = std::max(1.5f * GroundProfile::kMaxSlope * ctx.ground.step(), 0.5f * rise);
-  if (ctx.ground.empty() || ctx.ground.largest_jump(std::min(xa, xj), std::max(xa, xj), kSlopeTreadOfRest * rest, rise) > ramp) {
+  if (ctx.ground.empty() ||
+      ctx.ground.largest_jump(std::min(xa, xj), std::max(xa, xj), reading) > reading.ramp) {
     return false;
   }
   return leg_line_clears(ctx, body, anchor_fs, joint_fs, kLegLineMarginOfHip * ctx.rig.hip_height, info.foot_span,
@@ -180,9 +177,24 @@ BodyMotionResult sweep_body(const AnimContext& ctx, const BodyFrame& body, const
   const float support = body.root_y_ws - rig.root_rest_y * ctx.params.stance_height;
   const float slope = std::tan(body.pitch);
   const glm::vec2 margin(kWallMargin + kWallMarginOfHip * hip, 0.0f);
-  auto ground_under = [&](const Box& box) {
+  // A part's box as swept: from kSweepFloorOfHip above its bottom or a step above the ground
+  // line under it (whichever is higher, at most its top). Ground the legs climb without a
+  // step — a tile hill, read as a slope from the ground profile and walked from the root up to
+  // the first real riser — is not a wall: a part over it rides up with it, lifted by as much
+  // as the hill stands above the ground line, however low the part is (a crocodile's head).
+  const SlopeReading reading = body_slope_reading(ctx);
+  auto swept_part = [&](Box box) {
     const float a = slope * facing * (box.min_ws.x - body.x_ws), b = slope * facing * (box.max_ws.x - body.x_ws);
-    return support + std::min(a, b);
+    const float line = support + std::min(a, b);
+    const float hill = ctx.ground.slope_top(body.x_ws, std::min(box.min_ws.x, box.min_ws.x + dx),
+                                            std::max(box.max_ws.x, box.max_ws.x + dx), reading);
+    box.min_ws.y = std::min(std::max(box.min_ws.y + kSweepFloorOfHip * hip, line + step_up), box.max_ws.y);
+    if (hill > line) {
+      box.min_ws.y += hill - line;
+      box.max_ws.y += hill - line;
+    }
+    box.max_ws = glm::max(box.max_ws, box.min_ws + glm::vec2(1e-3f));
+    return box;
   };
   // Cheaper still, and before that: a box around the body from the root and the hull's extent
   // alone (body_bound_ws), swept as a box holding the one swept below (its bottom no higher
@@ -200,19 +212,16 @@ BodyMotionResult sweep_body(const AnimContext& ctx, const BodyFrame& body, const
   boxes.clear();
   if (near_something) {
     body_boxes(rig, body, model_fs, false, &boxes);
-    Box all = boxes[0];
-    all.min_ws.y = std::min(std::max(all.min_ws.y + kSweepFloorOfHip * hip, ground_under(all) + step_up), all.max_ws.y);
-    auto hit = level.sweep_box(Box{all.min_ws - margin, glm::max(all.max_ws, all.min_ws + glm::vec2(1e-3f)) + margin}, {dx, 0.0f});
+    const Box all = swept_part(boxes[0]);
+    auto hit = level.sweep_box(Box{all.min_ws - margin, all.max_ws + margin}, {dx, 0.0f});
     if (hit && hit->t < 1.0f) body_boxes(rig, body, model_fs, !rig.body_slabs.empty(), &boxes);
     else boxes.clear();
   }
   float move = std::fabs(dx);
   const size_t first_arm = boxes.empty() ? 0 : boxes.size() - rig.arms.size();
   for (size_t k = 0; k < boxes.size(); ++k) {
-    Box box = boxes[k];
+    const Box box = swept_part(boxes[k]);
     const float hi_y = box.max_ws.y;
-    box.min_ws.y = std::min(std::max(box.min_ws.y + kSweepFloorOfHip * hip, ground_under(box) + step_up), hi_y);
-    box.max_ws = glm::max(box.max_ws, box.min_ws + glm::vec2(1e-3f));
     float t = 1.0f;  // fraction of dx until the part meets something
     if (k < first_arm) {
       if (auto hit = level.sweep_box(box, {dx, 0.0f})) t = hit->t;

@@ -41,7 +41,8 @@ float foot_height(const RigLeg& leg) { return std::max({0.02f, leg.ankle_rel_ms.
 
 // Would a foot landing at height y with its back edge at `back` have the shin cut a riser
 // behind it?
-bool riser_behind(const FootholdInputs& in, const RigLeg& info, float rest_height, float back, float y, float up) {
+bool riser_behind(const FootholdInputs& in, const RigLeg& info, float rest_height, const SlopeReading& reading, float back,
+                  float y, float up) {
   const float gap = kRiserGapOfRest * rest_height;
   const int behind = -in.body.facing;
   const float lo = std::min(back, back + behind * gap), hi = std::max(back, back + behind * gap);
@@ -52,23 +53,57 @@ bool riser_behind(const FootholdInputs& in, const RigLeg& info, float rest_heigh
     return in.ctx.level.overlaps(Box{{lo, y + 0.02f}, {hi, y + up}});
   }
   const float tol = std::max(info.ankle_rel_ms.y, kRiserOfRest * rest_height);
-  const float tread = kSlopeTreadOfRest * rest_height;
-  const float rise = kRiserOfRest * rest_height;
   // A real riser behind (a step, not a slope's tile): no ground between the tread's height and
   // a step above it, as the shin would cut its edge.
-  if (ground.largest_jump(lo, hi, tread, rise) > rise) return in.ctx.level.overlaps(Box{{lo, y + 0.02f}, {hi, y + up}});
+  if (ground.largest_jump(lo, hi, reading) > reading.riser) return in.ctx.level.overlaps(Box{{lo, y + 0.02f}, {hi, y + up}});
   const float step = ground.step();
   for (int i = ground.column_of(lo), end = ground.column_of(hi); i <= end; ++i) {
     if (std::isnan(ground.column(i))) continue;
     const float x_lo = ground.x0() + static_cast<float>(i) * step;
     const float d = std::max(0.0f, behind > 0 ? x_lo - back : back - (x_lo + step));
-    const float surface = ground.surface_line(x_lo + 0.5f * step, tread, rise);
+    const float surface = ground.surface_line(x_lo + 0.5f * step, reading);
     if (surface > y + tol + kShinSlope * d) return true;
   }
   return false;
 }
 
 }  // namespace
+
+SlopeReading slope_reading(const GroundProfile& ground, float rest_height, float foot_length) {
+  SlopeReading r;
+  r.tread = kSlopeTreadOfRest * rest_height;
+  r.riser = kRiserOfRest * rest_height;
+  r.foot = foot_length;
+  // A ramp (or a tile slope read as one) rises by at most kMaxSlope per column; a larger jump
+  // is a riser, however small (uneven ground of wide treads is not a slope).
+  r.ramp = std::max(1.5f * GroundProfile::kMaxSlope * ground.step(), 0.5f * r.riser);
+  return r;
+}
+
+SlopeReading girdle_slope_reading(const AnimContext& ctx, int girdle) {
+  const RigGirdle& g = ctx.rig.girdles[girdle];
+  float foot = 1e30f;
+  for (int leg : g.legs) foot = std::min(foot, ctx.rig.legs[leg].foot_length);
+  return slope_reading(ctx.ground, g.rest_height, g.legs.empty() ? 0.0f : foot);
+}
+
+SlopeReading body_slope_reading(const AnimContext& ctx) {
+  if (ctx.rig.girdles.empty()) {
+    // A legless body lies on the ground along its length and crawls over any rise the wall
+    // sweep lets it (max_step_up of its height): treads up to half its half-length, rises up
+    // to that step, are its slope.
+    SlopeReading r = slope_reading(ctx.ground, ctx.rig.hip_height, 0.0f);
+    r.tread = kSlopeTreadOfRest * ctx.rig.body_half_length;
+    r.riser = ctx.params.max_step_up * ctx.rig.hip_height;
+    r.ramp = std::max(r.ramp, 0.5f * r.riser);
+    return r;
+  }
+  int lowest = 0;
+  for (size_t g = 1; g < ctx.rig.girdles.size(); ++g) {
+    if (ctx.rig.girdles[g].rest_height < ctx.rig.girdles[lowest].rest_height) lowest = static_cast<int>(g);
+  }
+  return girdle_slope_reading(ctx, lowest);
+}
 
 bool foot_fits(const FootholdInputs& in, int leg, glm::vec2 contact_ws) {
   const RigLeg& info = in.ctx.rig.legs[leg];
@@ -130,6 +165,7 @@ bool find_landing(const FootholdInputs& in, int leg, glm::vec2 foot_ws, float x_
   const FootSpan span = foot_span_ws(info, facing);
   const float span_lo = span.lo - 0.01f, span_hi = span.hi + 0.01f;
   const float height = foot_height(info);
+  const SlopeReading reading = girdle_slope_reading(in.ctx, info.girdle);
   const float stride = in.stride;
   const float stepx = std::max(kLandingStepOfStride * stride, 0.005f);
   const float shortest = facing * (x_wanted - foot_ws.x) - kShortestAheadOfStride * stride;
@@ -145,7 +181,16 @@ bool find_landing(const FootholdInputs& in, int leg, glm::vec2 foot_ws, float x_
     }
     if (d > longest) continue;
     const float x = x_wanted + facing * d;
-    auto hit = ground_below(in.ctx.level, x + span_lo, x + span_hi, foot_ws.y + up, foot_ws.y + up - lowest);
+    // Up or down a slope (a tile hill read as a ramp, with no real riser between the foot and
+    // the landing) a stride may climb or descend further than a step: the step limits count
+    // from the slope's height at the landing.
+    float top = foot_ws.y + up, bottom = lowest;
+    const float along = in.ctx.ground.slope_top(foot_ws.x, x + span_lo, x + span_hi, reading);
+    if (!std::isnan(along)) {
+      top = std::max(top, along + up);
+      bottom = std::min(bottom, along - down);
+    }
+    auto hit = ground_below(in.ctx.level, x + span_lo, x + span_hi, top, top - bottom);
     if (!hit) continue;
     const float y = hit->height_ws;
     const Box foot_box{{x + span_lo + 0.002f, y + 0.002f}, {x + span_hi - 0.002f, y + height}};
@@ -158,7 +203,7 @@ bool find_landing(const FootholdInputs& in, int leg, glm::vec2 foot_ws, float x_
     // Down a step the shin comes from above and behind: keep the foot off the riser it steps
     // down from, or the shin cuts the step's edge.
     const float back = facing > 0 ? x + span_lo : x + span_hi;
-    if (k + 1 < kLandingCandidates && riser_behind(in, info, girdle.rest_height, back, y, up)) continue;
+    if (k + 1 < kLandingCandidates && riser_behind(in, info, girdle.rest_height, reading, back, y, up)) continue;
     *landing = {x, y};
     return true;
   }

@@ -11,6 +11,7 @@
 #include <glm/vec2.hpp>
 
 #include "ossa/anim/anim_state.h"
+#include "ossa/anim/ground_profile.h"
 
 namespace ossa::anim {
 
@@ -46,11 +47,17 @@ bool nearest_fit(const FootholdInputs& in, int leg, glm::vec2 near_ws, glm::vec2
 // Does leg `leg` reach p_ws (within kFootReach of its reach) from where its girdle is now?
 bool reaches(const FootholdInputs& in, int leg, glm::vec2 p_ws);
 
-// How the ground profile is read for a girdle of rest height h: a run of treads narrower than
-// kSlopeTreadOfRest·h with rises no higher than kRiserOfRest·h is a slope (a tile hill); a
-// jump of more than kRiserOfRest·h in that reading is a riser (a flight of stairs is steps).
+// How the ground profile is read for a girdle of rest height h whose shortest foot is f long
+// (SlopeReading): a run of treads narrower than kSlopeTreadOfRest·h with rises no higher than
+// kRiserOfRest·h, or of treads narrower than f, is a slope (a tile hill); a jump in that
+// reading of more than half a riser (or than the steepest ramp's per column) is a riser (a
+// flight of stairs is steps).
 inline constexpr float kSlopeTreadOfRest = 0.5f;
 inline constexpr float kRiserOfRest = 0.1f;
+SlopeReading slope_reading(const GroundProfile& ground, float rest_height, float foot_length);
+// For girdle g, and for the whole body (its lowest girdle, or the hip height of the legless).
+SlopeReading girdle_slope_reading(const AnimContext& ctx, int girdle);
+SlopeReading body_slope_reading(const AnimContext& ctx);
 
 // A foothold counts as in reach within this fraction of the leg's contact reach.
 inline constexpr float kFootReach = 0.97f;

@@ -50,45 +50,81 @@ int GroundProfile::column_of(float x_ws) const {
   return static_cast<int>(std::clamp(i, 0.0f, static_cast<float>(size() - 1)));
 }
 
-float GroundProfile::surface_line(float x_ws, float tread, float riser) const {
+GroundProfile::Tread GroundProfile::tread_at(int i, int most) const {
+  // The columns either side of i at its height, walked no further than `most` columns.
+  const float y = heights_[i];
+  Tread t{i, i};
+  while (t.first > 0 && heights_[t.first - 1] == y && t.last - t.first < most) --t.first;
+  while (t.last + 1 < size() && heights_[t.last + 1] == y && t.last - t.first < most) ++t.last;
+  return t;
+}
+
+float GroundProfile::surface_line(float x_ws, const SlopeReading& reading) const {
   const int i = column_of(x_ws);
   const float y = heights_[i];
   if (std::isnan(y)) return y;
-  // The tread under x: the columns either side at the same height (walked no further than a
-  // tread may be wide).
-  const int most = static_cast<int>(tread / step_) + 1;
-  int a = i, b = i;
-  while (a > 0 && heights_[a - 1] == y && b - a < most) --a;
-  while (b + 1 < size() && heights_[b + 1] == y && b - a < most) ++b;
-  const float width = static_cast<float>(b - a + 1) * step_;
-  if (width > tread) return y;
-  const float mid = x0_ + (static_cast<float>(a + b + 1) * 0.5f) * step_;
-  // The neighbouring tread on the side of x from the middle.
+  const int most = static_cast<int>(reading.tread / step_) + 1;
+  const Tread own = tread_at(i, most);
+  const float width = static_cast<float>(own.last - own.first + 1) * step_;
+  if (width > reading.tread) return y;  // a wide tread is flat ground
+  const float mid = x0_ + (static_cast<float>(own.first + own.last + 1) * 0.5f) * step_;
+  // The knot on the side of x from the middle: the neighbouring tread's middle, or, where that
+  // tread is wide (the flat top of a hill, the floor of a valley), its corner at the shared
+  // edge, so that the line runs on into the flat ground without a jump.
   const bool right = x_ws >= mid;
-  const int j = right ? b + 1 : a - 1;
-  if (j < 0 || j >= size() || std::isnan(heights_[j]) || std::fabs(heights_[j] - y) > riser) return y;
+  const int j = right ? own.last + 1 : own.first - 1;
+  if (j < 0 || j >= size() || std::isnan(heights_[j])) return y;
   const float y2 = heights_[j];
-  int c = j, d = j;
-  while (c > 0 && heights_[c - 1] == y2 && d - c < most) --c;
-  while (d + 1 < size() && heights_[d + 1] == y2 && d - c < most) ++d;
-  if (static_cast<float>(d - c + 1) * step_ > tread) return y;
-  const float mid2 = x0_ + (static_cast<float>(c + d + 1) * 0.5f) * step_;
-  if (std::fabs(y2 - y) > kMaxSlope * std::fabs(mid2 - mid)) return y;  // too steep: steps
+  const Tread next = tread_at(j, most);
+  const float next_width = static_cast<float>(next.last - next.first + 1) * step_;
+  const bool next_wide = next_width > reading.tread;
+  // Treads narrower than the foot may rise by any amount no steeper than kMaxSlope (tested below).
+  const bool under_foot = width < reading.foot && (next_wide || next_width < reading.foot);
+  if (!under_foot && std::fabs(y2 - y) > reading.riser) return y;
+  const float edge = x0_ + static_cast<float>(right ? j : own.first) * step_;
+  const float mid2 = next_wide ? edge : x0_ + (static_cast<float>(next.first + next.last + 1) * 0.5f) * step_;
+  // Too steep is a flight of steps (a corner knot is half a tread away: the slope of treads
+  // as wide as this one is half of that segment's).
+  const float run = std::fabs(mid2 - mid) * (next_wide ? 2.0f : 1.0f);
+  if (std::fabs(y2 - y) > kMaxSlope * run) return y;
   const float t = (x_ws - mid) / (mid2 - mid);
   return y + t * (y2 - y);
 }
 
-float GroundProfile::largest_jump(float a_ws, float b_ws, float tread, float riser) const {
+float GroundProfile::largest_jump(float a_ws, float b_ws, const SlopeReading& reading) const {
   if (a_ws > b_ws) std::swap(a_ws, b_ws);
   float most = 0.0f;
-  float prev = surface_line(x0_ + (static_cast<float>(column_of(a_ws)) + 0.5f) * step_, tread, riser);
+  float prev = surface_line(x0_ + (static_cast<float>(column_of(a_ws)) + 0.5f) * step_, reading);
   for (int i = column_of(a_ws) + 1, end = column_of(b_ws); i <= end; ++i) {
-    const float y = surface_line(x0_ + (static_cast<float>(i) + 0.5f) * step_, tread, riser);
+    const float y = surface_line(x0_ + (static_cast<float>(i) + 0.5f) * step_, reading);
     if (!std::isnan(y) && !std::isnan(prev)) most = std::max(most, std::fabs(y - prev));
     prev = y;
   }
   return most;
 }
 
+float GroundProfile::slope_top(float from_ws, float a_ws, float b_ws, const SlopeReading& reading) const {
+  if (empty()) return kNoGround;
+  if (a_ws > b_ws) std::swap(a_ws, b_ws);
+  const float end_x = x0_ + static_cast<float>(size()) * step_;
+  if (from_ws < x0_ || from_ws > end_x || a_ws < x0_ || b_ws > end_x) return kNoGround;  // cannot vouch beyond
+  const int lo = column_of(a_ws), hi = column_of(b_ws), start = column_of(from_ws);
+  auto line = [&](int i) { return surface_line(x0_ + (static_cast<float>(i) + 0.5f) * step_, reading); };
+  const float first = line(start);
+  float top = start >= lo && start <= hi ? first : kNoGround;
+  // Either way from the start as far as [lo, hi] reaches, each stopping at a real riser.
+  for (int dir : {-1, 1}) {
+    const int last = dir > 0 ? hi : lo;
+    float prev = first;
+    for (int i = start + dir; (last - i) * dir >= 0; i += dir) {
+      const float y = line(i);
+      if (std::isnan(y)) continue;  // a gap is no jump
+      if (!std::isnan(prev) && std::fabs(y - prev) > reading.ramp) break;
+      if (i >= lo && i <= hi && !(top >= y)) top = y;
+      prev = y;
+    }
+  }
+  return top;
+}
 
 }  // namespace ossa

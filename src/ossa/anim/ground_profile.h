@@ -19,6 +19,17 @@
 
 namespace ossa {
 
+// How the profile is read as a slope (surface_line): treads up to `tread` wide whose rises are
+// up to `riser` high — or any rise no steeper than GroundProfile::kMaxSlope between treads
+// narrower than `foot` (a foot cannot stand on one) — make a slope; a jump of more than
+// `ramp` between neighbouring columns of that reading is a riser. Metres.
+struct SlopeReading {
+  float tread = 0.0f;
+  float riser = 0.0f;
+  float foot = 0.0f;
+  float ramp = 0.0f;
+};
+
 class GroundProfile {
  public:
   // Samples [x0_ws, x1_ws] every `step` metres (> 0), boxes whose tops lie in
@@ -40,19 +51,33 @@ class GroundProfile {
   int column_of(float x_ws) const;
 
   // The surface under x read as a slope: the height of the line through the middles of the
-  // treads either side (a tread is a run of columns at one height), when the two treads are
-  // each narrower than `tread` metres, the rise between them at most `riser` metres and the
-  // line no steeper than kMaxSlope; else the column's own height (a real step, or a steep
-  // flight of small ones, keeps its risers). NaN over a gap.
+  // treads either side (a tread is a run of columns at one height), when x's tread is narrower
+  // than reading.tread, the rise to the next one a slope's (SlopeReading) and the line no
+  // steeper than kMaxSlope; else the column's own height (a real step, or a steep flight of small
+  // ones, keeps its risers). Where the next tread is wide (the flat top of a tile hill, the
+  // floor of a valley) the line runs to its corner, so the slope meets the flat without a
+  // jump. NaN over a gap.
   static constexpr float kMaxSlope = 0.7f;  // rise over run, about 35°
-  float surface_line(float x_ws, float tread, float riser) const;
+  float surface_line(float x_ws, const SlopeReading& reading) const;
 
   // The largest jump (metres) between neighbouring columns over [a_ws, b_ws] of the surface
-  // read as a slope (surface_line with the same tread and riser): 0 on flat ground and on a
+  // read as a slope (surface_line): 0 on flat ground and on a
   // tile slope read as a ramp, a riser's height at a real step; a gap counts as no jump.
-  float largest_jump(float a_ws, float b_ws, float tread, float riser) const;
+  float largest_jump(float a_ws, float b_ws, const SlopeReading& reading) const;
+
+  // The surface read as a slope (surface_line), walked from x = from_ws either way over
+  // [a_ws, b_ws] for as long as no jump between neighbouring columns exceeds reading.ramp (a real
+  // riser; a gap is none): its highest point over the part of [a_ws, b_ws] walked. NaN when
+  // the walk ends before [a_ws, b_ws], finds no ground there, or the range leaves the
+  // profile. What the legs climb without a step (the hill ahead) — the wall sweep's floor.
+  float slope_top(float from_ws, float a_ws, float b_ws, const SlopeReading& reading) const;
 
  private:
+  struct Tread {
+    int first = 0, last = 0;  // columns
+  };
+  Tread tread_at(int i, int most) const;
+
   std::vector<float> heights_;
   float x0_ = 0.0f, step_ = 1.0f, top_ = 0.0f, depth_ = 0.0f;
   std::uint64_t revision_ = 0;
