@@ -39,8 +39,12 @@ constexpr float kShoulderKeepOutOfHip = 0.1f;
 constexpr float kKneeMarginOfReach = 0.02f;
 // A single girdle's body looks this many seconds ahead for ground rising under its shoulder.
 constexpr float kShoulderLookAhead = 0.25f;
-// One tick raises no girdle by more than this many hip heights to clear a knee.
+// A legless body follows the ground under it and this many seconds of travel ahead.
+constexpr float kLeglessLookAhead = 0.2f;
+// One tick raises no girdle by more than this many hip heights to clear a knee, in at most
+// kKneePasses passes.
 constexpr float kMaxKneeRaiseOfHip = 0.5f;
+constexpr int kKneePasses = 6;
 
 struct Placement {
   const AnimContext& ctx;
@@ -233,12 +237,12 @@ void keep_stance_legs_unfolded(Placement& p, std::vector<float>& room) {
 // low body, or lifted in a swing) raises its girdle until the knee clears the ground under
 // it. A swinging leg's knee raises it only as far as the legs on the ground allow (their feet
 // must not slide); past that the swing itself lifts and tucks the leg (leg IK). With the foot
-// in place a raised joint lifts the knee by less than itself: up to four passes, as long as
-// some girdle moves.
+// in place a raised joint lifts the knee by less than itself: up to kKneePasses passes, as
+// long as some girdle moves.
 void keep_knees_off_ground(Placement& p, std::vector<float>& stance_up, std::vector<float>& swing_up, std::vector<float>& room) {
   const AnimRig& rig = p.ctx.rig;
   const Level& level = p.ctx.level;
-  for (int pass = 0; pass < 4; ++pass) {
+  for (int pass = 0; pass < kKneePasses; ++pass) {
     std::fill(stance_up.begin(), stance_up.end(), 0.0f);
     std::fill(swing_up.begin(), swing_up.end(), 0.0f);
     for (size_t i = 0; i < rig.legs.size(); ++i) {
@@ -248,13 +252,17 @@ void keep_knees_off_ground(Placement& p, std::vector<float>& stance_up, std::vec
       const glm::vec2 joint = p.body.to_fs(p.body.girdle_ws(rig, info.girdle));
       const float margin = kKneeMarginOfReach * info.reach;
       // The knee is no lower than a thigh below the joint nor a shin below the ankle: cheap
-      // tests before the IK (unless steps rise near the foot).
-      const bool steps_near = !(stance ? f.stance_reach_clear : f.swing_clear).clear_above(f.pos_ws.y + margin);
-      if (!steps_near && joint.y - info.upper > f.pos_ws.y + margin) continue;
+      // tests before the IK (unless steps rise near the foot, or any ground above it: a shin
+      // lying low across the corner of the tread a foot stepped down from cuts it, however
+      // small the step).
+      const Clearance& near = stance ? f.stance_reach_clear : f.swing_clear;
+      const bool steps_near = !near.clear_above(f.pos_ws.y + margin);
+      const bool corner_near = stance && !steps_near && !near.clear_above(f.pos_ws.y);
+      if (!steps_near && !corner_near && joint.y - info.upper > f.pos_ws.y + margin) continue;
       glm::vec2 dir;
       const glm::vec2 ankle = leg_ankle(p.ctx, p.body, static_cast<int>(i), p.body.to_fs(f.pos_ws), joint, true,
                                         stance ? f.stance_clear : f.swing_clear, &dir, nullptr);
-      if (!steps_near && ankle.y - info.lower > f.pos_ws.y + margin) continue;
+      if (!steps_near && !corner_near && ankle.y - info.lower > f.pos_ws.y + margin) continue;
       const TwoBoneIkResult ik = solve_two_bone_ik_directions(joint, info.upper, info.lower, ankle, info.bend);
       const glm::vec2 knee = p.body.to_ws(ik.middle);
       float& up = stance ? stance_up[info.girdle] : swing_up[info.girdle];
@@ -263,10 +271,13 @@ void keep_knees_off_ground(Placement& p, std::vector<float>& stance_up, std::vec
       }
       // On steps a thigh or shin may cross the edge of a step beside the knee (a swinging leg
       // far back down a flight, say), as may a shin coming up to a foot on the edge of a ledge
-      // from a knee below it.
-      if (steps_near || knee.y < f.pos_ws.y + margin) {
+      // from a knee below it. A shin across a small tread's corner raises its girdle only as
+      // far as the stance legs reach (swing_up's limit), lest a foot slide.
+      if (steps_near || corner_near || knee.y < f.pos_ws.y + margin) {
         const glm::vec2 hip = p.body.to_ws(joint), heel = p.body.to_ws(ik.end);
-        up = std::max({up, raise_to_clear(hip, knee, level, p.ctx.hits), raise_to_clear(knee, heel, level, p.ctx.hits)});
+        const float cross = std::max(raise_to_clear(hip, knee, level, p.ctx.hits), raise_to_clear(knee, heel, level, p.ctx.hits));
+        float& cross_up = corner_near && knee.y >= f.pos_ws.y + margin ? swing_up[info.girdle] : up;
+        cross_up = std::max(cross_up, cross);
       }
     }
     bool moved = false;
@@ -377,8 +388,11 @@ void place_body(const AnimContext& ctx, const PlacementInputs& in, const FootSet
     // Legless: follow the highest ground under the body, lifted lately so that the wave keeps
     // the body out of the ground (held there, settling back slowly, rather than pulled down
     // and lifted again every tick).
-    auto hit = ground_below(ctx.level, body.x_ws - rig.body_half_length, body.x_ws + rig.body_half_length,
-                            body.root_y_ws + rig.hip_height, 100.0f);
+    // The span looks kLeglessLookAhead seconds ahead, so that at speed the body has risen to a
+    // step by the time it reaches it (the root height is smoothed).
+    const float ahead = body.facing * in.speed * kLeglessLookAhead;
+    auto hit = ground_below(ctx.level, body.x_ws - rig.body_half_length + std::min(ahead, 0.0f),
+                            body.x_ws + rig.body_half_length + std::max(ahead, 0.0f), body.root_y_ws + rig.hip_height, 100.0f);
     if (in.dt > 0.0f) state.body_lift *= std::exp(-in.dt);
     target_root = (hit ? hit->height_ws : body.root_y_ws - rig.root_rest_y) + rig.root_rest_y + state.body_lift;
   } else {
