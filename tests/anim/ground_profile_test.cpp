@@ -85,6 +85,13 @@ TEST_CASE("ground profile: treads narrower than the foot are a slope whatever th
   GroundProfile steep_profile;
   steep_profile.build(steep, 0.0f, 6.0f, 1.0f, 2.0f, 0.005f);
   CHECK(steep_profile.largest_jump(1.5f, 3.0f, foot) == Approx(0.025f).margin(1e-4f));
+  // Nor higher than kUnderFootRiser risers: a long foot (a kangaroo's 40 cm) on a flight of
+  // 35 cm treads rising 25 cm still meets steps.
+  const Level flight = test::tile_slope_level(2.0f, 6, 0.35f, 0.25f);
+  GroundProfile flight_profile;
+  flight_profile.build(flight, 0.0f, 6.0f, 3.0f, 4.0f, 0.02f);
+  const SlopeReading kangaroo{0.36f, 0.072f, 0.4f, 0.036f};
+  CHECK(flight_profile.largest_jump(1.5f, 4.0f, kangaroo) == Approx(0.25f).margin(1e-4f));
 }
 
 TEST_CASE("ground profile: slope_top walks the slope to its first real riser", "[anim][profile]") {

@@ -59,6 +59,18 @@ GroundProfile::Tread GroundProfile::tread_at(int i, int most) const {
   return t;
 }
 
+// Does a narrow tread (height y, width w) join its neighbour (height yn, width wn; wide: flat
+// ground) as a slope? Its rise is a slope's (SlopeReading), and no steeper than kMaxSlope from
+// middle to middle (a wide neighbour's knot lies half the narrow tread's width inside it).
+bool GroundProfile::joins(float y, float w, float yn, float wn, bool n_wide, const SlopeReading& reading) const {
+  const bool under_foot = w < reading.foot && (n_wide || wn < reading.foot);
+  if (std::fabs(yn - y) > (under_foot ? kUnderFootRiser : 1.0f) * reading.riser) return false;
+  // A tread's width in columns is off by up to a column either way (a column holds the
+  // highest box touching it): the run gets a column's benefit of the doubt.
+  const float run = (n_wide ? w : 0.5f * (w + wn)) + step_;
+  return std::fabs(yn - y) <= kMaxSlope * run;
+}
+
 float GroundProfile::surface_line(float x_ws, const SlopeReading& reading) const {
   const int i = column_of(x_ws);
   const float y = heights_[i];
@@ -66,29 +78,44 @@ float GroundProfile::surface_line(float x_ws, const SlopeReading& reading) const
   const int most = static_cast<int>(reading.tread / step_) + 1;
   const Tread own = tread_at(i, most);
   const float width = static_cast<float>(own.last - own.first + 1) * step_;
-  if (width > reading.tread) return y;  // a wide tread is flat ground
-  const float mid = x0_ + (static_cast<float>(own.first + own.last + 1) * 0.5f) * step_;
-  // The knot on the side of x from the middle: the neighbouring tread's middle, or, where that
-  // tread is wide (the flat top of a hill, the floor of a valley), its corner at the shared
-  // edge, so that the line runs on into the flat ground without a jump.
-  const bool right = x_ws >= mid;
-  const int j = right ? own.last + 1 : own.first - 1;
-  if (j < 0 || j >= size() || std::isnan(heights_[j])) return y;
-  const float y2 = heights_[j];
-  const Tread next = tread_at(j, most);
-  const float next_width = static_cast<float>(next.last - next.first + 1) * step_;
-  const bool next_wide = next_width > reading.tread;
-  // Treads narrower than the foot may rise by any amount no steeper than kMaxSlope (tested below).
-  const bool under_foot = width < reading.foot && (next_wide || next_width < reading.foot);
-  if (!under_foot && std::fabs(y2 - y) > reading.riser) return y;
-  const float edge = x0_ + static_cast<float>(right ? j : own.first) * step_;
-  const float mid2 = next_wide ? edge : x0_ + (static_cast<float>(next.first + next.last + 1) * 0.5f) * step_;
-  // Too steep is a flight of steps (a corner knot is half a tread away: the slope of treads
-  // as wide as this one is half of that segment's).
-  const float run = std::fabs(mid2 - mid) * (next_wide ? 2.0f : 1.0f);
-  if (std::fabs(y2 - y) > kMaxSlope * run) return y;
-  const float t = (x_ws - mid) / (mid2 - mid);
-  return y + t * (y2 - y);
+  auto middle = [&](const Tread& t) { return x0_ + (static_cast<float>(t.first + t.last + 1) * 0.5f) * step_; };
+  if (width <= reading.tread) {
+    // A narrow tread: the line from its middle to the knot on the side of x — the next
+    // tread's middle, or, where that one is wide (the flat top of a hill, the floor of a
+    // valley), a point half this tread's width inside it, so the line runs on into the flat
+    // ground at the slope's own steepness and without a jump.
+    const float mid = middle(own);
+    const int dir = x_ws >= mid ? 1 : -1;
+    const int j = dir > 0 ? own.last + 1 : own.first - 1;
+    if (j < 0 || j >= size() || std::isnan(heights_[j])) return y;
+    const float y2 = heights_[j];
+    const Tread next = tread_at(j, most);
+    const float next_width = static_cast<float>(next.last - next.first + 1) * step_;
+    const bool next_wide = next_width > reading.tread;
+    if (!joins(y, width, y2, next_width, next_wide, reading)) return y;
+    const float edge = x0_ + static_cast<float>(dir > 0 ? j : own.first) * step_;
+    const float knot = next_wide ? edge + static_cast<float>(dir) * 0.5f * width : middle(next);
+    return y + (x_ws - mid) / (knot - mid) * (y2 - y);
+  }
+  // A wide tread is flat, but for the half-width of a narrow neighbour that joins it as a
+  // slope (the same knot seen from this side).
+  const int near = static_cast<int>(0.5f * reading.tread / step_) + 1;
+  for (int dir : {-1, 1}) {
+    int k = i;
+    for (int n = 0; n < near && k + dir >= 0 && k + dir < size() && heights_[k + dir] == y; ++n) k += dir;
+    const int j = k + dir;
+    if (j < 0 || j >= size() || heights_[j] == y || std::isnan(heights_[j])) continue;
+    const Tread next = tread_at(j, most);
+    const float next_width = static_cast<float>(next.last - next.first + 1) * step_;
+    if (next_width > reading.tread) continue;  // two wide treads: a riser between them
+    const float edge = x0_ + static_cast<float>(dir > 0 ? j : k) * step_;
+    const float knot = edge - static_cast<float>(dir) * 0.5f * next_width;
+    if ((x_ws - knot) * static_cast<float>(dir) <= 0.0f) continue;  // further in: flat
+    const float y2 = heights_[j];
+    if (!joins(y2, next_width, y, width, true, reading)) continue;
+    return y + (x_ws - knot) / (middle(next) - knot) * (y2 - y);
+  }
+  return y;
 }
 
 float GroundProfile::largest_jump(float a_ws, float b_ws, const SlopeReading& reading) const {

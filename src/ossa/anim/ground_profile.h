@@ -20,9 +20,10 @@
 namespace ossa {
 
 // How the profile is read as a slope (surface_line): treads up to `tread` wide whose rises are
-// up to `riser` high — or any rise no steeper than GroundProfile::kMaxSlope between treads
-// narrower than `foot` (a foot cannot stand on one) — make a slope; a jump of more than
-// `ramp` between neighbouring columns of that reading is a riser. Metres.
+// up to `riser` high — or, between treads narrower than `foot` (a foot cannot stand on one),
+// up to GroundProfile::kUnderFootRiser risers high — and no steeper than
+// GroundProfile::kMaxSlope make a slope; a jump of more than `ramp` between neighbouring
+// columns of that reading is a riser. Metres.
 struct SlopeReading {
   float tread = 0.0f;
   float riser = 0.0f;
@@ -55,9 +56,10 @@ class GroundProfile {
   // than reading.tread, the rise to the next one a slope's (SlopeReading) and the line no
   // steeper than kMaxSlope; else the column's own height (a real step, or a steep flight of small
   // ones, keeps its risers). Where the next tread is wide (the flat top of a tile hill, the
-  // floor of a valley) the line runs to its corner, so the slope meets the flat without a
-  // jump. NaN over a gap.
+  // floor of a valley) the line runs half a tile into it, so the slope meets the flat without
+  // a jump or a steeper piece. NaN over a gap.
   static constexpr float kMaxSlope = 0.7f;  // rise over run, about 35°
+  static constexpr float kUnderFootRiser = 2.0f;
   float surface_line(float x_ws, const SlopeReading& reading) const;
 
   // The largest jump (metres) between neighbouring columns over [a_ws, b_ws] of the surface
@@ -77,6 +79,7 @@ class GroundProfile {
     int first = 0, last = 0;  // columns
   };
   Tread tread_at(int i, int most) const;
+  bool joins(float y, float w, float yn, float wn, bool n_wide, const SlopeReading& reading) const;
 
   std::vector<float> heights_;
   float x0_ = 0.0f, step_ = 1.0f, top_ = 0.0f, depth_ = 0.0f;
