@@ -278,6 +278,9 @@ void Animator::step_legs(float dt, float ism, const Level& level) {
     for (size_t i = 0; i < rig.legs.size(); ++i) {
       FootState& f = feet_.of_leg(static_cast<int>(i));
       if (f.state == LegState::kSwing && !f.easing) start_ease(in, static_cast<int>(i), f);
+      // A foot the body placement stretched past its reach steps to where it reaches, once,
+      // rather than hang off its leg (and stays if there is no such place).
+      if (f.state == LegState::kStance && handoff_.lift_now[feet_.foot_of_leg[i]]) restep_in_reach(in, static_cast<int>(i), f);
     }
     return;
   }

@@ -33,10 +33,13 @@ constexpr float kDragLiftOfRest = 0.05f;
 // for over kGirdleKeepOutHalfOfRest either side.
 constexpr float kGirdleKeepOutOfRest = 0.12f;
 constexpr float kGirdleKeepOutHalfOfRest = 0.1f;
+// Beyond that window the ground's claim fades by this many rest heights below its top.
+constexpr float kKeepOutFadeOfRest = 0.25f;
 // A shoulder keeps this many hip heights above the ground under it.
 constexpr float kShoulderKeepOutOfHip = 0.1f;
-// A knee keeps this fraction of its leg's reach above the ground.
+// A knee keeps this fraction of its leg's reach above the ground within kKneeHalfWidth (m).
 constexpr float kKneeMarginOfReach = 0.02f;
+constexpr float kKneeHalfWidth = 0.001f;
 // A single girdle's body looks this many seconds ahead for ground rising under its shoulder.
 constexpr float kShoulderLookAhead = 0.25f;
 // A legless body follows the ground under it and this many seconds of travel ahead.
@@ -85,6 +88,17 @@ void move_girdle(Placement& p, int g, float dy) {
   body.root_y_ws += o_before.y - body.rotate_body(o).y + (dy - moved);
 }
 
+// The least height of a girdle joint at joint_ws (rest height `rest`) out of the ground:
+// kGirdleKeepOutOfRest of its rest height above the highest ground within
+// kGirdleKeepOutHalfOfRest of it either side, the ground as far again beyond counting less and
+// less (keep_out_height), so that a bump's edge coming into reach as the body moves or turns
+// does not pop the body up by its height. Ground is looked for from half a rest height (plus
+// `extra`) above the joint; -1e30 where there is none.
+float girdle_keep_out(const AnimContext& ctx, glm::vec2 joint_ws, float rest, float extra) {
+  return keep_out_height(ctx.level, joint_ws.x, kGirdleKeepOutHalfOfRest * rest, kGirdleKeepOutOfRest * rest,
+                         kKeepOutFadeOfRest * rest, joint_ws.y + 0.5f * rest + extra, 100.0f, ctx.hits);
+}
+
 // Each girdle's target height: the mean ground under its feet (a swinging foot counts where
 // it is between lift-off and landing), raised halfway to a higher step under the girdle, plus
 // its standing height and the bob; a foot hovering above a lower step brings it down.
@@ -121,6 +135,9 @@ void girdle_heights(Placement& p, std::vector<float>& height) {
       lowest = std::min(lowest, foot.y + std::sqrt(r * r - dx * dx));
     }
     height[g] = std::min(height[g], std::max(lowest, floor));
+    // Never below where clamp 5 (keep_body_out_of_ground) would put it: the body comes down
+    // smoothly onto that height rather than sink past it and be lifted back.
+    height[g] = std::max(height[g], girdle_keep_out(p.ctx, {gx, height[g]}, girdle.rest_height, 0.0f));
   }
 }
 
@@ -266,8 +283,12 @@ void keep_knees_off_ground(Placement& p, std::vector<float>& stance_up, std::vec
       const TwoBoneIkResult ik = solve_two_bone_ik_directions(joint, info.upper, info.lower, ankle, info.bend);
       const glm::vec2 knee = p.body.to_ws(ik.middle);
       float& up = stance ? stance_up[info.girdle] : swing_up[info.girdle];
-      if (auto ground = ground_below(level, knee.x - 0.005f, knee.x + 0.005f, knee.y + info.reach, 2.0f * info.reach)) {
-        up = std::max(up, ground->height_ws + margin - knee.y);
+      // (The ground within kKneeHalfWidth of the knee, fading beyond: a knee beside a riser
+      // is not lifted by its height when a turn moves it a millimetre.)
+      if (const float ground = keep_out_height(level, knee.x, kKneeHalfWidth, margin, info.reach, knee.y + info.reach,
+                                               2.0f * info.reach, p.ctx.hits);
+          ground > -1e29f) {
+        up = std::max(up, ground - knee.y);
       }
       // On steps a thigh or shin may cross the edge of a step beside the knee (a swinging leg
       // far back down a flight, say), as may a shin coming up to a foot on the edge of a ledge
@@ -327,11 +348,7 @@ void keep_body_out_of_ground(Placement& p, float fell) {
   float raise = 0.0f;
   for (size_t g = 0; g < rig.girdles.size(); ++g) {
     const glm::vec2 joint = p.body.girdle_ws(rig, static_cast<int>(g));
-    const float rest = rig.girdles[g].rest_height;
-    const float half = kGirdleKeepOutHalfOfRest * rest;
-    if (auto below = ground_below(p.ctx.level, joint.x - half, joint.x + half, joint.y + 0.5f * rest + fell, 100.0f)) {
-      raise = std::max(raise, below->height_ws + kGirdleKeepOutOfRest * rest - joint.y);
-    }
+    raise = std::max(raise, girdle_keep_out(p.ctx, joint, rig.girdles[g].rest_height, fell) - joint.y);
   }
   auto keep_shoulder_out = [&](const RigLimb& limb) {
     raise = std::max(raise, shoulder_need(p, p.body.body_point_ws(rig, bone_start(rig.model_rest[limb.bones[0]])), fell));

@@ -42,6 +42,22 @@ bool polyline_hits_level(const Level& level, const glm::vec2* p, int n, std::vec
   return false;
 }
 
+float keep_out_height(const Level& level, float x, float half, float keep, float fade, float from_y, float max_drop,
+                      std::vector<int>& hits) {
+  hits.clear();
+  level.overlapping(Box{{x - 2.0f * half, from_y - max_drop - kGroundEpsilon}, {x + 2.0f * half, from_y + kGroundEpsilon}}, hits);
+  float need = -1e30f;
+  for (int h : hits) {
+    const Box& box = level.box(h);
+    const float top = box.top();
+    if (top > from_y + kGroundEpsilon || top < from_y - max_drop) continue;  // a wall above, or too deep
+    const float dist = std::max({0.0f, box.min_ws.x - x, x - box.max_ws.x});
+    const float t = std::clamp((dist - half) / std::max(half, 1e-6f), 0.0f, 1.0f);
+    need = std::max(need, top + keep - t * t * (3.0f - 2.0f * t) * (keep + fade));
+  }
+  return need;
+}
+
 float raise_to_clear(glm::vec2 a, glm::vec2 b, const Level& level, std::vector<int>& hits) {
   // Over the part of the box's width the segment spans, its lowest point to the box's top.
   hits.clear();

@@ -25,6 +25,14 @@ std::optional<GroundHit> ground_below(const Level& level, float x0, float x1, fl
 // `hits` is scratch.
 bool polyline_hits_level(const Level& level, const glm::vec2* p, int n, std::vector<int>& hits);
 
+// The least height a point at x must have to stay `keep` above the ground within `half` of it
+// (boxes whose tops lie in [from_y - max_drop, from_y]): the ground within `half` counts in
+// full, the ground up to `half` further away less and less (its claim fades to `fade` below
+// its top), so that the height changes smoothly as the point moves sideways past the edge of a
+// step instead of jumping by the step's height. -1e30 where there is no ground.
+float keep_out_height(const Level& level, float x, float half, float keep, float fade, float from_y, float max_drop,
+                      std::vector<int>& hits);
+
 // How far the segment a-b must rise (straight up) to leave every box it cuts.
 float raise_to_clear(glm::vec2 a, glm::vec2 b, const Level& level, std::vector<int>& hits);
 

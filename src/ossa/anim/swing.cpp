@@ -168,6 +168,17 @@ void start_ease(const FootholdInputs& in, int leg, FootState& f, const glm::vec2
   begin_swing(in.ctx, in.body, leg, f, landing, ease_shape(in.ctx.params.stop_ease_time));
 }
 
+bool restep_in_reach(const FootholdInputs& in, int leg, FootState& f) {
+  const glm::vec2 joint = in.body.girdle_ws(in.ctx.rig, in.ctx.rig.legs[leg].girdle);
+  glm::vec2 spot;
+  if (!nearest_fit(in, leg, {joint.x, f.pos_ws.y}, &spot, true) || !reaches(in, leg, spot) ||
+      glm::length(spot - f.pos_ws) < 1e-3f) {
+    return false;
+  }
+  start_ease(in, leg, f, &spot);
+  return true;
+}
+
 void step_to(const FootholdInputs& in, int leg, FootState& f, glm::vec2 spot) {
   start_ease(in, leg, f, &spot);
   // Already lifted on this tick: the first sample of a path cleared from the second on.

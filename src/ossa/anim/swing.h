@@ -45,6 +45,11 @@ void start_ease(const FootholdInputs& in, int leg, FootState& foot, const glm::v
 // start_ease to `spot`, already one path sample into the step on this tick.
 void step_to(const FootholdInputs& in, int leg, FootState& foot, glm::vec2 spot);
 
+// A standing creature's stance foot that its leg no longer reaches (the body held up by the
+// ground under its girdle) steps, eased, to the nearest place it fits that the leg reaches,
+// under its girdle joint; false (the foot stays) when there is none.
+bool restep_in_reach(const FootholdInputs& in, int leg, FootState& foot);
+
 // The foot's point at swing progress s in [0, 1].
 glm::vec2 swing_point(const FootState& foot, float s);
 
