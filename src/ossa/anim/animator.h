@@ -14,6 +14,7 @@
 //   leg_ik            two-bone IK over all legs, foot roll
 //   limb_clearance    arms, fins, wings and the tail kept out of the level
 //   secondary_motion  bob, tail spring, crawl wave, arm swing, fin beat
+//   animator_pose     the pose and forward kinematics (stage 9), the lazily computed outputs
 //
 // Spaces — one suffix, one meaning:
 //   _ws  world: metres, +x right, +y up.

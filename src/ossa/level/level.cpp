@@ -108,6 +108,20 @@ void Level::overlapping(const Box& box, std::vector<int>& out) const {
   index_.overlapping(box, out);
 }
 
+float Level::kill_y() const {
+  if (kill_height_ws) return *kill_height_ws;
+  if (colliders_.empty()) return spawn_ws.y - kKillMargin;
+  float lowest = colliders_.front().min_ws.y;
+  for (const Box& b : colliders_) lowest = std::min(lowest, b.min_ws.y);
+  return lowest - kKillMargin;
+}
+
+bool Level::spawn_has_ground() const {
+  const float kill = kill_y();
+  if (!(spawn_ws.y > kill)) return false;
+  return ground_height_below(spawn_ws.x - 0.05f, spawn_ws.x + 0.05f, spawn_ws.y + 0.01f, spawn_ws.y + 0.01f - kill).has_value();
+}
+
 glm::vec2 Level::free_point_above(glm::vec2 p_ws) const {
   OSSA_ASSERT(finite(p_ws), "free_point_above: point must be finite");
   std::vector<int> hits;

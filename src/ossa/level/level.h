@@ -49,6 +49,9 @@ class Level {
   std::string name;                     // shown in the editor; may be empty
   glm::vec2 spawn_ws{0.0f};             // where the player's creature starts (on the ground)
   std::optional<Background> background;
+  // A creature whose root falls below this height (world y, metres) has left the level and
+  // starts again at the spawn (a pit's floor may be it). Unset: kill_y()'s default.
+  std::optional<float> kill_height_ws;
 
   Level() = default;
   // Every box must be valid (Box::is_valid()).
@@ -108,11 +111,17 @@ class Level {
   glm::vec2 free_point_above(glm::vec2 p_ws) const;
   // Is the spawn point inside a collider? (The level editor marks such a spawn.)
   bool spawn_inside_box() const { return free_point_above(spawn_ws) != spawn_ws; }
+  // The kill height: kill_height_ws, else kKillMargin below the lowest box (or below the
+  // spawn in a level without boxes).
+  float kill_y() const;
+  static constexpr float kKillMargin = 2.0f;  // metres
+  // Is there ground below the spawn point, above the kill height?
+  bool spawn_has_ground() const;
 
-  // Same name, spawn, background and colliders (in order).
+  // Same name, spawn, background, kill height and colliders (in order).
   friend bool operator==(const Level& a, const Level& b) {
     return a.name == b.name && a.spawn_ws == b.spawn_ws && a.background == b.background &&
-           a.colliders_ == b.colliders_;
+           a.kill_height_ws == b.kill_height_ws && a.colliders_ == b.colliders_;
   }
 
  private:

@@ -85,6 +85,9 @@ Result<Level> level_from_json(const Json& doc, std::string_view file) {
     level.spawn_ws.y = r.number_f(*spawn, "spawn", "y", -kMaxLevelCoordinate, kMaxLevelCoordinate);
   }
   level.background = read_background(r, doc);
+  if (r.has(doc, "kill_height")) {
+    level.kill_height_ws = r.number_f(doc, "", "kill_height", -kMaxLevelCoordinate, kMaxLevelCoordinate);
+  }
   if (r.failed()) return r.error();
 
   const Json* colliders = r.array(doc, "", "colliders");
@@ -171,6 +174,7 @@ Json level_to_json(const Level& level) {
                          {"colour", {shortest_decimal(b.colour.r), shortest_decimal(b.colour.g),
                                      shortest_decimal(b.colour.b)}}};
   }
+  if (level.kill_height_ws) doc["kill_height"] = shortest_decimal(*level.kill_height_ws);
   Json colliders = Json::array();
   for (const Box& box : level.colliders()) {
     colliders.push_back({{"x", shortest_decimal(box.min_ws.x)},
@@ -187,7 +191,7 @@ std::string level_to_text(const Level& level) {
   // line, so shipped levels read well and diff line by line.
   const Json doc = level_to_json(level);
   std::string out = "{\n";
-  for (const char* key : {"format", "version", "name", "spawn", "background"}) {
+  for (const char* key : {"format", "version", "name", "spawn", "background", "kill_height"}) {
     if (!doc.contains(key)) continue;
     out += "  \"" + std::string(key) + "\": ";
     if (doc[key].is_object()) {

@@ -13,6 +13,9 @@
 //       "parallax": 0.5,                    scroll factor in [0, 1], default 0.5
 //       "colour": [0.55, 0.70, 0.85]        linear RGB, three numbers in [0, 1]
 //     },
+//     "kill_height": -12.0,              optional number: a creature whose root falls below
+//                                        this y has left the level and starts again at the
+//                                        spawn; default 2 m below the lowest box
 //     "colliders": [                     required array (may be empty), at most 1 000 000
 //       {"x": 0.0, "y": -1.0, "w": 70.0, "h": 1.0},   x, y = bottom-left corner;
 //       ...                                            w, h = width and height > 0

@@ -3,6 +3,7 @@
 #include "ossa/level/level_load.h"
 
 #include <cctype>
+#include <cstdio>
 #include <filesystem>
 #include <system_error>
 
@@ -59,6 +60,35 @@ const char* level_format_name(LevelFormat format) {
     case LevelFormat::kLdtk: return "ldtk";
   }
   return "ossa";
+}
+
+std::vector<std::string> level_warnings(const Level& level) {
+  std::vector<std::string> out;
+  if (level.empty()) {
+    out.push_back("the level has no colliders: nothing to stand on");
+    return out;
+  }
+  const glm::vec2 s = level.spawn_ws;
+  char at[96];
+  std::snprintf(at, sizeof(at), "(%.3g, %.3g)", double(s.x), double(s.y));
+  if (level.point_inside(s + glm::vec2(0.0f, 0.01f))) {
+    out.push_back(std::string("the spawn ") + at + " is inside a box");
+  }
+  const float kill = level.kill_y();
+  const auto g = s.y > kill ? level.ground_height_below(s.x - 0.05f, s.x + 0.05f, s.y + 0.01f, s.y + 0.01f - kill) : std::nullopt;
+  if (!g) {
+    char text[256];
+    std::snprintf(text, sizeof(text),
+                  "the spawn %s has no ground below it: creatures fall to the kill height (y %.3g) and start again there",
+                  at, double(kill));
+    out.push_back(text);
+  } else if (s.y - g->height_ws > 0.05f) {
+    char gap[256];
+    std::snprintf(gap, sizeof(gap), "the spawn %s is %.3g m above the ground below it; the creature drops", at,
+                  double(s.y - g->height_ws));
+    out.push_back(gap);
+  }
+  return out;
 }
 
 LevelFormat detect_level_format(std::string_view text, std::string_view path) {

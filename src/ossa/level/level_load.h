@@ -52,6 +52,12 @@ struct LevelLoadReport {
   std::vector<std::string> warnings;
 };
 
+// What a designer should know about a level that loads (every tool prints these as
+// "warning: FILE: ..." lines): a level without boxes, a spawn inside a box, a spawn with no
+// ground below it above the kill height (the creature falls and starts again, forever), a
+// spawn well above the ground (the creature drops).
+std::vector<std::string> level_warnings(const Level& level);
+
 // Reads a file named relative to nothing (the caller resolves paths); Result names the file.
 using FileLoader = std::function<Result<std::string>(const std::string& path)>;
 
