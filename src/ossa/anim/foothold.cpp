@@ -184,13 +184,15 @@ bool find_landing(const FootholdInputs& in, int leg, glm::vec2 foot_ws, float x_
     // Up or down a slope (a tile hill read as a ramp, with no real riser between the foot and
     // the landing) a stride may climb or descend further than a step: the step limits count
     // from the slope's height at the landing.
-    float top = foot_ws.y + up, bottom = lowest;
-    const float along = in.ctx.ground.slope_top(foot_ws.x, x + span_lo, x + span_hi, reading);
-    if (!std::isnan(along)) {
-      top = std::max(top, along + up);
-      bottom = std::min(bottom, along - down);
+    // (Asked only when the plain step limits find no ground there.)
+    auto hit = ground_below(in.ctx.level, x + span_lo, x + span_hi, foot_ws.y + up, foot_ws.y + up - lowest);
+    if (!hit) {
+      const float along = in.ctx.ground.slope_top(foot_ws.x, x + span_lo, x + span_hi, reading);
+      if (!std::isnan(along)) {
+        const float top = std::max(foot_ws.y + up, along + up), bottom = std::min(lowest, along - down);
+        hit = ground_below(in.ctx.level, x + span_lo, x + span_hi, top, top - bottom);
+      }
     }
-    auto hit = ground_below(in.ctx.level, x + span_lo, x + span_hi, top, top - bottom);
     if (!hit) continue;
     const float y = hit->height_ws;
     const Box foot_box{{x + span_lo + 0.002f, y + 0.002f}, {x + span_hi - 0.002f, y + height}};

@@ -38,6 +38,11 @@ void GroundProfile::build(const Level& level, float x0_ws, float x1_ws, float to
       if (!(heights_[i] >= y)) heights_[i] = y;
     }
   }
+  // The treads: runs of columns at one height (a gap's columns are runs of one).
+  run_first_.resize(n);
+  run_last_.resize(n);
+  for (int i = 0; i < n; ++i) run_first_[i] = i > 0 && heights_[i - 1] == heights_[i] ? run_first_[i - 1] : i;
+  for (int i = n - 1; i >= 0; --i) run_last_[i] = i + 1 < n && heights_[i + 1] == heights_[i] ? run_last_[i + 1] : i;
 }
 
 bool GroundProfile::covers(const Level& level, float x0_ws, float x1_ws, float lo_ws, float hi_ws) const {
@@ -51,11 +56,11 @@ int GroundProfile::column_of(float x_ws) const {
 }
 
 GroundProfile::Tread GroundProfile::tread_at(int i, int most) const {
-  // The columns either side of i at its height, walked no further than `most` columns.
-  const float y = heights_[i];
-  Tread t{i, i};
-  while (t.first > 0 && heights_[t.first - 1] == y && t.last - t.first < most) --t.first;
-  while (t.last + 1 < size() && heights_[t.last + 1] == y && t.last - t.first < most) ++t.last;
+  // The columns either side of i at its height, no further than `most` columns to the left
+  // and then `most` in all (as walking left first, then right, would find them).
+  Tread t;
+  t.first = std::max(run_first_[i], i - most);
+  t.last = std::min(run_last_[i], t.first + most);
   return t;
 }
 
@@ -101,8 +106,10 @@ float GroundProfile::surface_line(float x_ws, const SlopeReading& reading) const
   // slope (the same knot seen from this side).
   const int near = static_cast<int>(0.5f * reading.tread / step_) + 1;
   for (int dir : {-1, 1}) {
-    int k = i;
-    for (int n = 0; n < near && k + dir >= 0 && k + dir < size() && heights_[k + dir] == y; ++n) k += dir;
+    // The tread's end on this side, if it is within `near` columns.
+    const int end = dir > 0 ? run_last_[i] : run_first_[i];
+    if ((end - i) * dir >= near) continue;
+    const int k = end;
     const int j = k + dir;
     if (j < 0 || j >= size() || heights_[j] == y || std::isnan(heights_[j])) continue;
     const Tread next = tread_at(j, most);

@@ -82,6 +82,7 @@ class GroundProfile {
   bool joins(float y, float w, float yn, float wn, bool n_wide, const SlopeReading& reading) const;
 
   std::vector<float> heights_;
+  std::vector<int> run_first_, run_last_;  // per column: the first and last column of its tread
   float x0_ = 0.0f, step_ = 1.0f, top_ = 0.0f, depth_ = 0.0f;
   std::uint64_t revision_ = 0;
   const Level* level_ = nullptr;

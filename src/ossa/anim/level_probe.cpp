@@ -44,6 +44,12 @@ bool polyline_hits_level(const Level& level, const glm::vec2* p, int n, std::vec
 
 float keep_out_height(const Level& level, float x, float half, float keep, float fade, float from_y, float max_drop,
                       std::vector<int>& hits) {
+  // The highest ground over the whole window first: when its box lies within `half`, it
+  // decides alone (every other box's claim is lower), which is flat ground's case.
+  const auto highest = ground_below(level, x - 2.0f * half, x + 2.0f * half, from_y, max_drop);
+  if (!highest) return -1e30f;
+  const Box& top_box = level.box(highest->index);
+  if (std::max({0.0f, top_box.min_ws.x - x, x - top_box.max_ws.x}) <= half) return highest->height_ws + keep;
   hits.clear();
   level.overlapping(Box{{x - 2.0f * half, from_y - max_drop - kGroundEpsilon}, {x + 2.0f * half, from_y + kGroundEpsilon}}, hits);
   float need = -1e30f;
