@@ -257,7 +257,7 @@ void Game::next_character() {
   }
 }
 
-Status Game::set_player_character(const std::string& rig_path) { return impl_->switch_character(*world_, rig_path); }
+Status Game::set_player_character(const std::string& rig_path) { return impl_->switch_character(*world_, rig_path, true); }
 
 bool Game::frame(double dt_seconds) {
   Impl& m = *impl_;

@@ -107,8 +107,8 @@ class Game {
   void random_creature();
   // Switches the player to the next shipped rigged character (assets/characters/*.rig.json).
   void next_character();
-  // Makes the player the rigged character of this rig file (loaded once, then kept); on an
-  // error the player stays as it was and the error names the file.
+  // Makes the player the rigged character of this rig file, read anew (the rig window may have
+  // saved it since); on an error the player stays as it was and the error names the file.
   Status set_player_character(const std::string& rig_path);
   bool replay_finished() const;
   // The camera of the last rendered frame (world metres; for mouse picking).

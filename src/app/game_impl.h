@@ -104,9 +104,11 @@ struct Game::Impl {
   void snapshot_all(const World& world, bool both);  // prev = curr (both: also curr = now)
   void after_step(const World& world);               // curr = now
   bool switch_creature(World& world, const Genome& g);
-  Result<const CharacterEntry*> character(const std::string& path);  // loaded once, then cached
+  // Loaded once, then cached (the newest load of a path wins; older ones stay for whoever
+  // still walks as them); `reload` loads the file again (the rig window saved it anew).
+  Result<const CharacterEntry*> character(const std::string& path, bool reload = false);
   const CharacterEntry* entry_of(const Character* c) const;
-  Status switch_character(World& world, const std::string& path);
+  Status switch_character(World& world, const std::string& path, bool reload = false);
   void start_recording(World& world, const std::string& level, bool respawn);
   std::string stop_recording(const std::string& path);
   std::string next_free_replay_path();

@@ -179,9 +179,9 @@ bool Game::Impl::switch_creature(World& world, const Genome& g) {
   return true;
 }
 
-Result<const Game::Impl::CharacterEntry*> Game::Impl::character(const std::string& path) {
-  for (const auto& e : characters) {
-    if (e->path == path) return e.get();
+Result<const Game::Impl::CharacterEntry*> Game::Impl::character(const std::string& path, bool reload) {
+  for (auto it = characters.rbegin(); it != characters.rend() && !reload; ++it) {
+    if ((*it)->path == path) return it->get();
   }
   auto loaded = load_character(resolve_data_path(path));
   if (!loaded.ok()) return loaded.error();
@@ -199,8 +199,8 @@ const Game::Impl::CharacterEntry* Game::Impl::entry_of(const Character* c) const
   return nullptr;
 }
 
-Status Game::Impl::switch_character(World& world, const std::string& path) {
-  auto c = character(path);
+Status Game::Impl::switch_character(World& world, const std::string& path, bool reload) {
+  auto c = character(path, reload);
   if (!c.ok()) return c.error();
   if (recording) say(stop_recording(next_free_replay_path()));
   character_path = c.value()->path;
