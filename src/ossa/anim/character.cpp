@@ -301,6 +301,9 @@ Result<Character> build_character(const ImportedSkeleton& sk, const RigMapping& 
     float len = p >= 0 ? 0.1f * b.length[static_cast<size_t>(p)] : 0.0f;
     const ImportedBone& bone = sk.bones[u];
     if (bone.has_extent()) {
+      // Towards the middle of what it moves (a dog's head points at its snout, a hand down).
+      const glm::vec2 to_middle = b.s.apply(0.5f * (bone.extent_min + bone.extent_max)) - b.joint[u];
+      if (glm::length(to_middle) > min_len) d = glm::normalize(to_middle);
       float reach = 0.0f;
       for (glm::vec2 c : {bone.extent_min, bone.extent_max, glm::vec2(bone.extent_min.x, bone.extent_max.y),
                           glm::vec2(bone.extent_max.x, bone.extent_min.y)}) {

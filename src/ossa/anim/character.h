@@ -20,8 +20,9 @@
 //     spine[0] → … → neck → head, tail[i] → tail[i+1], upper → lower → foot (legs and arms);
 //   * a foot's bone runs from the ankle to the foot's ground contact point, so the leg IK's
 //     tip contact rolls the foot about it (the heel lifts as the leg trails);
-//   * any other bone points at its first child's joint, a leaf along its parent with the
-//     length of the vertices it moves (ImportedBone::extent), else a tenth of its parent.
+//   * any other bone points at its first child's joint; a leaf at the middle of the vertices
+//   it moves (ImportedBone::extent) with the length they reach, else along its parent with a
+//   tenth of its length.
 // to_mesh[b] = inverse(ossa rest frame) · S · mesh rest frame maps an ossa bone's frame to its
 // mesh bone's frame; it is constant, so mesh bone world = ossa bone world · to_mesh[b], and the
 // renderer's palette is ossa world · (to_mesh · mesh inverse bind). S maps the mesh's model
