@@ -74,7 +74,7 @@ Game::~Game() {
 
 std::string Game::creature_name() const {
   const Player* p = world_ ? world_->player() : nullptr;
-  return p ? p->creature().name : "";
+  return p ? p->name() : "";
 }
 
 bool Game::replay_finished() const {
@@ -91,14 +91,15 @@ Status Game::init(const GameOptions& o) {
   if (o.frames < 0) return Error{"--frames: expected an integer >= 0"};
   if (o.width < 16 || o.height < 16) return Error{"window size must be at least 16 x 16"};
   if (o.max_steps_per_frame < 1) return Error{"max_steps_per_frame must be >= 1"};
-  const int sources = (o.creature_file.empty() ? 0 : 1) + (o.example.empty() ? 0 : 1) + (o.seed ? 1 : 0);
-  if (sources > 1) return Error{"give only one of --creature, --example, --seed"};
+  const int sources = (o.creature_file.empty() ? 0 : 1) + (o.example.empty() ? 0 : 1) + (o.seed ? 1 : 0) +
+                      (o.character.empty() ? 0 : 1);
+  if (sources > 1) return Error{"give only one of --creature, --example, --seed, --character"};
 
   // Replay first: it fixes the creature, the spawn and the tick rate.
   int tick_hz = o.tick_hz;
   std::string level_path = o.level;
   if (!o.replay.empty()) {
-    if (sources > 0) return Error{"--replay brings its own creature: drop --creature/--example/--seed"};
+    if (sources > 0) return Error{"--replay brings its own creature: drop --creature/--example/--seed/--character"};
     auto r = load_replay(o.replay);
     if (!r.ok()) return r.error();
     m.playback = std::move(r.value());
@@ -119,8 +120,22 @@ Status Game::init(const GameOptions& o) {
   if (!generator.ok()) return generator.error();
   m.generator = std::make_unique<Generator>(std::move(generator.value()));
 
+  // A rigged character: from --character or the replay.
+  std::string character_path = o.character;
+  if (m.playback && !m.playback->character.empty()) character_path = m.playback->character;
+  const Impl::CharacterEntry* character = nullptr;
+  if (!character_path.empty()) {
+    auto c = m.character(character_path);
+    if (!c.ok()) return m.playback ? Error{o.replay + ": character: " + c.message()} : c.error();
+    character = c.value();
+  }
+
   Genome genome;
-  if (m.playback) {
+  if (character) {
+    auto g = m.generator->example(kDefaultExample);  // kept for N (next example) and the window title
+    if (!g.ok()) return g.error();
+    genome = std::move(g.value());
+  } else if (m.playback) {
     auto g = genome_from_json(m.playback->creature, o.replay + ": creature");
     if (!g.ok()) return g.error();
     genome = std::move(g.value());
@@ -152,18 +167,36 @@ Status Game::init(const GameOptions& o) {
     spawn = m.playback->spawn_ws;
     facing = m.playback->facing >= 0 ? 1 : -1;
   }
-  world_->spawn_player(creature.value(), spawn, facing);
+  if (character) {
+    world_->spawn_player(character->loaded.character, spawn, facing);
+    m.character_path = character->path;
+  } else {
+    world_->spawn_player(creature.value(), spawn, facing);
+  }
   m.spawn = spawn;
+  const std::vector<std::string> shipped = shipped_characters();
+  for (size_t i = 0; i < shipped.size(); ++i) {
+    if (character && std::filesystem::path(shipped[i]).filename() == std::filesystem::path(character->path).filename()) {
+      m.character_index = static_cast<int>(i);
+    }
+  }
   for (int i = 0; i < o.npcs; ++i) {
+    // Ahead of the player, a few metres apart, inside the level.
+    const Box npc_bounds = world_->level().bounds();
+    const float npc_x = std::clamp(world_->level().spawn_ws.x + 4.0f + 3.5f * static_cast<float>(i),
+                                   npc_bounds.min_ws.x + 2.0f, std::max(npc_bounds.min_ws.x + 2.0f, npc_bounds.max_ws.x - 2.0f));
+    if (o.npc_characters && i % 2 == 1 && !shipped.empty()) {
+      auto c = m.character(shipped[static_cast<size_t>(i / 2) % shipped.size()]);
+      if (!c.ok()) return c.error();
+      world_->spawn_npc(c.value()->loaded.character, {npc_x, world_->level().spawn_ws.y + 2.0f},
+                        0x9e3779b97f4a7c15ull * static_cast<uint64_t>(i + 1));
+      continue;
+    }
     auto g = m.generator->example(kNpcExamples[i % std::size(kNpcExamples)], 7 + i);
     if (!g.ok()) return g.error();
     auto c = make_creature(g.value());
     if (!c.ok()) return c.error();
-    // Ahead of the player, a few metres apart, inside the level.
-    const Box bounds = world_->level().bounds();
-    const float x = std::clamp(world_->level().spawn_ws.x + 4.0f + 3.5f * static_cast<float>(i),
-                               bounds.min_ws.x + 2.0f, std::max(bounds.min_ws.x + 2.0f, bounds.max_ws.x - 2.0f));
-    const glm::vec2 at{x, world_->level().spawn_ws.y + 2.0f};
+    const glm::vec2 at{npc_x, world_->level().spawn_ws.y + 2.0f};
     world_->spawn_npc(c.value(), at, 0x9e3779b97f4a7c15ull * static_cast<uint64_t>(i + 1));
   }
   if (o.demo) {
@@ -209,6 +242,23 @@ void Game::random_creature() {
   }
 }
 
+void Game::next_character() {
+  Impl& m = *impl_;
+  const std::vector<std::string> shipped = shipped_characters();
+  if (shipped.empty()) {
+    m.say("no characters in " + data_path("assets/characters"));
+    return;
+  }
+  for (size_t tries = 0; tries < shipped.size(); ++tries) {
+    m.character_index = (m.character_index + 1) % static_cast<int>(shipped.size());
+    const Status s = m.switch_character(*world_, shipped[static_cast<size_t>(m.character_index)]);
+    if (s.ok()) return;
+    m.say(s.message());
+  }
+}
+
+Status Game::set_player_character(const std::string& rig_path) { return impl_->switch_character(*world_, rig_path, true); }
+
 bool Game::frame(double dt_seconds) {
   Impl& m = *impl_;
   ActionPresses presses;
@@ -231,6 +281,7 @@ bool Game::frame(double dt_seconds) {
 
   if (presses[Action::kNextCreature]) next_example();
   if (presses[Action::kRandomCreature]) random_creature();
+  if (presses[Action::kNextCharacter]) next_character();
   if (presses[Action::kToggleHud]) m.hud.visible = !m.hud.visible;
   if (presses[Action::kGif] && !m.gif) {
     const std::string path = next_free(options_.out_dir, "gif", ".gif");
@@ -351,7 +402,7 @@ Status Game::finish() {
     char hash[32];
     std::snprintf(hash, sizeof(hash), "%016llx", static_cast<unsigned long long>(pose_hash(p.animator().world_matrices())));
     doc["player"] = {{"x", p.animator().x()}, {"y", root.y}, {"speed", p.animator().velocity()},
-                     {"creature", p.creature().name}, {"gait", gait_name(p.animator().gait())},
+                     {"creature", p.name()}, {"gait", gait_name(p.animator().gait())},
                      {"pose_hash", hash}};
     doc["spawn"] = {{"x", world_->level().spawn_ws.x}, {"y", world_->level().spawn_ws.y}};
     doc["tick_hz"] = world_->tick_hz();

@@ -44,7 +44,10 @@ struct GameOptions {
   std::string creature_file;
   std::string example;
   std::optional<uint64_t> seed;
+  // ... or a rigged character: its rig mapping (.rig.json); exclusive with the three above.
+  std::string character;
   int npcs = 3;                 // NPC walkers, [0, 64]
+  bool npc_characters = false;  // every other NPC is one of the shipped rigged characters
   std::string replay;           // play this replay file back
   std::string record;           // record the session's controls to this replay file
   bool headless = false;        // offscreen driver, fixed 1/60 s frames
@@ -97,11 +100,16 @@ class Game {
   long long frames() const { return frames_; }
   // The controls used in the last tick.
   const Controls& last_controls() const { return last_controls_; }
-  // Name of the player's creature.
+  // Name of the player's creature or character.
   std::string creature_name() const;
   // Switches the player's creature: the next example (cycling the 44) / a new random one.
   void next_example();
   void random_creature();
+  // Switches the player to the next shipped rigged character (assets/characters/*.rig.json).
+  void next_character();
+  // Makes the player the rigged character of this rig file, read anew (the rig window may have
+  // saved it since); on an error the player stays as it was and the error names the file.
+  Status set_player_character(const std::string& rig_path);
   bool replay_finished() const;
   // The camera of the last rendered frame (world metres; for mouse picking).
   const Camera2D& camera() const;

@@ -17,6 +17,7 @@
 #include "ossa/math/transform2d.h"
 #include "ossa/platform/window.h"
 #include "ossa/render/capture.h"
+#include "ossa/render/character_mesh.h"
 #include "ossa/render/creature_batch.h"
 #include "ossa/render/renderer.h"
 #include "ossa/render/texture.h"
@@ -41,8 +42,18 @@ struct Game::Impl {
   bool imgui = false;
   bool batch_dirty = true;
   std::unordered_map<const Creature*, SpriteMesh> meshes;  // built once per creature
-  std::unordered_map<std::string, Texture> images;
-  std::vector<const Creature*> batch_creatures;            // what the batch was built from         // level background images
+  std::unordered_map<std::string, Texture> images;         // level background images
+  std::vector<const void*> batch_creatures;                // what the batch was built from (Creature or Character)
+
+  // Rigged characters loaded so far, by rig path, each with its texture once GL is up.
+  struct CharacterEntry {
+    std::string path;             // as given (what replays record)
+    LoadedCharacter loaded;
+    std::optional<Texture> texture;
+  };
+  std::vector<std::unique_ptr<CharacterEntry>> characters;
+  std::string character_path;    // the player's character's rig file ("" for a creature)
+  int character_index = -1;      // into shipped_characters(), for cycling
 
   // Interpolation: per creature (0 = player, 1.. = NPCs) the world matrices of the last two ticks.
   std::vector<std::vector<Mat2x3>> prev, curr;
@@ -93,6 +104,11 @@ struct Game::Impl {
   void snapshot_all(const World& world, bool both);  // prev = curr (both: also curr = now)
   void after_step(const World& world);               // curr = now
   bool switch_creature(World& world, const Genome& g);
+  // Loaded once, then cached (the newest load of a path wins; older ones stay for whoever
+  // still walks as them); `reload` loads the file again (the rig window saved it anew).
+  Result<const CharacterEntry*> character(const std::string& path, bool reload = false);
+  const CharacterEntry* entry_of(const Character* c) const;
+  Status switch_character(World& world, const std::string& path, bool reload = false);
   void start_recording(World& world, const std::string& level, bool respawn);
   std::string stop_recording(const std::string& path);
   std::string next_free_replay_path();

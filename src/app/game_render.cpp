@@ -170,12 +170,46 @@ bool Game::Impl::switch_creature(World& world, const Genome& g) {
   }
   if (recording) say(stop_recording(next_free_replay_path()));
   genome = g;
+  character_path.clear();
   world.set_player_creature(std::make_shared<Creature>(std::move(c.value())));
   batch_dirty = true;
   snapshot_all(world, true);
   base_half_height = framing_half_height(world.player()->animator().hip_height());
   say(world.player()->creature().name);
   return true;
+}
+
+Result<const Game::Impl::CharacterEntry*> Game::Impl::character(const std::string& path, bool reload) {
+  for (auto it = characters.rbegin(); it != characters.rend() && !reload; ++it) {
+    if ((*it)->path == path) return it->get();
+  }
+  auto loaded = load_character(resolve_data_path(path));
+  if (!loaded.ok()) return loaded.error();
+  auto entry = std::make_unique<CharacterEntry>();
+  entry->path = path;
+  entry->loaded = std::move(loaded.value());
+  characters.push_back(std::move(entry));
+  return characters.back().get();
+}
+
+const Game::Impl::CharacterEntry* Game::Impl::entry_of(const Character* c) const {
+  for (const auto& e : characters) {
+    if (e->loaded.character.get() == c) return e.get();
+  }
+  return nullptr;
+}
+
+Status Game::Impl::switch_character(World& world, const std::string& path, bool reload) {
+  auto c = character(path, reload);
+  if (!c.ok()) return c.error();
+  if (recording) say(stop_recording(next_free_replay_path()));
+  character_path = c.value()->path;
+  world.set_player_character(c.value()->loaded.character);
+  batch_dirty = true;
+  snapshot_all(world, true);
+  base_half_height = framing_half_height(world.player()->animator().hip_height());
+  say(world.player()->name());
+  return {};
 }
 
 // ---- Camera ---------------------------------------------------------------------------------
@@ -257,18 +291,43 @@ void Game::Impl::render(Game& game, float alpha) {
   // Creatures: rebuild the batch when the cast changed, then one palette upload per frame.
   // Someone else (the editors' creature panel) may have replaced a creature: compare.
   const int n = 1 + world.npc_count();
+  auto identity = [](const Entity& e) -> const void* {
+    return e.is_character() ? static_cast<const void*>(e.character()) : static_cast<const void*>(&e.creature());
+  };
   bool changed = batch_dirty || static_cast<int>(batch_creatures.size()) != n;
-  for (int i = 0; i < n && !changed; ++i) changed = batch_creatures[i] != &entity_at(world, i).creature();
+  for (int i = 0; i < n && !changed; ++i) changed = batch_creatures[i] != identity(entity_at(world, i));
+  // Texture slot 0 is the bone-sprite atlas; each rigged character in view brings its own.
+  std::vector<const Texture*> textures = {&atlas->texture};
+  for (const auto& e : characters) {
+    if (!e->texture) {
+      const RiggedMesh& mesh = e->loaded.mesh;
+      e->texture = mesh.texture_rgba.empty() ? Texture::checker()
+                                             : Texture::from_image(Image{mesh.texture_width, mesh.texture_height, mesh.texture_rgba});
+    }
+    textures.push_back(&*e->texture);
+  }
   if (changed) {
     batch_creatures.resize(n);
-    for (int i = 0; i < n; ++i) batch_creatures[i] = &entity_at(world, i).creature();
+    for (int i = 0; i < n; ++i) batch_creatures[i] = identity(entity_at(world, i));
     snapshot_all(world, true);
     batch->clear();
     meshes.clear();  // creatures may have been replaced (an address can be reused)
     // NPCs first, the player last: within each layer instances draw in order, so the
     // player's creature stays in front of the walkers it passes.
     for (int k = 0; k < n; ++k) {
-      const Creature& c = entity_at(world, k == n - 1 ? 0 : k + 1).creature();
+      const Entity& e = entity_at(world, k == n - 1 ? 0 : k + 1);
+      if (e.is_character()) {
+        int slot = 0;
+        for (size_t j = 0; j < characters.size(); ++j) {
+          if (characters[j]->loaded.character.get() == e.character()) slot = static_cast<int>(j) + 1;
+        }
+        const CharacterEntry* entry = entry_of(e.character());
+        // A character the game did not load (an embedder's) is drawn with nothing: skip it.
+        if (entry) batch->add(entry->loaded.sprite_mesh, e.skeleton(), slot);
+        else batch->add(SpriteMesh{{}, {}, {}, std::vector<Mat2x3>(e.skeleton().bone_count()), {}}, e.skeleton());
+        continue;
+      }
+      const Creature& c = e.creature();
       auto it = meshes.find(&c);
       if (it == meshes.end()) it = meshes.emplace(&c, build_sprite_mesh(c, atlas->sprites)).first;
       batch->add(it->second, c.skeleton);
@@ -284,7 +343,7 @@ void Game::Impl::render(Game& game, float alpha) {
     if (!blended.empty() && static_cast<int>(blended.size()) == batch->bone_count(instance)) batch->set_world(instance, blended);
   }
   batch->upload_palettes();
-  r.draw_batch(*batch, atlas->texture);
+  r.draw_batch(*batch, textures);
   if (game.on_viewport) {
     DebugDraw overlay;
     game.on_viewport(overlay);
@@ -298,7 +357,7 @@ void Game::Impl::render(Game& game, float alpha) {
     ImGui::NewFrame();
     const Animator& an = world.player()->animator();
     HudInfo info;
-    info.creature = world.player()->creature().name;
+    info.creature = world.player()->name();
     info.speed = an.velocity();
     info.walk_speed = an.walk_speed();
     info.run_speed = an.run_speed();
@@ -377,14 +436,22 @@ void Game::Impl::start_recording(World& world, const std::string& level, bool re
     const Player& p = *world.player();
     const glm::vec2 at{p.animator().x(), player_root(1.0f).y + 0.5f};
     const int facing = p.animator().facing();
-    world.spawn_player(p.creature_ptr(), at, facing);
+    if (p.is_character()) {
+      world.spawn_player(p.character_ptr(), at, facing);
+    } else {
+      world.spawn_player(p.creature_ptr(), at, facing);
+    }
     spawn = at;
     snapshot_all(world, true);
   }
   record = Replay{};
   record.tick_hz = world.tick_hz();
   record.level = level;
-  record.creature = genome_to_json(genome);
+  if (world.player()->is_character()) {
+    record.character = character_path;
+  } else {
+    record.creature = genome_to_json(genome);
+  }
   record.spawn_ws = spawn;
   record.facing = world.player()->animator().facing();
   recording = true;

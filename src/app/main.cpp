@@ -16,6 +16,7 @@
 #include "ossa/editor/editor_suite.h"
 #include "ossa/editor/tuning_model.h"
 #include "ossa/gen/generator.h"
+#include "ossa/render/character_mesh.h"
 
 int main(int argc, char** argv) {
   try {
@@ -44,6 +45,8 @@ int main(int argc, char** argv) {
     paths.genome_file = o.out_dir + "/creature.json";
     paths.tuning_file = o.out_dir + "/tuning.json";
     paths.export_dir = o.out_dir;
+    paths.rig_file = ossa::resolve_data_path(o.character.empty() ? "assets/characters/humanoid.rig.json" : o.character);
+    paths.characters = ossa::shipped_characters();
     // Tuning saved from the tuning panel is loaded again at start.
     if (std::ifstream(paths.tuning_file).good()) {
       if (auto params = ossa::load_params(paths.tuning_file); params.ok()) {
@@ -54,6 +57,7 @@ int main(int argc, char** argv) {
     }
     ossa::EditorSuite editors(game.world(), generator.ok() ? &generator.value() : nullptr, paths);
     editors.level_editor().options.pixels_per_metre_tiled = o.pixels_per_metre;  // --pixels-per-metre
+    editors.apply_character = [&game](const std::string& rig_path) { return game.set_player_character(rig_path); };
     editors.enabled = std::getenv("OSSA_EDITORS") != nullptr;  // start shown with OSSA_EDITORS=1
     game.on_ui = [&](float dt) {
       const ImGuiIO& io = ImGui::GetIO();

@@ -6,7 +6,7 @@
 
 namespace ossa {
 
-const char* const kGameUsage = R"(usage: ossa [--level F] [--creature F | --example NAME | --seed N] [--npcs N]
+const char* const kGameUsage = R"(usage: ossa [--level F] [--creature F | --example NAME | --seed N | --character F] [--npcs N]
             [--replay F] [--record F] [--headless --frames N] [--png F] [--gif F]
             [--state F] [--hz N] [options]
 
@@ -19,7 +19,10 @@ Walk a generated creature over a box level with a gamepad or the keyboard.
   --creature F      the player's creature: a saved genome (.creature.json)
   --example NAME    ... or one of the 44 example animals (default horse)
   --seed N          ... or a random creature drawn with seed N
+  --character F     ... or a rigged character: its rig mapping (.rig.json, e.g.
+                    assets/characters/humanoid.rig.json) and the skinned mesh it names
   --npcs N          NPC walkers roaming the level, 0-64 (default 3)
+  --npc-characters  every other NPC is one of the shipped rigged characters
   --replay F        play a replay file back (its creature, spawn and tick rate)
   --record F        record the player's controls to a replay file (written on exit)
   --headless        no window: SDL's offscreen driver, fixed 1/60 s frames, and a
@@ -37,10 +40,11 @@ Walk a generated creature over a box level with a gamepad or the keyboard.
   --out DIR         folder for key-triggered screenshots, GIFs and replays (default out)
   --help            this text
 
-keys: A/D or arrows walk, Shift runs, N next example, M random creature, H HUD,
-      F12/P screenshot, G GIF of the next seconds, R start/stop a replay, wheel zoom, Esc quits
+keys: A/D or arrows walk, Shift runs, N next example, M random creature, C next character,
+      H HUD, F12/P screenshot, G GIF of the next seconds, R start/stop a replay, wheel zoom,
+      Esc quits
 gamepad: left stick walks (half throw = walk speed, full = run), A/RB/RT run, Y next example,
-      X random creature, Back HUD, Start replay
+      X random creature, LB next character, Back HUD, Start replay
 )";
 
 Result<ParsedArgs> parse_game_args(const std::vector<std::string>& args) {
@@ -78,6 +82,10 @@ Result<ParsedArgs> parse_game_args(const std::vector<std::string>& args) {
       s = text(o.creature_file);
     } else if (flag == "--example") {
       s = text(o.example);
+    } else if (flag == "--character") {
+      s = text(o.character);
+    } else if (flag == "--npc-characters") {
+      o.npc_characters = true;
     } else if (flag == "--seed") {
       long seed = 0;
       s = number(0, 2147483647L, seed);
@@ -144,9 +152,10 @@ Result<ParsedArgs> parse_game_args(const std::vector<std::string>& args) {
     }
     if (!s.ok()) return s.error();
   }
-  const int sources = (o.creature_file.empty() ? 0 : 1) + (o.example.empty() ? 0 : 1) + (o.seed ? 1 : 0);
-  if (sources > 1) return Error{"give only one of --creature, --example, --seed"};
-  if (!o.replay.empty() && sources > 0) return Error{"--replay brings its own creature: drop --creature/--example/--seed"};
+  const int sources = (o.creature_file.empty() ? 0 : 1) + (o.example.empty() ? 0 : 1) + (o.seed ? 1 : 0) +
+                      (o.character.empty() ? 0 : 1);
+  if (sources > 1) return Error{"give only one of --creature, --example, --seed, --character"};
+  if (!o.replay.empty() && sources > 0) return Error{"--replay brings its own creature: drop --creature/--example/--seed/--character"};
   if (frames_set && !o.headless && o.frames <= 0) return Error{"--frames: expected an integer >= 1"};
   if (o.headless) {
     o.demo = o.replay.empty();

@@ -268,6 +268,71 @@ TEST_CASE("creatures cycle through the examples and random ones build", "[app]")
   CHECK(game.creature_name() != second);
 }
 
+TEST_CASE("a rigged character plays, cycles with C, walks among character NPCs and replays", "[app]") {
+  use_offscreen();
+  const std::string replay = temp_dir() + "/character.replay.json";
+  float x_recorded = 0.0f;
+  uint64_t hash_recorded = 0;
+  {
+    GameOptions o = quiet_options();
+    o.character = "assets/characters/humanoid.rig.json";
+    o.demo = true;
+    o.npcs = 2;
+    o.npc_characters = true;
+    o.record = replay;
+    Game game;
+    const Status s = game.init(o);
+    INFO((s.ok() ? std::string() : s.message()));
+    REQUIRE(s.ok());
+    CHECK(game.creature_name() == "humanoid");
+    REQUIRE(game.world().player()->is_character());
+    CHECK_FALSE(game.world().npc(0).is_character());
+    CHECK(game.world().npc(1).is_character());  // every other NPC is a shipped character
+    run_frames(game, 300);
+    REQUIRE(game.finish().ok());
+    x_recorded = game.world().player()->animator().x();
+    hash_recorded = pose_hash(game.world().player()->animator().world_matrices());
+    CHECK(x_recorded > game.world().level().spawn_ws.x + 3.0f);
+  }
+  auto doc = read_json_file(replay);
+  REQUIRE(doc.ok());
+  CHECK(doc.value()["character"] == "assets/characters/humanoid.rig.json");  // which character was played
+  CHECK_FALSE(doc.value().contains("creature"));
+  {
+    GameOptions o = quiet_options();
+    o.replay = replay;
+    o.level.clear();
+    Game game;
+    REQUIRE(game.init(o).ok());
+    int frames = 0;
+    while (game.frame(kFrame) && frames < 10000) ++frames;
+    CHECK(game.creature_name() == "humanoid");
+    CHECK(game.world().player()->animator().x() == x_recorded);
+    CHECK(pose_hash(game.world().player()->animator().world_matrices()) == hash_recorded);
+  }
+  // C cycles the shipped characters (dog, humanoid); N goes back to the examples.
+  Game game;
+  REQUIRE(game.init(quiet_options()).ok());
+  push_key(SDL_SCANCODE_C, true);
+  push_key(SDL_SCANCODE_C, false);
+  run_frames(game, 5);
+  const std::string first = game.creature_name();
+  CHECK((first == "dog" || first == "humanoid"));
+  CHECK(game.world().player()->is_character());
+  game.next_character();
+  run_frames(game, 5);
+  CHECK(game.creature_name() != first);
+  CHECK(game.set_player_character("assets/characters/dog.rig.json").ok());
+  CHECK(game.creature_name() == "dog");
+  const Status bad = game.set_player_character("tests/tools/data/missing_bone.rig.json");
+  REQUIRE_FALSE(bad.ok());
+  CHECK_THAT(bad.message(), Catch::Contains("legs[1].lower"));
+  CHECK(game.creature_name() == "dog");  // kept
+  game.next_example();
+  run_frames(game, 5);
+  CHECK_FALSE(game.world().player()->is_character());
+}
+
 TEST_CASE("ossa --headless --frames 600 --png shows the creature on the level", "[app]") {
   const std::string dir = temp_dir();
   const std::string png = dir + "/headless.png", state = dir + "/state.json";
@@ -332,6 +397,9 @@ TEST_CASE("ossa rejects bad arguments and files with a message", "[app]") {
       {"--headless --creature /nonexistent.creature.json", "nonexistent"},
       {"--headless --replay /nonexistent.replay.json", "nonexistent"},
       {"--headless --example horse --seed 3", "only one"},
+      {"--headless --example horse --character assets/characters/dog.rig.json", "only one"},
+      {"--headless --character /nonexistent.rig.json", "nonexistent"},
+      {"--headless --character " + resolve_data_path("tests/tools/data/missing_bone.rig.json"), "legs[1].lower: bone \"knee_r\""},
       {"--headless --size 5x5", "--size"},
   };
   for (const auto& c : cases) {

@@ -79,6 +79,8 @@ struct Scene {
     world.spawn_player(std::make_shared<const Creature>(scenes::quadruped()), {1.0f, 1.0f});
     EditorPaths paths;
     paths.levels_dir = scenes::source_path("levels");
+    paths.rig_file = scenes::source_path("assets/characters/humanoid.rig.json");
+    paths.characters = {scenes::source_path("assets/characters/dog.rig.json"), paths.rig_file};
     suite = std::make_unique<EditorSuite>(world, &scenes::generator(), paths);
     camera.center_ws = {7.0f, 2.0f};
     camera.half_height = 3.5f;
@@ -109,7 +111,7 @@ struct Scene {
     // The player's bones as lines (the sprite batch is the game's business).
     if (const Player* p = world.player()) {
       const auto& m = p->animator().world_matrices();
-      const Skeleton& sk = p->creature().skeleton;
+      const Skeleton& sk = p->skeleton();
       for (int b = 0; b < sk.bone_count(); ++b)
         dd.add_line(bone_start(m[b]), bone_end(m[b], sk.length(b)), {0.95f, 0.93f, 0.85f, 1.0f});
     }
@@ -218,6 +220,35 @@ TEST_CASE("imgui smoke: every window draws, with screenshots on request", "[edit
   s.frame({640.0f, 700.0f}, false);
   s.frame({640.0f, 700.0f}, false, "discard_popup");
   REQUIRE(ImGui::IsPopupOpen("", ImGuiPopupFlags_AnyPopupId | ImGuiPopupFlags_AnyPopupLevel));
+}
+
+TEST_CASE("imgui smoke: the rig window shows the character walking; edits undo; apply makes the player it", "[editor][imgui]") {
+  Scene s;
+  s.suite->show_level = false;
+  s.suite->show_splines = false;
+  s.suite->show_rig = true;
+  RigEditorModel& rig = s.suite->rig();
+  REQUIRE(rig.is_open());
+  REQUIRE(rig.character());
+  rig.preview_stick = 0.5f;
+  for (int i = 0; i < 60; ++i) s.frame({640.0f, 700.0f}, false);
+  CHECK(rig.preview()->x() > 1.0f);
+  rig.select({RigSlotKind::kLegFoot, 0});
+  s.frame({640.0f, 700.0f}, false, "rig");
+  rig.clear({RigSlotKind::kLegFoot, 0});
+  s.frame({640.0f, 700.0f}, false, "rig_error");
+  CHECK_FALSE(rig.character());
+  CHECK(s.suite->has_unsaved_changes());
+  REQUIRE(s.suite->undo().undo());
+  CHECK(rig.character());
+  CHECK_FALSE(s.suite->has_unsaved_changes());
+  // The creature panel (and the rig window) make the player a character.
+  s.suite->show_creature = true;
+  s.frame({640.0f, 700.0f}, false, "creature_characters");
+  REQUIRE(s.suite->apply_character_to_player_for_tests(scenes::source_path("assets/characters/dog.rig.json")).ok());
+  REQUIRE(s.world.player()->is_character());
+  CHECK(s.world.player()->name() == "dog");
+  for (int i = 0; i < 10; ++i) s.frame({640.0f, 700.0f}, false);
 }
 
 }  // namespace

@@ -24,6 +24,7 @@
 #include "ossa/level/level.h"
 #include "ossa/platform/window.h"
 #include "ossa/render/capture.h"
+#include "ossa/render/character_mesh.h"
 #include "ossa/render/creature_batch.h"
 #include "ossa/render/creature_image.h"
 #include "ossa/render/debug_draw.h"
@@ -632,4 +633,38 @@ TEST_CASE("creature images refuse bad sizes, and the PNG writer names the file",
   const Status no_shaders = write_creature_png(path, c, o, temp_path("no-shaders"));
   REQUIRE_FALSE(no_shaders.ok());
   CHECK(no_shaders.message().find("pig.png") != std::string::npos);
+}
+
+TEST_CASE("creatures and rigged characters share one batch: one palette upload, a draw per layer and texture", "[render][character]") {
+  Gl& g = gl();
+  const Creature horse = example("horse");
+  Result<LoadedCharacter> human = load_character(scenes::source_path("assets/characters/humanoid.rig.json"));
+  REQUIRE(human.ok());
+  const Character& ch = *human->character;
+  CreatureBatch batch;
+  const int h = batch.add(build_sprite_mesh(horse, g.atlas->sprites), horse.skeleton);
+  const int c = batch.add(human->sprite_mesh, ch.skeleton, 1);
+  CHECK(batch.texture_slots() == 2);
+  batch.set_pose(h, horse.skeleton, horse.rest_pose.locals, Mat2x3::identity());
+  Transform2D beside;
+  beside.translation = {2.5f, 0.0f};
+  batch.set_pose(c, ch.skeleton, ch.rest_pose.locals, beside.to_mat2x3());
+  batch.upload_palettes();  // once, for both
+  const Texture texture = Texture::from_image(Image{human->mesh.texture_width, human->mesh.texture_height, human->mesh.texture_rgba});
+  const Texture* textures[] = {&g.atlas->texture, &texture};
+  g.renderer->camera.fit({{-1.5f, -0.2f}, {3.5f, 2.0f}}, float(kW) / kH);
+  g.renderer->begin_frame(kW, kH, {0.0f, 0.0f, 0.0f});
+  g.renderer->draw_batch(batch, textures);
+  CHECK(g.renderer->stats.draw_calls == 4);  // the horse's three layers, the character's body
+  CHECK(check_gl("creatures and characters"));
+  // The character's shirt shows (red), right of the horse.
+  const Image img = read_framebuffer(kW, kH);
+  int shirt = 0;
+  for (int y = 0; y < kH; ++y) {
+    for (int x = kW / 2; x < kW; ++x) {
+      const uint8_t* p = img.pixel(x, y);
+      shirt += p[0] > 180 && p[1] < 110 && p[2] < 100;
+    }
+  }
+  CHECK(shirt > 50);
 }

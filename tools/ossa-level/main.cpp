@@ -37,32 +37,6 @@ convert writes OUT as an ossa level (temporary file, fsync, rename).
   std::exit(1);
 }
 
-// Things a designer should know about a level that loads: where the spawn stands.
-std::vector<std::string> level_warnings(const Level& level) {
-  std::vector<std::string> out;
-  if (level.empty()) {
-    out.push_back("the level has no colliders: nothing to stand on");
-    return out;
-  }
-  const glm::vec2 s = level.spawn_ws;
-  char at[96];
-  std::snprintf(at, sizeof(at), "(%.3g, %.3g)", double(s.x), double(s.y));
-  if (level.point_inside(s + glm::vec2(0.0f, 0.01f))) {
-    out.push_back(std::string("the spawn ") + at + " is inside a box");
-  }
-  const Box b = level.bounds();
-  const auto g = level.ground_height_below(s.x - 0.05f, s.x + 0.05f, s.y + 0.01f, s.y - b.min_ws.y + 1.0f);
-  if (!g) {
-    out.push_back(std::string("the spawn ") + at + " has no ground below it");
-  } else if (s.y - g->height_ws > 0.05f) {
-    char gap[256];
-    std::snprintf(gap, sizeof(gap), "the spawn %s is %.3g m above the ground below it; the creature drops", at,
-                  double(s.y - g->height_ws));
-    out.push_back(gap);
-  }
-  return out;
-}
-
 }  // namespace
 
 int main(int argc, char** argv) {

@@ -24,6 +24,7 @@
 #include "ossa/render/debug_draw.h"
 #include "ossa/render/gl.h"
 #include "ossa/render/renderer.h"
+#include "ossa/render/character_mesh.h"
 #include "ossa/render/rigged_batch.h"
 #include "ossa/render/sprite_mesh.h"
 #include "ossa/render/texture.h"
@@ -41,6 +42,8 @@ source (one of):
   --random                a random creature (with --seed N, default 1)
   --creature F            a saved genome (.creature.json)
   --mesh F                a rigged sprite character made in another tool (glTF, FBX, DAE)
+  --character F           a rigged character: its rig mapping (.rig.json) and the mesh it
+                          names, in its rest pose (the bones the animator drives with --bones)
 options:
   --seed N                seed of the random choices (default 1)
   --level F               stand on this level's ground under its spawn point (an ossa level,
@@ -56,7 +59,7 @@ options:
 )";
 
 struct Args {
-  std::optional<std::string> example, creature, mesh, level, png;
+  std::optional<std::string> example, creature, mesh, character, level, png;
   bool random = false, stats = false, bones = false;
   uint64_t seed = 1;
   int width = 1024, height = 576, count = 1;
@@ -89,6 +92,8 @@ Args parse_args(int argc, char** argv) {
       a.example = value();
     } else if (flag == "--mesh") {
       a.mesh = value();
+    } else if (flag == "--character") {
+      a.character = value();
     } else if (flag == "--creature") {
       a.creature = value();
     } else if (flag == "--random") {
@@ -119,9 +124,9 @@ Args parse_args(int argc, char** argv) {
       fail("unknown argument \"" + flag + "\" (see --help)");
     }
   }
-  const int sources = (a.example ? 1 : 0) + (a.creature ? 1 : 0) + (a.random ? 1 : 0) + (a.mesh ? 1 : 0);
-  if (sources == 0) fail("nothing to render: give --example NAME, --random, --creature F or --mesh F");
-  if (sources > 1) fail("give only one of --example, --random, --creature, --mesh");
+  const int sources = (a.example ? 1 : 0) + (a.creature ? 1 : 0) + (a.random ? 1 : 0) + (a.mesh ? 1 : 0) + (a.character ? 1 : 0);
+  if (sources == 0) fail("nothing to render: give --example NAME, --random, --creature F, --mesh F or --character F");
+  if (sources > 1) fail("give only one of --example, --random, --creature, --mesh, --character");
   if (!a.png && !a.stats) fail("nothing to do: give --png OUT and/or --stats");
   return a;
 }
@@ -170,7 +175,16 @@ int run(const Args& a) {
       if (auto t = load_rigged_texture(*rig); !t.ok()) render_log(t.message() + " (drawing with the checker texture)");
     }
   }
-  Creature creature = rig ? creature_from_rig(rigged_skeleton(*rig), *a.mesh) : make_creature(a);
+  std::optional<LoadedCharacter> character;
+  if (a.character) {
+    auto c = load_character(*a.character);
+    if (!c.ok()) fail(c.message());
+    character = std::move(c.value());
+    rig = character->mesh;
+  }
+  Creature creature = character ? creature_from_rig(character->character->skeleton, character->character->name)
+                      : rig     ? creature_from_rig(rigged_skeleton(*rig), *a.mesh)
+                                : make_creature(a);
 
   std::optional<Level> level;
   if (a.level) {
@@ -195,10 +209,23 @@ int run(const Args& a) {
 
   // Side by side, 15 % of a body length apart, on the ground under each creature. The body box
   // holds every sprite vertex of the rest (bind) pose, and for creatures the ground line y = 0.
-  const SpriteMesh mesh = rig ? rigged_sprite_mesh(*rig) : build_sprite_mesh(creature, atlas.sprites);
+  const SpriteMesh mesh = character ? character->sprite_mesh
+                          : rig     ? rigged_sprite_mesh(*rig)
+                                    : build_sprite_mesh(creature, atlas.sprites);
   Box body = sprite_mesh_bounds(mesh);
-  float lift = 0.0f;  // model y that stands on the ground: 0 for creatures, the feet for rigs
-  if (rig) {
+  float lift = 0.0f;  // model y that stands on the ground: 0 for creatures and characters, the feet for meshes
+  if (character) {
+    // Bind-pose vertices are in the mesh's own space: the body box in model space (y = 0 on
+    // the ground the character's feet stand on).
+    const Mat2x3& s = character->character->mesh_to_model;
+    const Box raw = body;
+    body = Box{glm::vec2(1e30f), glm::vec2(-1e30f)};
+    for (glm::vec2 c : {raw.min_ws, raw.max_ws, glm::vec2(raw.min_ws.x, raw.max_ws.y), glm::vec2(raw.max_ws.x, raw.min_ws.y)}) {
+      body.min_ws = glm::min(body.min_ws, s.apply(c));
+      body.max_ws = glm::max(body.max_ws, s.apply(c));
+    }
+    body.min_ws.y = std::min(body.min_ws.y, 0.0f);
+  } else if (rig) {
     lift = -body.min_ws.y;
     body = body.translated({0.0f, lift});
   } else {

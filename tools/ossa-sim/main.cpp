@@ -28,16 +28,20 @@
 #include "ossa/io/file.h"
 #include "ossa/io/parse_arg.h"
 #include "ossa/level/level_io.h"
+#if OSSA_SIM_CHARACTERS
+#include "ossa/render/character_mesh.h"
+#endif
 
 using namespace ossa;
 
 namespace {
 
-const char* kUsage = R"(usage: ossa-sim (--example NAME | --creature F.creature.json | --random --seed N)
+const char* kUsage = R"(usage: ossa-sim (--example NAME | --creature F.creature.json | --character F.rig.json | --random --seed N)
                 [--level F] --script "mode:stick:seconds,..." [--hz 120] [--count N]
                 [--prototypes F] [--json] [--trace F.csv] [--svg F.svg [--svg-window FROM:TO[:EVERY]]]
   --example NAME   one of the 44 example animals (English or German name)
   --creature F     a saved genome (.creature.json)
+  --character F    a rigged character: its rig mapping (.rig.json) and the mesh it names
   --random         a random creature (with --seed N, default 1)
   --level F        level file (default: levels/default.json): an ossa level, a Tiled map
                    (.tmj, .tmx) or an LDtk project (.ldtk, F#LevelName picks a level)
@@ -60,7 +64,7 @@ const char* kUsage = R"(usage: ossa-sim (--example NAME | --creature F.creature.
 }
 
 struct Args {
-  std::optional<std::string> example, creature, level, script, prototypes, trace, svg;
+  std::optional<std::string> example, creature, character, level, script, prototypes, trace, svg;
   bool random = false, json = false;
   uint64_t seed = 1;
   int hz = 120, count = 1;
@@ -126,6 +130,7 @@ Args parse_args(int argc, char** argv) {
       std::exit(0);
     } else if (f == "--example") a.example = value();
     else if (f == "--creature") a.creature = value();
+    else if (f == "--character") a.character = value();
     else if (f == "--random") a.random = true;
     else if (f == "--seed") a.seed = static_cast<uint64_t>(parse_int(f, value(), 0, 1LL << 62));
     else if (f == "--level") a.level = value();
@@ -140,8 +145,8 @@ Args parse_args(int argc, char** argv) {
     else if (f == "--svg-window") parse_svg_window(f, value(), a);
     else fail("unknown option " + f + " (see --help)");
   }
-  if (static_cast<int>(a.example.has_value()) + a.creature.has_value() + a.random != 1) {
-    fail("give exactly one of --example NAME, --creature F or --random");
+  if (static_cast<int>(a.example.has_value()) + a.creature.has_value() + a.character.has_value() + a.random != 1) {
+    fail("give exactly one of --example NAME, --creature F, --character F or --random");
   }
   if (!a.script) fail("--script: missing (e.g. --script \"walk:0.5:10,stop:2\")");
   return a;
@@ -151,11 +156,11 @@ struct Snapshot {
   std::vector<Mat2x3> world;
 };
 
-std::string strobe_svg(const Creature& c, const Level& level, const std::vector<Snapshot>& shots) {
+std::string strobe_svg(const Skeleton& sk, const Level& level, const std::vector<Snapshot>& shots) {
   glm::vec2 lo(1e30f), hi(-1e30f);
   for (const Snapshot& s : shots) {
-    for (int b = 0; b < c.skeleton.bone_count(); ++b) {
-      const glm::vec2 p = bone_start(s.world[b]), q = bone_end(s.world[b], c.skeleton.length(b));
+    for (int b = 0; b < sk.bone_count(); ++b) {
+      const glm::vec2 p = bone_start(s.world[b]), q = bone_end(s.world[b], sk.length(b));
       lo = glm::min(lo, glm::min(p, q));
       hi = glm::max(hi, glm::max(p, q));
     }
@@ -183,12 +188,12 @@ std::string strobe_svg(const Creature& c, const Level& level, const std::vector<
     std::snprintf(buf, sizeof buf, "<g opacity=\"%.2f\" stroke-linecap=\"round\">\n", opacity);
     out += buf;
     for (int layer = 0; layer < kLayerCount; ++layer) {
-      for (int b = 0; b < c.skeleton.bone_count(); ++b) {
-        if (static_cast<int>(c.skeleton.layer(b)) != layer || c.skeleton.length(b) <= 0.0f) continue;
-        const glm::vec2 p = bone_start(shots[i].world[b]), q = bone_end(shots[i].world[b], c.skeleton.length(b));
+      for (int b = 0; b < sk.bone_count(); ++b) {
+        if (static_cast<int>(sk.layer(b)) != layer || sk.length(b) <= 0.0f) continue;
+        const glm::vec2 p = bone_start(shots[i].world[b]), q = bone_end(shots[i].world[b], sk.length(b));
         const char* colour = layer == 0 ? "#7d7565" : layer == 1 ? "#c9b98f" : "#e9dcb8";
         std::snprintf(buf, sizeof buf, "<line x1=\"%.4f\" y1=\"%.4f\" x2=\"%.4f\" y2=\"%.4f\" stroke=\"%s\" stroke-width=\"%.4f\"/>\n",
-                      p.x, p.y, q.x, q.y, colour, std::max(0.35f * c.skeleton.width(b), 0.008f));
+                      p.x, p.y, q.x, q.y, colour, std::max(0.35f * sk.width(b), 0.008f));
         out += buf;
       }
     }
@@ -219,33 +224,50 @@ int main(int argc, char** argv) {
     prototypes = *p;
   }
 
-  Genome genome;
-  if (args.creature) {
-    Result<Genome> g = load_genome(*args.creature);
-    if (!g) fail(g.message());
-    genome = *g;
+  std::shared_ptr<const Creature> creature;
+  std::shared_ptr<const Character> character;
+  if (args.character) {
+#if OSSA_SIM_CHARACTERS
+    Result<LoadedCharacter> loaded = load_character(*args.character);
+    if (!loaded) fail(loaded.message());
+    character = loaded->character;
+#else
+    fail("--character: this ossa-sim was built without Assimp (ossa::render), which reads the mesh");
+#endif
   } else {
-    Result<Generator> gen = Generator::load(data_path("assets/creatures/examples.json"));
-    if (!gen) fail(gen.message());
-    if (args.example) {
-      Result<Genome> g = gen->example(*args.example);
+    Genome genome;
+    if (args.creature) {
+      Result<Genome> g = load_genome(*args.creature);
       if (!g) fail(g.message());
       genome = *g;
     } else {
-      genome = gen->random(args.seed);
+      Result<Generator> gen = Generator::load(data_path("assets/creatures/examples.json"));
+      if (!gen) fail(gen.message());
+      if (args.example) {
+        Result<Genome> g = gen->example(*args.example);
+        if (!g) fail(g.message());
+        genome = *g;
+      } else {
+        genome = gen->random(args.seed);
+      }
     }
+    Result<Creature> built = build_creature(genome);
+    if (!built) fail((args.creature ? *args.creature + ": " : std::string()) + built.message());
+    creature = std::make_shared<const Creature>(std::move(*built));
   }
-  Result<Creature> built = build_creature(genome);
-  if (!built) fail((args.creature ? *args.creature + ": " : std::string()) + built.message());
-  auto creature = std::make_shared<const Creature>(std::move(*built));
+  auto make_entity = [&]() -> std::unique_ptr<Entity> {
+    if (character) return std::make_unique<Player>(character, prototypes);
+    return std::make_unique<Player>(creature, prototypes);
+  };
 
-  Player player(creature, prototypes);
+  std::unique_ptr<Entity> player_ptr = make_entity();
+  Entity& player = *player_ptr;
   const glm::vec2 spawn = level->spawn_ws + glm::vec2(0.0f, 1.0f);
   player.animator().reset(spawn, *level);
   // Extra creatures for --count walk the same script in lock-step beside the first.
   std::vector<std::unique_ptr<Entity>> extra;
   for (int i = 1; i < args.count; ++i) {
-    extra.push_back(std::make_unique<Entity>(creature, prototypes));
+    extra.push_back(make_entity());
     extra.back()->animator().reset(spawn, *level);
   }
 
@@ -255,7 +277,7 @@ int main(int argc, char** argv) {
     if (!trace) fail(*args.trace + ": cannot open for writing");
     trace << "t,x,root_y,gait";
     for (int i = 0; i < player.animator().leg_count(); ++i) {
-      trace << ",foot" << i << "_x,foot" << i << "_y,foot" << i << "_stance";
+      trace << ",foot" << i << "_x,foot" << i << "_y,foot" << i << "_stance,target" << i << "_x,target" << i << "_y";
     }
     trace << "\n";
   }
@@ -276,11 +298,11 @@ int main(int argc, char** argv) {
       extra_seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     }
     if (trace.is_open()) {
-      trace << tick * dt << "," << a.x() << "," << bone_start(a.world_matrices()[a.creature().root]).y << ","
+      trace << tick * dt << "," << a.x() << "," << bone_start(a.world_matrices()[a.rig().root]).y << ","
             << gait_name(a.gait());
       for (int i = 0; i < a.leg_count(); ++i) {
         const glm::vec2 f = a.foot_ws(i);
-        trace << "," << f.x << "," << f.y << "," << (a.leg_state(i) == LegState::kStance ? 1 : 0);
+        trace << "," << f.x << "," << f.y << "," << (a.leg_state(i) == LegState::kStance ? 1 : 0) << "," << a.foot_target_ws(i).x << "," << a.foot_target_ws(i).y;
       }
       trace << "\n";
     }
@@ -293,11 +315,12 @@ int main(int argc, char** argv) {
   const double update_seconds = result.update_seconds + extra_seconds;
   const long long updates = static_cast<long long>(total_ticks) * args.count;
   if (args.svg) {
-    if (Status s = write_file_atomic(*args.svg, strobe_svg(*creature, *level, shots)); !s) fail(s.message());
+    if (Status s = write_file_atomic(*args.svg, strobe_svg(player.skeleton(), *level, shots)); !s) fail(s.message());
   }
   if (args.json) {
     Json out;
-    out["creature"] = creature->name;
+    out["creature"] = player.name();
+    if (character) out["character"] = *args.character;
     out["level"] = level_path;
     out["hz"] = args.hz;
     Json segs = Json::array();

@@ -36,14 +36,14 @@ std::vector<glm::vec2> convex_hull(std::vector<glm::vec2> p) {
   return h;
 }
 
-RigLimb rig_limb(const Limb& limb) { return {limb.girdle_bone, limb.bones, limb.side}; }
+RigLimb rig_limb(const RigLimbRole& limb) { return {limb.girdle_bone, limb.bones, limb.side}; }
 
 // Legs grouped by girdle slot, front girdle first.
-void build_legs(const Creature& creature, AnimRig& rig) {
-  const Skeleton& sk = creature.skeleton;
+void build_legs(const RigRoles& roles, AnimRig& rig) {
+  const Skeleton& sk = rig.skeleton;
   const std::vector<Mat2x3>& rest = rig.model_rest;
-  std::vector<std::pair<GirdleKind, int>> slot_of_girdle;
-  for (const Limb& limb : creature.limbs) {
+  std::vector<int> slot_of_girdle;  // girdle_group of each girdle, in order of appearance
+  for (const RigLimbRole& limb : roles.limbs) {
     if (limb.kind != LimbKind::kLeg) continue;
     RigLeg leg;
     leg.bones = limb.bones;
@@ -69,11 +69,11 @@ void build_legs(const Creature& creature, AnimRig& rig) {
     leg.tip_rel_ms = rig.flat_contact ? glm::vec2(leg.foot_length, 0.0f) : glm::vec2(0.0f);
     int group = -1;
     for (size_t g = 0; g < slot_of_girdle.size(); ++g) {
-      if (slot_of_girdle[g] == std::make_pair(limb.girdle, limb.slot)) group = static_cast<int>(g);
+  if (slot_of_girdle[g] == limb.girdle_group) group = static_cast<int>(g);
     }
     if (group < 0) {
       group = static_cast<int>(rig.girdles.size());
-      slot_of_girdle.push_back({limb.girdle, limb.slot});
+      slot_of_girdle.push_back(limb.girdle_group);
       // A genome may pose a leg pointing up, leaving its girdle at or below the rest ground:
       // the girdle still stands a quarter of the leg's reach high (and never at zero height,
       // which every height-relative threshold divides or scales by).
@@ -181,7 +181,7 @@ void build_body_outline(AnimRig& rig, const Mat2x3& root_inv) {
 
 // Which bones each tick keeps current and how: the root, the girdles (rigid to the root: one
 // product each, skipping the vertebrae between) and the limb chains; the rest on demand.
-void build_fk_plan(const Creature& creature, AnimRig& rig) {
+void build_fk_plan(const RigRoles& roles, AnimRig& rig) {
   const Skeleton& sk = rig.skeleton;
   const int root = rig.root;
   rig.rest_local_m.resize(sk.bone_count());
@@ -191,7 +191,7 @@ void build_fk_plan(const Creature& creature, AnimRig& rig) {
   if (rig.skull >= 0) rig.dynamic_bone[rig.skull] = 1;
   for (int b : rig.tail) rig.dynamic_bone[b] = 1;
   std::vector<uint8_t> limb_bone(sk.bone_count(), 0);
-  for (const Limb& limb : creature.limbs) {
+  for (const RigLimbRole& limb : roles.limbs) {
     for (int b : limb.bones) limb_bone[b] = 1;
   }
   std::vector<uint8_t> leg_ik_bone(sk.bone_count(), 0);
@@ -204,7 +204,7 @@ void build_fk_plan(const Creature& creature, AnimRig& rig) {
   // Girdles are rigid to the root unless a bone between bends (legless bodies).
   bool rigid = sk.parent(root) < 0 && !rig.legs.empty();
   std::vector<uint8_t> needed(sk.bone_count(), 0), girdle(sk.bone_count(), 0);
-  for (const Limb& limb : creature.limbs) {
+  for (const RigLimbRole& limb : roles.limbs) {
     girdle[limb.girdle_bone] = 1;
     for (int b = limb.girdle_bone; b >= 0; b = sk.parent(b)) {
       needed[b] = 1;
@@ -264,26 +264,45 @@ void build_fk_plan(const Creature& creature, AnimRig& rig) {
 
 }  // namespace
 
+RigRoles rig_roles(const Creature& creature) {
+  RigRoles roles;
+  roles.root = creature.root;
+  roles.skull = creature.skull;
+  roles.back = creature.back;
+  roles.neck = creature.neck;
+  roles.tail = creature.tail;
+  roles.flat_contact = creature.contact == ContactMode::kFlat;
+  for (const Limb& limb : creature.limbs) {
+    roles.limbs.push_back({limb.kind, limb.girdle_bone, limb.bones, limb.side, limb.bend_sign,
+                           2 * static_cast<int>(limb.girdle) + limb.slot});
+  }
+  return roles;
+}
+
 std::shared_ptr<const AnimRig> build_anim_rig(const Creature& creature) {
+  return build_anim_rig(creature.skeleton, creature.rest_pose, rig_roles(creature));
+}
+
+std::shared_ptr<const AnimRig> build_anim_rig(const Skeleton& skeleton, const Pose& rest_pose, const RigRoles& roles) {
   auto rig = std::make_shared<AnimRig>();
-  rig->skeleton = creature.skeleton;
-  rig->rest_pose = creature.rest_pose;
-  rig->root = creature.root;
-  rig->skull = creature.skull;
-  rig->back = creature.back;
-  rig->neck = creature.neck;
-  rig->tail = creature.tail;
-  rig->flat_contact = creature.contact == ContactMode::kFlat;
+  rig->skeleton = skeleton;
+  rig->rest_pose = rest_pose;
+  rig->root = roles.root;
+  rig->skull = roles.skull;
+  rig->back = roles.back;
+  rig->neck = roles.neck;
+  rig->tail = roles.tail;
+  rig->flat_contact = roles.flat_contact;
   const Skeleton& sk = rig->skeleton;
   rig->model_rest = ossa::model_matrices(sk, rig->rest_pose.locals);
-  rig->root_rest_y = bone_start(rig->model_rest[creature.root]).y;
+  rig->root_rest_y = bone_start(rig->model_rest[roles.root]).y;
 
-  for (const Limb& limb : creature.limbs) {
+  for (const RigLimbRole& limb : roles.limbs) {
     if (limb.kind == LimbKind::kArm) rig->arms.push_back(rig_limb(limb));
     if (limb.kind == LimbKind::kWing) rig->wings.push_back(rig_limb(limb));
     if (limb.kind == LimbKind::kFin) rig->fins.push_back(rig_limb(limb));
   }
-  build_legs(creature, *rig);
+  build_legs(roles, *rig);
 
   float hip = 0.0f;
   for (const RigGirdle& g : rig->girdles) hip += g.rest_height;
@@ -301,7 +320,7 @@ std::shared_ptr<const AnimRig> build_anim_rig(const Creature& creature) {
   rig->outline_wings = distinct_outlines(*rig, rig->wings);
   if (rig->girdles.size() == 1) {
     const RigGirdle& g = rig->girdles[0];
-    for (const Limb& limb : creature.limbs) {
+    for (const RigLimbRole& limb : roles.limbs) {
       if (limb.kind != LimbKind::kArm && limb.kind != LimbKind::kWing) continue;
       const glm::vec2 v = bone_start(rig->model_rest[limb.bones[0]]) - g.joint_ms;
       if (v.x > rig->front_shoulder.x) {
@@ -312,7 +331,7 @@ std::shared_ptr<const AnimRig> build_anim_rig(const Creature& creature) {
       }
     }
   }
-  build_fk_plan(creature, *rig);
+  build_fk_plan(roles, *rig);
   return rig;
 }
 

@@ -5,8 +5,9 @@
 // wings and tail, the body's outline for the wall sweep, and which bones each stage writes.
 //
 // Nothing here assumes a generated skeleton: a rig is bones, their rest pose and the roles
-// assigned to them (build_anim_rig reads those from a Creature's LimbLayout; a rig mapping of
-// an imported mesh gives the same roles).
+// assigned to them (RigRoles). build_anim_rig(skeleton, rest, roles) is the one builder;
+// build_anim_rig(creature) reads the roles from a Creature's LimbLayout, and a rig mapping of
+// an imported mesh gives the same roles (character.h).
 //
 // Spaces: _ms is model space (DESIGN.md §3): the rest frame, metres, +x forward, y = 0 on the
 // rest ground. Lengths are metres; angles radians.
@@ -125,7 +126,35 @@ struct AnimRig {
   float tail_length = 0.0f;         // > 0: the tail is kept out of the level
 };
 
-// Builds the rig of a generated creature.
+// Which bones play which part, for build_anim_rig: a generated creature's LimbLayout
+// (rig_roles(creature)) or a rig mapping of an imported mesh (character.h).
+struct RigLimbRole {
+  LimbKind kind = LimbKind::kLeg;
+  int girdle_bone = -1;             // the bone the chain hangs from: the parent of bones[0]
+  std::array<int, 3> bones{};       // upper, lower, hand/foot; each the parent of the next
+  Side side = Side::kNear;
+  int bend_sign = 1;                // legs: +1 the knee bends counter-clockwise of hip→ankle
+  int girdle_group = 0;             // legs: legs with the same group share one girdle slot
+};
+
+struct RigRoles {
+  int root = 0;                     // a bone without a parent, at x = 0 in the rest pose
+  int skull = -1;                   // -1: none
+  std::vector<int> back, neck, tail;// spine chains, head end first (tail: base first)
+  bool flat_contact = false;        // feet touch with the whole sole (else with the foot's tip)
+  std::vector<RigLimbRole> limbs;   // legs, arms, fins and wings in any order
+};
+
+// The roles of a generated creature: its spine chains, skull and LimbLayout (legs grouped by
+// girdle and slot).
+RigRoles rig_roles(const Creature& creature);
+
+// Builds a rig from bones, their rest pose (model space: y = 0 on the rest ground, the root at
+// x = 0, facing +x) and their roles. The roles must be consistent with the skeleton (indices in
+// range, chains parent to child); character.h checks a mapping before it gets here.
+std::shared_ptr<const AnimRig> build_anim_rig(const Skeleton& skeleton, const Pose& rest_pose, const RigRoles& roles);
+
+// Builds the rig of a generated creature: build_anim_rig(skeleton, rest pose, rig_roles).
 std::shared_ptr<const AnimRig> build_anim_rig(const Creature& creature);
 
 }  // namespace ossa

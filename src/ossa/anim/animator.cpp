@@ -12,6 +12,7 @@
 #include "ossa/anim/leg_ik.h"
 #include "ossa/anim/swing.h"
 #include "ossa/anim/turn.h"
+#include "ossa/assert.h"
 
 namespace ossa {
 
@@ -41,7 +42,20 @@ Animator::Animator(const Creature& creature, SplinePrototypes prototypes, Animat
     : Animator(creature, build_anim_rig(creature), std::move(prototypes), params) {}
 
 Animator::Animator(const Creature& creature, std::shared_ptr<const AnimRig> rig, SplinePrototypes prototypes, AnimatorParams params)
-    : creature_(&creature), rig_(std::move(rig)), spline_prototypes_(std::move(prototypes)), params_(params) {
+    : Animator(std::move(rig), std::move(prototypes), params) {
+  creature_ = &creature;
+  // Which of the creature's limbs each rig leg drives (the rig knows bones, not limbs).
+  leg_limb_.assign(rig_->legs.size(), 0);
+  for (size_t i = 0; i < rig_->legs.size(); ++i) {
+    for (size_t l = 0; l < creature.limbs.size(); ++l) {
+      if (creature.limbs[l].bones == rig_->legs[i].bones) leg_limb_[i] = static_cast<int>(l);
+    }
+  }
+}
+
+Animator::Animator(std::shared_ptr<const AnimRig> rig, SplinePrototypes prototypes, AnimatorParams params)
+    : rig_(std::move(rig)), spline_prototypes_(std::move(prototypes)), params_(params) {
+  OSSA_ASSERT(rig_ != nullptr, "Animator: no rig");
   const size_t legs = rig_->legs.size();
   pose_ = rig_->rest_pose;
   model_ = rig_->model_rest;
@@ -53,16 +67,14 @@ Animator::Animator(const Creature& creature, std::shared_ptr<const AnimRig> rig,
   }
   handoff_.lift_now.assign(legs, 0);
   leg_dirs_.resize(legs);
-  // Which of the creature's limbs each rig leg drives (the rig knows bones, not limbs).
-  leg_limb_.assign(legs, 0);
-  for (size_t i = 0; i < legs; ++i) {
-    for (size_t l = 0; l < creature.limbs.size(); ++l) {
-      if (creature.limbs[l].bones == rig_->legs[i].bones) leg_limb_[i] = static_cast<int>(l);
-    }
-  }
 }
 
-const Limb& Animator::leg_limb(int leg) const { return creature_->limbs[leg_limb_[leg]]; }
+const Creature& Animator::creature() const {
+  OSSA_ASSERT(creature_ != nullptr, "Animator::creature: this animator drives a rig without a Creature");
+  return *creature_;
+}
+
+const Limb& Animator::leg_limb(int leg) const { return creature().limbs[leg_limb_[leg]]; }
 
 // ---- Reset ----------------------------------------------------------------------------------
 

@@ -50,6 +50,9 @@ class Animator {
   Animator(const Creature& creature, SplinePrototypes prototypes, AnimatorParams params = {});
   // Shares a rig built once for many animators of the same creature.
   Animator(const Creature& creature, std::shared_ptr<const AnimRig> rig, SplinePrototypes prototypes, AnimatorParams params = {});
+  // Drives any rig: a rigged character's (character.h) or one built from roles by hand. No
+  // Creature behind it: has_creature() is false.
+  Animator(std::shared_ptr<const AnimRig> rig, SplinePrototypes prototypes, AnimatorParams params = {});
 
   // Stands the creature on the ground below `position_ws` (x, and a height to search down
   // from), feet under their girdles, facing +x (facing = 1) or -x (-1).
@@ -66,7 +69,9 @@ class Animator {
   const AnimatorParams& params() const { return params_; }
 
   // ---- Output -----------------------------------------------------------------------------
-  const Creature& creature() const { return *creature_; }
+  // The generated creature this animator was made for (the first two constructors only).
+  bool has_creature() const { return creature_ != nullptr; }
+  const Creature& creature() const;
   const AnimRig& rig() const { return *rig_; }
   const std::shared_ptr<const AnimRig>& shared_rig() const { return rig_; }
   // The joint values of the current pose (the legs' angles are worked out on first use after
@@ -104,6 +109,7 @@ class Animator {
   int leg_count() const { return static_cast<int>(rig_->legs.size()); }
   // [T] leg_state: stance or swing of leg i.
   LegState leg_state(int leg) const { return feet_.of_leg(leg).state; }
+  // The creature's limb that leg i is (has_creature() only).
   const Limb& leg_limb(int leg) const;
   // Where leg i's contact point (tip, or heel for flat contact) is meant to be, world space.
   glm::vec2 foot_target_ws(int leg) const { return feet_.of_leg(leg).pos_ws; }
@@ -139,9 +145,9 @@ class Animator {
   void build_pose(float dt, const Level& level);
   void body_fk();
 
-  const Creature* creature_;
+  const Creature* creature_ = nullptr;
   std::shared_ptr<const AnimRig> rig_;
-  std::vector<int> leg_limb_;        // per leg: its index in creature().limbs
+  std::vector<int> leg_limb_;        // per leg: its index in creature().limbs (if any)
   SplinePrototypes spline_prototypes_;
   AnimatorParams params_;
 

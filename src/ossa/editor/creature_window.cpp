@@ -197,6 +197,28 @@ void EditorSuite::draw_creature_window() {
   ImGui::SameLine();
   if (ImGui::Button("Spawn NPC")) m.spawn_npc();
   show_messages(m.last_error(), m.last_note());
+  // Rigged characters (their rig mappings): the player may be one of them instead.
+  if (!paths_.characters.empty()) {
+    ImGui::Separator();
+    ImGui::TextUnformatted("Rigged characters");
+    creature_character_ = std::clamp(creature_character_, 0, static_cast<int>(paths_.characters.size()) - 1);
+    const std::string current = character_name(paths_.characters[static_cast<size_t>(creature_character_)]);
+    ImGui::SetNextItemWidth(160);
+    if (ImGui::BeginCombo("##character", current.c_str())) {
+      for (size_t i = 0; i < paths_.characters.size(); ++i) {
+        if (ImGui::Selectable(character_name(paths_.characters[i]).c_str(), static_cast<int>(i) == creature_character_)) {
+          creature_character_ = static_cast<int>(i);
+        }
+      }
+      ImGui::EndCombo();
+    }
+    ImGui::SameLine();
+    if (ImGui::Button("Apply character to player")) {
+      const Status st = apply_character_to_player(paths_.characters[static_cast<size_t>(creature_character_)]);
+      character_message_ = st.ok() ? "the player is " + current : st.message();
+    }
+    if (!character_message_.empty()) ImGui::TextDisabled("%s", character_message_.c_str());
+  }
   ImGui::End();
 }
 

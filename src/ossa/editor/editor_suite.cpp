@@ -5,6 +5,7 @@
 
 #include "ossa/editor/editor_suite_internal.h"
 #include "ossa/game/world.h"
+#include "ossa/render/character_mesh.h"
 #include "ossa/render/debug_draw.h"
 
 namespace ossa {
@@ -59,13 +60,30 @@ EditorSuite::EditorSuite(World& world, const Generator* generator, EditorPaths p
   copy_to_buffer(png_path_buf_, sizeof png_path_buf_, paths_.export_dir + "/creature.png");
   copy_to_buffer(tuning_path_buf_, sizeof tuning_path_buf_, paths_.tuning_file);
   tuning_->set_path(paths_.tuning_file);
+  rig_ = std::make_unique<RigEditorModel>(undo_);
+  if (!paths_.rig_file.empty()) (void)rig_->open_mapping(paths_.rig_file);  // an error shows in the window
+  copy_to_buffer(rig_path_buf_, sizeof rig_path_buf_, paths_.rig_file.empty() ? paths_.export_dir + "/character.rig.json" : paths_.rig_file);
+  copy_to_buffer(rig_mesh_buf_, sizeof rig_mesh_buf_, rig_->is_open() ? rig_->mapping().mesh_path : std::string());
   undo_.clear();
 }
 
 EditorSuite::~EditorSuite() = default;
 
+Status EditorSuite::apply_character_to_player(const std::string& rig_path) {
+  if (apply_character) return apply_character(rig_path);
+  Result<LoadedCharacter> c = load_character(rig_path);
+  if (!c.ok()) return c.error();
+  if (world_->player()) {
+    world_->set_player_character(c->character);
+  } else {
+    world_->spawn_player(c->character, world_->level().spawn_ws);
+  }
+  return {};
+}
+
 void EditorSuite::update(float dt) {
   if (const Player* p = world_->player()) tuning_->sample(p->animator(), dt);
+  if (enabled && show_rig) rig_->step_preview(dt);
   level_files_age_ += dt;
   poll_timer_ += dt;
   if (poll_timer_ >= kPollInterval) {
@@ -225,6 +243,7 @@ void EditorSuite::draw_ui() {
       ImGui::MenuItem("Spline prototypes", nullptr, &show_splines);
       ImGui::MenuItem("Creature", nullptr, &show_creature);
       ImGui::MenuItem("Tuning", nullptr, &show_tuning);
+      ImGui::MenuItem("Rig", nullptr, &show_rig);
       ImGui::MenuItem("Edit level in viewport", nullptr, &level_edit_mode);
       ImGui::EndMenu();
     }
@@ -235,6 +254,7 @@ void EditorSuite::draw_ui() {
   if (show_splines) draw_spline_window();
   if (show_creature) draw_creature_window();
   if (show_tuning) draw_tuning_window();
+  if (show_rig) draw_rig_window();
   draw_popups();
 }
 
@@ -246,7 +266,7 @@ void EditorSuite::draw_popups() {
   if (ImGui::BeginPopupModal("Discard unsaved changes?", nullptr, ImGuiWindowFlags_AlwaysAutoResize)) {
     ImGui::TextUnformatted("There are unsaved changes. They will be lost.");
     for (int d = 0; d < kEditorDocumentCount; ++d) {
-      static const char* kNames[] = {"level", "spline prototypes", "creature genome", "tuning"};
+      static const char* kNames[] = {"level", "spline prototypes", "creature genome", "tuning", "rig mapping"};
       if (undo_.is_dirty(static_cast<EditorDocument>(d)))
         ImGui::BulletText("%s", kNames[d]);
     }

@@ -1,6 +1,7 @@
 #pragma once
 // EditorSuite — the single entry point the game calls for all editors (DESIGN.md §10,
-// [T 4.3, 4.4.2], [Z 8.3]): spline prototypes, level, creature panel and tuning panel, one
+// [T 4.3, 4.4.2], [Z 8.3]): spline prototypes, level, creature panel, tuning panel and the
+// rig window (a skinned character's bone roles, rig_editor_model.h), one
 // shared UndoStack (Ctrl+Z / Ctrl+Y), unsaved-change markers in the window titles, a
 // confirmation before unsaved work is discarded, and hot reload of the level and prototype
 // files. The models (level_editor_model.h, spline_editor_model.h, creature_panel_model.h,
@@ -37,6 +38,7 @@
 
 #include "ossa/editor/creature_panel_model.h"
 #include "ossa/editor/level_editor_model.h"
+#include "ossa/editor/rig_editor_model.h"
 #include "ossa/editor/spline_editor_model.h"
 #include "ossa/editor/tuning_model.h"
 #include "ossa/editor/undo_stack.h"
@@ -54,6 +56,8 @@ struct EditorPaths {
   std::string genome_file = "creature.json";       // default path of genome save / load
   std::string tuning_file = "tuning.json";         // default path of tuning save / load
   std::string export_dir = ".";                    // creature (glTF, SVG, PNG) and Tiled exports go here
+  std::string rig_file;                            // the mapping the rig window opens ("" = none)
+  std::vector<std::string> characters;             // rig files the creature panel offers (shipped_characters())
 };
 
 class EditorSuite {
@@ -71,7 +75,11 @@ class EditorSuite {
   // Which windows draw_ui shows (the game may bind keys to these).
   // The creature and tuning windows start closed so the viewport stays visible; the Windows
   // menu opens them.
-  bool show_level = true, show_splines = true, show_creature = false, show_tuning = false;
+  bool show_level = true, show_splines = true, show_creature = false, show_tuning = false, show_rig = false;
+  // Makes the player the character of a rig file (the game passes Game::set_player_character,
+  // which also loads its mesh for drawing). Unset: the suite loads it and replaces the World's
+  // player itself.
+  std::function<Status(const std::string& rig_path)> apply_character;
   // Level editing in the viewport (handle_mouse picks boxes only while this is on).
   bool level_edit_mode = true;
 
@@ -118,6 +126,10 @@ class EditorSuite {
   SplineEditorModel& spline_editor() { return *spline_; }
   CreaturePanelModel* creature_panel() { return creature_.get(); }   // null without generator
   TuningModel& tuning() { return *tuning_; }
+  RigEditorModel& rig() { return *rig_; }
+  // What the creature panel's "Apply character to player" does (apply_character, or the
+  // suite's own loading without it).
+  Status apply_character_to_player_for_tests(const std::string& rig_path) { return apply_character_to_player(rig_path); }
 
   // Screen position (ImGui pixels) of a key of the spline canvas as drawn in the last frame
   // (nullopt before the first frame or when the window is hidden). For tests and tooling.
@@ -133,6 +145,9 @@ class EditorSuite {
   void draw_spline_window();
   void draw_creature_window();
   void draw_tuning_window();
+  void draw_rig_window();
+  void draw_rig_preview(float width, float height);
+  Status apply_character_to_player(const std::string& rig_path);
   void draw_popups();
   void handle_shortcuts();
   void draw_spline_canvas(int slot, SplineVersion version, float width, float height);
@@ -147,6 +162,7 @@ class EditorSuite {
   std::unique_ptr<SplineEditorModel> spline_;
   std::unique_ptr<CreaturePanelModel> creature_;
   std::unique_ptr<TuningModel> tuning_;
+  std::unique_ptr<RigEditorModel> rig_;
 
   // Viewport state.
   bool mouse_was_down_ = false;
@@ -180,6 +196,10 @@ class EditorSuite {
   bool quit_confirmed_ = false;
   float variation_sigma_ = 0.5f;
   int creature_example_ = 0;
+  int creature_character_ = 0;
+  std::string character_message_;
+  char rig_path_buf_[512] = {};
+  char rig_mesh_buf_[512] = {};
 };
 
 }  // namespace ossa

@@ -50,7 +50,8 @@ void Hud::draw(const HudInfo& info) {
     if (info.gif) ImGui::TextColored(ImVec4(1.0f, 0.6f, 0.2f, 1.0f), "GIF capture");
     if (!info.status.empty()) ImGui::TextWrapped("%s", info.status.c_str());
     ImGui::Separator();
-    ImGui::TextDisabled("A/D walk, Shift run, N next, M random, H hud");
+    ImGui::TextDisabled("A/D walk, Shift run, N next, M random, C character, H hud");
+    ImGui::TextDisabled("pad: Y next, X random, LB character, Back hud");
     ImGui::TextDisabled("F12/P shot, G gif, R replay, wheel zoom, Esc quit");
   }
   ImGui::End();

@@ -19,7 +19,7 @@
 
 namespace ossa {
 
-enum class EditorDocument : int { kLevel, kPrototypes, kGenome, kTuning, kCount };
+enum class EditorDocument : int { kLevel, kPrototypes, kGenome, kTuning, kRig, kCount };
 constexpr int kEditorDocumentCount = static_cast<int>(EditorDocument::kCount);
 
 struct Command {

@@ -3,11 +3,24 @@
 #include <algorithm>
 #include <cmath>
 
+#include "ossa/assert.h"
+
 namespace ossa {
 
 Entity::Entity(std::shared_ptr<const Creature> creature, const SplinePrototypes& prototypes,
                const AnimatorParams& params)
     : creature_(std::move(creature)), animator_(*creature_, prototypes, params) {}
+
+Entity::Entity(std::shared_ptr<const Character> character, const SplinePrototypes& prototypes,
+               const AnimatorParams& params)
+    : character_(std::move(character)), animator_(character_->rig, prototypes, params) {}
+
+const Creature& Entity::creature() const {
+  OSSA_ASSERT(creature_ != nullptr, "Entity::creature: this entity is a rigged character");
+  return *creature_;
+}
+
+const std::string& Entity::name() const { return character_ ? character_->name : creature_->name; }
 
 float Entity::desired_velocity(const Controls& controls) const {
   const float s = std::clamp(std::isfinite(controls.move_x) ? controls.move_x : 0.0f, -1.0f, 1.0f);

@@ -1,6 +1,6 @@
 #pragma once
-// Entity and Player — a creature in the world: its Creature, its Animator and how it is
-// controlled. The Player maps Controls to a desired velocity so that the stick sets the
+// Entity and Player — a creature in the world: its generated Creature or its rigged
+// Character (anim/character.h), its Animator and how it is controlled. The Player maps Controls to a desired velocity so that the stick sets the
 // speed precisely [T 4.1]:
 //   without run: |move_x| in [0, 0.5] → 0 … walk speed, (0.5, 1] → walk … run speed,
 //   with run:    |move_x| × run speed.
@@ -10,6 +10,7 @@
 #include <memory>
 
 #include "ossa/anim/animator.h"
+#include "ossa/anim/character.h"
 #include "ossa/game/controls.h"
 
 namespace ossa {
@@ -18,10 +19,21 @@ class Entity {
  public:
   Entity(std::shared_ptr<const Creature> creature, const SplinePrototypes& prototypes,
          const AnimatorParams& params = {});
+  // A rigged character: its shared AnimRig drives the animator.
+  Entity(std::shared_ptr<const Character> character, const SplinePrototypes& prototypes,
+         const AnimatorParams& params = {});
   virtual ~Entity() = default;
 
-  const Creature& creature() const { return *creature_; }
+  // Exactly one of the two is set.
+  bool is_character() const { return character_ != nullptr; }
+  const Creature& creature() const;  // is_character() == false only
   std::shared_ptr<const Creature> creature_ptr() const { return creature_; }
+  const Character* character() const { return character_.get(); }
+  std::shared_ptr<const Character> character_ptr() const { return character_; }
+  // The creature's or the character's name; the bones the animator's matrices are for.
+  const std::string& name() const;
+  const Skeleton& skeleton() const { return animator_.rig().skeleton; }
+
   Animator& animator() { return animator_; }
   const Animator& animator() const { return animator_; }
 
@@ -33,6 +45,7 @@ class Entity {
 
  private:
   std::shared_ptr<const Creature> creature_;
+  std::shared_ptr<const Character> character_;
   Animator animator_;
   Controls controls_;
 };

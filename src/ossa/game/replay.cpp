@@ -17,9 +17,14 @@ Json replay_to_json(const Replay& r) {
     runs.push_back({j - i, r.ticks[i].move_x, r.ticks[i].run ? 1 : 0});
     i = j;
   }
-  return Json{{"format", kFormat}, {"version", 1},       {"tick_hz", r.tick_hz},
-              {"level", r.level},  {"creature", r.creature}, {"spawn", {r.spawn_ws.x, r.spawn_ws.y}},
-              {"facing", r.facing}, {"ticks", runs}};
+  Json doc{{"format", kFormat}, {"version", 1}, {"tick_hz", r.tick_hz}, {"level", r.level},
+           {"spawn", {r.spawn_ws.x, r.spawn_ws.y}}, {"facing", r.facing}, {"ticks", runs}};
+  if (!r.character.empty()) {
+    doc["character"] = r.character;
+  } else {
+    doc["creature"] = r.creature;
+  }
+  return doc;
 }
 
 Result<Replay> replay_from_json(const Json& doc, std::string_view file) {
@@ -32,7 +37,13 @@ Result<Replay> replay_from_json(const Json& doc, std::string_view file) {
   Replay out;
   out.tick_hz = static_cast<int>(r.integer(doc, "", "tick_hz", 30, 480));
   out.level = r.string_or(doc, "", "level", "");
-  if (const Json* c = r.object(doc, "", "creature")) out.creature = *c;
+  if (r.has(doc, "character")) {
+    out.character = r.string(doc, "", "character");
+    if (!r.failed() && out.character.empty()) r.fail("character", "expected a rig file (.rig.json), got an empty string");
+    if (!r.failed() && r.has(doc, "creature")) r.fail("creature", "expected either a creature or a character, got both");
+  } else if (const Json* c = r.object(doc, "", "creature")) {
+    out.creature = *c;
+  }
   if (const Json* spawn = r.array(doc, "", "spawn")) {
     if (spawn->size() != 2) {
       r.fail("spawn", "expected [x, y], got " + std::to_string(spawn->size()) + " numbers");

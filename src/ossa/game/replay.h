@@ -4,12 +4,13 @@
 //
 //   { "format": "ossa.replay", "version": 1, "tick_hz": 120,
 //     "level": "levels/default.json",           // informational: where it was recorded
-//     "creature": { ...a .creature.json genome... },
+//     "creature": { ...a .creature.json genome... },   // or, for a rigged character:
+//     "character": "assets/characters/humanoid.rig.json",  // its rig file (exactly one of the two)
 //     "spawn": [x, y], "facing": 1,
 //     "ticks": [[count, move_x, run], ...] }   // run-length encoded controls
 //
-// Playback: build the genome's creature, spawn it at `spawn` on the level, and step the
-// world with the recorded controls; poses come out identical (same build).
+// Playback: build the genome's creature (or load the character), spawn it at `spawn` on the
+// level, and step the world with the recorded controls; poses come out identical (same build).
 
 #include <string>
 #include <string_view>
@@ -26,7 +27,8 @@ namespace ossa {
 struct Replay {
   int tick_hz = 120;
   std::string level;
-  Json creature;  // genome JSON
+  Json creature;          // genome JSON (null for a character)
+  std::string character;  // the character's rig file as recorded (empty for a creature)
   glm::vec2 spawn_ws{0.0f};
   int facing = 1;
   std::vector<Controls> ticks;

@@ -142,21 +142,26 @@ float penetration_depth(const Level& level, glm::vec2 p) {
 }
 
 void SimProbe::observe(const Animator& a, const Level& level) {
-  const Creature& c = a.creature();
-  const Skeleton& sk = c.skeleton;
+  const AnimRig& rig = a.rig();
+  const Skeleton& sk = rig.skeleton;
   const std::vector<Mat2x3>& world = a.world_matrices();
   pose_hash = ossa::pose_hash(world, pose_hash);
   for (const Mat2x3& m : world) {
     for (float v : m.m) nan_count += std::isfinite(v) ? 0 : 1;
   }
-  // Limb bones must stay out of colliders (sampled along each bone).
-  for (const Limb& limb : c.limbs) {
-    for (int b : limb.bones) {
+  // Limb bones must stay out of colliders (sampled along each bone). A rigged character's
+  // foot bone ends at its own contact point (character.h), so its feet are measured there.
+  auto sample = [&](const std::array<int, 3>& bones) {
+    for (int b : bones) {
       const glm::vec2 p = bone_start(world[b]), q = bone_end(world[b], sk.length(b));
       for (int k = 0; k <= 4; ++k) {
         max_penetration_m = std::max(max_penetration_m, penetration_depth(level, p + (q - p) * (k / 4.0f)));
       }
     }
+  };
+  for (const RigLeg& leg : rig.legs) sample(leg.bones);
+  for (const std::vector<RigLimb>* limbs : {&rig.arms, &rig.fins, &rig.wings}) {
+    for (const RigLimb& limb : *limbs) sample(limb.bones);
   }
   const int legs = a.leg_count();
   if (static_cast<int>(stance_anchor_.size()) != legs) {

@@ -9,27 +9,52 @@ World::World(Level level, SplinePrototypes prototypes, AnimatorParams params, in
     : level_(std::move(level)), prototypes_(std::move(prototypes)), params_(params),
       tick_hz_(std::clamp(tick_hz, 30, 480)) {}
 
-Player& World::spawn_player(std::shared_ptr<const Creature> creature, glm::vec2 at_ws, int facing) {
-  player_ = std::make_unique<Player>(std::move(creature), prototypes_, params_);
+Player& World::place_player(std::unique_ptr<Player> player, glm::vec2 at_ws, int facing) {
+  player_ = std::move(player);
   player_->animator().reset(at_ws, level_, facing);
   return *player_;
 }
 
-Entity& World::spawn_npc(std::shared_ptr<const Creature> creature, glm::vec2 at_ws, uint64_t seed) {
-  Npc npc{std::make_unique<Entity>(std::move(creature), prototypes_, params_), Rng(seed), {}, 0.0f};
+Player& World::spawn_player(std::shared_ptr<const Creature> creature, glm::vec2 at_ws, int facing) {
+  return place_player(std::make_unique<Player>(std::move(creature), prototypes_, params_), at_ws, facing);
+}
+
+Player& World::spawn_player(std::shared_ptr<const Character> character, glm::vec2 at_ws, int facing) {
+  return place_player(std::make_unique<Player>(std::move(character), prototypes_, params_), at_ws, facing);
+}
+
+Entity& World::place_npc(std::unique_ptr<Entity> entity, glm::vec2 at_ws, uint64_t seed) {
+  Npc npc{std::move(entity), Rng(seed), {}, 0.0f};
   npc.entity->animator().reset(at_ws, level_, npc.rng.chance(0.5) ? 1 : -1);
   npcs_.push_back(std::move(npc));
   return *npcs_.back().entity;
 }
 
+Entity& World::spawn_npc(std::shared_ptr<const Creature> creature, glm::vec2 at_ws, uint64_t seed) {
+  return place_npc(std::make_unique<Entity>(std::move(creature), prototypes_, params_), at_ws, seed);
+}
+
+Entity& World::spawn_npc(std::shared_ptr<const Character> character, glm::vec2 at_ws, uint64_t seed) {
+  return place_npc(std::make_unique<Entity>(std::move(character), prototypes_, params_), at_ws, seed);
+}
+
 void World::remove_npcs() { npcs_.clear(); }
+
+glm::vec2 World::player_stand() const {
+  const float x = player_->animator().x();
+  const Animator& a = player_->animator();
+  const float y = a.leg_count() > 0 ? a.foot_target_ws(0).y : bone_start(a.world_matrices()[a.rig().root]).y;
+  return {x, y + 1.0f};
+}
 
 void World::set_player_creature(std::shared_ptr<const Creature> creature) {
   if (!player_) return;
-  const float x = player_->animator().x();
-  const int facing = player_->animator().facing();
-  const float y = player_->animator().world_matrices().empty() ? 0.0f : player_->animator().foot_target_ws(0).y;
-  spawn_player(std::move(creature), {x, y + 1.0f}, facing);
+  spawn_player(std::move(creature), player_stand(), player_->animator().facing());
+}
+
+void World::set_player_character(std::shared_ptr<const Character> character) {
+  if (!player_) return;
+  spawn_player(std::move(character), player_stand(), player_->animator().facing());
 }
 
 void World::set_prototypes(const SplinePrototypes& prototypes) {

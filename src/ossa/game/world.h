@@ -19,10 +19,13 @@ class World {
   World(Level level, SplinePrototypes prototypes, AnimatorParams params = {}, int tick_hz = 120);
 
   Player& spawn_player(std::shared_ptr<const Creature> creature, glm::vec2 at_ws, int facing = 1);
+  Player& spawn_player(std::shared_ptr<const Character> character, glm::vec2 at_ws, int facing = 1);
   Entity& spawn_npc(std::shared_ptr<const Creature> creature, glm::vec2 at_ws, uint64_t seed);
+  Entity& spawn_npc(std::shared_ptr<const Character> character, glm::vec2 at_ws, uint64_t seed);
   void remove_npcs();
-  // Replaces the player's creature, standing where the old one stood.
+  // Replaces the player's creature (or character), standing where the old one stood.
   void set_player_creature(std::shared_ptr<const Creature> creature);
+  void set_player_character(std::shared_ptr<const Character> character);
 
   // One fixed tick of 1 / tick_hz seconds.
   void step(const Controls& player_controls);
@@ -57,6 +60,10 @@ class World {
   uint64_t tick_ = 0;
   std::unique_ptr<Player> player_;
   std::vector<Npc> npcs_;
+
+  Player& place_player(std::unique_ptr<Player> player, glm::vec2 at_ws, int facing);
+  Entity& place_npc(std::unique_ptr<Entity> entity, glm::vec2 at_ws, uint64_t seed);
+  glm::vec2 player_stand() const;  // where a replacement player is spawned
 };
 
 // FNV-1a over the bits of every matrix: equal poses hash equal, bit for bit.

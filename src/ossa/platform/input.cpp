@@ -76,6 +76,7 @@ void Gamepad::handle_event(const SDL_Event& e, ActionPresses& presses) {
       switch (e.cbutton.button) {
         case SDL_CONTROLLER_BUTTON_Y: presses.set(Action::kNextCreature); break;
         case SDL_CONTROLLER_BUTTON_X: presses.set(Action::kRandomCreature); break;
+        case SDL_CONTROLLER_BUTTON_LEFTSHOULDER: presses.set(Action::kNextCharacter); break;
         case SDL_CONTROLLER_BUTTON_BACK: presses.set(Action::kToggleHud); break;
         case SDL_CONTROLLER_BUTTON_START: presses.set(Action::kRecord); break;
         default: break;
@@ -141,6 +142,7 @@ void MouseKeyboardInput::handle_event(const SDL_Event& e, ActionPresses& presses
         switch (e.key.keysym.scancode) {
           case SDL_SCANCODE_ESCAPE: presses.set(Action::kQuit); quit_ = true; break;
           case SDL_SCANCODE_N: presses.set(Action::kNextCreature); break;
+          case SDL_SCANCODE_C: presses.set(Action::kNextCharacter); break;
           case SDL_SCANCODE_M: presses.set(Action::kRandomCreature); break;
           case SDL_SCANCODE_H: presses.set(Action::kToggleHud); break;
           case SDL_SCANCODE_F12:

@@ -41,6 +41,7 @@ enum class Action : uint8_t {
   kGif,             // keyboard G: GIF of the next seconds
   kRecord,          // keyboard R / gamepad Start: start/stop recording a replay
   kQuit,            // keyboard Escape
+  kNextCharacter,   // keyboard C / gamepad left shoulder: the next shipped rigged character
   kCount
 };
 

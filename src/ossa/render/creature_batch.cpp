@@ -40,7 +40,7 @@ CreatureBatch::~CreatureBatch() {
   if (palette_buffer_) glDeleteBuffers(1, &palette_buffer_);
 }
 
-int CreatureBatch::add(const SpriteMesh& mesh, const Skeleton& skeleton) {
+int CreatureBatch::add(const SpriteMesh& mesh, const Skeleton& skeleton, int texture_slot) {
   OSSA_ASSERT(mesh.inverse_bind.empty() ||
                   static_cast<int>(mesh.inverse_bind.size()) == skeleton.bone_count(),
               "CreatureBatch::add: one inverse bind matrix per bone");
@@ -52,6 +52,7 @@ int CreatureBatch::add(const SpriteMesh& mesh, const Skeleton& skeleton) {
   c.layer_begin = mesh.layer_begin;
   c.index_base = static_cast<uint32_t>(mesh_indices_.size());
   c.inverse_bind = mesh.inverse_bind;
+  c.texture_slot = std::max(texture_slot, 0);
 
   for (const SpriteVertex& v : mesh.vertices) {
     BatchVertex b;
@@ -135,9 +136,14 @@ void CreatureBatch::rebuild_geometry() {
   std::vector<uint32_t> indices;
   indices.reserve(mesh_indices_total_);
   naive_runs_.clear();
+  const int slots = texture_slots();
+  slot_ranges_.assign(static_cast<size_t>(slots), {});
   for (int l = 0; l < kLayerCount; ++l) {
     const uint32_t first = static_cast<uint32_t>(indices.size());
+    for (int slot = 0; slot < slots; ++slot) {
+    const uint32_t slot_first = static_cast<uint32_t>(indices.size());
     for (const Instance& c : creatures_) {
+      if (c.texture_slot != slot) continue;
       const uint32_t begin = c.index_base + c.layer_begin[l];
       const uint32_t end = c.index_base + c.layer_begin[l + 1];
       for (uint32_t i = begin; i < end; ++i) {
@@ -157,6 +163,8 @@ void CreatureBatch::rebuild_geometry() {
           naive_runs_.back().count += 3;
         }
       }
+    }
+    slot_ranges_[static_cast<size_t>(slot)][static_cast<size_t>(l)] = {slot_first, static_cast<uint32_t>(indices.size()) - slot_first};
     }
     layer_ranges_[l] = {first, static_cast<uint32_t>(indices.size()) - first};
   }
@@ -193,22 +201,42 @@ void CreatureBatch::upload_palettes() {
   glBindBuffer(GL_TEXTURE_BUFFER, 0);
 }
 
+int CreatureBatch::texture_slots() const {
+  int slots = 1;
+  for (const Instance& c : creatures_) slots = std::max(slots, c.texture_slot + 1);
+  return slots;
+}
+
 int CreatureBatch::draw(const ShaderProgram& skinned, unsigned atlas_texture) {
+  const unsigned textures[1] = {atlas_texture};
+  return draw(skinned, textures);
+}
+
+int CreatureBatch::draw(const ShaderProgram& skinned, std::span<const unsigned> textures) {
   if (geometry_dirty_) rebuild_geometry();
   ensure_palette_buffer();
-  glActiveTexture(GL_TEXTURE0);
-  glBindTexture(GL_TEXTURE_2D, atlas_texture);
   glActiveTexture(GL_TEXTURE1);
   glBindTexture(GL_TEXTURE_BUFFER, palette_texture_);
   skinned.set("u_atlas", 0);
   skinned.set("u_palette", 1);
-  int calls = 0;
-  for (const auto& [first, count] : layer_ranges_) {
-    if (count == 0) continue;
-    mesh_va_.draw_indices(GL_TRIANGLES, static_cast<int>(first), static_cast<int>(count));
-    ++calls;
-  }
   glActiveTexture(GL_TEXTURE0);
+  int calls = 0;
+  unsigned bound = 0;
+  bool any_bound = false;
+  for (int l = 0; l < kLayerCount; ++l) {
+    for (size_t slot = 0; slot < slot_ranges_.size(); ++slot) {
+      const auto& [first, count] = slot_ranges_[slot][static_cast<size_t>(l)];
+      if (count == 0) continue;
+      const unsigned texture = slot < textures.size() ? textures[slot] : (textures.empty() ? 0u : textures[0]);
+      if (!any_bound || texture != bound) {
+        glBindTexture(GL_TEXTURE_2D, texture);
+        bound = texture;
+        any_bound = true;
+      }
+      mesh_va_.draw_indices(GL_TRIANGLES, static_cast<int>(first), static_cast<int>(count));
+      ++calls;
+    }
+  }
   return calls;
 }
 

@@ -15,6 +15,9 @@
 //   batch.set_world(id, world_matrices);      // every frame, per creature
 //   batch.upload_palettes();                  // once per frame
 //   renderer.draw_batch(batch, atlas.texture);
+// Rigged characters (character_mesh.h) bring their own textures: an instance added with
+// texture slot s draws with the s-th texture given to draw(), in the same palette upload, one
+// draw call per layer and slot in use (slot 0 first within each layer).
 
 #include <array>
 #include <cstdint>
@@ -61,7 +64,7 @@ class CreatureBatch {
 
   // Adds a creature; returns its instance index. Its palette starts as the bind pose at the
   // origin (palette = identity). Geometry is (re)built on the next draw.
-  int add(const SpriteMesh& mesh, const Skeleton& skeleton);
+  int add(const SpriteMesh& mesh, const Skeleton& skeleton, int texture_slot = 0);
   void clear();
 
   int creature_count() const { return static_cast<int>(creatures_.size()); }
@@ -87,6 +90,11 @@ class CreatureBatch {
   // Batched draw: binds the palette and atlas, one glDrawElements per non-empty layer.
   // The skinned program must be in use with u_view_proj set. Returns the draw calls issued.
   int draw(const ShaderProgram& skinned, unsigned atlas_texture);
+  // The same with one texture per slot (textures[0] for slot 0, ...; a slot without one uses
+  // textures[0]). Returns the draw calls issued.
+  int draw(const ShaderProgram& skinned, std::span<const unsigned> textures);
+  // Texture slots in use: 1 + the largest slot of any instance (1 when empty).
+  int texture_slots() const;
   // Per-bone reference: one draw and one u_bone upload per run of triangles of one bone
   // (the naive program must be in use). Returns the draw calls issued.
   int draw_naive(const ShaderProgram& naive, unsigned atlas_texture);
@@ -104,6 +112,7 @@ class CreatureBatch {
     std::array<uint32_t, 4> layer_begin{};  // into mesh_indices_ below (creature-local)
     uint32_t index_base = 0;                // where its indices start in mesh_indices_
     std::vector<Mat2x3> inverse_bind;
+    int texture_slot = 0;
   };
   struct NaiveRun {
     uint32_t first = 0, count = 0;  // indices in the layer-major buffer
@@ -119,6 +128,8 @@ class CreatureBatch {
   std::vector<BoneLineVertex> bone_lines_;
   std::vector<Mat2x3> palette_;
   std::array<std::pair<uint32_t, uint32_t>, kLayerCount> layer_ranges_{};
+  // Per texture slot, per layer: its run of the layer-major index buffer.
+  std::vector<std::array<std::pair<uint32_t, uint32_t>, kLayerCount>> slot_ranges_;
   std::vector<NaiveRun> naive_runs_;
   bool geometry_dirty_ = true;
 

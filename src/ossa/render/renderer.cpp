@@ -118,6 +118,14 @@ void Renderer::draw_batch(CreatureBatch& batch, const Texture& atlas) {
   count_batch(batch, batch.draw(skinned, atlas.id()));
 }
 
+void Renderer::draw_batch(CreatureBatch& batch, std::span<const Texture* const> textures) {
+  std::vector<unsigned> ids;
+  for (const Texture* t : textures) ids.push_back(t ? t->id() : 0u);
+  skinned.use();
+  skinned.set("u_view_proj", camera.view_proj());
+  count_batch(batch, batch.draw(skinned, ids));
+}
+
 void Renderer::draw_batch_naive(CreatureBatch& batch, const Texture& atlas) {
   skinned_naive.use();
   skinned_naive.set("u_view_proj", camera.view_proj());

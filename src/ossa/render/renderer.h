@@ -84,6 +84,9 @@ class Renderer {
 
   void draw_debug(DebugDraw& debug_draw);
   void draw_batch(CreatureBatch& batch, const Texture& atlas);
+  // One texture per texture slot of the batch (CreatureBatch::add): the atlas first, then
+  // the rigged characters' own.
+  void draw_batch(CreatureBatch& batch, std::span<const Texture* const> textures);
   void draw_batch_naive(CreatureBatch& batch, const Texture& atlas);
   void draw_bones(CreatureBatch& batch, glm::vec4 colour);
   // A textured rectangle in world space (background image), tinted.

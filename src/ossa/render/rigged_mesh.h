@@ -8,7 +8,9 @@
 // [SECTION] Mesh data      RiggedVertex, RiggedBone, RiggedMesh
 // [SECTION] Import         load_rigged_mesh, load_rigged_mesh_from_memory, load_rigged_texture
 // [SECTION] Skinning       rest_locals, RiggedPaletteJob, rigged_palette, skin_position
-// [SECTION] Rig mapping    RigMapping (assets/characters/*.rig.json), load_rig_mapping
+//
+// Which bones play which part for the animator (the rig mapping, *.rig.json) is a core type:
+// ossa/anim/rig_mapping.h; ossa/render/character_mesh.h loads a mapping with its mesh.
 //
 // How 3D becomes 2D
 // -----------------
@@ -149,43 +151,5 @@ std::vector<Mat2x3> rigged_palette(const RiggedMesh& mesh, std::span<const Mat2x
 
 // CPU skinning of one vertex (tests, tools; the renderer does this on the GPU).
 glm::vec2 skin_position(const RiggedVertex& vertex, std::span<const Mat2x3> palette);
-
-// ---------------------------------------------------------------------------------------------
-// [SECTION] Rig mapping — which bones of a rigged mesh play which limb role for the animator.
-// File format (assets/characters/humanoid.rig.json):
-//   {"format": "ossa.rig", "version": 1, "mesh": "humanoid.gltf", "root": "pelvis",
-//    "spine": ["spine", "chest"], "head": "head",
-//    "legs": [{"side": "near", "upper": "thigh_l", "lower": "shin_l", "foot": "foot_l"}, ...],
-//    "arms": [{"side": "near", "upper": "upper_arm_l", "lower": "lower_arm_l",
-//              "hand": "hand_l"}, ...]}
-// "neck" is optional. "side" is "near" (drawn in front) or "far".
-
-enum class RigSide : uint8_t { kNear, kFar };
-
-struct RigLimb {
-  RigSide side = RigSide::kNear;
-  std::string upper;  // thigh / upper arm
-  std::string lower;  // shin / forearm
-  std::string end;    // foot / hand ("foot" or "hand" in the file)
-};
-
-struct RigMapping {
-  std::string mesh;                // path of the mesh, relative to the rig file as written
-  std::string mesh_path;           // `mesh` resolved against the rig file's folder
-  std::string root;                // pelvis
-  std::vector<std::string> spine;  // pelvis → chest order, at least one
-  std::string neck;                // optional
-  std::string head;
-  std::vector<RigLimb> legs;       // at least one
-  std::vector<RigLimb> arms;       // may be empty
-};
-
-// Reads and validates the JSON (format, version, types, non-empty unique bone names, sides).
-Result<RigMapping> load_rig_mapping(const std::string& path);
-Result<RigMapping> parse_rig_mapping(std::string_view text, const std::string& file);
-
-// Checks the mapping against a mesh: every named bone exists, and each limb is a chain
-// (lower's parent is upper, end's parent is lower). Errors name `file` and the field.
-Status validate_rig_mapping(const RigMapping& rig, const RiggedMesh& mesh, const std::string& file);
 
 }  // namespace ossa
