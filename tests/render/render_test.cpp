@@ -32,53 +32,17 @@
 #include "ossa/render/renderer.h"
 #include "ossa/render/shader.h"
 #include "ossa/render/texture.h"
+#include "render/gl_fixture.h"
 #include "shared/scenes.h"
 
 using namespace ossa;
 
 namespace {
 
-constexpr int kW = 320, kH = 240;
-
-// One offscreen GL context and renderer per process (contexts are expensive on llvmpipe).
-struct Gl {
-  Window window;
-  std::unique_ptr<Renderer> renderer;
-  std::unique_ptr<Atlas> atlas;
-  std::string error;
-
-  Gl() {
-    setenv("SDL_VIDEODRIVER", "offscreen", 1);
-    WindowDesc desc;
-    desc.width = kW;
-    desc.height = kH;
-    desc.offscreen = true;
-    auto w = Window::create(desc);
-    if (!w.ok()) {
-      error = w.message();
-      return;
-    }
-    window = std::move(w.value());
-    auto r = Renderer::create(shader_dir());
-    if (!r.ok()) {
-      error = r.message();
-      return;
-    }
-    renderer = std::make_unique<Renderer>(std::move(r.value()));
-    const std::string dir = scenes::source_path("assets/sprites/bones");
-    auto set = load_sprite_set(dir + "/sprites.json");
-    atlas = std::make_unique<Atlas>(
-        Atlas::build(set.ok() ? set.value() : default_sprite_set(), dir));
-  }
-  static std::string shader_dir() { return scenes::source_path("shaders"); }
-};
-
-Gl& gl() {
-  static Gl g;
-  INFO(g.error);
-  REQUIRE(g.renderer);
-  return g;
-}
+using test::Gl;
+using test::gl;
+using test::kH;
+using test::kW;
 
 Creature example(const char* name) {
   auto g = scenes::generator().example(name, 1);

@@ -9,6 +9,7 @@
 #include <cmath>
 
 #include "ossa/io/json.h"
+#include "ossa/math/angle.h"
 #include "ossa/skeleton/pose.h"
 
 #include <glm/common.hpp>
@@ -243,6 +244,71 @@ SpriteFrame sprite_frame(const SpriteInfo& info, float length, float width, bool
 
 }  // namespace
 
+std::vector<int> chain_children(const Skeleton& s, const std::vector<BoneLocal>& locals) {
+  const int n = s.bone_count();
+  std::vector<int> child(static_cast<size_t>(n), -1);
+  std::vector<float> turn(static_cast<size_t>(n), 0.0f);
+  const auto drawn = [&](int b) { return s.length(b) > 1e-6f && std::isfinite(s.length(b)); };
+  for (int c = 0; c < n; ++c) {
+    const int p = s.parent(c);
+    if (p < 0 || !drawn(p) || !drawn(c) || s.layer(c) != s.layer(p)) continue;
+    const BoneLocal& l = locals[static_cast<size_t>(c)];
+    if (glm::length(l.offset_ls - glm::vec2(s.length(p), 0.0f)) > 0.01f * s.length(p)) continue;
+    const float t = std::fabs(wrap_angle(l.angle_ls));
+    const auto pi = static_cast<size_t>(p);
+    if (child[pi] < 0 || t < turn[pi]) child[pi] = c, turn[pi] = t;
+  }
+  return child;
+}
+
+namespace {
+
+float smoothstep01(float t) {
+  t = std::clamp(t, 0.0f, 1.0f);
+  return t * t * (3.0f - 2.0f * t);
+}
+
+// A sprite's drawn half height (metres) — the joint's thickness as the sprite shows it.
+float half_height(const SpriteInfo& info, float length, float width) {
+  return 0.5f * std::max(info.aspect * length, width);
+}
+
+// One blended chain joint: parent and child bones, the mid-joint palette index (-1: blend
+// parent and child directly) and the blend's half width (metres along either bone).
+struct JointBlend {
+  int parent = -1, child = -1, mid = -1;
+  float half_width = 0.0f;
+};
+
+struct BoneWeight {
+  int bone = 0;
+  float weight = 0.0f;
+};
+
+// The weights across `j` of a point `s` metres from the joint along its bone (negative
+// toward the parent): 1 → 0 for the parent over [-half_width, half_width], through the mid
+// frame when there is one (parent → mid before the joint, mid → child after it).
+void joint_weights(const JointBlend& j, float s, BoneWeight out[2]) {
+  const float a = j.half_width;
+  if (j.mid < 0) {
+    const float t = smoothstep01(0.5f + 0.5f * s / a);
+    out[0] = {j.parent, 1.0f - t};
+    out[1] = {j.child, t};
+    return;
+  }
+  if (s < 0.0f) {
+    const float t = smoothstep01(1.0f + s / a);
+    out[0] = {j.parent, 1.0f - t};
+    out[1] = {j.mid, t};
+  } else {
+    const float t = smoothstep01(s / a);
+    out[0] = {j.mid, 1.0f - t};
+    out[1] = {j.child, t};
+  }
+}
+
+}  // namespace
+
 Result<SpriteMesh> try_build_sprite_mesh(const Creature& creature, const SpriteSet& sprites,
                                          const SpriteMeshOptions& options) {
   const int n = creature.skeleton.bone_count();
@@ -260,14 +326,51 @@ SpriteMesh build_sprite_mesh(const Creature& creature, const SpriteSet& sprites,
   OSSA_ASSERT(n <= kMaxSpriteMeshBones, "build_sprite_mesh: more bones than uint8 bone indices hold");
   const std::vector<BoneLocal>& locals =
       creature.rest_pose.locals.size() == static_cast<size_t>(n) ? creature.rest_pose.locals : s.rest_locals();
-  const std::vector<Mat2x3> model = model_matrices(s, locals);
+  const std::vector<Mat2x3> rest = model_matrices(s, locals);
 
   SpriteMesh mesh;
-  mesh.inverse_bind.reserve(static_cast<size_t>(n));
   mesh.bone_sprites.reserve(static_cast<size_t>(n));
-  for (int i = 0; i < n; ++i) {
-    mesh.inverse_bind.push_back(inverse(model[static_cast<size_t>(i)]));
-    mesh.bone_sprites.push_back(sprite_for_bone(creature, i));
+  for (int i = 0; i < n; ++i) mesh.bone_sprites.push_back(sprite_for_bone(creature, i));
+
+  // Smooth skinning: each chain joint's blend, stored on the parent (its end) and the child
+  // (its start) alike. The bind pose straightens every blended joint, so the two sprites
+  // overlap along one line there and the same weight at the same distance from the joint is
+  // the same point on both: they bend as one. (Blending in a bent bind pose tears a sprite's
+  // end, which lies off its neighbour's axis, when the joint turns the other way.)
+  const bool smooth = options.smooth_weights && creature.smooth_skinning;
+  std::vector<JointBlend> start_blend(static_cast<size_t>(n)), end_blend(static_cast<size_t>(n));
+  std::vector<BoneLocal> bind_locals = locals;
+  const auto limb_joint = [&](int child) {
+    const BoneKind k = s.kind(child);
+    return k == BoneKind::kUpperLimb || k == BoneKind::kLowerLimb || k == BoneKind::kHand;
+  };
+  if (smooth) {
+    const std::vector<int> chain = chain_children(s, locals);
+    int mids = 0;
+    for (int p = 0; p < n; ++p) {
+      const int c = chain[static_cast<size_t>(p)];
+      if (c < 0) continue;
+      const SpriteInfo& pi = sprites[mesh.bone_sprites[static_cast<size_t>(p)]];
+      const SpriteInfo& ci = sprites[mesh.bone_sprites[static_cast<size_t>(c)]];
+      const float thickness = 0.5f * (half_height(pi, s.length(p), std::max(s.width(p), 0.0f)) +
+                                      half_height(ci, s.length(c), std::max(s.width(c), 0.0f)));
+      const float half_width =
+          std::min({kSmoothBlend * thickness, kSmoothMaxSpan * s.length(p), kSmoothMaxSpan * s.length(c)});
+      if (!(half_width > 0.0f) || !std::isfinite(half_width)) continue;
+      JointBlend j{p, c, -1, half_width};
+      if (limb_joint(c) && n + mids <= kMaxSpriteMeshBones) j.mid = n + mids++;
+      end_blend[static_cast<size_t>(p)] = j;
+      start_blend[static_cast<size_t>(c)] = j;
+      bind_locals[static_cast<size_t>(c)].angle_ls = 0.0f;
+    }
+  }
+  const std::vector<Mat2x3> model = smooth ? model_matrices(s, bind_locals) : rest;
+  mesh.inverse_bind.reserve(static_cast<size_t>(n));
+  for (int i = 0; i < n; ++i) mesh.inverse_bind.push_back(inverse(model[static_cast<size_t>(i)]));
+  for (const JointBlend& j : end_blend) {
+    if (j.mid < 0) continue;
+    const Mat2x3 bind = mid_joint_frame(model[static_cast<size_t>(j.parent)], model[static_cast<size_t>(j.child)]);
+    mesh.mid_joints.push_back({j.parent, j.child, inverse(bind)});
   }
 
   std::vector<int> order;
@@ -280,8 +383,9 @@ SpriteMesh build_sprite_mesh(const Creature& creature, const SpriteSet& sprites,
     return kind_order(s.kind(a)) < kind_order(s.kind(b));
   });
 
-  mesh.vertices.reserve(order.size() * 10);
-  mesh.indices.reserve(order.size() * 24);
+  mesh.vertices.reserve(order.size() * (smooth ? 24 : 8));
+  mesh.indices.reserve(order.size() * (smooth ? 66 : 18));
+  std::vector<float> columns;
   int layer = 0;
   for (int bone : order) {
     const int bone_layer = static_cast<int>(s.layer(bone));
@@ -291,55 +395,135 @@ SpriteMesh build_sprite_mesh(const Creature& creature, const SpriteSet& sprites,
     const SpriteFrame frame = sprite_frame(info, s.length(bone), std::max(s.width(bone), 0.0f), s.sprite_flip_y(bone));
     const Mat2x3& m = model[static_cast<size_t>(bone)];
     const float shade = s.layer(bone) == Layer::kFar ? options.far_shade : 1.0f;
-    const int parent = s.parent(bone);
-
-    // Columns: the sprite's ends, both anchors and the end of the smooth-weight fade.
     const float pu = info.parent_anchor.x, cu = info.child_anchor.x;
-    const float fade_u = pu + kSmoothSpan * (cu - pu);
-    float columns[5] = {0.0f, pu, fade_u, cu, 1.0f};
-    int count = 0;
-    for (float u : columns) {
-      if (count == 0 || u > columns[count - 1] + 1e-5f) columns[count++] = u;
+    const float metres_per_u = s.length(bone) / (cu - pu);  // along the bone
+    const JointBlend& at_start = start_blend[static_cast<size_t>(bone)];
+    const JointBlend& at_end = end_blend[static_cast<size_t>(bone)];
+
+    // Columns: the sprite's ends and both anchors; around each blended joint kSmoothColumns
+    // more on either side, evenly over the blend (those on the sprite).
+    columns.assign({0.0f, pu, cu, 1.0f});
+    for (const auto& [j, joint_u] : {std::pair{&at_start, pu}, std::pair{&at_end, cu}}) {
+      if (j->parent < 0) continue;
+      for (int k = -kSmoothColumns; k <= kSmoothColumns; ++k) {
+        const float u = joint_u + j->half_width / metres_per_u * static_cast<float>(k) / kSmoothColumns;
+        if (u > 0.0f && u < 1.0f) columns.push_back(u);
+      }
     }
+    std::sort(columns.begin(), columns.end());
+    columns.erase(std::unique(columns.begin(), columns.end(), [](float a, float b) { return b - a < 1e-5f; }),
+                  columns.end());
+
     const auto first = static_cast<uint32_t>(mesh.vertices.size());
-    for (int c = 0; c < count; ++c) {
-      const float u = columns[c];
-      // Smooth weights: 50/50 with the parent at and behind the joint, the bone alone from
-      // fade_u on — a joint then bends the overlap like a hinge instead of two rigid cards.
-      float w_self = 1.0f;
-      if (options.smooth_weights && parent >= 0) {
-        w_self = std::clamp(0.5f + 0.5f * (u - pu) / std::max(fade_u - pu, 1e-6f), 0.5f, 1.0f);
+    for (const float u : columns) {
+      // Within a joint's blend the joint's weights (the bone itself among them, perhaps at 0
+      // deep in its neighbour's blend), else the bone alone. A bone's two blends never meet.
+      BoneWeight w[2] = {{bone, 1.0f}, {bone, 0.0f}};
+      const float s_start = (u - pu) * metres_per_u, s_end = (u - cu) * metres_per_u;
+      if (at_start.parent >= 0 && s_start < at_start.half_width) {
+        joint_weights(at_start, s_start, w);
+      } else if (at_end.parent >= 0 && s_end > -at_end.half_width) {
+        joint_weights(at_end, s_end, w);
+      }
+      std::array<uint8_t, 4> bones{static_cast<uint8_t>(bone), 0, 0, 0};
+      std::array<float, 4> weights{0.0f, 0.0f, 0.0f, 0.0f};
+      int used = 1;
+      for (const BoneWeight& bw : w) {
+        if (bw.bone == bone) {
+          weights[0] += bw.weight;
+        } else if (bw.weight > 0.0f) {
+          bones[static_cast<size_t>(used)] = static_cast<uint8_t>(bw.bone);
+          weights[static_cast<size_t>(used++)] = bw.weight;
+        }
       }
       for (float v : {0.0f, 1.0f}) {
         SpriteVertex vert;
         vert.position_ms = m.apply(frame.map({u, v}));
         vert.uv = info.uv_min + glm::vec2(u, 1.0f - v) * (info.uv_max - info.uv_min);
-        vert.bones = {static_cast<uint8_t>(bone), 0, 0, 0};
-        vert.weights = {w_self, 0.0f, 0.0f, 0.0f};
-        if (w_self < 1.0f) {
-          vert.bones[1] = static_cast<uint8_t>(parent);
-          vert.weights[1] = 1.0f - w_self;
-        }
+        vert.bones = bones;
+        vert.weights = weights;
         vert.shade = shade;
         mesh.vertices.push_back(vert);
       }
     }
-    for (int c = 0; c + 1 < count; ++c) {
-      const uint32_t a = first + 2 * static_cast<uint32_t>(c);  // (u_c, 0), (u_c, 1), then c+1
+    for (uint32_t c = 0; c + 1 < columns.size(); ++c) {
+      const uint32_t a = first + 2 * c;  // (u_c, 0), (u_c, 1), then c+1
       mesh.indices.insert(mesh.indices.end(), {a, a + 2, a + 3, a, a + 3, a + 1});
     }
   }
   while (layer < kLayerCount) mesh.layer_begin[static_cast<size_t>(++layer)] = static_cast<uint32_t>(mesh.indices.size());
   mesh.layer_begin[0] = 0;
+
+  // The rest pose as drawn: the bind pose skinned to it (the same where nothing is blended).
+  mesh.rest_positions.reserve(mesh.vertices.size());
+  if (!smooth) {
+    for (const SpriteVertex& v : mesh.vertices) mesh.rest_positions.push_back(v.position_ms);
+  } else {
+    std::vector<Mat2x3> palette(static_cast<size_t>(mesh.palette_size()));
+    for (int i = 0; i < n; ++i) palette[static_cast<size_t>(i)] = rest[static_cast<size_t>(i)] * mesh.inverse_bind[static_cast<size_t>(i)];
+    mid_joint_palette(mesh.mid_joints, rest, palette);
+    for (const SpriteVertex& v : mesh.vertices) mesh.rest_positions.push_back(skin_vertex(v, palette));
+  }
   return mesh;
+}
+
+glm::vec2 skin_vertex(const SpriteVertex& v, std::span<const Mat2x3> palette) {
+  glm::vec2 p(0.0f);
+  for (size_t k = 0; k < 4; ++k) {
+    if (v.weights[k] != 0.0f) p += v.weights[k] * palette[v.bones[k]].apply(v.position_ms);
+  }
+  return p;
+}
+
+Mat2x3 mid_joint_frame(const Mat2x3& parent, const Mat2x3& child) {
+  // The child's turn relative to the parent: L_p⁻¹ L_c is a rotation (any common scale or
+  // mirror cancels); its half angle is the unit complex sqrt(z) = normalise(1 + z).
+  const float a = parent.m[0], b = parent.m[1], c = parent.m[2], d = parent.m[3];
+  const float det = a * d - b * c;
+  glm::vec2 z(1.0f, 0.0f);
+  if (std::fabs(det) > 1e-20f) {
+    z = glm::vec2(d * child.m[0] - c * child.m[1], -b * child.m[0] + a * child.m[1]) / det;
+  }
+  glm::vec2 half(1.0f + z.x, z.y);
+  const float len = glm::length(half);
+  half = len > 1e-6f * (1.0f + glm::length(z)) ? half / len : glm::vec2(0.0f, 1.0f);  // a half turn: 90°
+  Mat2x3 turn;
+  turn.m[0] = half.x, turn.m[1] = half.y, turn.m[2] = -half.y, turn.m[3] = half.x;
+  Mat2x3 mid = parent * turn;
+  mid.m[4] = child.m[4];
+  mid.m[5] = child.m[5];
+  return mid;
+}
+
+void mid_joint_palette(std::span<const MidJoint> mid_joints, std::span<const Mat2x3> world,
+                       std::span<Mat2x3> palette) {
+  const size_t bones = world.size();
+  OSSA_ASSERT(palette.size() == bones + mid_joints.size(), "mid_joint_palette: one entry per bone and mid joint");
+  for (size_t i = 0; i < mid_joints.size(); ++i) {
+    const MidJoint& j = mid_joints[i];
+    palette[bones + i] = mid_joint_frame(world[static_cast<size_t>(j.parent)], world[static_cast<size_t>(j.child)]) *
+                         j.inverse_bind;
+  }
+}
+
+int max_weights_per_vertex(const SpriteMesh& mesh) {
+  int most = 0;
+  for (const SpriteVertex& v : mesh.vertices) {
+    int count = 0;
+    for (float w : v.weights) count += w > 0.0f;
+    most = std::max(most, count);
+  }
+  return most;
 }
 
 Box sprite_mesh_bounds(const SpriteMesh& mesh) {
   if (mesh.vertices.empty()) return Box{};
-  Box b{mesh.vertices.front().position_ms, mesh.vertices.front().position_ms};
-  for (const SpriteVertex& v : mesh.vertices) {
-    b.min_ws = glm::min(b.min_ws, v.position_ms);
-    b.max_ws = glm::max(b.max_ws, v.position_ms);
+  const bool rest = mesh.rest_positions.size() == mesh.vertices.size();
+  const auto at = [&](size_t i) { return rest ? mesh.rest_positions[i] : mesh.vertices[i].position_ms; };
+  Box b{at(0), at(0)};
+  for (size_t i = 1; i < mesh.vertices.size(); ++i) {
+    b.min_ws = glm::min(b.min_ws, at(i));
+    b.max_ws = glm::max(b.max_ws, at(i));
   }
   return b;
 }
