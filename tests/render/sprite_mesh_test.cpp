@@ -301,7 +301,7 @@ TEST_CASE("sprite meshes: skinning the rest pose gives the rest pose, weights su
       }
       CHECK((smooth ? blended > 0 : blended == 0));
       CHECK(max_weights_per_vertex(mesh) == (smooth ? 2 : 1));
-      CHECK(mesh.mid_joints.size() == (smooth ? 3 * c.limbs.size() : 0));  // girdle-upper, knee, ankle
+      CHECK(mesh.mid_joints.size() == (smooth ? 2 * c.limbs.size() : 0));  // knee (elbow), ankle (wrist)
       // Layer ranges: ordered, covering all indices, each triangle in the layer of its bone.
       REQUIRE(mesh.layer_begin[0] == 0);
       REQUIRE(mesh.layer_begin[3] == mesh.indices.size());

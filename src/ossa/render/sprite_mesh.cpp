@@ -252,6 +252,9 @@ std::vector<int> chain_children(const Skeleton& s, const std::vector<BoneLocal>&
   for (int c = 0; c < n; ++c) {
     const int p = s.parent(c);
     if (p < 0 || !drawn(p) || !drawn(c) || s.layer(c) != s.layer(p)) continue;
+    // A girdle's flat blade meets the limb at a ball joint, not a hinge: blending would bend
+    // the blade's end (the pelvis's hook, the scapula's neck) after the limb.
+    if (s.kind(p) == BoneKind::kScapula || s.kind(p) == BoneKind::kPelvis) continue;
     const BoneLocal& l = locals[static_cast<size_t>(c)];
     if (glm::length(l.offset_ls - glm::vec2(s.length(p), 0.0f)) > 0.01f * s.length(p)) continue;
     const float t = std::fabs(wrap_angle(l.angle_ls));
@@ -342,7 +345,7 @@ SpriteMesh build_sprite_mesh(const Creature& creature, const SpriteSet& sprites,
   std::vector<BoneLocal> bind_locals = locals;
   const auto limb_joint = [&](int child) {
     const BoneKind k = s.kind(child);
-    return k == BoneKind::kUpperLimb || k == BoneKind::kLowerLimb || k == BoneKind::kHand;
+    return k == BoneKind::kLowerLimb || k == BoneKind::kHand;
   };
   if (smooth) {
     const std::vector<int> chain = chain_children(s, locals);
@@ -405,8 +408,10 @@ SpriteMesh build_sprite_mesh(const Creature& creature, const SpriteSet& sprites,
     columns.assign({0.0f, pu, cu, 1.0f});
     for (const auto& [j, joint_u] : {std::pair{&at_start, pu}, std::pair{&at_end, cu}}) {
       if (j->parent < 0) continue;
-      for (int k = -kSmoothColumns; k <= kSmoothColumns; ++k) {
-        const float u = joint_u + j->half_width / metres_per_u * static_cast<float>(k) / kSmoothColumns;
+      // Limb joints turn far (finer columns); spine joints a few degrees each.
+      const int per_side = j->mid >= 0 ? kSmoothColumns : kSmoothSpineColumns;
+      for (int k = -per_side; k <= per_side; ++k) {
+        const float u = joint_u + j->half_width / metres_per_u * static_cast<float>(k) / per_side;
         if (u > 0.0f && u < 1.0f) columns.push_back(u);
       }
     }

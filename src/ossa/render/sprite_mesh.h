@@ -145,7 +145,7 @@ SpriteId sprite_for_bone(const Creature& creature, int bone);
 
 // Bone indices are uint8: a creature may have at most this many bones. Every genome the
 // loader accepts fits (kMaxCreatureBones, gen/genome.h), with a mid joint for each of its
-// limbs' three joints (girdle–upper, upper–lower, lower–hand) on both sides. A skeleton with
+// limbs' joints (upper–lower, lower–hand; at most three) on both sides. A skeleton with
 // more bones and limb joints than indices gets mid joints only while indices last (the rest
 // blend parent and child directly).
 constexpr int kMaxSpriteMeshBones = 255;
@@ -154,16 +154,19 @@ static_assert(kMaxCreatureBones + 3 * 2 * kMaxLimbPairs <= kMaxSpriteMeshBones +
 // Smooth skinning's blend: a joint blends over ±kSmoothBlend × the joint's half thickness
 // (the mean of the two sprites' drawn half heights) along each bone, at most
 // kSmoothMaxSpan × either bone's length (so a bone's two blends never meet), sampled by
-// kSmoothColumns quad columns on each side so the bent outline is a curve, not a kink.
+// kSmoothColumns quad columns on each side of a limb joint (kSmoothSpineColumns at the
+// spine) so the bent outline is a curve, not a kink.
 constexpr float kSmoothBlend = 0.6f;
 constexpr float kSmoothMaxSpan = 0.45f;
-constexpr int kSmoothColumns = 6;
+constexpr int kSmoothColumns = 5;        // limb joints
+constexpr int kSmoothSpineColumns = 2;   // spine joints, which turn a few degrees each
 
 // Per bone, the bone that continues it across its end joint — the one its end blends with
 // under smooth skinning — or -1: a child of non-zero length in the same layer that starts at
 // the bone's end (within 1 % of its length) in `locals`, the straightest one when several do.
-// So limbs chain girdle → upper → lower → hand and the spine vertebra to vertebra to skull;
-// ribs and girdles (another layer than their vertebra) stay rigid.
+// So limbs chain upper → lower → hand and the spine vertebra to vertebra to skull; ribs and
+// girdles (another layer than their vertebra) stay rigid, and so does a girdle bone's end at
+// the limb (a ball joint: the blade's end would bend after the limb).
 std::vector<int> chain_children(const Skeleton& skeleton, const std::vector<BoneLocal>& locals);
 
 // Builds the mesh: per bone of non-zero length a strip of quads (columns at u = 0, the parent
