@@ -139,8 +139,9 @@ void frame_1000_creatures_reference(benchmark::State& state) {
   state.counters["vertices"] = s.batch->vertex_count();
 }
 
-// Smooth skinning's cost: the same frame with smooth weights (ossa's default: more vertices,
-// a mid-joint palette entry per limb joint) against rigid sprites (the reference).
+// Smooth skinning's cost: the same frame with smooth weights (ossa's default: more vertices —
+// blend columns and four rows of quads on limb sprites — and three mid-joint palette entries
+// per limb joint) against rigid sprites (the reference).
 void smooth_skinning_frame_ossa(benchmark::State& state) {
   Scene& s = scene();
   if (!s.ok) return state.SkipWithError("no GL context / data");

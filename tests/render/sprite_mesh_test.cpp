@@ -9,6 +9,8 @@
 #include "ossa/gen/generator.h"
 #include "ossa/gen/skeleton_builder.h"
 #include "ossa/io/file.h"
+#include "ossa/math/angle.h"
+#include "ossa/math/rng.h"
 #include "ossa/skeleton/pose.h"
 #include "shared/scenes.h"
 
@@ -301,7 +303,8 @@ TEST_CASE("sprite meshes: skinning the rest pose gives the rest pose, weights su
       }
       CHECK((smooth ? blended > 0 : blended == 0));
       CHECK(max_weights_per_vertex(mesh) == (smooth ? 2 : 1));
-      CHECK(mesh.mid_joints.size() == (smooth ? 2 * c.limbs.size() : 0));  // knee (elbow), ankle (wrist)
+      // Knee (elbow) and ankle (wrist), each kSmoothJointFrames frames: every example has room.
+      CHECK(mesh.mid_joints.size() == (smooth ? kSmoothJointFrames * 2 * c.limbs.size() : 0));
       // Layer ranges: ordered, covering all indices, each triangle in the layer of its bone.
       REQUIRE(mesh.layer_begin[0] == 0);
       REQUIRE(mesh.layer_begin[3] == mesh.indices.size());
@@ -376,6 +379,33 @@ TEST_CASE("sprite meshes refuse more bones than uint8 indices hold", "[render]")
   int max_bone = 0;
   for (const SpriteVertex& v : ok->vertices) max_bone = std::max(max_bone, static_cast<int>(v.bones[0]));
   CHECK(max_bone == 254);
+}
+
+TEST_CASE("mid-joint frames turn a quarter, half and three quarters of the child's turn", "[render]") {
+  // frame(t, a, k): translate t, rotate a, scale k.
+  const auto frame = [](glm::vec2 t, float a, float k) {
+    Mat2x3 m;
+    m.m[0] = k * std::cos(a), m.m[1] = k * std::sin(a), m.m[2] = -m.m[1], m.m[3] = m.m[0];
+    m.m[4] = t.x, m.m[5] = t.y;
+    return m;
+  };
+  Rng rng(15);
+  for (int i = 0; i < 1000; ++i) {
+    const auto a = static_cast<float>(rng.uniform(-kPi, kPi));
+    const auto turn = static_cast<float>(rng.uniform(-0.99 * kPi, 0.99 * kPi));
+    const auto scale = static_cast<float>(rng.uniform(0.5, 2.0));
+    const bool mirror = i % 2 == 1;  // a creature facing left
+    Mat2x3 place = Mat2x3::identity();
+    if (mirror) place.m[0] = -1.0f;
+    const Mat2x3 parent = place * frame({static_cast<float>(rng.uniform(-1.0, 1.0)), 0.3f}, a, scale);
+    const Mat2x3 child = parent * frame({0.7f, 0.0f}, turn, 1.0f);
+    for (float share : {0.25f, 0.5f, 0.75f}) {
+      INFO("turn " << turn << " share " << share << (mirror ? " mirrored" : ""));
+      const Mat2x3 mid = mid_joint_frame(parent, child, share);
+      const Mat2x3 expect = parent * frame({0.7f, 0.0f}, share * turn, 1.0f);
+      for (int k = 0; k < 6; ++k) CHECK(mid.m[k] == Approx(expect.m[k]).margin(1e-4f * scale));
+    }
+  }
 }
 
 TEST_CASE("atlas rectangles map the sprite's unit box", "[render]") {

@@ -95,6 +95,13 @@ SpriteSet default_sprite_set() {
   return set;
 }
 
+glm::vec2 joint_reach(const SpriteInfo& info, bool child_end) {
+  const glm::vec2 measured = child_end ? info.child_reach : info.parent_reach;
+  if (measured.x >= 0.0f && measured.y >= 0.0f) return measured;
+  const float v = child_end ? info.child_anchor.y : info.parent_anchor.y;
+  return {v, 1.0f - v};
+}
+
 Result<SpriteSet> load_sprite_set(const std::string& path) {
   Result<Json> doc = read_json_file(path);
   if (!doc.ok()) return doc.error();
@@ -266,21 +273,24 @@ std::vector<int> chain_children(const Skeleton& s, const std::vector<BoneLocal>&
 
 namespace {
 
-float smoothstep01(float t) {
-  t = std::clamp(t, 0.0f, 1.0f);
-  return t * t * (3.0f - 2.0f * t);
-}
-
 // A sprite's drawn half height (metres) — the joint's thickness as the sprite shows it.
 float half_height(const SpriteInfo& info, float length, float width) {
   return 0.5f * std::max(info.aspect * length, width);
 }
 
-// One blended chain joint: parent and child bones, the mid-joint palette index (-1: blend
-// parent and child directly) and the blend's half width (metres along either bone).
+// One blended chain joint: parent and child bones, the palette indices of its mid-joint
+// frames (in turn order; none: blend parent and child directly), the blend's half width
+// (metres along either bone) and, at a limb joint, how the parent's end tucks under the
+// child's start: its drawing squeezed across the bone to `squeeze` of its height from
+// `squeeze_to` metres from the joint on, ramping in from `squeeze_from` (both negative: on
+// the parent).
 struct JointBlend {
-  int parent = -1, child = -1, mid = -1;
+  int parent = -1, child = -1;
+  std::array<int, kSmoothJointFrames> frame{};
+  int frames = 0;
   float half_width = 0.0f;
+  bool limb = false;
+  float squeeze = 1.0f, squeeze_from = 0.0f, squeeze_to = 0.0f;
 };
 
 struct BoneWeight {
@@ -289,25 +299,33 @@ struct BoneWeight {
 };
 
 // The weights across `j` of a point `s` metres from the joint along its bone (negative
-// toward the parent): 1 → 0 for the parent over [-half_width, half_width], through the mid
-// frame when there is one (parent → mid before the joint, mid → child after it).
+// toward the parent): parent, the mid-joint frames in turn order, child, placed evenly over
+// [-half_width, half_width], and between two neighbours a blend linear in s. So the joint's
+// turn spreads evenly over the blend and the bone's axis bends along a circular arc (a
+// smoothstep turns 1.5 times faster at its middle and folds the inside of a bent knee
+// sooner), and a linear blend never spans more than one step of the turn.
 void joint_weights(const JointBlend& j, float s, BoneWeight out[2]) {
-  const float a = j.half_width;
-  if (j.mid < 0) {
-    const float t = smoothstep01(0.5f + 0.5f * s / a);
-    out[0] = {j.parent, 1.0f - t};
-    out[1] = {j.child, t};
-    return;
-  }
-  if (s < 0.0f) {
-    const float t = smoothstep01(1.0f + s / a);
-    out[0] = {j.parent, 1.0f - t};
-    out[1] = {j.mid, t};
-  } else {
-    const float t = smoothstep01(s / a);
-    out[0] = {j.mid, 1.0f - t};
-    out[1] = {j.child, t};
-  }
+  const int steps = j.frames + 1;
+  const float x = std::clamp((s + j.half_width) / (2.0f * j.half_width), 0.0f, 1.0f) * static_cast<float>(steps);
+  const int i = std::min(static_cast<int>(x), steps - 1);
+  const float t = x - static_cast<float>(i);
+  const auto at = [&](int k) { return k == 0 ? j.parent : k == steps ? j.child : j.frame[static_cast<size_t>(k - 1)]; };
+  out[0] = {at(i), 1.0f - t};
+  out[1] = {at(i + 1), t};
+}
+
+// Across-the-bone scale of the parent's end at `s` metres from the joint `j` (1 outside it).
+float end_squeeze(const JointBlend& j, float s) {
+  if (j.squeeze >= 1.0f || s <= j.squeeze_from) return 1.0f;
+  const float ramp = std::clamp((s - j.squeeze_from) / (j.squeeze_to - j.squeeze_from), 0.0f, 1.0f);
+  return 1.0f + (j.squeeze - 1.0f) * ramp;
+}
+
+// A sprite's reach (joint_reach) at one end in metres across its bone frame: x toward -y,
+// y toward +y (a flipped sprite's v runs along -y).
+glm::vec2 reach_ms(const SpriteInfo& info, bool child_end, float drawn_height, bool flip) {
+  const glm::vec2 r = joint_reach(info, child_end) * drawn_height;
+  return flip ? glm::vec2(r.y, r.x) : r;
 }
 
 }  // namespace
@@ -349,19 +367,41 @@ SpriteMesh build_sprite_mesh(const Creature& creature, const SpriteSet& sprites,
   };
   if (smooth) {
     const std::vector<int> chain = chain_children(s, locals);
+    // kSmoothJointFrames frames per limb joint while the uint8 indices last, else one (which
+    // every genome within its limits has room for, see kMaxSpriteMeshBones).
+    int limb_joints = 0;
+    for (const int c : chain) limb_joints += c >= 0 && limb_joint(c);
+    int frames_per_joint = kSmoothJointFrames;
+    while (frames_per_joint > 0 && n + frames_per_joint * limb_joints > kMaxSpriteMeshBones + 1) frames_per_joint -= 2;
     int mids = 0;
     for (int p = 0; p < n; ++p) {
       const int c = chain[static_cast<size_t>(p)];
       if (c < 0) continue;
       const SpriteInfo& pi = sprites[mesh.bone_sprites[static_cast<size_t>(p)]];
       const SpriteInfo& ci = sprites[mesh.bone_sprites[static_cast<size_t>(c)]];
-      const float thickness = 0.5f * (half_height(pi, s.length(p), std::max(s.width(p), 0.0f)) +
-                                      half_height(ci, s.length(c), std::max(s.width(c), 0.0f)));
+      const float hp = half_height(pi, s.length(p), std::max(s.width(p), 0.0f));
+      const float hc = half_height(ci, s.length(c), std::max(s.width(c), 0.0f));
       const float half_width =
-          std::min({kSmoothBlend * thickness, kSmoothMaxSpan * s.length(p), kSmoothMaxSpan * s.length(c)});
+          std::min({kSmoothBlend * 0.5f * (hp + hc), kSmoothMaxSpan * s.length(p), kSmoothMaxSpan * s.length(c)});
       if (!(half_width > 0.0f) || !std::isfinite(half_width)) continue;
-      JointBlend j{p, c, -1, half_width};
-      if (limb_joint(c) && n + mids <= kMaxSpriteMeshBones) j.mid = n + mids++;
+      JointBlend j;
+      j.parent = p, j.child = c, j.half_width = half_width, j.limb = limb_joint(c);
+      if (j.limb) {
+        j.frames = std::max(frames_per_joint, 0);
+        for (int f = 0; f < j.frames; ++f) j.frame[static_cast<size_t>(f)] = n + mids++;
+        // Straightened, the parent's end and the child's start lie on each other; the child
+        // draws on top, and wherever the parent's end reaches further across the bone (a
+        // thicker parent, or a bigger knob at that end of the art) its outline shows beside
+        // the child's as a second one. So the parent's end shrinks across the bone to within
+        // the child's reach, from where the child's sprite begins to half way to the joint.
+        const glm::vec2 pr = reach_ms(pi, true, 2.0f * hp, s.sprite_flip_y(p));
+        const glm::vec2 cr = reach_ms(ci, false, 2.0f * hc, s.sprite_flip_y(c));
+        j.squeeze = std::min(1.0f, std::min(pr.x > 0.0f ? cr.x / pr.x : 1.0f, pr.y > 0.0f ? cr.y / pr.y : 1.0f));
+        const float child_begins = -ci.parent_anchor.x / (ci.child_anchor.x - ci.parent_anchor.x) * s.length(c);
+        j.squeeze_from = std::max(child_begins, -0.5f * s.length(p));
+        j.squeeze_to = 0.5f * j.squeeze_from;
+        if (!(j.squeeze > 0.0f) || !(j.squeeze_from < 0.0f)) j.squeeze = 1.0f;
+      }
       end_blend[static_cast<size_t>(p)] = j;
       start_blend[static_cast<size_t>(c)] = j;
       bind_locals[static_cast<size_t>(c)].angle_ls = 0.0f;
@@ -371,9 +411,15 @@ SpriteMesh build_sprite_mesh(const Creature& creature, const SpriteSet& sprites,
   mesh.inverse_bind.reserve(static_cast<size_t>(n));
   for (int i = 0; i < n; ++i) mesh.inverse_bind.push_back(inverse(model[static_cast<size_t>(i)]));
   for (const JointBlend& j : end_blend) {
-    if (j.mid < 0) continue;
-    const Mat2x3 bind = mid_joint_frame(model[static_cast<size_t>(j.parent)], model[static_cast<size_t>(j.child)]);
-    mesh.mid_joints.push_back({j.parent, j.child, inverse(bind)});
+    for (int f = 0; f < j.frames; ++f) {
+      MidJoint mid;
+      mid.parent = j.parent, mid.child = j.child;
+      mid.turn = static_cast<float>(f + 1) / static_cast<float>(j.frames + 1);
+      const Mat2x3 bind =
+          mid_joint_frame(model[static_cast<size_t>(j.parent)], model[static_cast<size_t>(j.child)], mid.turn);
+      mid.inverse_bind = inverse(bind);
+      mesh.mid_joints.push_back(mid);
+    }
   }
 
   std::vector<int> order;
@@ -386,8 +432,8 @@ SpriteMesh build_sprite_mesh(const Creature& creature, const SpriteSet& sprites,
     return kind_order(s.kind(a)) < kind_order(s.kind(b));
   });
 
-  mesh.vertices.reserve(order.size() * (smooth ? 24 : 8));
-  mesh.indices.reserve(order.size() * (smooth ? 66 : 18));
+  mesh.vertices.reserve(order.size() * (smooth ? 64 : 8));
+  mesh.indices.reserve(order.size() * (smooth ? 240 : 18));
   std::vector<float> columns;
   int layer = 0;
   for (int bone : order) {
@@ -404,21 +450,30 @@ SpriteMesh build_sprite_mesh(const Creature& creature, const SpriteSet& sprites,
     const JointBlend& at_end = end_blend[static_cast<size_t>(bone)];
 
     // Columns: the sprite's ends and both anchors; around each blended joint kSmoothColumns
-    // more on either side, evenly over the blend (those on the sprite).
+    // more on either side, evenly over the blend, and where the end's squeeze ramps (those on
+    // the sprite).
     columns.assign({0.0f, pu, cu, 1.0f});
     for (const auto& [j, joint_u] : {std::pair{&at_start, pu}, std::pair{&at_end, cu}}) {
       if (j->parent < 0) continue;
       // Limb joints turn far (finer columns); spine joints a few degrees each.
-      const int per_side = j->mid >= 0 ? kSmoothColumns : kSmoothSpineColumns;
+      const int per_side = j->limb ? kSmoothColumns : kSmoothSpineColumns;
       for (int k = -per_side; k <= per_side; ++k) {
         const float u = joint_u + j->half_width / metres_per_u * static_cast<float>(k) / per_side;
         if (u > 0.0f && u < 1.0f) columns.push_back(u);
+      }
+    }
+    if (at_end.squeeze < 1.0f) {
+      for (const float at : {at_end.squeeze_from, at_end.squeeze_to}) {
+        if (const float u = cu + at / metres_per_u; u > 0.0f && u < 1.0f) columns.push_back(u);
       }
     }
     std::sort(columns.begin(), columns.end());
     columns.erase(std::unique(columns.begin(), columns.end(), [](float a, float b) { return b - a < 1e-5f; }),
                   columns.end());
 
+    // Rows: one quad across the sprite, or kSmoothRows next to a limb joint (see
+    // SpriteMeshOptions: a tall quad between two columns turned apart kinks its texture).
+    const int rows = at_start.limb || at_end.limb ? kSmoothRows : 1;
     const auto first = static_cast<uint32_t>(mesh.vertices.size());
     for (const float u : columns) {
       // Within a joint's blend the joint's weights (the bone itself among them, perhaps at 0
@@ -441,9 +496,13 @@ SpriteMesh build_sprite_mesh(const Creature& creature, const SpriteSet& sprites,
           weights[static_cast<size_t>(used++)] = bw.weight;
         }
       }
-      for (float v : {0.0f, 1.0f}) {
+      const float squeeze = at_end.parent >= 0 ? end_squeeze(at_end, s_end) : 1.0f;
+      for (int r = 0; r <= rows; ++r) {
+        const float v = static_cast<float>(r) / static_cast<float>(rows);
+        glm::vec2 p = frame.map({u, v});  // bone frame: x along the bone, y across it
+        p.y *= squeeze;
         SpriteVertex vert;
-        vert.position_ms = m.apply(frame.map({u, v}));
+        vert.position_ms = m.apply(p);
         vert.uv = info.uv_min + glm::vec2(u, 1.0f - v) * (info.uv_max - info.uv_min);
         vert.bones = bones;
         vert.weights = weights;
@@ -451,9 +510,12 @@ SpriteMesh build_sprite_mesh(const Creature& creature, const SpriteSet& sprites,
         mesh.vertices.push_back(vert);
       }
     }
+    const auto per_column = static_cast<uint32_t>(rows + 1);
     for (uint32_t c = 0; c + 1 < columns.size(); ++c) {
-      const uint32_t a = first + 2 * c;  // (u_c, 0), (u_c, 1), then c+1
-      mesh.indices.insert(mesh.indices.end(), {a, a + 2, a + 3, a, a + 3, a + 1});
+      for (uint32_t r = 0; r < static_cast<uint32_t>(rows); ++r) {
+        const uint32_t a = first + c * per_column + r, b = a + per_column;  // (u_c, v_r), column c+1
+        mesh.indices.insert(mesh.indices.end(), {a, b, b + 1, a, b + 1, a + 1});
+      }
     }
   }
   while (layer < kLayerCount) mesh.layer_begin[static_cast<size_t>(++layer)] = static_cast<uint32_t>(mesh.indices.size());
@@ -480,21 +542,39 @@ glm::vec2 skin_vertex(const SpriteVertex& v, std::span<const Mat2x3> palette) {
   return p;
 }
 
-Mat2x3 mid_joint_frame(const Mat2x3& parent, const Mat2x3& child) {
+namespace {
+
+// The unit complex square root of the unit complex z, the shorter way: normalise(1 + z)
+// (a half turn gives a quarter turn).
+glm::vec2 unit_sqrt(glm::vec2 z) {
+  const glm::vec2 h(1.0f + z.x, z.y);
+  const float len = glm::length(h);
+  return len > 1e-6f * (1.0f + glm::length(z)) ? h / len : glm::vec2(0.0f, 1.0f);
+}
+
+}  // namespace
+
+Mat2x3 mid_joint_frame(const Mat2x3& parent, const Mat2x3& child, float turn) {
   // The child's turn relative to the parent: L_p⁻¹ L_c is a rotation (any common scale or
-  // mirror cancels); its half angle is the unit complex sqrt(z) = normalise(1 + z).
+  // mirror cancels), the unit complex z; its quarters are square roots, no trigonometry.
   const float a = parent.m[0], b = parent.m[1], c = parent.m[2], d = parent.m[3];
   const float det = a * d - b * c;
   glm::vec2 z(1.0f, 0.0f);
   if (std::fabs(det) > 1e-20f) {
     z = glm::vec2(d * child.m[0] - c * child.m[1], -b * child.m[0] + a * child.m[1]) / det;
+    z /= std::max(glm::length(z), 1e-20f);
   }
-  glm::vec2 half(1.0f + z.x, z.y);
-  const float len = glm::length(half);
-  half = len > 1e-6f * (1.0f + glm::length(z)) ? half / len : glm::vec2(0.0f, 1.0f);  // a half turn: 90°
-  Mat2x3 turn;
-  turn.m[0] = half.x, turn.m[1] = half.y, turn.m[2] = -half.y, turn.m[3] = half.x;
-  Mat2x3 mid = parent * turn;
+  const glm::vec2 half = unit_sqrt(z);
+  glm::vec2 r = half;
+  if (turn < 0.375f) {
+    r = unit_sqrt(half);  // a quarter
+  } else if (turn > 0.625f) {
+    const glm::vec2 q = unit_sqrt(half);
+    r = glm::vec2(half.x * q.x - half.y * q.y, half.x * q.y + half.y * q.x);  // three quarters
+  }
+  Mat2x3 turn_m;
+  turn_m.m[0] = r.x, turn_m.m[1] = r.y, turn_m.m[2] = -r.y, turn_m.m[3] = r.x;
+  Mat2x3 mid = parent * turn_m;
   mid.m[4] = child.m[4];
   mid.m[5] = child.m[5];
   return mid;
@@ -506,8 +586,8 @@ void mid_joint_palette(std::span<const MidJoint> mid_joints, std::span<const Mat
   OSSA_ASSERT(palette.size() == bones + mid_joints.size(), "mid_joint_palette: one entry per bone and mid joint");
   for (size_t i = 0; i < mid_joints.size(); ++i) {
     const MidJoint& j = mid_joints[i];
-    palette[bones + i] = mid_joint_frame(world[static_cast<size_t>(j.parent)], world[static_cast<size_t>(j.child)]) *
-                         j.inverse_bind;
+    palette[bones + i] =
+        mid_joint_frame(world[static_cast<size_t>(j.parent)], world[static_cast<size_t>(j.child)], j.turn) * j.inverse_bind;
   }
 }
 

@@ -49,7 +49,17 @@ struct SpriteInfo {
                               // in texture coordinates with t growing DOWN the image (t = 0 is
                               // the first PNG row, as glTexImage2D receives an unflipped PNG):
                               // uv_min = top-left corner, uv_max = bottom-right corner.
+  // How far the drawing reaches across the bone at each joint: unit-box v from the anchor's v
+  // down (x) and up (y) to the last opaque pixel (alpha ≥ 50 %) over the sprite's end around
+  // that anchor (u within the anchor's overhang past it, mirrored inwards). Measured from the
+  // image when the atlas is packed (Atlas::build); negative: not measured, the whole box
+  // (joint_reach). Smooth skinning tucks a parent's end under its child's start with it.
+  glm::vec2 parent_reach{-1.0f}, child_reach{-1.0f};
 };
+
+// `info`'s reach at its parent (child_end false) or child anchor: the measured one, else the
+// unit box's extent below and above the anchor's v.
+glm::vec2 joint_reach(const SpriteInfo& info, bool child_end);
 
 // The sprite set: one SpriteInfo per SpriteId, loaded from sprites.json (versioned,
 // validated; errors name the file and field).
@@ -82,25 +92,34 @@ struct SpriteVertex {
 
 struct SpriteMeshOptions {
   // Smooth skinning (DESIGN.md §9): across every chain joint (see chain_children) the two
-  // sprites' vertices near the joint blend parent and child with the same smoothstep of their
-  // distance along the bone, so both sprites bend alike and a bent knee keeps one outline.
-  // A limb joint blends through a mid-joint frame (SpriteMesh::mid_joints) turned half way:
-  // parent → mid frame before the joint, mid frame → child after it, so a linear blend never
-  // spans more than half the joint's turn (a 150° bend keeps 79 % of the joint's thickness
-  // instead of collapsing to 26 %, the "candy wrapper"). Spine joints, which turn a few
-  // degrees, blend parent and child directly. Applies when the creature asks for it
+  // sprites' vertices near the joint blend parent and child with the same weights, linear in
+  // their distance along the bone, so both sprites bend alike, along one circular arc, and a
+  // bent knee keeps one outline. A limb joint blends through kSmoothJointFrames mid-joint
+  // frames (SpriteMesh::mid_joints) turned a quarter, half and three quarters of the way, in
+  // turn along the blend, so a linear blend never spans more than a quarter of the joint's
+  // turn (a 150° bend keeps 95 % of the joint's thickness, not 26 % as with parent and child
+  // alone, the "candy wrapper", or 79 % through one half-way frame, which leaves a point on
+  // the outside of the bend). At a limb joint the sprites get kSmoothRows rows of quads, not
+  // one: each column moves by one blended matrix, and a quad as tall as the sprite between
+  // two columns turned apart maps its texture with a kink along its diagonal (each triangle
+  // is affine), a saw-tooth outline. And there the parent's end is squeezed across the bone
+  // to within the child's start (joint_reach), which is drawn on top of it, so its outline
+  // never shows as a second one beside the child's. Spine joints, which turn a few degrees,
+  // blend parent and child directly. Applies when the creature asks for it
   // (Creature::smooth_skinning, the genome's options.smooth_skinning); false makes every
-  // creature's sprites rigid (one bone per vertex), e.g. for the per-bone reference path.
+  // creature's sprites rigid (one bone per vertex, one quad across), e.g. for the per-bone
+  // reference path.
   bool smooth_weights = true;
   float far_shade = 0.62f;          // brightness of far-side bones
 };
 
-// A mid-joint frame of smooth skinning: at the child's start, its axes half way between the
-// parent's and the child's (mid_joint_frame). It has a palette entry of its own after the
-// bones' (index bone_count + i in SpriteMesh::mid_joints), computed every frame from the two
-// bones' world matrices (CreatureBatch::set_world).
+// A mid-joint frame of smooth skinning: at the child's start, its axes turned `turn` of the
+// way from the parent's to the child's (mid_joint_frame). It has a palette entry of its own
+// after the bones' (index bone_count + i in SpriteMesh::mid_joints), computed every frame
+// from the two bones' world matrices (CreatureBatch::set_world).
 struct MidJoint {
   int parent = 0, child = 0;  // bones
+  float turn = 0.5f;          // 0.25, 0.5 or 0.75
   Mat2x3 inverse_bind;        // model space → the mid frame of the bind pose
 };
 
@@ -122,12 +141,13 @@ struct SpriteMesh {
 };
 
 // The mid-joint frame of a parent and a child bone frame (bone frame → model or world): at
-// the child's origin, turned from the parent's axes by half the child's turn relative to the
-// parent (the shorter way). Any common scale or mirror of the two is kept: the frames of a
-// creature facing left give the mirrored mid frame.
-Mat2x3 mid_joint_frame(const Mat2x3& parent, const Mat2x3& child);
-// palette[bones + i] = mid_joint_frame(world[parent], world[child]) · inverse_bind for every
-// mid joint; `palette` holds bone_count + mid_joints.size() entries, its bones' already set.
+// the child's origin, turned from the parent's axes by `turn` (0.25, 0.5 or 0.75; others are
+// rounded to these) of the child's turn relative to the parent (the shorter way). Any common
+// scale or mirror of the two is kept: the frames of a creature facing left give the mirrored
+// mid frame.
+Mat2x3 mid_joint_frame(const Mat2x3& parent, const Mat2x3& child, float turn = 0.5f);
+// palette[bones + i] = mid_joint_frame(world[parent], world[child], turn) · inverse_bind for
+// every mid joint; `palette` holds bone_count + mid_joints.size() entries, its bones' already set.
 void mid_joint_palette(std::span<const MidJoint> mid_joints, std::span<const Mat2x3> world,
                        std::span<Mat2x3> palette);
 
@@ -144,22 +164,29 @@ void mid_joint_palette(std::span<const MidJoint> mid_joints, std::span<const Mat
 SpriteId sprite_for_bone(const Creature& creature, int bone);
 
 // Bone indices are uint8: a creature may have at most this many bones. Every genome the
-// loader accepts fits (kMaxCreatureBones, gen/genome.h), with a mid joint for each of its
-// limbs' joints (upper–lower, lower–hand; at most three) on both sides. A skeleton with
-// more bones and limb joints than indices gets mid joints only while indices last (the rest
-// blend parent and child directly).
+// loader accepts fits (kMaxCreatureBones, gen/genome.h), with at least one mid-joint frame
+// for each of its limbs' two blended joints (upper–lower, lower–hand) on both sides, and
+// kSmoothJointFrames each where the indices suffice (every example creature). A skeleton
+// with more bones and limb joints than that blends parent and child directly.
 constexpr int kMaxSpriteMeshBones = 255;
-static_assert(kMaxCreatureBones + 3 * 2 * kMaxLimbPairs <= kMaxSpriteMeshBones + 1,
+constexpr int kSmoothJointFrames = 3;  // mid-joint frames per limb joint (odd: one half way)
+static_assert(kMaxCreatureBones + 2 * 2 * kMaxLimbPairs <= kMaxSpriteMeshBones + 1,
               "genome limits allow more bones and mid joints than a sprite mesh indexes");
 // Smooth skinning's blend: a joint blends over ±kSmoothBlend × the joint's half thickness
 // (the mean of the two sprites' drawn half heights) along each bone, at most
 // kSmoothMaxSpan × either bone's length (so a bone's two blends never meet), sampled by
 // kSmoothColumns quad columns on each side of a limb joint (kSmoothSpineColumns at the
-// spine) so the bent outline is a curve, not a kink.
-constexpr float kSmoothBlend = 0.6f;
+// spine) so the bent outline is a curve, not a kink, and kSmoothRows rows across a limb
+// bone's sprite. kSmoothBlend, with the shipped art (tests/render/smooth_skinning_test.cpp):
+// narrower turns the joint over too short a stretch, folding the inside of a bent knee over
+// itself and wrinkling the outside (0.6 pinches a pixel of background off in the crease of
+// the horse's knee at -90°, 0.5 leaves a notch outside the magpie's at +90°); wider swells
+// the knob and leaves gaps beside it in the crease (0.8 shows them).
+constexpr float kSmoothBlend = 0.7f;
 constexpr float kSmoothMaxSpan = 0.45f;
-constexpr int kSmoothColumns = 5;        // limb joints
+constexpr int kSmoothColumns = 4;        // limb joints (a multiple of (kSmoothJointFrames + 1) / 2)
 constexpr int kSmoothSpineColumns = 2;   // spine joints, which turn a few degrees each
+constexpr int kSmoothRows = 4;           // limb bones' sprites (rigid and spine sprites: 1)
 
 // Per bone, the bone that continues it across its end joint — the one its end blends with
 // under smooth skinning — or -1: a child of non-zero length in the same layer that starts at
@@ -171,12 +198,14 @@ std::vector<int> chain_children(const Skeleton& skeleton, const std::vector<Bone
 
 // Builds the mesh: per bone of non-zero length a strip of quads (columns at u = 0, the parent
 // anchor, the child anchor, 1, and with smooth weights the blend's columns around each chain
-// joint) mapped so the parent anchor lands on the bone start and the child anchor on the
-// bone end in the bind pose; the drawn height is max(aspect × length, width); sprite_flip_y
-// mirrors v. Within a layer, bones are ordered ribs, girdles, spine, skull, upper, lower,
-// hand (later ones draw on top). The bind pose is the rest pose (creature.rest_pose, or the
-// skeleton's rest locals), with smooth weights straightened at every blended joint (the
-// child's rest angle to its parent set to 0): rest_positions holds the rest pose as drawn.
+// joint; one row, or kSmoothRows on a smooth limb bone) mapped so the parent anchor lands on
+// the bone start and the child anchor on the bone end in the bind pose; the drawn height is
+// max(aspect × length, width) (a smooth limb joint's parent end squeezed, SpriteMeshOptions);
+// sprite_flip_y mirrors v. Within a layer, bones are ordered ribs, girdles, spine, skull,
+// upper, lower, hand (later ones draw on top). The bind pose is the rest pose
+// (creature.rest_pose, or the skeleton's rest locals), with smooth weights straightened at
+// every blended joint (the child's rest angle to its parent set to 0): rest_positions holds
+// the rest pose as drawn.
 // Precondition (asserted): bone_count() <= kMaxSpriteMeshBones — try_build_sprite_mesh
 // returns an Error instead.
 SpriteMesh build_sprite_mesh(const Creature& creature, const SpriteSet& sprites,
