@@ -324,7 +324,11 @@ void Game::Impl::render(Game& game, float alpha) {
         const CharacterEntry* entry = entry_of(e.character());
         // A character the game did not load (an embedder's) is drawn with nothing: skip it.
         if (entry) batch->add(entry->loaded.sprite_mesh, e.skeleton(), slot);
-        else batch->add(SpriteMesh{{}, {}, {}, std::vector<Mat2x3>(e.skeleton().bone_count()), {}}, e.skeleton());
+        else {
+          SpriteMesh empty;
+          empty.inverse_bind.assign(e.skeleton().bone_count(), Mat2x3{});
+          batch->add(empty, e.skeleton());
+        }
         continue;
       }
       const Creature& c = e.creature();

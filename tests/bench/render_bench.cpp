@@ -40,6 +40,7 @@ struct Scene {
   std::unique_ptr<Renderer> renderer;
   std::unique_ptr<Atlas> atlas;
   std::unique_ptr<CreatureBatch> batch;
+  std::unique_ptr<CreatureBatch> rigid_batch;  // the same creatures without smooth skinning
   std::vector<Creature> kinds;
   std::vector<int> kind_of;                  // per instance
   std::vector<std::vector<Mat2x3>> world;    // per instance, per bone
@@ -71,12 +72,19 @@ struct Scene {
       if (auto c = build_creature(gen->random(seed)); c.ok()) kinds.push_back(std::move(c.value()));
     }
     batch = std::make_unique<CreatureBatch>();
-    std::vector<SpriteMesh> meshes;
-    for (const Creature& c : kinds) meshes.push_back(build_sprite_mesh(c, atlas->sprites));
+    rigid_batch = std::make_unique<CreatureBatch>();
+    std::vector<SpriteMesh> meshes, rigid_meshes;
+    SpriteMeshOptions rigid;
+    rigid.smooth_weights = false;
+    for (const Creature& c : kinds) {
+      meshes.push_back(build_sprite_mesh(c, atlas->sprites));
+      rigid_meshes.push_back(build_sprite_mesh(c, atlas->sprites, rigid));
+    }
     for (int i = 0; i < kCreatures; ++i) {
       const int k = i % static_cast<int>(kinds.size());
       kind_of.push_back(k);
       batch->add(meshes[k], kinds[k].skeleton);
+      rigid_batch->add(rigid_meshes[k], kinds[k].skeleton);
       // A 40 x 25 grid of creatures, 3 m apart.
       Transform2D place;
       place.translation = {3.0f * static_cast<float>(i % 40), 2.5f * static_cast<float>(i / 40)};
@@ -91,6 +99,9 @@ struct Scene {
 
   void build_palettes() {
     for (int i = 0; i < kCreatures; ++i) batch->set_world(i, world[i]);
+  }
+  void build_rigid_palettes() {
+    for (int i = 0; i < kCreatures; ++i) rigid_batch->set_world(i, world[i]);
   }
 };
 
@@ -128,6 +139,37 @@ void frame_1000_creatures_reference(benchmark::State& state) {
   state.counters["vertices"] = s.batch->vertex_count();
 }
 
+// Smooth skinning's cost: the same frame with smooth weights (ossa's default: more vertices —
+// blend columns and four rows of quads on limb sprites — and three mid-joint palette entries
+// per limb joint) against rigid sprites (the reference).
+void smooth_skinning_frame_ossa(benchmark::State& state) {
+  Scene& s = scene();
+  if (!s.ok) return state.SkipWithError("no GL context / data");
+  for (auto _ : state) {
+    s.build_palettes();
+    s.batch->upload_palettes();
+    s.renderer->begin_frame(kWidth, kHeight, {0.5f, 0.6f, 0.7f});
+    s.renderer->draw_batch(*s.batch, s.atlas->texture);
+    glFinish();
+  }
+  state.counters["vertices"] = s.batch->vertex_count();
+  state.counters["palette"] = s.batch->palette_size();
+}
+
+void smooth_skinning_frame_reference(benchmark::State& state) {
+  Scene& s = scene();
+  if (!s.ok) return state.SkipWithError("no GL context / data");
+  for (auto _ : state) {
+    s.build_rigid_palettes();
+    s.rigid_batch->upload_palettes();
+    s.renderer->begin_frame(kWidth, kHeight, {0.5f, 0.6f, 0.7f});
+    s.renderer->draw_batch(*s.rigid_batch, s.atlas->texture);
+    glFinish();
+  }
+  state.counters["vertices"] = s.rigid_batch->vertex_count();
+  state.counters["palette"] = s.rigid_batch->palette_size();
+}
+
 void palette_upload_ossa(benchmark::State& state) {
   Scene& s = scene();
   if (!s.ok) return state.SkipWithError("no GL context / data");
@@ -155,6 +197,8 @@ void palette_upload_reference(benchmark::State& state) {
 
 BENCHMARK(frame_1000_creatures_ossa)->Name("frame_1000_creatures:ossa")->Unit(benchmark::kMillisecond);
 BENCHMARK(frame_1000_creatures_reference)->Name("frame_1000_creatures:reference")->Unit(benchmark::kMillisecond);
+BENCHMARK(smooth_skinning_frame_ossa)->Name("smooth_skinning_frame:ossa")->Unit(benchmark::kMillisecond);
+BENCHMARK(smooth_skinning_frame_reference)->Name("smooth_skinning_frame:reference")->Unit(benchmark::kMillisecond);
 BENCHMARK(palette_upload_ossa)->Name("palette_upload:ossa")->Unit(benchmark::kMicrosecond);
 BENCHMARK(palette_upload_reference)->Name("palette_upload:reference")->Unit(benchmark::kMicrosecond);
 

@@ -40,6 +40,27 @@ TEST_CASE("creature panel: examples, random, conditions and undo steps", "[edito
   REQUIRE_FALSE(m.dirty());
 }
 
+TEST_CASE("creature panel: smooth skinning is a genome option, one undo step, kept for new creatures", "[editor]") {
+  UndoStack undo;
+  CreaturePanelModel m(scenes::generator(), undo, "horse");
+  REQUIRE(m.genome().options.smooth_skinning);  // the default
+  REQUIRE(m.creature()->smooth_skinning);
+  const std::string skeleton_before = genome_text(m.genome());
+  m.set_smooth_skinning(false);
+  REQUIRE(undo.size() == 1);
+  REQUIRE(m.dirty());
+  REQUIRE_FALSE(m.creature()->smooth_skinning);
+  REQUIRE_FALSE(genome_to_json(m.genome())["options"]["smooth_skinning"].get<bool>());
+  m.set_smooth_skinning(false);  // no change, no step
+  REQUIRE(undo.size() == 1);
+  m.random();  // new creatures keep the choice
+  REQUIRE_FALSE(m.genome().options.smooth_skinning);
+  undo.undo();
+  undo.undo();
+  REQUIRE(genome_text(m.genome()) == skeleton_before);
+  REQUIRE(m.creature()->smooth_skinning);
+}
+
 TEST_CASE("creature panel: sigma sliders move one component, a drag is one step", "[editor]") {
   UndoStack undo;
   CreaturePanelModel m(scenes::generator(), undo, "horse");

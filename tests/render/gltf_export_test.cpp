@@ -1,11 +1,13 @@
-// glTF export round trip: export with Assimp, re-import with Assimp, and compare the node
-// hierarchy and the skin with the skeleton (src/ossa/render/gltf_export.h).
+// glTF export round trip: export with Assimp, re-import with Assimp (and with ossa's rigged
+// mesh loader), and compare the node hierarchy and the skin with the skeleton and, for smooth
+// skinning, the weights with the sprite mesh's (src/ossa/render/gltf_export.h).
 
 #include <catch2/catch.hpp>
 
 #include <assimp/Importer.hpp>
 #include <assimp/scene.h>
 
+#include <algorithm>
 #include <cstdio>
 #include <filesystem>
 #include <map>
@@ -15,6 +17,8 @@
 #include "ossa/gen/skeleton_builder.h"
 #include "ossa/io/file.h"
 #include "ossa/render/gltf_export.h"
+#include "ossa/render/rigged_mesh.h"
+#include "ossa/render/sprite_mesh.h"
 #include "ossa/skeleton/pose.h"
 #include "shared/scenes.h"
 
@@ -57,23 +61,47 @@ void check_round_trip(const Creature& c, const std::string& path) {
     CHECK(t.b1 == Approx(std::sin(l.angle_ls)).margin(1e-4));
   }
 
-  // One skinned mesh with one bone per skeleton bone, each with weights.
+  // One skinned mesh with one bone per skeleton bone: rigid, four vertices per bone weighted
+  // 1 to it; smooth, the sprite mesh, each vertex's weights (as stored, before any loader
+  // normalises them) summing to 1, at most as many per vertex as the sprite mesh has.
   REQUIRE(scene->mNumMeshes >= 1);
   const aiMesh* mesh = scene->mMeshes[0];
-  CHECK(mesh->mNumVertices == static_cast<unsigned>(4 * s.bone_count()));
   CHECK(mesh->HasTextureCoords(0));
-  REQUIRE(mesh->mNumBones == static_cast<unsigned>(s.bone_count()));
+  if (c.smooth_skinning) {
+    const SpriteMesh sprites = build_sprite_mesh(c, default_sprite_set());
+    CHECK(mesh->mNumVertices == sprites.vertices.size());
+  } else {
+    CHECK(mesh->mNumVertices == static_cast<unsigned>(4 * s.bone_count()));
+  }
+  std::vector<float> vertex_total(mesh->mNumVertices, 0.0f);
+  std::vector<int> vertex_weights(mesh->mNumVertices, 0);
+  for (unsigned b = 0; b < mesh->mNumBones; ++b) {
+    for (unsigned w = 0; w < mesh->mBones[b]->mNumWeights; ++w) {
+      const aiVertexWeight& vw = mesh->mBones[b]->mWeights[w];
+      REQUIRE(vw.mVertexId < mesh->mNumVertices);
+      vertex_total[vw.mVertexId] += vw.mWeight;
+      vertex_weights[vw.mVertexId] += vw.mWeight > 0.0f;
+    }
+  }
+  for (unsigned v = 0; v < mesh->mNumVertices; ++v) {
+    INFO("vertex " << v);
+    CHECK(vertex_total[v] == Approx(1.0f).margin(1e-5));
+  }
+  const int most = *std::max_element(vertex_weights.begin(), vertex_weights.end());
+  CHECK(most == (c.smooth_skinning ? max_weights_per_vertex(build_sprite_mesh(c, default_sprite_set())) : 1));
+  CHECK(mesh->mNumBones == static_cast<unsigned>(s.bone_count()));  // a bone without weights too
   std::map<std::string, const aiBone*> bones;
   for (unsigned b = 0; b < mesh->mNumBones; ++b) bones[mesh->mBones[b]->mName.C_Str()] = mesh->mBones[b];
   const std::vector<Mat2x3> model = model_matrices(s, c.rest_pose.locals);
   for (int i = 0; i < s.bone_count(); ++i) {
     INFO("bone " << s.name(i));
+    if (c.smooth_skinning && !(s.length(i) > 0.0f)) continue;  // no sprite, no weights
     REQUIRE(bones.count(s.name(i)) == 1);
     const aiBone* bone = bones[s.name(i)];
     CHECK(bone->mNumWeights >= 1);
     float total = 0.0f;
     for (unsigned w = 0; w < bone->mNumWeights; ++w) total += bone->mWeights[w].mWeight;
-    CHECK(total == Approx(4.0f).margin(1e-3));
+    if (!c.smooth_skinning) CHECK(total == Approx(4.0f).margin(1e-3));
     // Offset matrix = inverse bind: maps the bone's model-space start to the origin.
     const glm::vec2 start = bone_start(model[i]);
     const aiVector3D local = bone->mOffsetMatrix * aiVector3D(start.x, start.y, 0.0f);
@@ -86,12 +114,61 @@ void check_round_trip(const Creature& c, const std::string& path) {
 
 TEST_CASE("glTF export of a hand-built creature re-imports with its skeleton", "[gltf]") {
   for (bool winged : {false, true}) {
-    const Creature c = scenes::hand_built_creature(winged);
-    const std::string path = temp_path(c.name + ".gltf");
-    const Status st = export_gltf(c, path);
-    INFO((st.ok() ? std::string() : st.message()));
-    REQUIRE(st.ok());
-    check_round_trip(c, path);
+    for (bool smooth : {true, false}) {
+      Creature c = scenes::hand_built_creature(winged);
+      c.smooth_skinning = smooth;
+      const std::string path = temp_path(c.name + (smooth ? "_smooth" : "_rigid") + ".gltf");
+      const Status st = export_gltf(c, path);
+      INFO((st.ok() ? std::string() : st.message()));
+      REQUIRE(st.ok());
+      check_round_trip(c, path);
+    }
+  }
+}
+
+TEST_CASE("glTF export keeps smooth skinning's weights through ossa's rigged-mesh loader", "[gltf]") {
+  // Exported, then loaded as a designer's character would be (load_rigged_mesh): a smooth
+  // creature's vertices blend as many bones as its sprite mesh's (2), summing to 1, and its
+  // rest pose skins to the sprite mesh's rest pose as drawn; a rigid one's follow one bone.
+  Result<Generator> gen = Generator::load(scenes::source_path("assets/creatures/examples.json"));
+  REQUIRE(gen.ok());
+  for (const char* name : {"horse", "kangaroo", "pigeon"}) {
+    for (bool smooth : {true, false}) {
+      INFO(name << (smooth ? " smooth" : " rigid"));
+      Result<Genome> genome = gen->example(name, 1);
+      REQUIRE(genome.ok());
+      genome->options.smooth_skinning = smooth;
+      Result<Creature> c = build_creature(*genome);
+      REQUIRE(c.ok());
+      const std::string path = temp_path(std::string(name) + (smooth ? "_smooth" : "_rigid") + "_loaded.gltf");
+      REQUIRE(export_gltf(*c, path).ok());
+      Result<RiggedMesh> loaded = load_rigged_mesh(path);
+      INFO((loaded.ok() ? std::string() : loaded.message()));
+      REQUIRE(loaded.ok());
+      const SpriteMesh sprites = build_sprite_mesh(*c, default_sprite_set());
+      int most = 0, blended = 0;
+      for (const RiggedVertex& v : loaded->vertices) {
+        int count = 0;
+        float total = 0.0f;
+        for (float w : v.weights) count += w > 0.0f, total += w;
+        most = std::max(most, count);
+        blended += count > 1;
+        CHECK(total == Approx(1.0f).margin(1e-5));
+      }
+      CHECK(most == max_weights_per_vertex(sprites));
+      CHECK(most == (smooth ? 2 : 1));
+      CHECK((smooth ? blended > 0 : blended == 0));
+      if (!smooth) continue;
+      // The rest pose: every loaded vertex skinned by the rest palette lies on the sprite mesh
+      // as drawn at rest (the same set of points).
+      const std::vector<Mat2x3> palette = rigged_palette(*loaded, rest_locals(*loaded));
+      for (size_t i = 0; i < loaded->vertices.size(); i += 7) {
+        const glm::vec2 p = skin_position(loaded->vertices[i], palette);
+        float nearest = 1e30f;
+        for (const glm::vec2 q : sprites.rest_positions) nearest = std::min(nearest, glm::length(p - q));
+        CHECK(nearest < 1e-4f);
+      }
+    }
   }
 }
 

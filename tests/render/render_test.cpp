@@ -33,53 +33,17 @@
 #include "ossa/render/renderer.h"
 #include "ossa/render/shader.h"
 #include "ossa/render/texture.h"
+#include "render/gl_fixture.h"
 #include "shared/scenes.h"
 
 using namespace ossa;
 
 namespace {
 
-constexpr int kW = 320, kH = 240;
-
-// One offscreen GL context and renderer per process (contexts are expensive on llvmpipe).
-struct Gl {
-  Window window;
-  std::unique_ptr<Renderer> renderer;
-  std::unique_ptr<Atlas> atlas;
-  std::string error;
-
-  Gl() {
-    setenv("SDL_VIDEODRIVER", "offscreen", 1);
-    WindowDesc desc;
-    desc.width = kW;
-    desc.height = kH;
-    desc.offscreen = true;
-    auto w = Window::create(desc);
-    if (!w.ok()) {
-      error = w.message();
-      return;
-    }
-    window = std::move(w.value());
-    auto r = Renderer::create(shader_dir());
-    if (!r.ok()) {
-      error = r.message();
-      return;
-    }
-    renderer = std::make_unique<Renderer>(std::move(r.value()));
-    const std::string dir = scenes::source_path("assets/sprites/bones");
-    auto set = load_sprite_set(dir + "/sprites.json");
-    atlas = std::make_unique<Atlas>(
-        Atlas::build(set.ok() ? set.value() : default_sprite_set(), dir));
-  }
-  static std::string shader_dir() { return scenes::source_path("shaders"); }
-};
-
-Gl& gl() {
-  static Gl g;
-  INFO(g.error);
-  REQUIRE(g.renderer);
-  return g;
-}
+using test::Gl;
+using test::gl;
+using test::kH;
+using test::kW;
 
 Creature example(const char* name) {
   auto g = scenes::generator().example(name, 1);
@@ -407,6 +371,35 @@ TEST_CASE("the shipped sprite atlas packs every sprite without overlap", "[rende
       CHECK(apart);
     }
   }
+}
+
+TEST_CASE("joint reach: how far a sprite's ends reach across the bone, from its alpha", "[render]") {
+  // 20 × 10 px, anchors at u 0.1 and 0.8, v 0.5. Opaque: the first 4 columns over rows 2…7
+  // (v 0.2…0.8 from the bottom), a 2-row bar in the middle, the last 4 columns over rows 0…5.
+  SpriteInfo info;
+  info.parent_anchor = {0.1f, 0.5f};
+  info.child_anchor = {0.8f, 0.5f};
+  Image img{20, 10, std::vector<uint8_t>(20 * 10 * 4, 0)};
+  const auto fill = [&](int x0, int x1, int y0, int y1) {
+    for (int y = y0; y <= y1; ++y) {
+      for (int x = x0; x <= x1; ++x) img.pixel(x, y)[3] = 255;
+    }
+  };
+  fill(0, 3, 2, 7);
+  fill(4, 15, 4, 5);
+  fill(16, 19, 0, 5);
+  CHECK(joint_reach(info, false) == glm::vec2(0.5f, 0.5f));  // not measured: the whole box
+  measure_joint_reach(info, img);
+  // Parent end u in [0, 0.2] (columns 0…3): rows 2…7 reach v 0.2 … 0.8.
+  CHECK(joint_reach(info, false).x == Approx(0.3f));
+  CHECK(joint_reach(info, false).y == Approx(0.3f));
+  // Child end u in [0.6, 1] (columns 12…19): rows 0…5 reach v 0.4 … 1.
+  CHECK(joint_reach(info, true).x == Approx(0.1f));
+  CHECK(joint_reach(info, true).y == Approx(0.5f));
+  // The shipped long bone: its distal knob reaches further down than its proximal one.
+  const SpriteInfo& bone = gl().atlas->sprites[SpriteId::kLongBone];
+  CHECK(joint_reach(bone, true).x > joint_reach(bone, false).x);
+  CHECK(joint_reach(bone, true).x < 0.5f);
 }
 
 TEST_CASE("PNG capture round-trips", "[render]") {

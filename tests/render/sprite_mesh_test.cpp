@@ -9,6 +9,8 @@
 #include "ossa/gen/generator.h"
 #include "ossa/gen/skeleton_builder.h"
 #include "ossa/io/file.h"
+#include "ossa/math/angle.h"
+#include "ossa/math/rng.h"
 #include "ossa/skeleton/pose.h"
 #include "shared/scenes.h"
 
@@ -69,10 +71,18 @@ glm::vec2 skin(const SpriteVertex& v, const std::vector<Mat2x3>& palette) {
   return p;
 }
 
+// The palette of a pose given by its model matrices: bones, then smooth skinning's mid joints.
 std::vector<Mat2x3> palette_of(const std::vector<Mat2x3>& model, const SpriteMesh& mesh) {
-  std::vector<Mat2x3> palette(model.size());
+  std::vector<Mat2x3> palette(static_cast<size_t>(mesh.palette_size()));
   for (size_t i = 0; i < model.size(); ++i) palette[i] = model[i] * mesh.inverse_bind[i];
+  mid_joint_palette(mesh.mid_joints, model, palette);
   return palette;
+}
+
+SpriteMeshOptions rigid() {
+  SpriteMeshOptions o;
+  o.smooth_weights = false;
+  return o;
 }
 
 float tolerance(const Creature& c) { return 1e-4f * std::max(1.0f, c.scale * 1000.0f); }
@@ -208,7 +218,7 @@ TEST_CASE("every example's sprite anchors land on its bone starts and ends", "[r
     INFO(c.name);
     const Skeleton& s = c.skeleton;
     REQUIRE(s.bone_count() <= kMaxSpriteMeshBones);
-    const SpriteMesh mesh = build_sprite_mesh(c, sprites);
+    const SpriteMesh mesh = build_sprite_mesh(c, sprites, rigid());  // bind pose = rest pose
     const auto model = model_matrices(s, c.rest_pose.locals);
     REQUIRE(mesh.inverse_bind.size() == static_cast<size_t>(s.bone_count()));
     REQUIRE(mesh.bone_sprites.size() == static_cast<size_t>(s.bone_count()));
@@ -244,7 +254,7 @@ TEST_CASE("every example's sprite anchors land on its bone starts and ends", "[r
   }
 }
 
-TEST_CASE("sprite meshes: skinning the rest pose is the identity, weights sum to 1, layers", "[render]") {
+TEST_CASE("sprite meshes: skinning the rest pose gives the rest pose, weights sum to 1, layers", "[render]") {
   const SpriteSet sprites = default_sprite_set();
   for (bool smooth : {false, true}) {
     for (const Creature& c : examples()) {
@@ -255,19 +265,35 @@ TEST_CASE("sprite meshes: skinning the rest pose is the identity, weights sum to
       const auto model = model_matrices(c.skeleton, c.rest_pose.locals);
       const auto palette = palette_of(model, mesh);
       const float tol = tolerance(c);
+      const int n = c.skeleton.bone_count();
+      const std::vector<int> chain = chain_children(c.skeleton, c.rest_pose.locals);
+      REQUIRE(mesh.rest_positions.size() == mesh.vertices.size());
       int blended = 0;
-      for (const SpriteVertex& v : mesh.vertices) {
+      for (size_t i = 0; i < mesh.vertices.size(); ++i) {
+        const SpriteVertex& v = mesh.vertices[i];
         const float sum = v.weights[0] + v.weights[1] + v.weights[2] + v.weights[3];
         REQUIRE(sum == Approx(1.0f).margin(1e-6));
+        int weights = 0;
         for (int k = 0; k < 4; ++k) {
           REQUIRE(v.weights[k] >= 0.0f);
-          REQUIRE(v.bones[k] < c.skeleton.bone_count());
+          REQUIRE(v.bones[k] < mesh.palette_size());
+          if (k == 0 || v.weights[k] == 0.0f) continue;
+          ++weights;
+          // The other influences: the bone's chain parent or child, or a mid joint of its own.
+          const int b = v.bones[k], self = v.bones[0];
+          if (b >= n) {
+            const MidJoint& j = mesh.mid_joints[static_cast<size_t>(b - n)];
+            CHECK((j.parent == self || j.child == self));
+          } else {
+            CHECK((chain[static_cast<size_t>(self)] == b || chain[static_cast<size_t>(b)] == self));
+          }
         }
-        blended += v.weights[1] > 0.0f;
-        if (v.weights[1] > 0.0f) CHECK(v.bones[1] == c.skeleton.parent(v.bones[0]));
+        blended += weights > 0;
+        // Skinned to the rest pose: the rest pose as drawn (the bind pose itself when rigid).
         const glm::vec2 p = skin(v, palette);
-        REQUIRE(p.x == Approx(v.position_ms.x).margin(tol));
-        REQUIRE(p.y == Approx(v.position_ms.y).margin(tol));
+        REQUIRE(p.x == Approx(mesh.rest_positions[i].x).margin(tol));
+        REQUIRE(p.y == Approx(mesh.rest_positions[i].y).margin(tol));
+        if (!smooth) REQUIRE(mesh.rest_positions[i] == v.position_ms);
         const bool far = c.skeleton.layer(v.bones[0]) == Layer::kFar;
         CHECK((far ? v.shade < 1.0f : v.shade == 1.0f));
         CHECK(v.uv.x >= 0.0f);
@@ -276,6 +302,9 @@ TEST_CASE("sprite meshes: skinning the rest pose is the identity, weights sum to
         CHECK(v.uv.y <= 1.0f);
       }
       CHECK((smooth ? blended > 0 : blended == 0));
+      CHECK(max_weights_per_vertex(mesh) == (smooth ? 2 : 1));
+      // Knee (elbow) and ankle (wrist), each kSmoothJointFrames frames: every example has room.
+      CHECK(mesh.mid_joints.size() == (smooth ? kSmoothJointFrames * 2 * c.limbs.size() : 0));
       // Layer ranges: ordered, covering all indices, each triangle in the layer of its bone.
       REQUIRE(mesh.layer_begin[0] == 0);
       REQUIRE(mesh.layer_begin[3] == mesh.indices.size());
@@ -298,7 +327,7 @@ TEST_CASE("a bone's sprite moves with it and its joints stay together", "[render
   for (const char* name : {"horse", "kangaroo"}) {
     const Creature& c = example(name);
     const Skeleton& s = c.skeleton;
-    const SpriteMesh mesh = build_sprite_mesh(c, sprites);
+    const SpriteMesh mesh = build_sprite_mesh(c, sprites, rigid());
     for (const Limb& limb : c.limbs) {
       const int lower = limb.bones[1], hand = limb.bones[2];
       Pose pose = c.rest_pose;
@@ -350,6 +379,33 @@ TEST_CASE("sprite meshes refuse more bones than uint8 indices hold", "[render]")
   int max_bone = 0;
   for (const SpriteVertex& v : ok->vertices) max_bone = std::max(max_bone, static_cast<int>(v.bones[0]));
   CHECK(max_bone == 254);
+}
+
+TEST_CASE("mid-joint frames turn a quarter, half and three quarters of the child's turn", "[render]") {
+  // frame(t, a, k): translate t, rotate a, scale k.
+  const auto frame = [](glm::vec2 t, float a, float k) {
+    Mat2x3 m;
+    m.m[0] = k * std::cos(a), m.m[1] = k * std::sin(a), m.m[2] = -m.m[1], m.m[3] = m.m[0];
+    m.m[4] = t.x, m.m[5] = t.y;
+    return m;
+  };
+  Rng rng(15);
+  for (int i = 0; i < 1000; ++i) {
+    const auto a = static_cast<float>(rng.uniform(-kPi, kPi));
+    const auto turn = static_cast<float>(rng.uniform(-0.99 * kPi, 0.99 * kPi));
+    const auto scale = static_cast<float>(rng.uniform(0.5, 2.0));
+    const bool mirror = i % 2 == 1;  // a creature facing left
+    Mat2x3 place = Mat2x3::identity();
+    if (mirror) place.m[0] = -1.0f;
+    const Mat2x3 parent = place * frame({static_cast<float>(rng.uniform(-1.0, 1.0)), 0.3f}, a, scale);
+    const Mat2x3 child = parent * frame({0.7f, 0.0f}, turn, 1.0f);
+    for (float share : {0.25f, 0.5f, 0.75f}) {
+      INFO("turn " << turn << " share " << share << (mirror ? " mirrored" : ""));
+      const Mat2x3 mid = mid_joint_frame(parent, child, share);
+      const Mat2x3 expect = parent * frame({0.7f, 0.0f}, share * turn, 1.0f);
+      for (int k = 0; k < 6; ++k) CHECK(mid.m[k] == Approx(expect.m[k]).margin(1e-4f * scale));
+    }
+  }
 }
 
 TEST_CASE("atlas rectangles map the sprite's unit box", "[render]") {

@@ -54,13 +54,16 @@ options:
   --width W --height H    image size in pixels (default 1024 x 576)
   --count N               N creatures side by side (default 1, at most 10000)
   --bones                 draw skeleton lines over the sprites
-  --stats                 print JSON: draw_calls, creatures, bones, vertices, triangles
+  --rigid                 no smooth skinning: every sprite follows its own bone (as a genome
+                          with "options": {"smooth_skinning": false} asks)
+  --stats                 print JSON: draw_calls, creatures, bones, vertices, triangles,
+                          max_weights_per_vertex
   --help                  this text
 )";
 
 struct Args {
   std::optional<std::string> example, creature, mesh, character, level, png;
-  bool random = false, stats = false, bones = false;
+  bool random = false, stats = false, bones = false, rigid = false;
   uint64_t seed = 1;
   int width = 1024, height = 576, count = 1;
   float pixels_per_metre = 32.0f;  // LevelLoadOptions::pixels_per_metre
@@ -120,6 +123,8 @@ Args parse_args(int argc, char** argv) {
       a.stats = true;
     } else if (flag == "--bones") {
       a.bones = true;
+    } else if (flag == "--rigid") {
+      a.rigid = true;
     } else {
       fail("unknown argument \"" + flag + "\" (see --help)");
     }
@@ -151,6 +156,7 @@ Creature make_creature(const Args& a) {
       genome = generator->random(a.seed);
     }
   }
+  if (a.rigid) genome.options.smooth_skinning = false;
   auto creature = build_creature(genome);
   if (!creature.ok()) fail(creature.message());
   return std::move(creature.value());
@@ -304,10 +310,12 @@ int run(const Args& a) {
     const DrawStats& st = renderer->stats;
     std::printf(
         "{\n  \"name\": \"%s\",\n  \"creatures\": %d,\n  \"bones\": %d,\n  \"vertices\": %d,\n"
-        "  \"triangles\": %d,\n  \"draw_calls\": %d,\n  \"creature_draw_calls\": %d,\n"
-        "  \"atlas_missing_sprites\": %d,\n  \"width\": %d,\n  \"height\": %d\n}\n",
+        "  \"triangles\": %d,\n  \"max_weights_per_vertex\": %d,\n  \"draw_calls\": %d,\n"
+        "  \"creature_draw_calls\": %d,\n  \"atlas_missing_sprites\": %d,\n  \"width\": %d,\n"
+        "  \"height\": %d\n}\n",
         creature.name.c_str(), batch.creature_count(), batch.bone_count(), batch.vertex_count(),
-        batch.triangle_count(), st.draw_calls, creature_calls, atlas.missing, window->width(), window->height());
+        batch.triangle_count(), max_weights_per_vertex(mesh), st.draw_calls, creature_calls, atlas.missing,
+        window->width(), window->height());
   }
   return 0;
 }

@@ -74,6 +74,14 @@ void CreaturePanelModel::set_conditions(const GenerateOptions& options) {
   random();
 }
 
+void CreaturePanelModel::set_smooth_skinning(bool on) {
+  conditions.genome.smooth_skinning = on;
+  if (genome_.options.smooth_skinning == on) return;
+  Genome g = genome_;
+  g.options.smooth_skinning = on;
+  set_genome(std::move(g), on ? "smooth skinning" : "rigid sprites");
+}
+
 void CreaturePanelModel::variation(double sigma) {
   set_genome(generator_->variation(genome_, seed, sigma), "variation");
 }

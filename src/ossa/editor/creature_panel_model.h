@@ -65,6 +65,9 @@ class CreaturePanelModel {
   void variation(double sigma);
   // Redraws one part from `seed` keeping everything else.
   void regenerate(CreaturePart part);
+  // Smooth skinning of the current genome (options.smooth_skinning; one undo step when it
+  // changes) and of the creatures generated next (conditions.genome).
+  void set_smooth_skinning(bool on);
 
   // ---- σ sliders -------------------------------------------------------------------------
   // Coordinate of the current genome along principal component i (0 <= i < kSliderCount),

@@ -125,6 +125,9 @@ void EditorSuite::draw_creature_window() {
     ImGui::SameLine();
     changed |= ImGui::Checkbox("several limbs per girdle", &o.genome.multi_limb);
     if (changed) m.set_conditions(o); else m.conditions = o;
+    // A drawing option saved with the genome: sprites blend across joints (off: rigid bones).
+    bool smooth = m.genome().options.smooth_skinning;
+    if (ImGui::Checkbox("smooth skinning", &smooth)) m.set_smooth_skinning(smooth);
     ImGui::TreePop();
   }
 

@@ -51,6 +51,7 @@ struct Creature {
   glm::vec2 origin_frame{0.0f}; // frame point that maps to the model origin
   float ground_y_ms = 0.0f;     // always 0 by construction; kept explicit for clarity
   std::string name;             // example name, or "random-<seed>"
+  bool smooth_skinning = true;  // GenomeOptions::smooth_skinning: sprites blend across joints
 
   // Spine chain bone indices from the head end to the tail tip (skull excluded), the root,
   // the skull, and the girdle bones (-1 when absent).

@@ -84,7 +84,8 @@ Json genome_to_json(const Genome& g) {
                {{"arc_length_vertebrae", g.options.arc_length_vertebrae},
                 {"neck_girdle", g.options.neck_girdle},
                 {"multi_limb", g.options.multi_limb},
-                {"true_size", g.options.true_size}}}};
+                {"true_size", g.options.true_size},
+                {"smooth_skinning", g.options.smooth_skinning}}}};
 }
 
 Result<Genome> genome_from_json(const Json& doc, std::string_view file) {
@@ -162,6 +163,7 @@ Result<Genome> genome_from_json(const Json& doc, std::string_view file) {
       g.options.neck_girdle = r.boolean_or(*o, "options", "neck_girdle", false);
       g.options.multi_limb = r.boolean_or(*o, "options", "multi_limb", false);
       g.options.true_size = r.boolean_or(*o, "options", "true_size", false);
+      g.options.smooth_skinning = r.boolean_or(*o, "options", "smooth_skinning", true);
     }
   }
   if (!r.failed()) {

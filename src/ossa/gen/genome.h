@@ -11,7 +11,7 @@
 //                  "angles": [-1.9, 0.4, -0.5] }, ... ],
 //     "contact": "tip", "skull": 0, "scale": 0.0021,
 //     "options": { "arc_length_vertebrae": true, "neck_girdle": false, "multi_limb": false,
-//                  "true_size": false } }
+//                  "true_size": false, "smooth_skinning": true } }
 //
 // `pca` holds the 29 dimensions of gen/dataset.h by their dim_name(). `angles` are the rest
 // pose of the limb chain: the upper bone's absolute angle in model space, then the lower bone
@@ -36,6 +36,10 @@ struct GenomeOptions {
   bool neck_girdle = false;          // a girdle just below the head (centaur) [Z 7.2.3]
   bool multi_limb = false;           // two limb slots per girdle (pegasus) [Z 7.2.3]
   bool true_size = false;            // scale from the weight (length ∝ mass^(1/3)), else 2 m frame
+  bool smooth_skinning = true;       // bone sprites blend parent and child near each joint, so a
+                                     // bent knee keeps one outline (render/sprite_mesh.h); false:
+                                     // every sprite follows its own bone rigidly. Files without
+                                     // the key (older ones) get true. Changes no bone.
 };
 
 struct LimbGene {

@@ -31,6 +31,7 @@ class Assembler {
     c_.name = g.name;
     c_.contact = g.contact;
     c_.skull_variant = g.skull_variant;
+    c_.smooth_skinning = g.options.smooth_skinning;
     bone_ending_at_.assign(plan.joints.size(), -1);
   }
 

@@ -49,10 +49,13 @@ int CreatureBatch::add(const SpriteMesh& mesh, const Skeleton& skeleton, int tex
   c.vertex_count = static_cast<uint32_t>(mesh.vertices.size());
   c.palette_base = static_cast<uint32_t>(palette_.size());
   c.bone_count = skeleton.bone_count();
+  c.palette_count = c.bone_count + static_cast<int>(mesh.mid_joints.size());
   c.layer_begin = mesh.layer_begin;
   c.index_base = static_cast<uint32_t>(mesh_indices_.size());
   c.inverse_bind = mesh.inverse_bind;
   c.texture_slot = std::max(texture_slot, 0);
+  c.mid_joints = mesh.mid_joints;
+  OSSA_ASSERT(c.mid_joints.empty() || !c.inverse_bind.empty(), "CreatureBatch::add: mid joints need a bind pose");
 
   for (const SpriteVertex& v : mesh.vertices) {
     BatchVertex b;
@@ -80,7 +83,8 @@ int CreatureBatch::add(const SpriteMesh& mesh, const Skeleton& skeleton, int tex
     bone_lines_.push_back({m.apply({skeleton.length(b), 0.0f}), index});
   }
 
-  palette_.resize(palette_.size() + static_cast<size_t>(c.bone_count), Mat2x3::identity());
+  palette_.resize(palette_.size() + static_cast<size_t>(c.palette_count), Mat2x3::identity());
+  bone_total_ += c.bone_count;
   creatures_.push_back(std::move(c));
   geometry_dirty_ = true;
   return static_cast<int>(creatures_.size()) - 1;
@@ -93,13 +97,14 @@ void CreatureBatch::clear() {
   mesh_indices_total_ = 0;
   bone_lines_.clear();
   palette_.clear();
+  bone_total_ = 0;
   naive_runs_.clear();
   geometry_dirty_ = true;
 }
 
 std::span<Mat2x3> CreatureBatch::palette(int instance) {
   const Instance& c = creatures_[instance];
-  return std::span<Mat2x3>(palette_).subspan(c.palette_base, static_cast<size_t>(c.bone_count));
+  return std::span<Mat2x3>(palette_).subspan(c.palette_base, static_cast<size_t>(c.palette_count));
 }
 
 void CreatureBatch::set_world(int instance, std::span<const Mat2x3> world) {
@@ -108,10 +113,11 @@ void CreatureBatch::set_world(int instance, std::span<const Mat2x3> world) {
   PaletteJob job;
   job.world = world;
   job.inverse_bind = c.inverse_bind;
-  job.palette = palette(instance);
+  job.palette = palette(instance).first(static_cast<size_t>(c.bone_count));
   const bool ok = job.run();
   OSSA_ASSERT(ok, "set_world: palette job failed");
   (void)ok;
+  if (!c.mid_joints.empty()) mid_joint_palette(c.mid_joints, world, palette(instance));
 }
 
 void CreatureBatch::set_pose(int instance, const Skeleton& skeleton,

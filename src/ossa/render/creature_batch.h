@@ -5,7 +5,8 @@
 //     buffer is layer-major (every creature's far triangles, then body, then near), so
 //   * one draw call per layer (3 per frame) draws every creature in the right order;
 //   * each frame ONE upload sends all creatures' palettes (world · inverse_bind per bone,
-//     PaletteJob) to a texture buffer of RG32F texels, three per bone (Mat2x3 as stored);
+//     PaletteJob, then the sprite mesh's smooth-skinning mid joints, mid_joint_palette) to a
+//     texture buffer of RG32F texels, three per entry (Mat2x3 as stored);
 //   * each vertex carries its creature's palette base, baked in when the geometry is built.
 // draw_naive() is the per-bone reference path (one draw and one uniform upload per bone) for
 // the benchmark. Needs a current GL context from construction on.
@@ -68,17 +69,19 @@ class CreatureBatch {
   void clear();
 
   int creature_count() const { return static_cast<int>(creatures_.size()); }
-  int bone_count() const { return static_cast<int>(palette_.size()); }  // all creatures
+  int bone_count() const { return bone_total_; }  // all creatures' skeleton bones
   int bone_count(int instance) const { return creatures_[instance].bone_count; }
+  // Palette entries of all creatures: their bones and mid joints (SpriteMesh::palette_size).
+  int palette_size() const { return static_cast<int>(palette_.size()); }
   int vertex_count() const { return static_cast<int>(vertices_.size()); }
   int triangle_count() const { return static_cast<int>(mesh_indices_total_ / 3); }
 
-  // CPU staging palette of one creature (bone_count(instance) matrices, bone frame... see
+  // CPU staging palette of one creature (its bones' matrices, then its mid joints', see
   // set_world): write it, then upload_palettes().
   std::span<Mat2x3> palette(int instance);
   std::span<const Mat2x3> palette() const { return palette_; }
-  // palette(instance)[i] = world[i] · inverse_bind[i] (PaletteJob); world has one matrix per
-  // bone: bone frame → world space.
+  // palette(instance)[i] = world[i] · inverse_bind[i] (PaletteJob), then the mid joints from
+  // their two bones (mid_joint_palette); world has one matrix per bone: bone frame → world.
   void set_world(int instance, std::span<const Mat2x3> world);
   // Convenience: the creature's pose through forward kinematics placed by model_to_world.
   void set_pose(int instance, const Skeleton& skeleton, std::span<const BoneLocal> locals,
@@ -109,10 +112,12 @@ class CreatureBatch {
     uint32_t vertex_base = 0, vertex_count = 0;
     uint32_t palette_base = 0;
     int bone_count = 0;
+    int palette_count = 0;                  // bones + mid joints
     std::array<uint32_t, 4> layer_begin{};  // into mesh_indices_ below (creature-local)
     uint32_t index_base = 0;                // where its indices start in mesh_indices_
     std::vector<Mat2x3> inverse_bind;
     int texture_slot = 0;
+    std::vector<MidJoint> mid_joints;
   };
   struct NaiveRun {
     uint32_t first = 0, count = 0;  // indices in the layer-major buffer
@@ -127,6 +132,7 @@ class CreatureBatch {
   size_t mesh_indices_total_ = 0;
   std::vector<BoneLineVertex> bone_lines_;
   std::vector<Mat2x3> palette_;
+  int bone_total_ = 0;
   std::array<std::pair<uint32_t, uint32_t>, kLayerCount> layer_ranges_{};
   // Per texture slot, per layer: its run of the layer-major index buffer.
   std::vector<std::array<std::pair<uint32_t, uint32_t>, kLayerCount>> slot_ranges_;

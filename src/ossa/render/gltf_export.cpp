@@ -7,14 +7,17 @@
 #include <assimp/scene.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <filesystem>
 #include <map>
 #include <memory>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "ossa/io/file.h"
+#include "ossa/render/sprite_mesh.h"
 #include "ossa/skeleton/pose.h"
 
 namespace ossa {
@@ -81,6 +84,100 @@ class MemoryIOSystem : public Assimp::IOSystem {
   MemoryFiles* files_;
 };
 
+// The mesh to write, in the rest pose (model space, metres): per vertex a position, a depth,
+// Assimp UVs (v up) and its bones' weights (real bones only); triangles.
+struct ExportMesh {
+  struct Vertex {
+    glm::vec2 position{0.0f};
+    float z = 0.0f;
+    glm::vec2 uv{0.0f};
+    std::array<std::pair<int, float>, 4> weights{};  // (bone, weight); weight 0: unused
+  };
+  std::vector<Vertex> vertices;
+  std::vector<unsigned> indices;
+};
+
+// Depth: far side behind, near side in front (1 mm), plus a tiny per-bone step. Besides
+// giving a draw order, it keeps the vertices of the near and far copies (which coincide in
+// x, y) apart: Assimp's glTF exporter enforces JoinIdenticalVertices, which in 5.2 ignores
+// bone weights and would merge them, dropping the near copy's weights.
+float depth(const Skeleton& s, int bone) {
+  return 0.001f * (static_cast<float>(s.layer(bone)) - 1.0f) + 1e-6f * static_cast<float>(bone);
+}
+
+// Rigid: a quad per bone spanning its length × width, weighted 1 to it.
+ExportMesh rigid_quads(const Creature& creature, const std::vector<Mat2x3>& model) {
+  const Skeleton& s = creature.skeleton;
+  ExportMesh out;
+  static constexpr float kCorner[4][2] = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
+  for (int i = 0; i < s.bone_count(); ++i) {
+    const Mat2x3& m = model[static_cast<size_t>(i)];
+    const float fallback = 0.01f * std::max(1.0f, creature.scale * 1000.0f);
+    float length = s.length(i), width = s.width(i);
+    if (!(length > 0.0f) || !std::isfinite(length)) length = std::max(width, fallback);
+    if (!(width > 0.0f) || !std::isfinite(width)) width = std::max(0.15f * length, fallback);
+    const auto v0 = static_cast<unsigned>(out.vertices.size());
+    for (const auto& corner : kCorner) {
+      ExportMesh::Vertex v;
+      v.position = m.apply({corner[0] * length, (corner[1] - 0.5f) * width});
+      v.z = depth(s, i);
+      v.uv = {corner[0], corner[1]};
+      v.weights[0] = {i, 1.0f};
+      out.vertices.push_back(v);
+    }
+    out.indices.insert(out.indices.end(), {v0, v0 + 1, v0 + 2, v0, v0 + 2, v0 + 3});
+  }
+  return out;
+}
+
+// Smooth: the creature's sprite mesh (sprite_mesh.h) in its rest pose as drawn, with its
+// weights. A mid-joint frame, which a glTF skin cannot compute, is folded into its two bones
+// by its turn (a frame turned t of the way: 1 - t to the parent, t to the child); at rest
+// every palette entry is the identity, so the rest pose is exact whatever the weights.
+Result<ExportMesh> smooth_sprites(const Creature& creature, const SpriteSet& sprites) {
+  Result<SpriteMesh> built = try_build_sprite_mesh(creature, sprites);
+  if (!built.ok()) return built.error();
+  const SpriteMesh& mesh = built.value();
+  const Skeleton& s = creature.skeleton;
+  const int n = s.bone_count();
+  ExportMesh out;
+  out.vertices.reserve(mesh.vertices.size());
+  for (size_t i = 0; i < mesh.vertices.size(); ++i) {
+    const SpriteVertex& sv = mesh.vertices[i];
+    ExportMesh::Vertex v;
+    v.position = mesh.rest_positions.size() == mesh.vertices.size() ? mesh.rest_positions[i] : sv.position_ms;
+    v.z = depth(s, sv.bones[0]);
+    v.uv = {sv.uv.x, 1.0f - sv.uv.y};  // sprite meshes' t runs down, Assimp's v up
+    int used = 0;
+    const auto add = [&](int bone, float w) {
+      if (!(w > 0.0f)) return;
+      for (int k = 0; k < used; ++k) {
+        if (v.weights[static_cast<size_t>(k)].first == bone) {
+          v.weights[static_cast<size_t>(k)].second += w;
+          return;
+        }
+      }
+      if (used < 4) v.weights[static_cast<size_t>(used++)] = {bone, w};
+    };
+    for (size_t k = 0; k < 4; ++k) {
+      const int b = sv.bones[k];
+      if (b < n) {
+        add(b, sv.weights[k]);
+      } else {
+        const MidJoint& j = mesh.mid_joints[static_cast<size_t>(b - n)];
+        add(j.parent, sv.weights[k] * (1.0f - j.turn));
+        add(j.child, sv.weights[k] * j.turn);
+      }
+    }
+    float total = 0.0f;
+    for (const auto& [bone, w] : v.weights) total += w;
+    for (auto& [bone, w] : v.weights) w = total > 0.0f ? w / total : 0.0f;
+    out.vertices.push_back(v);
+  }
+  out.indices.assign(mesh.indices.begin(), mesh.indices.end());
+  return out;
+}
+
 }  // namespace
 
 Status export_gltf(const Creature& creature, const std::string& path, const GltfOptions& options) {
@@ -124,53 +221,54 @@ Status export_gltf(const Creature& creature, const std::string& path, const Gltf
     }
   }
 
-  // Sprite mesh: a quad per bone in the bind pose, weighted to its bone.
+  // Sprite mesh: rigid quads, or the smooth sprite mesh, in the rest pose (= the bind pose).
+  ExportMesh geometry;
+  if (creature.smooth_skinning) {
+    Result<ExportMesh> smooth = smooth_sprites(creature, options.sprites ? *options.sprites : default_sprite_set());
+    if (!smooth.ok()) return Error::at(path, "", smooth.message());
+    geometry = std::move(smooth.value());
+  } else {
+    geometry = rigid_quads(creature, model);
+  }
   aiMesh* mesh = new aiMesh;
   mesh->mName = (creature.name.empty() ? "creature" : creature.name) + "_sprites";
   mesh->mPrimitiveTypes = aiPrimitiveType_TRIANGLE;
   mesh->mMaterialIndex = 0;
-  mesh->mNumVertices = static_cast<unsigned>(4 * n);
-  mesh->mVertices = new aiVector3D[mesh->mNumVertices];
-  mesh->mNormals = new aiVector3D[mesh->mNumVertices];
-  mesh->mTextureCoords[0] = new aiVector3D[mesh->mNumVertices];
+  mesh->mNumVertices = static_cast<unsigned>(geometry.vertices.size());
+  mesh->mVertices = new_array<aiVector3D>(geometry.vertices.size());
+  mesh->mNormals = new_array<aiVector3D>(geometry.vertices.size());
+  mesh->mTextureCoords[0] = new_array<aiVector3D>(geometry.vertices.size());
   mesh->mNumUVComponents[0] = 2;
-  mesh->mNumFaces = static_cast<unsigned>(2 * n);
-  mesh->mFaces = new aiFace[mesh->mNumFaces];
+  std::vector<std::vector<aiVertexWeight>> weights(static_cast<size_t>(n));
+  for (size_t i = 0; i < geometry.vertices.size(); ++i) {
+    const ExportMesh::Vertex& v = geometry.vertices[i];
+    mesh->mVertices[i] = aiVector3D(v.position.x, v.position.y, v.z);
+    mesh->mNormals[i] = aiVector3D(0.0f, 0.0f, 1.0f);
+    mesh->mTextureCoords[0][i] = aiVector3D(v.uv.x, v.uv.y, 0.0f);
+    for (const auto& [bone, w] : v.weights) {
+      if (w > 0.0f) weights[static_cast<size_t>(bone)].emplace_back(static_cast<unsigned>(i), w);
+    }
+  }
+  mesh->mNumFaces = static_cast<unsigned>(geometry.indices.size() / 3);
+  mesh->mFaces = new_array<aiFace>(mesh->mNumFaces);
+  for (unsigned f = 0; f < mesh->mNumFaces; ++f) {
+    aiFace& face = mesh->mFaces[f];
+    face.mNumIndices = 3;
+    face.mIndices = new unsigned[3];
+    for (unsigned k = 0; k < 3; ++k) face.mIndices[k] = geometry.indices[3 * f + k];
+  }
+  // One mesh bone per skeleton bone (a zero-length bone of a smooth mesh draws no sprite and
+  // has no weights), the inverse rest (bind) matrix as Assimp's offset matrix.
   mesh->mNumBones = static_cast<unsigned>(n);
   mesh->mBones = new aiBone*[static_cast<size_t>(n)];
-  static constexpr float kCorner[4][2] = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
   for (int i = 0; i < n; ++i) {
-    const Mat2x3& m = model[static_cast<size_t>(i)];
-    const float fallback = 0.01f * std::max(1.0f, creature.scale * 1000.0f);
-    float length = s.length(i), width = s.width(i);
-    if (!(length > 0.0f) || !std::isfinite(length)) length = std::max(width, fallback);
-    if (!(width > 0.0f) || !std::isfinite(width)) width = std::max(0.15f * length, fallback);
-    const unsigned v0 = static_cast<unsigned>(4 * i);
-    // Depth: far side behind, near side in front (1 mm), plus a tiny per-bone step. Besides
-    // giving a draw order, it keeps the vertices of the near and far copies (which coincide in
-    // x, y) apart: Assimp's glTF exporter enforces JoinIdenticalVertices, which in 5.2 ignores
-    // bone weights and would merge them, dropping the near copy's weights.
-    const float z = 0.001f * (static_cast<float>(s.layer(i)) - 1.0f) + 1e-6f * static_cast<float>(i);
-    for (unsigned k = 0; k < 4; ++k) {
-      const glm::vec2 p = m.apply({kCorner[k][0] * length, (kCorner[k][1] - 0.5f) * width});
-      mesh->mVertices[v0 + k] = aiVector3D(p.x, p.y, z);
-      mesh->mNormals[v0 + k] = aiVector3D(0.0f, 0.0f, 1.0f);
-      mesh->mTextureCoords[0][v0 + k] = aiVector3D(kCorner[k][0], kCorner[k][1], 0.0f);
-    }
-    for (unsigned f = 0; f < 2; ++f) {
-      aiFace& face = mesh->mFaces[2 * i + f];
-      face.mNumIndices = 3;
-      face.mIndices = new unsigned[3];
-      face.mIndices[0] = v0;
-      face.mIndices[1] = v0 + 1 + f;
-      face.mIndices[2] = v0 + 2 + f;
-    }
     aiBone* bone = new aiBone;
     bone->mName = s.name(i);
-    bone->mOffsetMatrix = to_ai(inverse(m));  // mesh (model) space → bone space
-    bone->mNumWeights = 4;
-    bone->mWeights = new aiVertexWeight[4];
-    for (unsigned k = 0; k < 4; ++k) bone->mWeights[k] = aiVertexWeight(v0 + k, 1.0f);
+    bone->mOffsetMatrix = to_ai(inverse(model[static_cast<size_t>(i)]));  // mesh (model) space → bone space
+    const std::vector<aiVertexWeight>& w = weights[static_cast<size_t>(i)];
+    bone->mNumWeights = static_cast<unsigned>(w.size());
+    bone->mWeights = new_array<aiVertexWeight>(w.size());
+    std::copy(w.begin(), w.end(), bone->mWeights);
     mesh->mBones[i] = bone;
   }
   scene->mNumMeshes = 1;

@@ -6,12 +6,18 @@
 //   - a node hierarchy equal to the skeleton: one node per bone, named like the bone, with its
 //     rest-pose local transform (2D → 3D: z = 0, rotation about +z), under a root node named
 //     after the creature;
-//   - one skinned sprite mesh ("<name>_sprites"): a quad per bone in the bind (rest) pose,
-//     spanning the bone's length × width in its own frame (zero-length bones get a small square),
-//     at z = -1 mm (far layer), 0 (body), +1 mm (near) plus 1 µm × bone index (a draw order,
-//     and it keeps near/far vertices distinct for Assimp's enforced vertex joining),
-//     UVs (0,0)–(1,1) per quad, each of its four vertices weighted 1.0 to its bone; one mesh
-//     bone per skeleton bone with the inverse bind matrix as Assimp's offset matrix;
+//   - one skinned sprite mesh ("<name>_sprites") in the rest pose, which is its bind pose: for
+//     a creature with smooth skinning (Creature::smooth_skinning) its sprite mesh
+//     (sprite_mesh.h, `GltfOptions::sprites`, UVs as the sprite set gives them) as drawn at
+//     rest, each vertex with the sprite mesh's weights — up to two bones near a limb or spine
+//     joint (glTF's JOINTS_0/WEIGHTS_0 hold four), summing to 1, a mid-joint frame folded into
+//     its two bones by its turn (glTF skins have no computed joints; at rest the pose is exact
+//     either way); else a quad per bone spanning the bone's length × width in its own frame
+//     (zero-length bones get a small square), UVs (0,0)–(1,1) per quad, each of its four
+//     vertices weighted 1.0 to its bone. Depth z = -1 mm (far layer), 0 (body), +1 mm (near)
+//     plus 1 µm × bone index (a draw order, and it keeps near/far vertices distinct for
+//     Assimp's enforced vertex joining). One mesh bone per skeleton bone with the inverse bind
+//     matrix as Assimp's offset matrix;
 //   - one material, referencing the bone sprite atlas as its diffuse/base-colour texture when
 //     `atlas_path` names an existing file (written relative to the output file's folder when
 //     possible), else a plain bone-coloured material.
@@ -26,8 +32,13 @@
 
 namespace ossa {
 
+struct SpriteSet;
+
 struct GltfOptions {
-  std::string atlas_path;  // PNG atlas; empty or missing file: plain material
+  std::string atlas_path;             // PNG atlas; empty or missing file: plain material
+  const SpriteSet* sprites = nullptr;  // a smooth creature's sprite anchors, sizes and UVs
+                                       // (an Atlas's set: its rectangles); null: the
+                                       // built-in set, each sprite UVs (0,0)–(1,1)
 };
 
 // Writes `path` (".gltf") and its ".bin". Errors name the file and the reason (Assimp's, or

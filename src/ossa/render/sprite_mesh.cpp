@@ -9,6 +9,7 @@
 #include <cmath>
 
 #include "ossa/io/json.h"
+#include "ossa/math/angle.h"
 #include "ossa/skeleton/pose.h"
 
 #include <glm/common.hpp>
@@ -92,6 +93,13 @@ SpriteSet default_sprite_set() {
     s.aspect = kDefaults[i].aspect;
   }
   return set;
+}
+
+glm::vec2 joint_reach(const SpriteInfo& info, bool child_end) {
+  const glm::vec2 measured = child_end ? info.child_reach : info.parent_reach;
+  if (measured.x >= 0.0f && measured.y >= 0.0f) return measured;
+  const float v = child_end ? info.child_anchor.y : info.parent_anchor.y;
+  return {v, 1.0f - v};
 }
 
 Result<SpriteSet> load_sprite_set(const std::string& path) {
@@ -243,6 +251,85 @@ SpriteFrame sprite_frame(const SpriteInfo& info, float length, float width, bool
 
 }  // namespace
 
+std::vector<int> chain_children(const Skeleton& s, const std::vector<BoneLocal>& locals) {
+  const int n = s.bone_count();
+  std::vector<int> child(static_cast<size_t>(n), -1);
+  std::vector<float> turn(static_cast<size_t>(n), 0.0f);
+  const auto drawn = [&](int b) { return s.length(b) > 1e-6f && std::isfinite(s.length(b)); };
+  for (int c = 0; c < n; ++c) {
+    const int p = s.parent(c);
+    if (p < 0 || !drawn(p) || !drawn(c) || s.layer(c) != s.layer(p)) continue;
+    // A girdle's flat blade meets the limb at a ball joint, not a hinge: blending would bend
+    // the blade's end (the pelvis's hook, the scapula's neck) after the limb.
+    if (s.kind(p) == BoneKind::kScapula || s.kind(p) == BoneKind::kPelvis) continue;
+    const BoneLocal& l = locals[static_cast<size_t>(c)];
+    if (glm::length(l.offset_ls - glm::vec2(s.length(p), 0.0f)) > 0.01f * s.length(p)) continue;
+    const float t = std::fabs(wrap_angle(l.angle_ls));
+    const auto pi = static_cast<size_t>(p);
+    if (child[pi] < 0 || t < turn[pi]) child[pi] = c, turn[pi] = t;
+  }
+  return child;
+}
+
+namespace {
+
+// A sprite's drawn half height (metres) — the joint's thickness as the sprite shows it.
+float half_height(const SpriteInfo& info, float length, float width) {
+  return 0.5f * std::max(info.aspect * length, width);
+}
+
+// One blended chain joint: parent and child bones, the palette indices of its mid-joint
+// frames (in turn order; none: blend parent and child directly), the blend's half width
+// (metres along either bone) and, at a limb joint, how the parent's end tucks under the
+// child's start: its drawing squeezed across the bone to `squeeze` of its height from
+// `squeeze_to` metres from the joint on, ramping in from `squeeze_from` (both negative: on
+// the parent).
+struct JointBlend {
+  int parent = -1, child = -1;
+  std::array<int, kSmoothJointFrames> frame{};
+  int frames = 0;
+  float half_width = 0.0f;
+  bool limb = false;
+  float squeeze = 1.0f, squeeze_from = 0.0f, squeeze_to = 0.0f;
+};
+
+struct BoneWeight {
+  int bone = 0;
+  float weight = 0.0f;
+};
+
+// The weights across `j` of a point `s` metres from the joint along its bone (negative
+// toward the parent): parent, the mid-joint frames in turn order, child, placed evenly over
+// [-half_width, half_width], and between two neighbours a blend linear in s. So the joint's
+// turn spreads evenly over the blend and the bone's axis bends along a circular arc (a
+// smoothstep turns 1.5 times faster at its middle and folds the inside of a bent knee
+// sooner), and a linear blend never spans more than one step of the turn.
+void joint_weights(const JointBlend& j, float s, BoneWeight out[2]) {
+  const int steps = j.frames + 1;
+  const float x = std::clamp((s + j.half_width) / (2.0f * j.half_width), 0.0f, 1.0f) * static_cast<float>(steps);
+  const int i = std::min(static_cast<int>(x), steps - 1);
+  const float t = x - static_cast<float>(i);
+  const auto at = [&](int k) { return k == 0 ? j.parent : k == steps ? j.child : j.frame[static_cast<size_t>(k - 1)]; };
+  out[0] = {at(i), 1.0f - t};
+  out[1] = {at(i + 1), t};
+}
+
+// Across-the-bone scale of the parent's end at `s` metres from the joint `j` (1 outside it).
+float end_squeeze(const JointBlend& j, float s) {
+  if (j.squeeze >= 1.0f || s <= j.squeeze_from) return 1.0f;
+  const float ramp = std::clamp((s - j.squeeze_from) / (j.squeeze_to - j.squeeze_from), 0.0f, 1.0f);
+  return 1.0f + (j.squeeze - 1.0f) * ramp;
+}
+
+// A sprite's reach (joint_reach) at one end in metres across its bone frame: x toward -y,
+// y toward +y (a flipped sprite's v runs along -y).
+glm::vec2 reach_ms(const SpriteInfo& info, bool child_end, float drawn_height, bool flip) {
+  const glm::vec2 r = joint_reach(info, child_end) * drawn_height;
+  return flip ? glm::vec2(r.y, r.x) : r;
+}
+
+}  // namespace
+
 Result<SpriteMesh> try_build_sprite_mesh(const Creature& creature, const SpriteSet& sprites,
                                          const SpriteMeshOptions& options) {
   const int n = creature.skeleton.bone_count();
@@ -260,14 +347,79 @@ SpriteMesh build_sprite_mesh(const Creature& creature, const SpriteSet& sprites,
   OSSA_ASSERT(n <= kMaxSpriteMeshBones, "build_sprite_mesh: more bones than uint8 bone indices hold");
   const std::vector<BoneLocal>& locals =
       creature.rest_pose.locals.size() == static_cast<size_t>(n) ? creature.rest_pose.locals : s.rest_locals();
-  const std::vector<Mat2x3> model = model_matrices(s, locals);
+  const std::vector<Mat2x3> rest = model_matrices(s, locals);
 
   SpriteMesh mesh;
-  mesh.inverse_bind.reserve(static_cast<size_t>(n));
   mesh.bone_sprites.reserve(static_cast<size_t>(n));
-  for (int i = 0; i < n; ++i) {
-    mesh.inverse_bind.push_back(inverse(model[static_cast<size_t>(i)]));
-    mesh.bone_sprites.push_back(sprite_for_bone(creature, i));
+  for (int i = 0; i < n; ++i) mesh.bone_sprites.push_back(sprite_for_bone(creature, i));
+
+  // Smooth skinning: each chain joint's blend, stored on the parent (its end) and the child
+  // (its start) alike. The bind pose straightens every blended joint, so the two sprites
+  // overlap along one line there and the same weight at the same distance from the joint is
+  // the same point on both: they bend as one. (Blending in a bent bind pose tears a sprite's
+  // end, which lies off its neighbour's axis, when the joint turns the other way.)
+  const bool smooth = options.smooth_weights && creature.smooth_skinning;
+  std::vector<JointBlend> start_blend(static_cast<size_t>(n)), end_blend(static_cast<size_t>(n));
+  std::vector<BoneLocal> bind_locals = locals;
+  const auto limb_joint = [&](int child) {
+    const BoneKind k = s.kind(child);
+    return k == BoneKind::kLowerLimb || k == BoneKind::kHand;
+  };
+  if (smooth) {
+    const std::vector<int> chain = chain_children(s, locals);
+    // kSmoothJointFrames frames per limb joint while the uint8 indices last, else one (which
+    // every genome within its limits has room for, see kMaxSpriteMeshBones).
+    int limb_joints = 0;
+    for (const int c : chain) limb_joints += c >= 0 && limb_joint(c);
+    int frames_per_joint = kSmoothJointFrames;
+    while (frames_per_joint > 0 && n + frames_per_joint * limb_joints > kMaxSpriteMeshBones + 1) frames_per_joint -= 2;
+    int mids = 0;
+    for (int p = 0; p < n; ++p) {
+      const int c = chain[static_cast<size_t>(p)];
+      if (c < 0) continue;
+      const SpriteInfo& pi = sprites[mesh.bone_sprites[static_cast<size_t>(p)]];
+      const SpriteInfo& ci = sprites[mesh.bone_sprites[static_cast<size_t>(c)]];
+      const float hp = half_height(pi, s.length(p), std::max(s.width(p), 0.0f));
+      const float hc = half_height(ci, s.length(c), std::max(s.width(c), 0.0f));
+      const float half_width =
+          std::min({kSmoothBlend * 0.5f * (hp + hc), kSmoothMaxSpan * s.length(p), kSmoothMaxSpan * s.length(c)});
+      if (!(half_width > 0.0f) || !std::isfinite(half_width)) continue;
+      JointBlend j;
+      j.parent = p, j.child = c, j.half_width = half_width, j.limb = limb_joint(c);
+      if (j.limb) {
+        j.frames = std::max(frames_per_joint, 0);
+        for (int f = 0; f < j.frames; ++f) j.frame[static_cast<size_t>(f)] = n + mids++;
+        // Straightened, the parent's end and the child's start lie on each other; the child
+        // draws on top, and wherever the parent's end reaches further across the bone (a
+        // thicker parent, or a bigger knob at that end of the art) its outline shows beside
+        // the child's as a second one. So the parent's end shrinks across the bone to within
+        // the child's reach, from where the child's sprite begins to half way to the joint.
+        const glm::vec2 pr = reach_ms(pi, true, 2.0f * hp, s.sprite_flip_y(p));
+        const glm::vec2 cr = reach_ms(ci, false, 2.0f * hc, s.sprite_flip_y(c));
+        j.squeeze = std::min(1.0f, std::min(pr.x > 0.0f ? cr.x / pr.x : 1.0f, pr.y > 0.0f ? cr.y / pr.y : 1.0f));
+        const float child_begins = -ci.parent_anchor.x / (ci.child_anchor.x - ci.parent_anchor.x) * s.length(c);
+        j.squeeze_from = std::max(child_begins, -0.5f * s.length(p));
+        j.squeeze_to = 0.5f * j.squeeze_from;
+        if (!(j.squeeze > 0.0f) || !(j.squeeze_from < 0.0f)) j.squeeze = 1.0f;
+      }
+      end_blend[static_cast<size_t>(p)] = j;
+      start_blend[static_cast<size_t>(c)] = j;
+      bind_locals[static_cast<size_t>(c)].angle_ls = 0.0f;
+    }
+  }
+  const std::vector<Mat2x3> model = smooth ? model_matrices(s, bind_locals) : rest;
+  mesh.inverse_bind.reserve(static_cast<size_t>(n));
+  for (int i = 0; i < n; ++i) mesh.inverse_bind.push_back(inverse(model[static_cast<size_t>(i)]));
+  for (const JointBlend& j : end_blend) {
+    for (int f = 0; f < j.frames; ++f) {
+      MidJoint mid;
+      mid.parent = j.parent, mid.child = j.child;
+      mid.turn = static_cast<float>(f + 1) / static_cast<float>(j.frames + 1);
+      const Mat2x3 bind =
+          mid_joint_frame(model[static_cast<size_t>(j.parent)], model[static_cast<size_t>(j.child)], mid.turn);
+      mid.inverse_bind = inverse(bind);
+      mesh.mid_joints.push_back(mid);
+    }
   }
 
   std::vector<int> order;
@@ -280,8 +432,9 @@ SpriteMesh build_sprite_mesh(const Creature& creature, const SpriteSet& sprites,
     return kind_order(s.kind(a)) < kind_order(s.kind(b));
   });
 
-  mesh.vertices.reserve(order.size() * 10);
-  mesh.indices.reserve(order.size() * 24);
+  mesh.vertices.reserve(order.size() * (smooth ? 64 : 8));
+  mesh.indices.reserve(order.size() * (smooth ? 240 : 18));
+  std::vector<float> columns;
   int layer = 0;
   for (int bone : order) {
     const int bone_layer = static_cast<int>(s.layer(bone));
@@ -291,55 +444,171 @@ SpriteMesh build_sprite_mesh(const Creature& creature, const SpriteSet& sprites,
     const SpriteFrame frame = sprite_frame(info, s.length(bone), std::max(s.width(bone), 0.0f), s.sprite_flip_y(bone));
     const Mat2x3& m = model[static_cast<size_t>(bone)];
     const float shade = s.layer(bone) == Layer::kFar ? options.far_shade : 1.0f;
-    const int parent = s.parent(bone);
-
-    // Columns: the sprite's ends, both anchors and the end of the smooth-weight fade.
     const float pu = info.parent_anchor.x, cu = info.child_anchor.x;
-    const float fade_u = pu + kSmoothSpan * (cu - pu);
-    float columns[5] = {0.0f, pu, fade_u, cu, 1.0f};
-    int count = 0;
-    for (float u : columns) {
-      if (count == 0 || u > columns[count - 1] + 1e-5f) columns[count++] = u;
-    }
-    const auto first = static_cast<uint32_t>(mesh.vertices.size());
-    for (int c = 0; c < count; ++c) {
-      const float u = columns[c];
-      // Smooth weights: 50/50 with the parent at and behind the joint, the bone alone from
-      // fade_u on — a joint then bends the overlap like a hinge instead of two rigid cards.
-      float w_self = 1.0f;
-      if (options.smooth_weights && parent >= 0) {
-        w_self = std::clamp(0.5f + 0.5f * (u - pu) / std::max(fade_u - pu, 1e-6f), 0.5f, 1.0f);
+    const float metres_per_u = s.length(bone) / (cu - pu);  // along the bone
+    const JointBlend& at_start = start_blend[static_cast<size_t>(bone)];
+    const JointBlend& at_end = end_blend[static_cast<size_t>(bone)];
+
+    // Columns: the sprite's ends and both anchors; around each blended joint kSmoothColumns
+    // more on either side, evenly over the blend, and where the end's squeeze ramps (those on
+    // the sprite).
+    columns.assign({0.0f, pu, cu, 1.0f});
+    for (const auto& [j, joint_u] : {std::pair{&at_start, pu}, std::pair{&at_end, cu}}) {
+      if (j->parent < 0) continue;
+      // Limb joints turn far (finer columns); spine joints a few degrees each.
+      const int per_side = j->limb ? kSmoothColumns : kSmoothSpineColumns;
+      for (int k = -per_side; k <= per_side; ++k) {
+        const float u = joint_u + j->half_width / metres_per_u * static_cast<float>(k) / per_side;
+        if (u > 0.0f && u < 1.0f) columns.push_back(u);
       }
-      for (float v : {0.0f, 1.0f}) {
-        SpriteVertex vert;
-        vert.position_ms = m.apply(frame.map({u, v}));
-        vert.uv = info.uv_min + glm::vec2(u, 1.0f - v) * (info.uv_max - info.uv_min);
-        vert.bones = {static_cast<uint8_t>(bone), 0, 0, 0};
-        vert.weights = {w_self, 0.0f, 0.0f, 0.0f};
-        if (w_self < 1.0f) {
-          vert.bones[1] = static_cast<uint8_t>(parent);
-          vert.weights[1] = 1.0f - w_self;
+    }
+    if (at_end.squeeze < 1.0f) {
+      for (const float at : {at_end.squeeze_from, at_end.squeeze_to}) {
+        if (const float u = cu + at / metres_per_u; u > 0.0f && u < 1.0f) columns.push_back(u);
+      }
+    }
+    std::sort(columns.begin(), columns.end());
+    columns.erase(std::unique(columns.begin(), columns.end(), [](float a, float b) { return b - a < 1e-5f; }),
+                  columns.end());
+
+    // Rows: one quad across the sprite, or kSmoothRows next to a limb joint (see
+    // SpriteMeshOptions: a tall quad between two columns turned apart kinks its texture).
+    const int rows = at_start.limb || at_end.limb ? kSmoothRows : 1;
+    const auto first = static_cast<uint32_t>(mesh.vertices.size());
+    for (const float u : columns) {
+      // Within a joint's blend the joint's weights (the bone itself among them, perhaps at 0
+      // deep in its neighbour's blend), else the bone alone. A bone's two blends never meet.
+      BoneWeight w[2] = {{bone, 1.0f}, {bone, 0.0f}};
+      const float s_start = (u - pu) * metres_per_u, s_end = (u - cu) * metres_per_u;
+      if (at_start.parent >= 0 && s_start < at_start.half_width) {
+        joint_weights(at_start, s_start, w);
+      } else if (at_end.parent >= 0 && s_end > -at_end.half_width) {
+        joint_weights(at_end, s_end, w);
+      }
+      std::array<uint8_t, 4> bones{static_cast<uint8_t>(bone), 0, 0, 0};
+      std::array<float, 4> weights{0.0f, 0.0f, 0.0f, 0.0f};
+      int used = 1;
+      for (const BoneWeight& bw : w) {
+        if (bw.bone == bone) {
+          weights[0] += bw.weight;
+        } else if (bw.weight > 0.0f) {
+          bones[static_cast<size_t>(used)] = static_cast<uint8_t>(bw.bone);
+          weights[static_cast<size_t>(used++)] = bw.weight;
         }
+      }
+      const float squeeze = at_end.parent >= 0 ? end_squeeze(at_end, s_end) : 1.0f;
+      for (int r = 0; r <= rows; ++r) {
+        const float v = static_cast<float>(r) / static_cast<float>(rows);
+        glm::vec2 p = frame.map({u, v});  // bone frame: x along the bone, y across it
+        p.y *= squeeze;
+        SpriteVertex vert;
+        vert.position_ms = m.apply(p);
+        vert.uv = info.uv_min + glm::vec2(u, 1.0f - v) * (info.uv_max - info.uv_min);
+        vert.bones = bones;
+        vert.weights = weights;
         vert.shade = shade;
         mesh.vertices.push_back(vert);
       }
     }
-    for (int c = 0; c + 1 < count; ++c) {
-      const uint32_t a = first + 2 * static_cast<uint32_t>(c);  // (u_c, 0), (u_c, 1), then c+1
-      mesh.indices.insert(mesh.indices.end(), {a, a + 2, a + 3, a, a + 3, a + 1});
+    const auto per_column = static_cast<uint32_t>(rows + 1);
+    for (uint32_t c = 0; c + 1 < columns.size(); ++c) {
+      for (uint32_t r = 0; r < static_cast<uint32_t>(rows); ++r) {
+        const uint32_t a = first + c * per_column + r, b = a + per_column;  // (u_c, v_r), column c+1
+        mesh.indices.insert(mesh.indices.end(), {a, b, b + 1, a, b + 1, a + 1});
+      }
     }
   }
   while (layer < kLayerCount) mesh.layer_begin[static_cast<size_t>(++layer)] = static_cast<uint32_t>(mesh.indices.size());
   mesh.layer_begin[0] = 0;
+
+  // The rest pose as drawn: the bind pose skinned to it (the same where nothing is blended).
+  mesh.rest_positions.reserve(mesh.vertices.size());
+  if (!smooth) {
+    for (const SpriteVertex& v : mesh.vertices) mesh.rest_positions.push_back(v.position_ms);
+  } else {
+    std::vector<Mat2x3> palette(static_cast<size_t>(mesh.palette_size()));
+    for (int i = 0; i < n; ++i) palette[static_cast<size_t>(i)] = rest[static_cast<size_t>(i)] * mesh.inverse_bind[static_cast<size_t>(i)];
+    mid_joint_palette(mesh.mid_joints, rest, palette);
+    for (const SpriteVertex& v : mesh.vertices) mesh.rest_positions.push_back(skin_vertex(v, palette));
+  }
   return mesh;
+}
+
+glm::vec2 skin_vertex(const SpriteVertex& v, std::span<const Mat2x3> palette) {
+  glm::vec2 p(0.0f);
+  for (size_t k = 0; k < 4; ++k) {
+    if (v.weights[k] != 0.0f) p += v.weights[k] * palette[v.bones[k]].apply(v.position_ms);
+  }
+  return p;
+}
+
+namespace {
+
+// The unit complex square root of the unit complex z, the shorter way: normalise(1 + z)
+// (a half turn gives a quarter turn).
+glm::vec2 unit_sqrt(glm::vec2 z) {
+  const glm::vec2 h(1.0f + z.x, z.y);
+  const float len = glm::length(h);
+  return len > 1e-6f * (1.0f + glm::length(z)) ? h / len : glm::vec2(0.0f, 1.0f);
+}
+
+}  // namespace
+
+Mat2x3 mid_joint_frame(const Mat2x3& parent, const Mat2x3& child, float turn) {
+  // The child's turn relative to the parent: L_p⁻¹ L_c is a rotation (any common scale or
+  // mirror cancels), the unit complex z; its quarters are square roots, no trigonometry.
+  const float a = parent.m[0], b = parent.m[1], c = parent.m[2], d = parent.m[3];
+  const float det = a * d - b * c;
+  glm::vec2 z(1.0f, 0.0f);
+  if (std::fabs(det) > 1e-20f) {
+    z = glm::vec2(d * child.m[0] - c * child.m[1], -b * child.m[0] + a * child.m[1]) / det;
+    z /= std::max(glm::length(z), 1e-20f);
+  }
+  const glm::vec2 half = unit_sqrt(z);
+  glm::vec2 r = half;
+  if (turn < 0.375f) {
+    r = unit_sqrt(half);  // a quarter
+  } else if (turn > 0.625f) {
+    const glm::vec2 q = unit_sqrt(half);
+    r = glm::vec2(half.x * q.x - half.y * q.y, half.x * q.y + half.y * q.x);  // three quarters
+  }
+  Mat2x3 turn_m;
+  turn_m.m[0] = r.x, turn_m.m[1] = r.y, turn_m.m[2] = -r.y, turn_m.m[3] = r.x;
+  Mat2x3 mid = parent * turn_m;
+  mid.m[4] = child.m[4];
+  mid.m[5] = child.m[5];
+  return mid;
+}
+
+void mid_joint_palette(std::span<const MidJoint> mid_joints, std::span<const Mat2x3> world,
+                       std::span<Mat2x3> palette) {
+  const size_t bones = world.size();
+  OSSA_ASSERT(palette.size() == bones + mid_joints.size(), "mid_joint_palette: one entry per bone and mid joint");
+  for (size_t i = 0; i < mid_joints.size(); ++i) {
+    const MidJoint& j = mid_joints[i];
+    palette[bones + i] =
+        mid_joint_frame(world[static_cast<size_t>(j.parent)], world[static_cast<size_t>(j.child)], j.turn) * j.inverse_bind;
+  }
+}
+
+int max_weights_per_vertex(const SpriteMesh& mesh) {
+  int most = 0;
+  for (const SpriteVertex& v : mesh.vertices) {
+    int count = 0;
+    for (float w : v.weights) count += w > 0.0f;
+    most = std::max(most, count);
+  }
+  return most;
 }
 
 Box sprite_mesh_bounds(const SpriteMesh& mesh) {
   if (mesh.vertices.empty()) return Box{};
-  Box b{mesh.vertices.front().position_ms, mesh.vertices.front().position_ms};
-  for (const SpriteVertex& v : mesh.vertices) {
-    b.min_ws = glm::min(b.min_ws, v.position_ms);
-    b.max_ws = glm::max(b.max_ws, v.position_ms);
+  const bool rest = mesh.rest_positions.size() == mesh.vertices.size();
+  const auto at = [&](size_t i) { return rest ? mesh.rest_positions[i] : mesh.vertices[i].position_ms; };
+  Box b{at(0), at(0)};
+  for (size_t i = 1; i < mesh.vertices.size(); ++i) {
+    b.min_ws = glm::min(b.min_ws, at(i));
+    b.max_ws = glm::max(b.max_ws, at(i));
   }
   return b;
 }

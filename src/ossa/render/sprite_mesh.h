@@ -11,6 +11,7 @@
 
 #include <array>
 #include <cstdint>
+#include <span>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -48,7 +49,17 @@ struct SpriteInfo {
                               // in texture coordinates with t growing DOWN the image (t = 0 is
                               // the first PNG row, as glTexImage2D receives an unflipped PNG):
                               // uv_min = top-left corner, uv_max = bottom-right corner.
+  // How far the drawing reaches across the bone at each joint: unit-box v from the anchor's v
+  // down (x) and up (y) to the last opaque pixel (alpha ≥ 50 %) over the sprite's end around
+  // that anchor (u within the anchor's overhang past it, mirrored inwards). Measured from the
+  // image when the atlas is packed (Atlas::build); negative: not measured, the whole box
+  // (joint_reach). Smooth skinning tucks a parent's end under its child's start with it.
+  glm::vec2 parent_reach{-1.0f}, child_reach{-1.0f};
 };
+
+// `info`'s reach at its parent (child_end false) or child anchor: the measured one, else the
+// unit box's extent below and above the anchor's v.
+glm::vec2 joint_reach(const SpriteInfo& info, bool child_end);
 
 // The sprite set: one SpriteInfo per SpriteId, loaded from sprites.json (versioned,
 // validated; errors name the file and field).
@@ -72,16 +83,44 @@ SpriteId sprite_id_from_name(std::string_view name);
 struct SpriteVertex {
   glm::vec2 position_ms;            // bind-pose model space, metres
   glm::vec2 uv;                     // atlas texture coordinates (t down, see SpriteInfo::uv_min)
-  std::array<uint8_t, 4> bones{};   // bone indices within the creature (≤ 255 bones)
-  std::array<float, 4> weights{};   // sum to 1
+  std::array<uint8_t, 4> bones{};   // bone indices within the creature (≤ 255 bones); bones[0]
+                                    // is the bone whose sprite the vertex belongs to (its layer)
+  std::array<float, 4> weights{};   // sum to 1; unused slots 0 (bones[0]'s may be 0 too: a
+                                    // sprite's end deep in its neighbour's blend follows it)
   float shade = 1.0f;               // 1 near/body, < 1 for the far side (drawn darker)
 };
 
 struct SpriteMeshOptions {
-  bool smooth_weights = false;      // blend vertices near a joint with the parent bone: the
-                                    // part of the sprite behind the parent anchor and the first
-                                    // kSmoothSpan of the anchor span go 50 % → 100 % to the bone
+  // Smooth skinning (DESIGN.md §9): across every chain joint (see chain_children) the two
+  // sprites' vertices near the joint blend parent and child with the same weights, linear in
+  // their distance along the bone, so both sprites bend alike, along one circular arc, and a
+  // bent knee keeps one outline. A limb joint blends through kSmoothJointFrames mid-joint
+  // frames (SpriteMesh::mid_joints) turned a quarter, half and three quarters of the way, in
+  // turn along the blend, so a linear blend never spans more than a quarter of the joint's
+  // turn (a 150° bend keeps 95 % of the joint's thickness, not 26 % as with parent and child
+  // alone, the "candy wrapper", or 79 % through one half-way frame, which leaves a point on
+  // the outside of the bend). At a limb joint the sprites get kSmoothRows rows of quads, not
+  // one: each column moves by one blended matrix, and a quad as tall as the sprite between
+  // two columns turned apart maps its texture with a kink along its diagonal (each triangle
+  // is affine), a saw-tooth outline. And there the parent's end is squeezed across the bone
+  // to within the child's start (joint_reach), which is drawn on top of it, so its outline
+  // never shows as a second one beside the child's. Spine joints, which turn a few degrees,
+  // blend parent and child directly. Applies when the creature asks for it
+  // (Creature::smooth_skinning, the genome's options.smooth_skinning); false makes every
+  // creature's sprites rigid (one bone per vertex, one quad across), e.g. for the per-bone
+  // reference path.
+  bool smooth_weights = true;
   float far_shade = 0.62f;          // brightness of far-side bones
+};
+
+// A mid-joint frame of smooth skinning: at the child's start, its axes turned `turn` of the
+// way from the parent's to the child's (mid_joint_frame). It has a palette entry of its own
+// after the bones' (index bone_count + i in SpriteMesh::mid_joints), computed every frame
+// from the two bones' world matrices (CreatureBatch::set_world).
+struct MidJoint {
+  int parent = 0, child = 0;  // bones
+  float turn = 0.5f;          // 0.25, 0.5 or 0.75
+  Mat2x3 inverse_bind;        // model space → the mid frame of the bind pose
 };
 
 // Triangles in three index ranges, one per Layer (far first, then body, then near), so one
@@ -92,7 +131,25 @@ struct SpriteMesh {
   std::array<uint32_t, 4> layer_begin{};  // indices [layer_begin[l], layer_begin[l+1])
   std::vector<Mat2x3> inverse_bind;       // one per bone: model space → bone frame
   std::vector<SpriteId> bone_sprites;     // one per bone
+  std::vector<MidJoint> mid_joints;       // smooth skinning: palette entries after the bones
+  std::vector<glm::vec2> rest_positions;  // per vertex, the rest pose as drawn (model space);
+                                          // = position_ms unless smooth skinning straightened
+                                          // the bind pose (empty: position_ms)
+
+  // Palette entries a creature with this mesh needs: its bones, then its mid joints.
+  int palette_size() const { return static_cast<int>(inverse_bind.size() + mid_joints.size()); }
 };
+
+// The mid-joint frame of a parent and a child bone frame (bone frame → model or world): at
+// the child's origin, turned from the parent's axes by `turn` (0.25, 0.5 or 0.75; others are
+// rounded to these) of the child's turn relative to the parent (the shorter way). Any common
+// scale or mirror of the two is kept: the frames of a creature facing left give the mirrored
+// mid frame.
+Mat2x3 mid_joint_frame(const Mat2x3& parent, const Mat2x3& child, float turn = 0.5f);
+// palette[bones + i] = mid_joint_frame(world[parent], world[child], turn) · inverse_bind for
+// every mid joint; `palette` holds bone_count + mid_joints.size() entries, its bones' already set.
+void mid_joint_palette(std::span<const MidJoint> mid_joints, std::span<const Mat2x3> world,
+                       std::span<Mat2x3> palette);
 
 // Sprite choice (documented rule, same as the SVG exporter's shapes):
 //   skull → skull variant (creature.skull_variant: 0 mammal, 1 bird, 2 reptile, 3 fish);
@@ -107,18 +164,48 @@ struct SpriteMesh {
 SpriteId sprite_for_bone(const Creature& creature, int bone);
 
 // Bone indices are uint8: a creature may have at most this many bones. Every genome the
-// loader accepts fits (kMaxCreatureBones, gen/genome.h).
+// loader accepts fits (kMaxCreatureBones, gen/genome.h), with at least one mid-joint frame
+// for each of its limbs' two blended joints (upper–lower, lower–hand) on both sides, and
+// kSmoothJointFrames each where the indices suffice (every example creature). A skeleton
+// with more bones and limb joints than that blends parent and child directly.
 constexpr int kMaxSpriteMeshBones = 255;
-static_assert(kMaxCreatureBones <= kMaxSpriteMeshBones, "genome limits allow more bones than a sprite mesh holds");
-// Fraction of a sprite's anchor span over which smooth weights fade to the bone alone.
-constexpr float kSmoothSpan = 0.15f;
+constexpr int kSmoothJointFrames = 3;  // mid-joint frames per limb joint (odd: one half way)
+static_assert(kMaxCreatureBones + 2 * 2 * kMaxLimbPairs <= kMaxSpriteMeshBones + 1,
+              "genome limits allow more bones and mid joints than a sprite mesh indexes");
+// Smooth skinning's blend: a joint blends over ±kSmoothBlend × the joint's half thickness
+// (the mean of the two sprites' drawn half heights) along each bone, at most
+// kSmoothMaxSpan × either bone's length (so a bone's two blends never meet), sampled by
+// kSmoothColumns quad columns on each side of a limb joint (kSmoothSpineColumns at the
+// spine) so the bent outline is a curve, not a kink, and kSmoothRows rows across a limb
+// bone's sprite. kSmoothBlend, with the shipped art (tests/render/smooth_skinning_test.cpp):
+// narrower turns the joint over too short a stretch, folding the inside of a bent knee over
+// itself and wrinkling the outside (0.6 pinches a pixel of background off in the crease of
+// the horse's knee at -90°, 0.5 leaves a notch outside the magpie's at +90°); wider swells
+// the knob and leaves gaps beside it in the crease (0.8 shows them).
+constexpr float kSmoothBlend = 0.7f;
+constexpr float kSmoothMaxSpan = 0.45f;
+constexpr int kSmoothColumns = 4;        // limb joints (a multiple of (kSmoothJointFrames + 1) / 2)
+constexpr int kSmoothSpineColumns = 2;   // spine joints, which turn a few degrees each
+constexpr int kSmoothRows = 4;           // limb bones' sprites (rigid and spine sprites: 1)
+
+// Per bone, the bone that continues it across its end joint — the one its end blends with
+// under smooth skinning — or -1: a child of non-zero length in the same layer that starts at
+// the bone's end (within 1 % of its length) in `locals`, the straightest one when several do.
+// So limbs chain upper → lower → hand and the spine vertebra to vertebra to skull; ribs and
+// girdles (another layer than their vertebra) stay rigid, and so does a girdle bone's end at
+// the limb (a ball joint: the blade's end would bend after the limb).
+std::vector<int> chain_children(const Skeleton& skeleton, const std::vector<BoneLocal>& locals);
 
 // Builds the mesh: per bone of non-zero length a strip of quads (columns at u = 0, the parent
-// anchor, parent anchor + kSmoothSpan of the span, the child anchor, 1) mapped so the parent
-// anchor lands on the bone start and the child anchor on the bone end in the rest pose
-// (creature.rest_pose, or the skeleton's rest locals); the drawn height is
-// max(aspect × length, width); sprite_flip_y mirrors v. Within a layer, bones are ordered
-// ribs, girdles, spine, skull, upper, lower, hand (later ones draw on top).
+// anchor, the child anchor, 1, and with smooth weights the blend's columns around each chain
+// joint; one row, or kSmoothRows on a smooth limb bone) mapped so the parent anchor lands on
+// the bone start and the child anchor on the bone end in the bind pose; the drawn height is
+// max(aspect × length, width) (a smooth limb joint's parent end squeezed, SpriteMeshOptions);
+// sprite_flip_y mirrors v. Within a layer, bones are ordered ribs, girdles, spine, skull,
+// upper, lower, hand (later ones draw on top). The bind pose is the rest pose
+// (creature.rest_pose, or the skeleton's rest locals), with smooth weights straightened at
+// every blended joint (the child's rest angle to its parent set to 0): rest_positions holds
+// the rest pose as drawn.
 // Precondition (asserted): bone_count() <= kMaxSpriteMeshBones — try_build_sprite_mesh
 // returns an Error instead.
 SpriteMesh build_sprite_mesh(const Creature& creature, const SpriteSet& sprites,
@@ -126,8 +213,15 @@ SpriteMesh build_sprite_mesh(const Creature& creature, const SpriteSet& sprites,
 Result<SpriteMesh> try_build_sprite_mesh(const Creature& creature, const SpriteSet& sprites,
                                          const SpriteMeshOptions& options = {});
 
-// The model-space box around every vertex (the bind pose as drawn: whole sprites, not only
-// the joints). An empty mesh gives a zero box at the origin.
+// The most bones with a non-zero weight on one vertex of `mesh` (1 rigid, 2 smooth; ≤ 4).
+int max_weights_per_vertex(const SpriteMesh& mesh);
+
+// A vertex skinned by `palette` (one entry per bone, then per mid joint): Σ w_k palette[b_k] p,
+// what the skinned shader computes.
+glm::vec2 skin_vertex(const SpriteVertex& v, std::span<const Mat2x3> palette);
+
+// The model-space box around every vertex in the rest pose as drawn (rest_positions, else
+// position_ms: whole sprites, not only the joints). An empty mesh gives a zero box at the origin.
 Box sprite_mesh_bounds(const SpriteMesh& mesh);
 
 }  // namespace ossa

@@ -1,6 +1,7 @@
 #include "ossa/render/texture.h"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdlib>
 #include <cstring>
 #include <utility>
@@ -95,6 +96,27 @@ Atlas Atlas::load(const std::string& sprite_dir) {
 
 std::string default_sprite_dir() { return data_path("assets/sprites/bones"); }
 
+void measure_joint_reach(SpriteInfo& info, const Image& image) {
+  if (image.empty()) return;
+  const auto reach = [&](float u0, float u1, float anchor_v) {
+    const int x0 = std::clamp(static_cast<int>(std::floor(u0 * image.width)), 0, image.width - 1);
+    const int x1 = std::clamp(static_cast<int>(std::ceil(u1 * image.width)), x0 + 1, image.width);
+    glm::vec2 r(0.0f);  // below, above
+    const float h = static_cast<float>(image.height);
+    for (int y = 0; y < image.height; ++y) {
+      for (int x = x0; x < x1; ++x) {
+        if (image.pixel(x, y)[3] < 128) continue;
+        r.x = std::max(r.x, anchor_v - (1.0f - static_cast<float>(y + 1) / h));  // pixel's bottom edge
+        r.y = std::max(r.y, (1.0f - static_cast<float>(y) / h) - anchor_v);      // its top edge
+      }
+    }
+    return r;
+  };
+  const float pu = info.parent_anchor.x, cu = info.child_anchor.x;
+  info.parent_reach = reach(0.0f, std::min(2.0f * pu, cu), info.parent_anchor.y);
+  info.child_reach = reach(std::max(2.0f * cu - 1.0f, pu), 1.0f, info.child_anchor.y);
+}
+
 Atlas Atlas::build(const SpriteSet& sprites, const std::string& sprite_dir) {
   constexpr int kPadding = 2;  // pixels between sprites, so linear filtering does not bleed
   constexpr size_t n = static_cast<size_t>(SpriteId::kCount);
@@ -106,6 +128,7 @@ Atlas Atlas::build(const SpriteSet& sprites, const std::string& sprite_dir) {
     auto image = load_image(path);
     if (image.ok()) {
       images[i] = std::move(image.value());
+      measure_joint_reach(atlas.sprites.sprites[i], images[i]);
     } else {
       render_log(image.message() + " (sprite packed as a checker tile)");
       images[i] = checker_image(64, 32, 8);

@@ -47,7 +47,8 @@ class Texture {
 // `<sprite_dir>/<name>.png`; a missing one is logged and packed as a checker tile.
 struct Atlas {
   Texture texture;
-  SpriteSet sprites;        // the input set with uv_min / uv_max filled in
+  SpriteSet sprites;        // the input set with uv_min / uv_max and the joint reaches
+                            // (measure_joint_reach) filled in
   Image image;              // the packed pixels (rows top to bottom), kept for export/tests
   int missing = 0;          // sprites that fell back to the checker
 
@@ -57,6 +58,12 @@ struct Atlas {
   // logged and the built-in anchors are used) packed by build().
   static Atlas load(const std::string& sprite_dir);
 };
+
+// Measures `info`'s parent_reach and child_reach (SpriteInfo) from its image's alpha: over
+// u in [0, 2 × parent anchor u] and [2 × child anchor u - 1, 1], how far opaque pixels
+// (alpha ≥ 128) reach below and above each anchor's v. Atlas::build calls it for every sprite
+// whose image loaded.
+void measure_joint_reach(SpriteInfo& info, const Image& image);
 
 // The bone sprite folder: data_path("assets/sprites/bones") (ossa/io/data_dir.h).
 std::string default_sprite_dir();
