@@ -35,7 +35,7 @@ struct ExpectedHash {
 
 constexpr ExpectedHash kExpected[] = {
     {"default.json", 0x1db90798626a7f4eull},
-    {"rough.json", 0xe65b0223bc12a413ull},
+    {"rough.json", 0x72386a630b34eedfull},
     {"stairs.json", 0x21d92ce95b370a32ull},
     {"slopes.json", 0x5b3c36ab2c421bf2ull},
 };

@@ -34,6 +34,9 @@ constexpr float kResetSearchOfHip = 2.0f;
 // this many hip heights above and below the root.
 constexpr float kProfileStepOfFoot = 0.1f;
 constexpr float kProfileSpanStrides = 2.0f;
+// ...of strides at least this many hip heights long (a walk's), so that a creature setting off
+// does not need a wider window at once.
+constexpr float kProfileStrideOfHip = 2.5f;
 constexpr float kProfileAboveOfHip = 1.0f, kProfileBelowOfHip = 4.0f;
 
 }  // namespace
@@ -131,7 +134,7 @@ void Animator::refresh_ground(const Level& level) {
   const AnimRig& rig = *rig_;
   // The root need not be the middle of the body: a whole body length either side.
   const float reach = 2.0f * rig.body_half_length + rig.longest_contact_reach;
-  const float span = reach + kProfileSpanStrides * std::max(gait_.stride, rig.hip_height);
+  const float span = reach + kProfileSpanStrides * std::max(gait_.stride, kProfileStrideOfHip * rig.hip_height);
   const float x0 = body_.x_ws - span, x1 = body_.x_ws + span;
   // Above the root: a hip height, or as high as the steepest slope rises over the body and a
   // leg's reach (a long, low body meets the hill ahead above its own height).

@@ -135,9 +135,6 @@ void girdle_heights(Placement& p, std::vector<float>& height) {
       lowest = std::min(lowest, foot.y + std::sqrt(r * r - dx * dx));
     }
     height[g] = std::min(height[g], std::max(lowest, floor));
-    // Never below where clamp 5 (keep_body_out_of_ground) would put it: the body comes down
-    // smoothly onto that height rather than sink past it and be lifted back.
-    height[g] = std::max(height[g], girdle_keep_out(p.ctx, {gx, height[g]}, girdle.rest_height, 0.0f));
   }
 }
 

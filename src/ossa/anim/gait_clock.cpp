@@ -130,8 +130,10 @@ void start_clock(GaitState& gait, FootSet& feet, int lead) {
 }
 
 LegPhase advance_leg_phase(const GaitState& gait, FootState& f, float target_offset, bool starting, float ism, float dt) {
-  f.offset = circular_lerp(f.offset, target_offset,
-                           std::min(1.0f, kOffsetEaseRate * ism * dt / std::max(std::fabs(phase_diff(f.offset, target_offset)), 1e-6f)));
+  if (f.offset != target_offset) {
+    f.offset = circular_lerp(f.offset, target_offset,
+                             std::min(1.0f, kOffsetEaseRate * ism * dt / std::max(std::fabs(phase_diff(f.offset, target_offset)), 1e-6f)));
+  }
   LegPhase out;
   out.phase = frac(gait.phase + f.offset);
   if (f.state == LegState::kStance) out.lift_due = starting ? out.phase >= gait.duty : crossed(f.phase_prev, out.phase, gait.duty);
