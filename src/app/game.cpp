@@ -113,6 +113,7 @@ Status Game::init(const GameOptions& o) {
   level_options.pixels_per_metre = o.pixels_per_metre;
   auto level = load_level(resolve_data_path(level_path), level_options);
   if (!level.ok()) return level.error();
+  for (const std::string& w : level_warnings(*level)) std::fprintf(stderr, "warning: %s: %s\n", level_path.c_str(), w.c_str());
 
   auto prototypes = load_prototypes(resolve_data_path("assets/animation/prototypes.json"));
   if (!prototypes.ok()) return prototypes.error();

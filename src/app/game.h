@@ -70,7 +70,9 @@ struct GameOptions {
 
 inline constexpr const char* kDefaultExample = "horse";
 // The demo script (sim.h's segment syntax), 10 seconds long.
-inline constexpr const char* kDemoScript = "walk:0.5:2.5,run:1:3,stop:1.5,walk:0.5:3";
+// The headless demo (tools/play without a display runs it on levels/drops.json): walking
+// off a ledge, running off the next, a jump down the third.
+inline constexpr const char* kDemoScript = "walk:0.5:2.5,run:1:2.5,stop:1,walk:0.5:1.5,jump,walk:0.5:2.5";
 
 class Game {
  public:

@@ -366,6 +366,11 @@ void Game::Impl::render(Game& game, float alpha) {
     info.walk_speed = an.walk_speed();
     info.run_speed = an.run_speed();
     info.gait = gait_name(an.gait());
+    info.locomotion = locomotion_name(an.locomotion());
+    const anim::GaitBands bands = an.gait_bands();
+    info.trot_speed = bands.trot;
+    info.gallop_speed = bands.gallop;
+    info.biped_run_speed = bands.run;
     info.froude = an.froude();
     info.tick_hz = world.tick_hz();
     info.input = input_name;
@@ -474,13 +479,17 @@ std::string Game::Impl::stop_recording(const std::string& path) {
 }
 
 Controls Game::Impl::demo_controls(uint64_t tick, int tick_hz) const {
-  // The script loops: walk right, run, stop, walk.
-  float total = 0.0f;
-  for (const ScriptSegment& s : demo) total += s.seconds;
-  float t = std::fmod(static_cast<float>(static_cast<double>(tick) / tick_hz), std::max(total, 1e-3f));
+  // The script (kDemoScript) loops.
+  uint64_t total = 0;
+  for (const ScriptSegment& s : demo) total += static_cast<uint64_t>(s.ticks(tick_hz));
+  if (total == 0) return {};
+  uint64_t t = tick % total;
+  Controls previous;
   for (const ScriptSegment& s : demo) {
-    if (t < s.seconds) return s.controls();
-    t -= s.seconds;
+    previous = s.controls(previous);
+    const uint64_t n = static_cast<uint64_t>(s.ticks(tick_hz));
+    if (t < n) return previous;
+    t -= n;
   }
   return {};
 }

@@ -40,11 +40,11 @@ Walk a generated creature over a box level with a gamepad or the keyboard.
   --out DIR         folder for key-triggered screenshots, GIFs and replays (default out)
   --help            this text
 
-keys: A/D or arrows walk, Shift runs, N next example, M random creature, C next character,
-      H HUD, F12/P screenshot, G GIF of the next seconds, R start/stop a replay, wheel zoom,
-      Esc quits
-gamepad: left stick walks (half throw = walk speed, full = run), A/RB/RT run, Y next example,
-      X random creature, LB next character, Back HUD, Start replay
+keys: A/D or Left/Right walk, Shift runs, Space/W/Up jumps, N next example, M random
+      creature, C next character, H HUD, F12/P screenshot, G GIF of the next seconds,
+      R start/stop a replay, wheel zoom, Esc quits
+gamepad: left stick walks (half throw = walk speed, full = run), RB/RT run, A jumps,
+      Y next example, X random creature, LB next character, Back HUD, Start replay
 )";
 
 Result<ParsedArgs> parse_game_args(const std::vector<std::string>& args) {

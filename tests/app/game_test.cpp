@@ -143,6 +143,19 @@ TEST_CASE("a virtual gamepad drives the player: half stick walks, full stick run
   CHECK(a.velocity() < -0.6f * a.walk_speed());
   CHECK(a.facing() == -1);
 
+  // A jumps: one jump per press, however long it is held.
+  REQUIRE(SDL_JoystickSetVirtualAxis(joy, SDL_CONTROLLER_AXIS_LEFTX, 0) == 0);
+  run_frames(game, 120);
+  const int jumps = a.locomotion_stats().jumps;
+  REQUIRE(SDL_JoystickSetVirtualButton(joy, SDL_CONTROLLER_BUTTON_A, 1) == 0);
+  run_frames(game, 3);
+  CHECK(game.last_controls().jump);
+  run_frames(game, 177);
+  REQUIRE(SDL_JoystickSetVirtualButton(joy, SDL_CONTROLLER_BUTTON_A, 0) == 0);
+  run_frames(game, 60);
+  CHECK(a.locomotion_stats().jumps == jumps + 1);
+  CHECK(a.locomotion() == Locomotion::kGrounded);
+
   SDL_JoystickClose(joy);
   SDL_JoystickDetachVirtual(index);
   run_frames(game, 2);
@@ -178,6 +191,20 @@ TEST_CASE("keyboard events pushed through SDL walk and run the player", "[app]")
   run_frames(game, 120);
   CHECK(a.velocity() < 0.0f);
   push_key(SDL_SCANCODE_LEFT, false);
+
+  // Space, W and Up each jump once per press; the creature lands again.
+  for (SDL_Scancode key : {SDL_SCANCODE_SPACE, SDL_SCANCODE_W, SDL_SCANCODE_UP}) {
+    run_frames(game, 60);
+    const int jumps = a.locomotion_stats().jumps;
+    push_key(key, true);
+    run_frames(game, 2);
+    CHECK(game.last_controls().jump);
+    run_frames(game, 118);
+    push_key(key, false);
+    run_frames(game, 60);
+    CHECK(a.locomotion_stats().jumps == jumps + 1);
+    CHECK(a.locomotion() == Locomotion::kGrounded);
+  }
 
   // Escape quits.
   push_key(SDL_SCANCODE_ESCAPE, true);
@@ -233,8 +260,9 @@ TEST_CASE("a recorded replay plays back to the same player state", "[app]") {
     o.record = replay;
     Game game;
     REQUIRE(game.init(o).ok());
-    run_frames(game, 420);  // 7 s: walk, run, stop
+    run_frames(game, 600);  // 10 s: walk, run, stop, walk, jump, walk
     REQUIRE(game.finish().ok());
+    REQUIRE(game.world().player()->animator().locomotion_stats().jumps == 1);
     x_recorded = game.world().player()->animator().x();
     hash_recorded = pose_hash(game.world().player()->animator().world_matrices());
     ticks_recorded = game.world().tick();

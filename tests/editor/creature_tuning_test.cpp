@@ -210,6 +210,54 @@ TEST_CASE("tuning: footfall history samples every leg per tick over the last sec
 namespace ossa {
 namespace {
 
+TEST_CASE("tuning: the footfall diagram of a quadruped at full run shows a gallop", "[editor]") {
+  // A transverse gallop: the hind feet land one after the other, then the front feet, half a
+  // cycle on (the trot's diagonal pairs would land together, a pair's feet half a cycle apart). Touch-downs read from the
+  // footfall history, as phases of the cycle after the near hind foot's.
+  const Creature horse = scenes::quadruped();
+  Level level({Box::from_corner(-10.0f, -1.0f, 400.0f, 1.0f)});
+  Animator animator(horse, SplinePrototypes::defaults());
+  animator.reset({0.0f, 1.0f}, level);
+  UndoStack undo;
+  TuningModel m(AnimatorParams{}, undo);
+  m.history_seconds = 2.0f;
+  const float dt = 1.0f / 120.0f;
+  for (int i = 0; i < 8 * 120; ++i) {
+    animator.update(dt, animator.run_speed(), level);
+    m.sample(animator, dt);
+  }
+  REQUIRE(animator.gait() == Gait::kGallop);
+  const float period = 1.0f / (animator.cycle_frequency() * dt);  // samples per cycle
+  auto last_touch_down = [&](int leg) {
+    const std::deque<bool>& h = m.leg_history(leg);
+    for (int k = static_cast<int>(h.size()) - 1; k > 0; --k) {
+      if (h[k] && !h[k - 1]) return k;
+    }
+    return -1;
+  };
+  const AnimRig& rig = animator.rig();
+  int near_hind = -1, far_hind = -1, near_front = -1, far_front = -1;
+  for (int leg = 0; leg < animator.leg_count(); ++leg) {
+    const bool front = rig.legs[leg].girdle == 0, near = rig.legs[leg].side == Side::kNear;
+    (front ? (near ? near_front : far_front) : (near ? near_hind : far_hind)) = leg;
+  }
+  const int ref = last_touch_down(near_hind);
+  REQUIRE(ref >= 0);
+  auto phase = [&](int leg) {
+    const int t = last_touch_down(leg);
+    REQUIRE(t >= 0);
+    const float d = static_cast<float>(t - ref) / period;
+    return d - std::floor(d);
+  };
+  auto circular = [](float a, float b) { return std::min(std::fabs(a - b), 1.0f - std::fabs(a - b)); };
+  INFO("far hind " << phase(far_hind) << " near front " << phase(near_front) << " far front " << phase(far_front));
+  // In both pairs the far foot lands about an eighth of a cycle before the near one (the
+  // same lead on both sides: transverse); the front pair half a cycle after the hind pair.
+  CHECK(circular(phase(far_hind), 0.88f) < 0.08f);
+  CHECK(circular(phase(near_front), 0.5f) < 0.08f);
+  CHECK(circular(phase(far_front), 0.38f) < 0.08f);
+}
+
 TEST_CASE("tuning: files round trip, bad values are reported, a failing save keeps the file", "[editor]") {
   const fs::path dir = fs::temp_directory_path() / "ossa_editor_test_tuning";
   fs::remove_all(dir);

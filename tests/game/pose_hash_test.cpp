@@ -34,10 +34,11 @@ struct ExpectedHash {
 };
 
 constexpr ExpectedHash kExpected[] = {
-    {"default.json", 0x1db90798626a7f4eull},
-    {"rough.json", 0x72386a630b34eedfull},
-    {"stairs.json", 0x21d92ce95b370a32ull},
-    {"slopes.json", 0x5b3c36ab2c421bf2ull},
+    {"default.json", 0x7777c0e3d7b34188ull},
+    {"rough.json", 0x36a50d9702c106ebull},
+    {"stairs.json", 0x4ffd3146128cec1aull},
+    {"slopes.json", 0xd897f567918f08afull},
+    {"drops.json", 0xfc50bd3d138b68a9ull},
 };
 
 std::string hex(uint64_t v) {

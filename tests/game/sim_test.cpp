@@ -33,6 +33,26 @@ TEST_CASE("parse_script reads walk, run and stop segments and names the bad one"
   CHECK_THAT(bad.message(), Catch::Contains("segment 1"));
 }
 
+TEST_CASE("parse_script reads jump (one tick) and jump:SECONDS (held), keeping the stick", "[game][sim]") {
+  const auto ok = parse_script("run:1:2,jump,jump:0.5,walk:0.5:1");
+  REQUIRE(ok.ok());
+  REQUIRE(ok->size() == 4);
+  CHECK((*ok)[1].mode == "jump");
+  CHECK((*ok)[1].ticks(120) == 1);
+  CHECK((*ok)[2].ticks(120) == 60);
+  const Controls held = (*ok)[1].controls((*ok)[0].controls());
+  CHECK(held.jump);
+  CHECK(held.move_x == 1.0f);  // the stick of the segment before
+  CHECK(held.run);
+  CHECK_FALSE((*ok)[3].controls(held).jump);
+  for (const char* bad : {"jump:x", "jump:-1", "jump:1:2"}) {
+    const auto r = parse_script(std::string("walk:0.5:1,") + bad);
+    INFO(bad);
+    REQUIRE_FALSE(r.ok());
+    CHECK_THAT(r.message(), Catch::Contains("segment 1"));
+  }
+}
+
 TEST_CASE("x_reached is the final x, x_max_m the furthest right, blocked_s the time at a wall", "[game][sim]") {
   SECTION("there and back on flat ground: never blocked, ends short of its furthest point") {
     const Level flat = scenes::flat_level(100.0f);

@@ -198,6 +198,7 @@ int run(const Args& a) {
     level_options.pixels_per_metre = a.pixels_per_metre;
     auto l = load_level(*a.level, level_options);
     if (!l.ok()) fail(l.message());
+    for (const std::string& w : level_warnings(*l)) std::fprintf(stderr, "warning: %s: %s\n", a.level->c_str(), w.c_str());
     level = std::move(l.value());
   }
 

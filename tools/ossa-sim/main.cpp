@@ -47,7 +47,8 @@ const char* kUsage = R"(usage: ossa-sim (--example NAME | --creature F.creature.
                    (.tmj, .tmx) or an LDtk project (.ldtk, F#LevelName picks a level)
   --pixels-per-metre P  scale of Tiled/LDtk maps with neither a pixels_per_metre property
                    nor a tile size (default 32)
-  --script S       segments: walk:STICK:SECONDS, run:STICK:SECONDS, stop:SECONDS
+  --script S       segments: walk:STICK:SECONDS, run:STICK:SECONDS, stop:SECONDS, jump (the
+                   jump button for one tick) and jump:SECONDS (held), keeping the stick
   --hz N           simulation rate, 30..480 (default 120)
   --count N        N creatures at once (reports update_us_per_creature)
   --prototypes F   spline prototypes (default: assets/animation/prototypes.json)
@@ -215,6 +216,7 @@ int main(int argc, char** argv) {
   level_options.pixels_per_metre = args.pixels_per_metre;
   Result<Level> level = load_level(level_path, level_options);
   if (!level) fail(level.message());
+  for (const std::string& w : level_warnings(*level)) std::fprintf(stderr, "warning: %s: %s\n", level_path.c_str(), w.c_str());
 
   SplinePrototypes prototypes = SplinePrototypes::defaults();
   const std::string proto_path = args.prototypes ? *args.prototypes : data_path("assets/animation/prototypes.json");
@@ -275,21 +277,25 @@ int main(int argc, char** argv) {
   if (args.trace) {
     trace.open(*args.trace);
     if (!trace) fail(*args.trace + ": cannot open for writing");
-    trace << "t,x,root_y,gait";
+    trace << "t,x,root_y,gait,mode";
     for (int i = 0; i < player.animator().leg_count(); ++i) {
       trace << ",foot" << i << "_x,foot" << i << "_y,foot" << i << "_stance,target" << i << "_x,target" << i << "_y";
     }
     trace << "\n";
   }
   int total_ticks = 0;
-  for (const ScriptSegment& s : *script) total_ticks += static_cast<int>(std::lround(s.seconds * args.hz));
+  for (const ScriptSegment& s : *script) total_ticks += s.ticks(args.hz);
   const int shot_every = std::max(1, static_cast<int>(std::lround(args.svg_every * static_cast<float>(args.hz))));
   std::vector<Snapshot> shots;
   double extra_seconds = 0.0;
   const float dt = 1.0f / static_cast<float>(args.hz);
   // Controls of the extra creatures follow the player's script tick by tick.
   std::vector<Controls> per_tick;
-  for (const ScriptSegment& s : *script) per_tick.insert(per_tick.end(), static_cast<size_t>(std::lround(s.seconds * args.hz)), s.controls());
+  Controls previous;
+  for (const ScriptSegment& s : *script) {
+    previous = s.controls(previous);
+    per_tick.insert(per_tick.end(), static_cast<size_t>(s.ticks(args.hz)), previous);
+  }
   const SimResult result = run_script(player, *level, *script, args.hz, [&](long long tick) {
     const Animator& a = player.animator();
     if (!extra.empty()) {
@@ -299,7 +305,7 @@ int main(int argc, char** argv) {
     }
     if (trace.is_open()) {
       trace << tick * dt << "," << a.x() << "," << bone_start(a.world_matrices()[a.rig().root]).y << ","
-            << gait_name(a.gait());
+            << gait_name(a.gait()) << "," << locomotion_name(a.locomotion());
       for (int i = 0; i < a.leg_count(); ++i) {
         const glm::vec2 f = a.foot_ws(i);
         trace << "," << f.x << "," << f.y << "," << (a.leg_state(i) == LegState::kStance ? 1 : 0) << "," << a.foot_target_ws(i).x << "," << a.foot_target_ws(i).y;
@@ -329,7 +335,8 @@ int main(int argc, char** argv) {
                       {"mean_speed", m.mean_speed}, {"speed_error", m.speed_error},
                       {"stride_length", m.stride_length}, {"cycle_frequency", m.cycle_frequency},
                       {"duty_factor", m.duty_factor}, {"froude", m.froude},
-                      {"gait", m.gait},             {"flight_phase", m.flight_phase}});
+                      {"gait", m.gait},             {"flight_phase", m.flight_phase},
+                      {"airborne_s", m.airborne_s}});
     }
     out["segments"] = segs;
     out["max_stance_slip_m"] = probe.max_stance_slip_m;
@@ -339,6 +346,14 @@ int main(int argc, char** argv) {
     out["x_reached"] = result.x_reached;  // the final x (SimResult::x_reached)
     out["x_max_m"] = result.x_max_m;
     out["blocked_s"] = result.blocked_s;
+    const anim::LocomotionStats& loco = result.locomotion;
+    out["falls"] = loco.falls;
+    out["jumps"] = loco.jumps;
+    out["max_fall_m"] = loco.max_fall_m;
+    out["max_jump_height_m"] = loco.max_jump_height_m;
+    out["airborne_s"] = loco.airborne_s;
+    out["hard_landings"] = loco.hard_landings;
+    out["respawns"] = loco.respawns;
     out["hip_height_m"] = a.hip_height();
     out["nan_count"] = probe.nan_count;
     char hash[32];

@@ -134,6 +134,7 @@ Setup load_setup(const Args& args) {
   for (const std::string& path : paths) {
     Result<Level> level = load_level(path);
     if (!level) fail(level.message());
+    for (const std::string& w : level_warnings(*level)) std::fprintf(stderr, "warning: %s: %s\n", path.c_str(), w.c_str());
     s.levels.push_back(std::move(*level));
     s.level_names.push_back(std::filesystem::path(path).filename().string());
   }

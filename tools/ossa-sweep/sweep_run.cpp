@@ -102,7 +102,7 @@ RunRecord run_one(std::shared_ptr<const Creature> creature, const SplinePrototyp
   r.segments.resize(script.size());
   std::vector<long long> segment_end;  // first tick after each segment (run_script's rounding)
   long long ticks = 0;
-  for (const ScriptSegment& s : script) segment_end.push_back(ticks += std::lround(s.seconds * tick_hz));
+  for (const ScriptSegment& s : script) segment_end.push_back(ticks += s.ticks(tick_hz));
   std::vector<int> dirs;  // the sign of each segment's command (0 for stops)
   for (const ScriptSegment& s : script) dirs.push_back(s.mode == "stop" || s.stick == 0.0f ? 0 : s.stick > 0.0f ? 1 : -1);
 

@@ -315,6 +315,14 @@ std::shared_ptr<const AnimRig> build_anim_rig(const Skeleton& skeleton, const Po
     x_max = std::max(x_max, p.x);
   }
   rig->body_half_length = std::max(0.5f * (x_max - x_min), 0.05f);
+  for (int b = 0; b < sk.bone_count(); ++b) {  // the extent from the root counts bone ends too
+    const float e = bone_end(rig->model_rest[b], sk.length(b)).x;
+    x_min = std::min(x_min, e);
+    x_max = std::max(x_max, e);
+  }
+  const float root_x = bone_start(rig->model_rest[roles.root]).x;
+  rig->body_back = std::min(x_min - root_x, -0.025f);
+  rig->body_front = std::max(x_max - root_x, 0.025f);
   rig->outline_arms = distinct_outlines(*rig, rig->arms);
   rig->outline_fins = distinct_outlines(*rig, rig->fins);
   rig->outline_wings = distinct_outlines(*rig, rig->wings);

@@ -89,6 +89,12 @@ struct AnimRig {
   float climb_height = 0.0f;
   float root_rest_y = 0.0f;         // model-space y of the root in the rest pose
   float body_half_length = 0.5f;    // half the rest pose's extent along x, metres
+  // The rest pose's extent along x from the root (_fs: + ahead), metres; a long tail makes it
+  // lopsided (a snake's root is near its head).
+  float body_back = -0.5f, body_front = 0.5f;
+  // World x range the rest pose covers with the root at x_ws, facing `facing`.
+  float body_lo_ws(float x_ws, int facing) const { return x_ws + (facing > 0 ? body_back : -body_front); }
+  float body_hi_ws(float x_ws, int facing) const { return x_ws + (facing > 0 ? body_front : -body_back); }
   // One girdle only: the foremost arm or wing shoulder ahead of it (rest, relative to the
   // girdle joint), and how much higher the ground under it may be than under the girdle
   // before the body pitches up.

@@ -86,6 +86,14 @@ struct FootState {                  // per foot: moves between legs when the cre
   float offset = 0.0f;              // phase offset (eases toward the owning leg's target)
   float phase_prev = 0.0f;
   float hover = 0.0f;               // seconds spent waiting above the landing point
+  // Hanging in the air with no landing (stepping off a drop, falling, after pushing off): the
+  // foot follows its girdle (locomotion.h air_target) and is planted where it meets the
+  // ground. air_offset, from the air target, eases to nothing, so the foot does not jump
+  // when it leaves the ground.
+  bool air = false;
+  glm::vec2 air_offset{0.0f};       // metres (_ws)
+  float hang_beyond = NAN;          // stepping off: the world x the hanging foot reaches past
+  float floor = 1e30f;              // a fall's feet are planted only on ground below this (_ws)
   Clearance stance_clear;           // around pos_ws while in stance
   Clearance stance_reach_clear;     // within a leg's reach of pos_ws while in stance
   Clearance swing_clear;            // around the path of the current swing

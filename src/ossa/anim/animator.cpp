@@ -10,6 +10,7 @@
 #include "ossa/anim/body_motion.h"
 #include "ossa/anim/foothold.h"
 #include "ossa/anim/leg_ik.h"
+#include "ossa/anim/locomotion.h"
 #include "ossa/anim/swing.h"
 #include "ossa/anim/turn.h"
 #include "ossa/assert.h"
@@ -98,12 +99,19 @@ void Animator::reset(glm::vec2 position_ws, const Level& level, int facing) {
   body_state_.root_vy = body_state_.body_lift = 0.0f;
   steps_ = 0;
   idle_time_ = 0.0f;
+  loco_ = {};
+  level_revision_ = level.revision();
   const float search = std::max(kResetSearchOfHip * rig.hip_height, 1.0f);
+  const float snap = std::max(kResetSnapOfHip * rig.hip_height, kResetSnapMin);
   auto ground_at = [&](float x0, float x1, float fallback) {
-    auto hit = ground_below(level, std::min(x0, x1), std::max(x0, x1), position_ws.y + search, 100.0f);
+    auto hit = ground_below(level, std::min(x0, x1), std::max(x0, x1), position_ws.y + search, search + snap);
     return hit ? hit->height_ws : fallback;
   };
-  body_.root_y_ws = ground_at(body_.x_ws - rig.body_half_length, body_.x_ws + rig.body_half_length, position_ws.y) + rig.root_rest_y;
+  // No ground within the snap below: the creature starts in the air, its feet where the
+  // position is, and falls.
+  const bool falling = !ground_below(level, rig.body_lo_ws(body_.x_ws, body_.facing), rig.body_hi_ws(body_.x_ws, body_.facing),
+                                     position_ws.y + search, search + snap);
+  body_.root_y_ws = ground_at(rig.body_lo_ws(body_.x_ws, body_.facing), rig.body_hi_ws(body_.x_ws, body_.facing), position_ws.y) + rig.root_rest_y;
   for (size_t i = 0; i < rig.legs.size(); ++i) {
     const RigLeg& info = rig.legs[i];
     const glm::vec2 ankle = bone_end(rig.model_rest[info.bones[1]], rig.skeleton.length(info.bones[1]));
@@ -120,11 +128,25 @@ void Animator::reset(glm::vec2 position_ws, const Level& level, int facing) {
   for (size_t i = 0; i < rig.legs.size(); ++i) {
     glm::vec2 landing;
     FootState& f = feet_.of_leg(static_cast<int>(i));
-    if (find_landing(in, static_cast<int>(i), f.pos_ws, f.pos_ws.x, &landing)) f.pos_ws = landing;
+    if (!falling && find_landing(in, static_cast<int>(i), f.pos_ws, f.pos_ws.x, &landing)) f.pos_ws = landing;
     update_stance_clearance(ctx, f);
   }
-  place_body(0.0f, false, level);
+  if (falling) {
+    take_off(ctx, body_, {0.0f, 0.0f}, false, feet_, loco_);  // counts a fall
+    for (FootState& f : feet_.feet) f.air_offset = glm::vec2(0.0f);
+  } else {
+    place_body(0.0f, false, level);
+  }
   build_pose(0.0f, level);
+}
+
+void Animator::respawn(const Level& level) {
+  const LocomotionStats stats = loco_.stats;
+  reset(level.spawn_ws, level, body_.facing);
+  const int falls = loco_.stats.falls;  // a spawn point in the air is a fall again
+  loco_.stats = stats;
+  loco_.stats.falls += falls;
+  ++loco_.stats.respawns;
 }
 
 // ---- Update: the stages in order -------------------------------------------------------------
@@ -165,7 +187,8 @@ bool Animator::way_ahead_open(const Level& level, float speed) {
   return find_landing(in, block_.leg, step_from(feet_.of_leg(block_.leg)), landing_x(in, block_.leg, speed), &landing);
 }
 
-void Animator::update(float dt, float desired_velocity, const Level& level) {
+void Animator::update(float dt, const AnimatorIntent& intent, const Level& level) {
+  const float desired_velocity = intent.velocity;
   if (!(dt > 0.0f) || !std::isfinite(desired_velocity)) return;
   const AnimRig& rig = *rig_;
   const float ism = std::max(params_.interpolation_speed_multiplier, 0.01f);
@@ -175,8 +198,25 @@ void Animator::update(float dt, float desired_velocity, const Level& level) {
   }
   refresh_ground(level);                                                      // 1 ground profile
   const AnimContext ctx = context(level);
+  if (level.revision() != level_revision_) {  // the level changed: a foot whose ground went hangs
+    level_revision_ = level.revision();
+    for (size_t i = 0; i < rig.legs.size(); ++i) {
+      FootState& f = feet_.of_leg(static_cast<int>(i));
+      if (f.state == LegState::kStance && !ground_below(level, f.pos_ws.x - 1e-3f, f.pos_ws.x + 1e-3f, f.pos_ws.y + 1e-3f, 2e-3f)) {
+        hang(ctx, body_, static_cast<int>(i), 1.0f, f);
+      }
+    }
+  }
+  if (loco_.mode == Locomotion::kAirborne) {                                  // 3 locomotion: in the air
+    fly(dt, level);
+    build_pose(dt, level);
+    return;
+  }
+  const bool landing = loco_.mode == Locomotion::kLanding;
+  if (landing) loco_.time += dt;
+  if (intent.jump && loco_.mode == Locomotion::kGrounded && !rig.legs.empty()) begin_crouch(rig, params_, loco_);
   const int want = desired_velocity > kStandingSpeed ? 1 : desired_velocity < -kStandingSpeed ? -1 : 0;
-  const bool turned = want != 0 && want != body_.facing;
+  const bool turned = !landing && want != 0 && want != body_.facing;
   if (turned) turn_round(ctx, spline_prototypes_, gait_.run_factor, gait_.stride, gait_.duty, body_, feet_);
 
   float target = std::fabs(desired_velocity);
@@ -193,8 +233,9 @@ void Animator::update(float dt, float desired_velocity, const Level& level) {
     }
   }
   // The stick sets the speed precisely [T 4.1]; starting and stopping are immediate [T 5.1]
-  // (the half-length first step and the eased stop make them read well).
-  speed_ = target <= kStandingSpeed ? 0.0f : target;
+  // (the half-length first step and the eased stop make them read well). A landing's
+  // descent holds the body still.
+  speed_ = target <= kStandingSpeed || landing ? 0.0f : target;
   update_gait(rig, params_, speed_, decay_.run, decay_.gait, gait_);         // 2 gait clock
   body_.lean = approach(body_.lean, -params_.max_spine_rotation * std::min(speed_ / run_speed(), 1.2f), decay_.lean);
 
@@ -213,9 +254,57 @@ void Animator::update(float dt, float desired_velocity, const Level& level) {
     step_legs(dt, ism, level);                                                // 4 foothold, 5 swing
     if (block_.blocked) speed_ = 0.0f;
     advance_swings(dt, level);
+    update_air_feet(ctx, body_, 1.0f, dt, true, feet_);  // feet reaching down over a drop, or to land
   }
+  const bool take_off_now = loco_.mode == Locomotion::kCrouch && advance_crouch(rig, params_, dt, loco_);
   place_body(dt, turned, level);                                              // 6 body placement
+  // 3 locomotion: take-off at the crouch's end (forwards at the speed asked for, even from a
+  // standstill at a step), stepping off the last foothold, or the end of a landing.
+  if (take_off_now) {
+    take_off(ctx, body_, {body_.facing * std::max(speed_, std::fabs(desired_velocity)), jump_speed(rig, params_)}, true, feet_, loco_);
+    block_.blocked = false;
+  } else if (!landing && unsupported(feet_)) {
+    take_off(ctx, body_, {body_.facing * speed_, 0.0f}, false, feet_, loco_);
+  } else if (landing && std::isnan(landing_root(loco_))) {
+    end_landing(level);
+  }
+  if (below_kill_height(level)) respawn(level);  // came down on a floor at the kill height
   build_pose(dt, level);                                                      // 7 IK, 8 limbs, 9 FK
+}
+
+bool Animator::below_kill_height(const Level& level) const {
+  // Where the feet would stand under the root: a creature standing on a floor at the kill
+  // height is below it once its legs give on landing.
+  return body_.root_y_ws - rig_->root_rest_y < level.kill_y();
+}
+
+void Animator::fly(float dt, const Level& level) {
+  const AnimContext ctx = context(level);
+  const bool touched = airborne_tick(ctx, dt, decay_.pitch, model_, body_boxes_, body_, feet_, loco_);
+  speed_ = std::fabs(loco_.vx);
+  body_state_.root_vy = loco_.vy;
+  if (below_kill_height(level)) {
+    respawn(level);
+  } else if (touched) {
+    begin_landing(ctx, body_, standing_root(ctx, placement_inputs(dt, false), feet_, body_), loco_);
+    gait_.moving = false;
+    place_body(dt, false, level);  // the clamps at once: no knee or girdle in the ground on touch-down
+  }
+}
+
+void Animator::end_landing(const Level& level) {
+  // Feet that found no ground as the body came down set down where they can.
+  loco_.mode = Locomotion::kGrounded;
+  const AnimContext ctx = context(level);
+  const FootholdInputs in{ctx, body_, gait_.stride, gait_.duty};
+  for (size_t i = 0; i < rig_->legs.size(); ++i) {
+    FootState& f = feet_.of_leg(static_cast<int>(i));
+    if (!f.air) continue;
+    f.air = false;
+    f.hang_beyond = NAN;
+    f.from_ws = f.pos_ws;
+    start_ease(in, static_cast<int>(i), f);
+  }
 }
 
 void Animator::step_legs(float dt, float ism, const Level& level) {
@@ -230,6 +319,7 @@ void Animator::step_legs(float dt, float ism, const Level& level) {
     idle_time_ += dt;
     for (size_t i = 0; i < rig.legs.size(); ++i) {
       FootState& f = feet_.of_leg(static_cast<int>(i));
+      if (f.air) continue;
       if (f.state == LegState::kSwing && !f.easing) start_ease(in, static_cast<int>(i), f);
       // A foot the body placement stretched past its reach steps to where it reaches, once,
       // rather than hang off its leg (and stays if there is no such place).
@@ -245,7 +335,9 @@ void Animator::step_legs(float dt, float ism, const Level& level) {
     const int leg = static_cast<int>(i);
     FootState& f = feet_.of_leg(leg);
     const LegPhase lp = advance_leg_phase(gait_, f, gait_.target_offset[i], starting, ism, dt);
-    if (f.state == LegState::kStance) {
+    if (f.air) {
+      // hanging over a drop (locomotion.h)
+    } else if (f.state == LegState::kStance) {
       bool lift = lp.lift_due || handoff_.lift_now[feet_.foot_of_leg[i]];
       // A foot left behind (a gait change, a shortened step) lifts before it would slide.
       const RigLeg& info = rig.legs[i];
@@ -256,8 +348,18 @@ void Animator::step_legs(float dt, float ism, const Level& level) {
         const glm::vec2 anchor = leg_anchor(ctx, body_, leg, contact, joint, f.stance_clear, &r);
         if (glm::length(anchor - joint) > kFootReach * r && anchor.x < joint.x) lift = true;
       }
-      if (lift && !set_new_splines(in, spline_prototypes_, gait_.run_factor, speed_, leg, f, std::max(1.0f - lp.phase, 0.05f))) {
-        block(leg);  // no foothold ahead (a wall too tall, a drop too deep) or the way walled off
+      const float swing_phase = std::max(1.0f - lp.phase, 0.05f);
+      if (lift && !set_new_splines(in, spline_prototypes_, gait_.run_factor, speed_, leg, f, swing_phase)) {
+        // No foothold ahead: over a drop deeper than the legs reach the foot steps off and
+        // reaches down past the edge; a wall too tall (or the way walled off) stops the creature.
+        float beyond;
+        if (drop_ahead(in, leg, f.pos_ws, landing_x(in, leg, speed_, swing_phase), &beyond)) {
+          f.floor = f.pos_ws.y - 0.01f;  // a fall that follows lands lower than this ledge
+          hang(ctx, body_, leg, 1.0f, f);
+          f.hang_beyond = beyond;
+        } else {
+          block(leg);
+        }
       }
     } else if (!f.easing) {
       f.progress += f.rate * dphi;
@@ -272,12 +374,11 @@ void Animator::advance_swings(float dt, const Level& level) {
   const SwingTick tick{dt, speed_, gait_.moving};
   for (size_t i = 0; i < rig_->legs.size(); ++i) {
     FootState& f = feet_.of_leg(static_cast<int>(i));
-    if (f.state == LegState::kSwing && advance_swing(in, tick, static_cast<int>(i), f)) ++steps_;
+    if (f.state == LegState::kSwing && !f.air && advance_swing(in, tick, static_cast<int>(i), f)) ++steps_;
   }
 }
 
-void Animator::place_body(float dt, bool turned, const Level& level) {
-  const AnimContext ctx = context(level);
+PlacementInputs Animator::placement_inputs(float dt, bool turned) const {
   PlacementInputs in;
   in.dt = dt;
   in.speed = speed_;
@@ -286,7 +387,13 @@ void Animator::place_body(float dt, bool turned, const Level& level) {
   in.turning = turned;
   in.keep_pitch = decay_.pitch;
   in.keep_root = decay_.root;
-  anim::place_body(ctx, in, feet_, body_, body_state_, handoff_);
+  in.crouch = loco_.mode == Locomotion::kCrouch ? loco_.crouch : 0.0f;
+  in.root = landing_root(loco_);
+  return in;
+}
+
+void Animator::place_body(float dt, bool turned, const Level& level) {
+  anim::place_body(context(level), placement_inputs(dt, turned), feet_, body_, body_state_, handoff_);
 }
 
 }  // namespace ossa

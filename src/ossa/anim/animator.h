@@ -7,6 +7,7 @@
 //   ground_profile    the level's top surface around the creature as a 1D height profile
 //   gait_clock        phase, gait blend by Froude, duty factor, stride, per-leg offsets
 //   turn              a command against the facing mirrors the creature in place
+//   locomotion        grounded → airborne → landing; the jump's crouch and take-off
 //   body_motion       how far the body moves: the wall sweep, then the legs' reach
 //   foothold          where a lifting foot lands (lift-off, stop, turn and reset alike)
 //   swing             the blended prototype mapped onto the plan, raised until it clears
@@ -26,6 +27,7 @@
 // Everything is deterministic: the same inputs give bit-identical poses.
 
 #include <array>
+#include <cstdint>
 #include <cmath>
 #include <memory>
 #include <vector>
@@ -36,6 +38,7 @@
 #include "ossa/anim/body_placement.h"
 #include "ossa/anim/gait_clock.h"
 #include "ossa/anim/ground_profile.h"
+#include "ossa/anim/locomotion.h"
 #include "ossa/anim/secondary_motion.h"
 #include "ossa/anim/spline_prototypes.h"
 #include "ossa/gen/creature.h"
@@ -43,6 +46,12 @@
 #include "ossa/skeleton/pose.h"
 
 namespace ossa {
+
+// What the creature is asked to do on one tick.
+struct AnimatorIntent {
+  float velocity = 0.0f;  // m/s, signed along x
+  bool jump = false;      // the jump button went down on this tick (a grounded creature jumps)
+};
 
 class Animator {
  public:
@@ -55,11 +64,19 @@ class Animator {
   Animator(std::shared_ptr<const AnimRig> rig, SplinePrototypes prototypes, AnimatorParams params = {});
 
   // Stands the creature on the ground below `position_ws` (x, and a height to search down
-  // from), feet under their girdles, facing +x (facing = 1) or -x (-1).
+  // from: spawn points lie on the ground, tools start a metre above), feet under their
+  // girdles, facing +x (facing = 1) or -x (-1). Ground further below than kResetSnap (or
+  // none) and the creature falls from `position_ws`, feet hanging, and lands. Clears the
+  // locomotion stats.
   void reset(glm::vec2 position_ws, const Level& level, int facing = 1);
+  // How far below the reset position the ground may lie for the creature to stand on it: this
+  // many hip heights, and at least kResetSnapMin metres.
+  static constexpr float kResetSnapOfHip = 2.0f, kResetSnapMin = 1.5f;
 
-  // One fixed step of dt seconds towards `desired_velocity` (m/s, signed along x).
-  void update(float dt, float desired_velocity, const Level& level);
+  // One fixed step of dt seconds towards intent.velocity, jumping when asked. A creature that
+  // falls below the level's kill height starts again at the level's spawn.
+  void update(float dt, const AnimatorIntent& intent, const Level& level);
+  void update(float dt, float desired_velocity, const Level& level) { update(dt, AnimatorIntent{desired_velocity, false}, level); }
 
   // ---- [T] tuning -------------------------------------------------------------------------
   const SplinePrototypes& spline_prototypes() const { return spline_prototypes_; }
@@ -102,9 +119,20 @@ class Animator {
   bool blocked() const { return block_.blocked; }
   int steps() const { return steps_; }                 // touch-downs so far
   float hip_height() const { return rig_->hip_height; } // h of the Froude number, metres
-  // Speeds at the walk and run reference Froude numbers (0.5 and 2.5), m/s.
+  // The walk's reference speed (Froude 0.5) and the full run's (Froude 2.5: a gallop for two
+  // or more leg pairs), m/s, and where the gaits change.
   float walk_speed() const { return anim::walk_speed(*rig_, params_); }
   float run_speed() const { return anim::run_speed(*rig_, params_); }
+  anim::GaitBands gait_bands() const { return anim::gait_bands(*rig_, params_); }
+
+  // ---- Locomotion mode (locomotion.h) -----------------------------------------------------
+  Locomotion locomotion() const { return loco_.mode; }
+  bool airborne() const { return loco_.mode == Locomotion::kAirborne; }
+  // Falls, jumps, landings, the highest fall and jump, seconds in the air since the reset.
+  const anim::LocomotionStats& locomotion_stats() const { return loco_.stats; }
+  // The root's vertical speed in the air and while landing, m/s (0 on the ground).
+  float vertical_speed() const { return loco_.mode == Locomotion::kAirborne || loco_.mode == Locomotion::kLanding ? loco_.vy : 0.0f; }
+  float root_y() const { return body_.root_y_ws; }     // world y of the root
 
   int leg_count() const { return static_cast<int>(rig_->legs.size()); }
   // [T] leg_state: stance or swing of leg i.
@@ -124,7 +152,7 @@ class Animator {
   bool easing(int leg) const { return feet_.of_leg(leg).easing; }
 
  private:
-  struct BlockState {                // the creature stopped at a wall, a drop or a gap
+  struct BlockState {                // the creature stopped at a wall or a step too tall
     bool blocked = false;
     int dir = 0;                     // the facing it stopped in
     int leg = 0;                     // the leg that found no foothold
@@ -141,7 +169,12 @@ class Animator {
   bool way_ahead_open(const Level& level, float speed);
   void step_legs(float dt, float ism, const Level& level);
   void advance_swings(float dt, const Level& level);
+  anim::PlacementInputs placement_inputs(float dt, bool turned) const;
   void place_body(float dt, bool turned, const Level& level);
+  void fly(float dt, const Level& level);
+  void end_landing(const Level& level);
+  void respawn(const Level& level);
+  bool below_kill_height(const Level& level) const;
   void build_pose(float dt, const Level& level);
   void body_fk();
 
@@ -159,6 +192,8 @@ class Animator {
   anim::TickHandoff handoff_;
   anim::TailSpring tail_;
   BlockState block_;
+  anim::LocomotionState loco_;
+  std::uint64_t level_revision_ = 0; // the level's revision the feet last stood on
   GroundProfile ground_;
   Decay decay_;
   float speed_ = 0.0f;               // m/s along the facing

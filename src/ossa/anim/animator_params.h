@@ -23,9 +23,11 @@ struct AnimatorParams {
   // Froude numbers Fr = v²/(g·h) where the walk→run blend starts and ends. [0.05, 3].
   float run_froude_start = 0.35f;
   float run_froude_end = 1.4f;
-  // Froude numbers of the quadruped gait changes walk→trot and trot→gallop [DESIGN.md §7].
+  // Froude numbers of the quadruped gait changes walk→trot and trot→gallop [DESIGN.md §7]; the
+  // gait blends over ±15% of the latter, so the full run (Fr 2.5, full stick with run) is a
+  // gallop (Alexander & Jayes: the trot–gallop transition lies near Fr 2–3).
   float trot_froude = 0.5f;
-  float gallop_froude = 2.5f;
+  float gallop_froude = 2.2f;
   GaitOverride gait_override = GaitOverride::kAuto;
 
   // Highest step up and deepest step down a foot may take: the step up as a fraction of the
@@ -51,7 +53,22 @@ struct AnimatorParams {
   float fin_beat = 0.12f;
   // Period of the idle breathing (prototype idle_y), seconds. [0.5, 10].
   float idle_period = 2.4f;
-  // Gravity for the Froude number, m/s².
+  // Jump (DESIGN.md §7): the root rises this many hip heights above where it takes off.
+  // [0.1, 4].
+  float jump_height = 1.0f;
+  // The crouch before a jump lowers the girdles by this many hip heights; it lasts
+  // jump_crouch_time √(hip height / g) seconds, so it follows the creature's size. [0, 0.5]
+  // and [0.5, 4].
+  float jump_crouch = 0.2f;
+  float jump_crouch_time = 1.2f;
+  // Landing: the legs give by this many hip heights after a fall of one hip height, growing
+  // with the speed of the fall (at most twice as much). [0, 0.5].
+  float landing_compression = 0.12f;
+  // A fall of more than this many hip heights (from the highest point to touch-down) is a
+  // hard landing: it still lands, giving twice as far, and is counted. [1, 100].
+  float hard_landing = 8.0f;
+
+  // Gravity for the Froude number and the airborne path, m/s².
   float gravity = 9.81f;
 };
 

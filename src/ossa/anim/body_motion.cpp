@@ -163,7 +163,7 @@ void body_boxes(const AnimRig& rig, const BodyFrame& body, const std::vector<Mat
 }
 
 BodyMotionResult sweep_body(const AnimContext& ctx, const BodyFrame& body, const std::vector<Mat2x3>& model_fs, float dx,
-                            std::vector<Box>& boxes) {
+                            std::vector<Box>& boxes, bool whole) {
   BodyMotionResult out;
   out.dx = dx;
   if (dx == 0.0f) return out;
@@ -176,7 +176,10 @@ BodyMotionResult sweep_body(const AnimContext& ctx, const BodyFrame& body, const
   // pitch. The whole body is swept first; only if that meets something, its parts one by one.
   const float support = body.root_y_ws - rig.root_rest_y * ctx.params.stance_height;
   const float slope = std::tan(body.pitch);
-  const glm::vec2 margin(kWallMargin + kWallMarginOfHip * hip, 0.0f);
+  // The margin lies ahead only: behind, the body moves away from what it is near (a tail
+  // still beside the ledge it came down from).
+  const float m = kWallMargin + kWallMarginOfHip * hip;
+  const glm::vec2 margin_lo(dx < 0.0f ? m : 0.0f, 0.0f), margin_hi(dx > 0.0f ? m : 0.0f, 0.0f);
   // A part's box as swept: from kSweepFloorOfHip above its bottom or a step above the ground
   // line under it (whichever is higher, at most its top). Ground the legs climb without a
   // step — a tile hill, read as a slope from the ground profile and walked from the root up to
@@ -188,6 +191,10 @@ BodyMotionResult sweep_body(const AnimContext& ctx, const BodyFrame& body, const
     const float line = support + std::min(a, b);
     const float hill = ctx.ground.slope_top(body.x_ws, std::min(box.min_ws.x, box.min_ws.x + dx),
                                             std::max(box.max_ws.x, box.max_ws.x + dx), reading);
+    if (whole) {  // in the air nothing is the legs' business
+      box.max_ws = glm::max(box.max_ws, box.min_ws + glm::vec2(1e-3f));
+      return box;
+    }
     box.min_ws.y = std::min(std::max(box.min_ws.y + kSweepFloorOfHip * hip, line + step_up), box.max_ws.y);
     if (hill > line) {
       box.min_ws.y += hill - line;
@@ -204,8 +211,8 @@ BodyMotionResult sweep_body(const AnimContext& ctx, const BodyFrame& body, const
   float top_y;
   bool near_something = true;
   if (body_bound_ws(rig, body, model_fs, &bound, &top_y)) {
-    const Box swept{{bound.min_ws.x - margin.x, std::min(bound.min_ws.y + kSweepFloorOfHip * hip, top_y)},
-                    {bound.max_ws.x + 1e-3f + margin.x, bound.max_ws.y + 1e-3f}};
+    const Box swept{{bound.min_ws.x - margin_lo.x, whole ? bound.min_ws.y : std::min(bound.min_ws.y + kSweepFloorOfHip * hip, top_y)},
+                    {bound.max_ws.x + 1e-3f + margin_hi.x, bound.max_ws.y + 1e-3f}};
     auto hit = level.sweep_box(swept, {dx, 0.0f});
     near_something = hit && hit->t < 1.0f;
   }
@@ -213,7 +220,7 @@ BodyMotionResult sweep_body(const AnimContext& ctx, const BodyFrame& body, const
   if (near_something) {
     body_boxes(rig, body, model_fs, false, &boxes);
     const Box all = swept_part(boxes[0]);
-    auto hit = level.sweep_box(Box{all.min_ws - margin, all.max_ws + margin}, {dx, 0.0f});
+    auto hit = level.sweep_box(Box{all.min_ws - margin_lo, all.max_ws + margin_hi}, {dx, 0.0f});
     if (hit && hit->t < 1.0f) body_boxes(rig, body, model_fs, !rig.body_slabs.empty(), &boxes);
     else boxes.clear();
   }
@@ -228,7 +235,7 @@ BodyMotionResult sweep_body(const AnimContext& ctx, const BodyFrame& body, const
     }
     // Walls (reaching above the body) are met a few centimetres early: arms and head settle
     // forward a little when the body stops.
-    if (auto wall = level.sweep_box(Box{box.min_ws - margin, box.max_ws + margin}, {dx, 0.0f});
+    if (auto wall = level.sweep_box(Box{box.min_ws - margin_lo, box.max_ws + margin_hi}, {dx, 0.0f});
         wall && wall->t < 1.0f && level.box(wall->index).top() > hi_y) {
       t = wall->t;
     }
@@ -248,6 +255,7 @@ float limit_by_legs(const AnimContext& ctx, const BodyFrame& body, const FootSet
   for (size_t i = 0; i < rig.legs.size(); ++i) {
     const int leg = static_cast<int>(i);
     const FootState& f = feet.of_leg(leg);
+    if (f.air) continue;  // hanging over a drop: it holds nothing back
     const RigLeg& info = rig.legs[i];
     const glm::vec2 joint = body.to_fs(body.girdle_ws(rig, info.girdle));
     const bool stance = f.state == LegState::kStance;

@@ -20,9 +20,10 @@ struct BodyMotionResult {
   bool hit_wall = false;   // the sweep met a wall (the creature is blocked)
 };
 
-// The wall sweep of dx. `boxes` is scratch.
+// The wall sweep of dx. `boxes` is scratch. whole: every part from its bottom (in the air,
+// where no obstacle is the legs' business).
 BodyMotionResult sweep_body(const AnimContext& ctx, const BodyFrame& body, const std::vector<Mat2x3>& model_fs, float dx,
-                            std::vector<Box>& boxes);
+                            std::vector<Box>& boxes, bool whole = false);
 
 // Limits dx so that the legs keep up; marks in handoff.lift_now the feet that must lift.
 float limit_by_legs(const AnimContext& ctx, const BodyFrame& body, const FootSet& feet, float dx, TickHandoff& handoff);

@@ -42,12 +42,20 @@ constexpr float kKneeMarginOfReach = 0.02f;
 constexpr float kKneeHalfWidth = 0.001f;
 // A single girdle's body looks this many seconds ahead for ground rising under its shoulder.
 constexpr float kShoulderLookAhead = 0.25f;
+// A foot hanging over a drop draws its girdle down to ground this many contact reaches below it.
+constexpr float kHangGroundOfReach = 1.5f, kHangDipOfRest = 0.35f;
 // A legless body follows the ground under it and this many seconds of travel ahead.
 constexpr float kLeglessLookAhead = 0.2f;
 // One tick raises no girdle by more than this many hip heights to clear a knee, in at most
 // kKneePasses passes.
 constexpr float kMaxKneeRaiseOfHip = 0.5f;
 constexpr int kKneePasses = 6;
+// A swinging knee's raise that would take a stance foot out of reach is halved up to this many
+// times (then dropped: the swing tucks the leg instead).
+constexpr int kSwingRaiseHalvings = 5;
+// ... while it leaves no stance foot further than this (metres; under the slip tolerance) beyond
+// its reach than it was.
+constexpr float kSwingRaiseSlack = 5e-4f;
 
 struct Placement {
   const AnimContext& ctx;
@@ -108,11 +116,28 @@ void girdle_heights(Placement& p, std::vector<float>& height) {
   for (size_t g = 0; g < rig.girdles.size(); ++g) {
     const RigGirdle& girdle = rig.girdles[g];
     float sum = 0.0f;
+    int count = 0;
     for (int leg : girdle.legs) {
       const FootState& f = p.feet.of_leg(leg);
+      if (f.air) {
+        // Hanging over a drop: the ground a leg's reach and a half below it, if any, draws the
+        // girdle down to it and a little lower, so the foot reaches it (a drop the legs can
+        // step down); else it holds nothing up.
+        const float r = rig.legs[leg].contact_reach;
+        if (auto below = ground_below(p.ctx.level, f.pos_ws.x - 0.01f, f.pos_ws.x + 0.01f, std::min(f.pos_ws.y, f.floor), kHangGroundOfReach * r)) {
+          sum += below->height_ws - kHangDipOfRest * girdle.rest_height;
+          ++count;
+        }
+        continue;
+      }
       sum += f.state == LegState::kStance ? f.pos_ws.y : f.from_ws.y + std::clamp(f.progress, 0.0f, 1.0f) * (f.to_ws.y - f.from_ws.y);
+      ++count;
     }
-    float ground = sum / static_cast<float>(girdle.legs.size());
+    if (count == 0) {  // every foot hangs: the girdle stays where it is
+      height[g] = p.body.girdle_ws(rig, static_cast<int>(g)).y;
+      continue;
+    }
+    float ground = sum / static_cast<float>(count);
     // On stairs the feet straddle steps; a girdle over a higher step rises with it, so the
     // knees stay clear of the step they pass over.
     const float gx = p.body.girdle_ws(rig, static_cast<int>(g)).x;
@@ -121,7 +146,7 @@ void girdle_heights(Placement& p, std::vector<float>& height) {
                                   params.max_step_up * girdle.step_height)) {
       ground = std::max(ground, 0.5f * (ground + below->height_ws));
     }
-    height[g] = ground + girdle.rest_height * params.stance_height + p.in.bob;
+    height[g] = ground + girdle.rest_height * params.stance_height + p.in.bob - p.in.crouch;
     // A foot waiting above a lower step (see the swing) brings its girdle down to it, but not
     // so far that a leg on the ground folds up (its knee would reach into the ground).
     float floor = -1e30f, lowest = height[g];
@@ -247,6 +272,21 @@ void keep_stance_legs_unfolded(Placement& p, std::vector<float>& room) {
   }
 }
 
+// How far the stance foot furthest out of its leg's reach is beyond it (≤ 0: all in reach).
+float stance_reach_excess(const Placement& p) {
+  const AnimRig& rig = p.ctx.rig;
+  float most = -1e30f;
+  for (size_t i = 0; i < rig.legs.size(); ++i) {
+    const FootState& f = p.feet.of_leg(static_cast<int>(i));
+    if (f.state != LegState::kStance) continue;
+    const glm::vec2 joint = p.body.to_fs(p.body.girdle_ws(rig, rig.legs[i].girdle));
+    float r;
+    const glm::vec2 anchor = leg_anchor(p.ctx, p.body, static_cast<int>(i), p.body.to_fs(f.pos_ws), joint, f.stance_clear, &r);
+    most = std::max(most, glm::length(anchor - joint) - r);
+  }
+  return most;
+}
+
 // 3. Nor kneel: a leg folded so far that its knee would touch the ground (sprawling legs on a
 // low body, or lifted in a swing) raises its girdle until the knee clears the ground under
 // it. A swinging leg's knee raises it only as far as the legs on the ground allow (their feet
@@ -302,6 +342,23 @@ void keep_knees_off_ground(Placement& p, std::vector<float>& stance_up, std::vec
     for (size_t g = 0; g < rig.girdles.size(); ++g) {
       const float up = std::min(std::max(stance_up[g], std::min(swing_up[g], room[g])), kMaxKneeRaiseOfHip * rig.hip_height);
       if (up <= 0.0f) continue;
+      if (up > stance_up[g]) {
+        // A raised end girdle turns the body about the other one, whose joint moves sideways
+        // a little: a swinging knee's raise must not take a stance foot out of reach (halved
+        // until it does not; a stance knee's raise stands, and its foot lifts, clamp 6).
+        const BodyFrame before = p.body;
+        const float allowed = std::max(stance_reach_excess(p), 0.0f) + kSwingRaiseSlack;
+        float tried = up;
+        for (int k = 0; k < kSwingRaiseHalvings; ++k, tried *= 0.5f) {
+          move_girdle(p, static_cast<int>(g), tried);
+          if (stance_reach_excess(p) <= allowed) break;
+          p.body = before;
+        }
+        if (p.body.root_y_ws == before.root_y_ws && p.body.pitch == before.pitch) continue;
+        room[g] = std::max(room[g] - tried, 0.0f);
+        moved = true;
+        continue;
+      }
       move_girdle(p, static_cast<int>(g), up);
       room[g] = std::max(room[g] - up, 0.0f);
       moved = true;
@@ -405,8 +462,8 @@ void place_body(const AnimContext& ctx, const PlacementInputs& in, const FootSet
     // The span looks kLeglessLookAhead seconds ahead, so that at speed the body has risen to a
     // step by the time it reaches it (the root height is smoothed).
     const float ahead = body.facing * in.speed * kLeglessLookAhead;
-    auto hit = ground_below(ctx.level, body.x_ws - rig.body_half_length + std::min(ahead, 0.0f),
-                            body.x_ws + rig.body_half_length + std::max(ahead, 0.0f), body.root_y_ws + rig.hip_height, 100.0f);
+    auto hit = ground_below(ctx.level, rig.body_lo_ws(body.x_ws, body.facing) + std::min(ahead, 0.0f),
+                            rig.body_hi_ws(body.x_ws, body.facing) + std::max(ahead, 0.0f), body.root_y_ws + rig.hip_height, 100.0f);
     if (in.dt > 0.0f) state.body_lift *= std::exp(-in.dt);
     target_root = (hit ? hit->height_ws : body.root_y_ws - rig.root_rest_y) + rig.root_rest_y + state.body_lift;
   } else {
@@ -416,7 +473,7 @@ void place_body(const AnimContext& ctx, const PlacementInputs& in, const FootSet
   const bool snap = in.snap || in.dt <= 0.0f;
   body.pitch = approach(body.pitch, target_pitch, snap ? 0.0f : in.keep_pitch);
   state.pitch_target = target_pitch;
-  body.root_y_ws = approach(body.root_y_ws, target_root, snap ? 0.0f : in.keep_root);
+  body.root_y_ws = std::isnan(in.root) ? approach(body.root_y_ws, target_root, snap ? 0.0f : in.keep_root) : in.root;
 
   keep_stance_legs_in_reach(p, need, room);
   keep_stance_legs_unfolded(p, room);
@@ -425,6 +482,25 @@ void place_body(const AnimContext& ctx, const PlacementInputs& in, const FootSet
   keep_body_out_of_ground(p, rig.girdles.empty() ? 0.0f : std::max(old_root - body.root_y_ws, 0.0f));
   release_overstretched_feet(p);
   state.root_vy = in.dt > 0.0f ? (body.root_y_ws - old_root) / in.dt : 0.0f;
+}
+
+float standing_root(const AnimContext& ctx, const PlacementInputs& in, const FootSet& feet, const BodyFrame& body) {
+  const AnimRig& rig = ctx.rig;
+  if (rig.girdles.empty()) {
+    auto hit = ground_below(ctx.level, rig.body_lo_ws(body.x_ws, body.facing), rig.body_hi_ws(body.x_ws, body.facing),
+                            body.root_y_ws + rig.hip_height, 100.0f);
+    return (hit ? hit->height_ws : body.root_y_ws - rig.root_rest_y) + rig.root_rest_y;
+  }
+  BodyFrame frame = body;
+  BodyState state;
+  TickHandoff handoff;
+  Placement p{ctx, in, feet, frame, state, handoff};
+  thread_local std::vector<float> height;
+  height.resize(rig.girdles.size());
+  girdle_heights(p, height);
+  float root = body.root_y_ws, pitch = 0.0f;
+  body_target(p, height, &root, &pitch);
+  return root;
 }
 
 }  // namespace ossa::anim

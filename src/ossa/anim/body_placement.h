@@ -17,6 +17,8 @@
 // Inputs: AnimContext, the feet, the gait, the bob; in/out: the body frame and BodyState.
 // Heights in world metres; angles radians.
 
+#include <cmath>
+
 #include "ossa/anim/anim_state.h"
 #include "ossa/anim/gait_clock.h"
 
@@ -36,9 +38,15 @@ struct PlacementInputs {
   bool turning = false;       // this tick mirrored the creature (swinging feet count as stance)
   float keep_pitch = 0.0f;    // smoothing exp(-rate·dt) of the pitch and the root height
   float keep_root = 0.0f;
+  float crouch = 0.0f;        // the girdles stand this much lower (a jump's crouch), metres
+  float root = NAN;           // a landing's descent: the root's height this tick, not smoothed
 };
 
 void place_body(const AnimContext& ctx, const PlacementInputs& in, const FootSet& feet, BodyFrame& body, BodyState& state,
                 TickHandoff& handoff);
+
+// The root height place_body aims for with the feet where they are, before its smoothing and
+// clamps (the standing height a landing comes down towards), metres.
+float standing_root(const AnimContext& ctx, const PlacementInputs& in, const FootSet& feet, const BodyFrame& body);
 
 }  // namespace ossa::anim

@@ -27,15 +27,6 @@ constexpr float kShortestAheadOfStride = 0.05f;
 constexpr float kRiserGapOfRest = 0.25f;
 constexpr float kShinSlope = 1.0f;
 
-// The foot's horizontal extent relative to its contact point, in world x (facing applied).
-struct FootSpan {
-  float lo = 0.0f, hi = 0.0f;
-};
-FootSpan foot_span_ws(const RigLeg& leg, int facing) {
-  const float a = facing * std::min({0.0f, leg.ankle_rel_ms.x, leg.tip_rel_ms.x});
-  const float b = facing * std::max({0.0f, leg.ankle_rel_ms.x, leg.tip_rel_ms.x});
-  return {std::min(a, b), std::max(a, b)};
-}
 // The height of the box a foot needs above its contact point.
 float foot_height(const RigLeg& leg) { return std::max({0.02f, leg.ankle_rel_ms.y, 0.3f * leg.foot_length}); }
 
@@ -68,6 +59,12 @@ bool riser_behind(const FootholdInputs& in, const RigLeg& info, float rest_heigh
 }
 
 }  // namespace
+
+FootSpan foot_span_ws(const RigLeg& leg, int facing) {
+  const float a = facing * std::min({0.0f, leg.ankle_rel_ms.x, leg.tip_rel_ms.x});
+  const float b = facing * std::max({0.0f, leg.ankle_rel_ms.x, leg.tip_rel_ms.x});
+  return {std::min(a, b), std::max(a, b)};
+}
 
 SlopeReading slope_reading(const GroundProfile& ground, float rest_height, float foot_length) {
   SlopeReading r;
@@ -210,6 +207,27 @@ bool find_landing(const FootholdInputs& in, int leg, glm::vec2 foot_ws, float x_
     return true;
   }
   return false;
+}
+
+bool drop_ahead(const FootholdInputs& in, int leg, glm::vec2 foot_ws, float x_wanted, float* hang_beyond) {
+  const AnimRig& rig = in.ctx.rig;
+  const RigLeg& info = rig.legs[leg];
+  const RigGirdle& girdle = rig.girdles[info.girdle];
+  const int facing = in.body.facing;
+  const float up = in.ctx.params.max_step_up * rig.climb_height;
+  const float down = in.ctx.params.max_step_down * girdle.rest_height;
+  const float lowest = std::min(foot_ws.y, in.body.girdle_ws(rig, info.girdle).y - girdle.rest_height) - down;
+  const FootSpan span = foot_span_ws(info, facing);
+  // Nothing rises a step above the foot between it and a little beyond the landing.
+  const float far = x_wanted + facing * std::max(span.hi - span.lo, 0.01f);
+  const float lo = std::min(foot_ws.x, far) + 0.001f, hi = std::max(foot_ws.x, far) - 0.001f;
+  if (lo < hi && in.ctx.level.overlaps(Box{{lo, foot_ws.y + up}, {hi, foot_ws.y + up + 0.001f}})) return false;
+  // No ground within the step limits over the landing and the shorter steps find_landing tried.
+  const float near = x_wanted - facing * kShortestAheadOfStride * in.stride;
+  if (ground_below(in.ctx.level, std::min(near, far), std::max(near, far), foot_ws.y + up, foot_ws.y + up - lowest)) return false;
+  // The whole foot over the groundless stretch: its back edge at `near`.
+  if (hang_beyond) *hang_beyond = near - (facing > 0 ? span.lo : span.hi);
+  return true;
 }
 
 float landing_x(const FootholdInputs& in, int leg, float speed, float swing_phase) {

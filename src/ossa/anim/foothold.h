@@ -32,6 +32,20 @@ inline glm::vec2 step_from(const FootState& f) { return f.state == LegState::kSw
 // foot, at most a quarter stride longer). False: no foothold (a wall too tall, a drop too deep).
 bool find_landing(const FootholdInputs& in, int leg, glm::vec2 foot_ws, float x_wanted, glm::vec2* landing);
 
+// When find_landing finds no foothold: is it a drop — no ground within the step limits where
+// the foot would land, and nothing rising more than a step between the foot and there — that
+// the creature steps off (locomotion.h), rather than a wall that stops it? *hang_beyond: the
+// world x the foot's contact point must pass (in the facing direction) for the whole foot to
+// hang over the drop.
+bool drop_ahead(const FootholdInputs& in, int leg, glm::vec2 foot_ws, float x_wanted, float* hang_beyond = nullptr);
+
+// The foot's horizontal extent relative to its contact point, world x (the facing applied):
+// back to the ankle, forward to the toe.
+struct FootSpan {
+  float lo = 0.0f, hi = 0.0f;
+};
+FootSpan foot_span_ws(const RigLeg& leg, int facing);
+
 // Where leg `leg` would land if it lifted now at `speed` m/s (swing_phase < 0: a full swing):
 // half a stance ahead of where its girdle will be at touch-down [T 4.4.1].
 float landing_x(const FootholdInputs& in, int leg, float speed, float swing_phase = -1.0f);

@@ -34,6 +34,8 @@ constexpr float kStrideFroudeExponent = 0.3f;
 constexpr float kStanceReachUse = 0.9f;
 // The stride is at least this many hip heights.
 constexpr float kMinStrideOfHip = 0.25f;
+// Froude number of the full run (full stick with run).
+constexpr float kRunFroude = 2.5f;
 // Phase offsets ease towards their targets at this many cycles per second (× the
 // interpolation speed multiplier).
 constexpr float kOffsetEaseRate = 0.6f;
@@ -41,7 +43,20 @@ constexpr float kOffsetEaseRate = 0.6f;
 }  // namespace
 
 float walk_speed(const AnimRig& rig, const AnimatorParams& params) { return std::sqrt(0.5f * params.gravity * rig.hip_height); }
-float run_speed(const AnimRig& rig, const AnimatorParams& params) { return std::sqrt(2.5f * params.gravity * rig.hip_height); }
+float run_speed(const AnimRig& rig, const AnimatorParams& params) { return std::sqrt(kRunFroude * params.gravity * rig.hip_height); }
+
+GaitBands gait_bands(const AnimRig& rig, const AnimatorParams& params) {
+  auto speed = [&](float froude) { return std::sqrt(std::max(froude, 0.0f) * params.gravity * rig.hip_height); };
+  GaitBands b;
+  if (rig.girdles.size() >= 2) {
+    b.trot = speed(params.trot_froude);
+    b.gallop = speed(params.gallop_froude);
+  } else if (!rig.girdles.empty()) {
+    b.run = speed(0.5f * (params.run_froude_start + params.run_froude_end));
+  }
+  b.full_run = run_speed(rig, params);
+  return b;
+}
 
 void update_gait(const AnimRig& rig, const AnimatorParams& params, float speed, float keep_run, float keep_gait,
                  GaitState& gait) {

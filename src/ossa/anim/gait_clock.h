@@ -66,9 +66,21 @@ struct LegPhase {
 };
 LegPhase advance_leg_phase(const GaitState& gait, FootState& foot, float target_offset, bool starting, float ism, float dt);
 
-// Walk and run reference speeds (Froude 0.5 and 2.5), m/s.
+// Walk and run reference speeds, m/s: the walk at Froude 0.5, the full run at 2.5 (for two or
+// more leg pairs inside the gallop band, params.gallop_froude).
 float walk_speed(const AnimRig& rig, const AnimatorParams& params);
 float run_speed(const AnimRig& rig, const AnimatorParams& params);
+
+// Where the gaits change, m/s: walk → trot and trot → gallop for two or more leg pairs (the
+// middles of their blends; 0 for bipeds and the legless), walk → run for bipeds (the middle
+// of the walk→run blend), and the full run. For the HUD and the tuning window.
+struct GaitBands {
+  float trot = 0.0f;
+  float gallop = 0.0f;
+  float run = 0.0f;       // walk → run (bipeds); 0 for two or more leg pairs
+  float full_run = 0.0f;  // run_speed()
+};
+GaitBands gait_bands(const AnimRig& rig, const AnimatorParams& params);
 
 }  // namespace anim
 }  // namespace ossa

@@ -22,6 +22,17 @@ void turn_round(const AnimContext& ctx, const SplinePrototypes& prototypes, floa
                 BodyFrame& body, FootSet& feet) {
   const AnimRig& rig = ctx.rig;
   const int n = static_cast<int>(rig.girdles.size());
+  // A foot hanging over a drop (locomotion.h) turns back with the creature: it steps under
+  // its girdle like any foot in the air (below).
+  std::vector<char> was_air(feet.feet.size(), 0);
+  for (size_t k = 0; k < feet.feet.size(); ++k) {
+    FootState& f = feet.feet[k];
+    if (!f.air) continue;
+    was_air[k] = 1;
+    f.air = false;
+    f.hang_beyond = NAN;
+    f.from_ws = f.to_ws = f.pos_ws;
+  }
   if (n > 0) {
     std::vector<int> old = feet.foot_of_leg;
     const float shift = rig.girdles.front().joint_ms.x + rig.girdles.back().joint_ms.x;
@@ -55,7 +66,10 @@ void turn_round(const AnimContext& ctx, const SplinePrototypes& prototypes, floa
     const float reach_x = kTurnReachUse * std::sqrt(std::max(info.contact_reach * info.contact_reach - h * h, 0.0f));
     const float joint_x = body.girdle_ws(rig, info.girdle).x;
     const bool foot_in_reach = std::fabs(f.pos_ws.x - joint_x) <= reach_x;
-    if (foot_in_reach && (f.state == LegState::kStance || std::fabs(f.to_ws.x - joint_x) <= reach_x)) continue;
+    if (!was_air[feet.foot_of_leg[i]] && foot_in_reach &&
+        (f.state == LegState::kStance || std::fabs(f.to_ws.x - joint_x) <= reach_x)) {
+      continue;
+    }
     if (!foot_in_reach) {  // from the nearest foot on the ground in reach, else from where it is
       const FootState* from = nullptr;
       for (const FootState& other : feet.feet) {

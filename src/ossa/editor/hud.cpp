@@ -32,7 +32,12 @@ void Hud::draw(const HudInfo& info) {
     ImGui::Text("%s", info.creature.c_str());
     ImGui::Separator();
     ImGui::Text("speed   %6.2f m/s  (walk %.2f, run %.2f)", info.speed, info.walk_speed, info.run_speed);
-    ImGui::Text("gait    %s", info.gait.c_str());
+    ImGui::Text("gait    %s  (%s)", info.gait.c_str(), info.locomotion.c_str());
+    if (info.gallop_speed > 0.0f) {
+      ImGui::Text("bands   walk < %.2f < trot < %.2f < gallop", info.trot_speed, info.gallop_speed);
+    } else if (info.biped_run_speed > 0.0f) {
+      ImGui::Text("bands   walk < %.2f < run", info.biped_run_speed);
+    }
     ImGui::Text("Froude  %6.2f", info.froude);
     const float f = fps();
     ImGui::Text("FPS     %6.1f  (%.2f ms)  sim %d Hz", f, f > 0.0f ? 1000.0f / f : 0.0f, info.tick_hz);
@@ -50,8 +55,8 @@ void Hud::draw(const HudInfo& info) {
     if (info.gif) ImGui::TextColored(ImVec4(1.0f, 0.6f, 0.2f, 1.0f), "GIF capture");
     if (!info.status.empty()) ImGui::TextWrapped("%s", info.status.c_str());
     ImGui::Separator();
-    ImGui::TextDisabled("A/D walk, Shift run, N next, M random, C character, H hud");
-    ImGui::TextDisabled("pad: Y next, X random, LB character, Back hud");
+    ImGui::TextDisabled("A/D walk, Shift run, Space/W/Up jump, N next, M random, C character, H hud");
+    ImGui::TextDisabled("pad: RB/RT run, A jump, Y next, X random, LB character, Back hud");
     ImGui::TextDisabled("F12/P shot, G gif, R replay, wheel zoom, Esc quit");
   }
   ImGui::End();

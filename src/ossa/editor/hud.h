@@ -13,8 +13,12 @@ struct HudInfo {
   std::string creature;        // the player's creature name
   float speed = 0.0f;          // m/s, signed (+ right)
   float walk_speed = 0.0f;     // m/s at Froude 0.5, for reference
-  float run_speed = 0.0f;      // m/s at Froude 2.5
+  float run_speed = 0.0f;      // m/s of the full run (Animator::run_speed())
+  // Where the gaits change, m/s (Animator::gait_bands()): walk → trot → gallop for two or
+  // more leg pairs, walk → run for bipeds; 0 where a creature has no such change.
+  float trot_speed = 0.0f, gallop_speed = 0.0f, biped_run_speed = 0.0f;
   std::string gait;            // gait_name(animator.gait())
+  std::string locomotion;      // locomotion_name(animator.locomotion()): grounded, airborne...
   float froude = 0.0f;         // v² / (g·h)
   int tick_hz = 120;           // simulation rate
   std::string input;           // "keyboard", the gamepad's name, "replay", "demo"

@@ -13,7 +13,7 @@ std::span<const TuningField> tuning_fields() {
   using P = AnimatorParams;
   // Ranges as documented in animator_params.h; the tail and crawl fields have none there,
   // so these are wide bounds around the defaults.
-  static const std::array<TuningField, 21> kFields = {{
+  static const std::array<TuningField, 26> kFields = {{
       {"step_distance_multiplier", "x stride", 0.3f, 2.0f, &P::step_distance_multiplier, "[T] scales the stride λ = 2.3·h·Fr^0.3"},
       {"interpolation_speed_multiplier", "x", 0.1f, 5.0f, &P::interpolation_speed_multiplier, "[T] how fast lean, height and gait blend ease"},
       {"max_spine_rotation", "rad", 0.0f, 0.6f, &P::max_spine_rotation, "[T] largest forward lean at full run"},
@@ -22,7 +22,7 @@ std::span<const TuningField> tuning_fields() {
       {"run_froude_start", "Fr", 0.05f, 3.0f, &P::run_froude_start, "Froude number where walk→run starts"},
       {"run_froude_end", "Fr", 0.05f, 3.0f, &P::run_froude_end, "Froude number where the blend reaches run"},
       {"trot_froude", "Fr", 0.05f, 3.0f, &P::trot_froude, "quadrupeds: walk→trot"},
-      {"gallop_froude", "Fr", 0.05f, 5.0f, &P::gallop_froude, "quadrupeds: trot→gallop"},
+      {"gallop_froude", "Fr", 0.05f, 5.0f, &P::gallop_froude, "quadrupeds: trot→gallop (the full run is at Fr 2.5)"},
       {"max_step_up", "x height", 0.05f, 1.0f, &P::max_step_up, "highest step up, of the shortest girdle's standing height (or 0.8 of a crouching leg's reach)"},
       {"max_step_down", "x height", 0.05f, 1.0f, &P::max_step_down, "deepest step down, of the standing height"},
       {"stance_height", "x rest", 0.7f, 1.05f, &P::stance_height, "girdle height, of its rest height"},
@@ -34,7 +34,12 @@ std::span<const TuningField> tuning_fields() {
       {"crawl_waves", "waves/body", 0.25f, 4.0f, &P::crawl_waves, "waves along a legless body"},
       {"fin_beat", "rad", 0.0f, 0.5f, &P::fin_beat, "amplitude of a fin's slow beat while moving"},
       {"idle_period", "s", 0.5f, 10.0f, &P::idle_period, "period of the idle breathing"},
-      {"gravity", "m/s^2", 1.0f, 30.0f, &P::gravity, "gravity of the Froude number"},
+      {"jump_height", "x hip", 0.1f, 4.0f, &P::jump_height, "how high a jump lifts the body, in hip heights"},
+      {"jump_crouch", "x hip", 0.0f, 0.5f, &P::jump_crouch, "how low the body crouches before a jump"},
+      {"jump_crouch_time", "x sqrt(h/g)", 0.5f, 4.0f, &P::jump_crouch_time, "how long the crouch lasts (follows the size)"},
+      {"landing_compression", "x hip", 0.0f, 0.5f, &P::landing_compression, "how far the legs give landing from one hip height"},
+      {"hard_landing", "x hip", 1.0f, 100.0f, &P::hard_landing, "a fall of more hip heights is a hard landing"},
+      {"gravity", "m/s^2", 1.0f, 30.0f, &P::gravity, "gravity of the Froude number and of falls"},
   }};
   return kFields;
 }

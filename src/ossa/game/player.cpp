@@ -38,8 +38,10 @@ float Entity::desired_velocity(const Controls& controls) const {
 }
 
 void Entity::step(float dt, const Controls& controls, const Level& level) {
+  // A jump when the button goes down (holding it does not jump again).
+  const bool jump = controls.jump && !controls_.jump;
   controls_ = controls;
-  animator_.update(dt, desired_velocity(controls), level);
+  animator_.update(dt, AnimatorIntent{desired_velocity(controls), jump}, level);
 }
 
 }  // namespace ossa

@@ -2,12 +2,13 @@
 // Replay — the Controls of every tick, so a session plays back bit-for-bit (DESIGN.md §8).
 // File (`.replay.json`, versioned; saved atomically):
 //
-//   { "format": "ossa.replay", "version": 1, "tick_hz": 120,
+//   { "format": "ossa.replay", "version": 2, "tick_hz": 120,
 //     "level": "levels/default.json",           // informational: where it was recorded
 //     "creature": { ...a .creature.json genome... },   // or, for a rigged character:
 //     "character": "assets/characters/humanoid.rig.json",  // its rig file (exactly one of the two)
 //     "spawn": [x, y], "facing": 1,
-//     "ticks": [[count, move_x, run], ...] }   // run-length encoded controls
+//     "ticks": [[count, move_x, run, jump], ...] }   // run-length encoded controls
+//                                        // (version 1, still read: [count, move_x, run])
 //
 // Playback: build the genome's creature (or load the character), spawn it at `spawn` on the
 // level, and step the world with the recorded controls; poses come out identical (same build).

@@ -39,13 +39,22 @@ Result<std::vector<ScriptSegment>> parse_script(std::string_view text) {
       if (parts.size() != 2 || !number(parts[1], &seg.seconds)) {
         return Error::at("--script", where, "expected stop:seconds");
       }
+    } else if (seg.mode == "jump") {
+      if (parts.size() > 2 || (parts.size() == 2 && !number(parts[1], &seg.seconds))) {
+        return Error::at("--script", where, "expected jump or jump:seconds");
+      }
+      if (parts.size() == 1) {  // one tick
+        out.push_back(seg);
+        ++index;
+        continue;
+      }
     } else if (seg.mode == "walk" || seg.mode == "run") {
       if (parts.size() != 3 || !number(parts[1], &seg.stick) || !number(parts[2], &seg.seconds)) {
         return Error::at("--script", where, "expected " + seg.mode + ":stick:seconds with numbers");
       }
       if (seg.stick < -1.0f || seg.stick > 1.0f) return Error::at("--script", where, "expected a stick in [-1, 1]");
     } else {
-      return Error::at("--script", where, "expected the mode walk, run or stop");
+      return Error::at("--script", where, "expected the mode walk, run, stop or jump");
     }
     if (!(seg.seconds > 0.0f) || seg.seconds > 86400.0f) {
       return Error::at("--script", where, "expected seconds in (0, 86400]");
@@ -64,18 +73,23 @@ SimResult run_script(Entity& entity, const Level& level, const std::vector<Scrip
   long long tick = 0;
   result.x_max_m = entity.animator().x();
   int blocked_ticks = 0;
+  Controls previous;
   for (const ScriptSegment& seg : script) {
-    const Controls controls = seg.controls();
+    const Controls controls = seg.controls(previous);
+    previous = controls;
     SegmentMetrics m;
     char text[96];
     if (seg.mode == "stop") {
       std::snprintf(text, sizeof text, "stop:%g", seg.seconds);
+    } else if (seg.mode == "jump") {
+      if (seg.seconds > 0.0f) std::snprintf(text, sizeof text, "jump:%g", seg.seconds);
+      else std::snprintf(text, sizeof text, "jump");
     } else {
       std::snprintf(text, sizeof text, "%s:%g:%g", seg.mode.c_str(), seg.stick, seg.seconds);
     }
     m.command = text;
     m.commanded_speed = entity.desired_velocity(controls);
-    const int ticks = static_cast<int>(std::lround(seg.seconds * tick_hz));
+    const int ticks = seg.ticks(tick_hz);
     const int warmup = std::min(ticks / 2, tick_hz);  // measure after the first second
     float x_start = entity.animator().x();
     double stride = 0, freq = 0, duty = 0, froude = 0;
@@ -89,6 +103,7 @@ SimResult run_script(Entity& entity, const Level& level, const std::vector<Scrip
       result.probe.observe(a, level);
       result.x_max_m = std::max(result.x_max_m, a.x());
       blocked_ticks += a.blocked() ? 1 : 0;
+      m.airborne_s += a.airborne() ? dt : 0.0f;
       if (t == warmup) x_start = a.x();
       if (t > warmup) {
         stride += a.stride_length();
@@ -126,6 +141,7 @@ SimResult run_script(Entity& entity, const Level& level, const std::vector<Scrip
   result.x_reached = entity.animator().x();
   result.blocked_s = static_cast<float>(blocked_ticks) * dt;
   result.steps = entity.animator().steps();
+  result.locomotion = entity.animator().locomotion_stats();
   return result;
 }
 
@@ -168,7 +184,9 @@ void SimProbe::observe(const Animator& a, const Level& level) {
     stance_anchor_.assign(legs, glm::vec2(0.0f));
     stance_since_.assign(legs, -1);
   }
-  const bool turned = last_facing_ != 0 && a.facing() != last_facing_;
+  // A turn, or a start again at the spawn, plants every foot anew.
+  const bool turned = (last_facing_ != 0 && a.facing() != last_facing_) || a.locomotion_stats().respawns != last_respawns_;
+  last_respawns_ = a.locomotion_stats().respawns;
   for (int i = 0; i < legs; ++i) {
     const glm::vec2 foot = a.foot_ws(i);
     if (a.leg_state(i) == LegState::kStance) {

@@ -4,6 +4,7 @@
 // creatures over a level; a SimProbe watches every tick for stance slip, penetration of
 // limbs into colliders, swing clearance, non-finite values and the pose hash.
 
+#include <cmath>
 #include <cstdint>
 #include <functional>
 #include <string>
@@ -19,12 +20,23 @@ namespace ossa {
 class Entity;
 
 struct ScriptSegment {
-  std::string mode;        // "walk", "run" or "stop"
+  std::string mode;        // "walk", "run", "stop" or "jump"
   float stick = 0.0f;      // [-1, 1]
-  float seconds = 0.0f;    // > 0
-  Controls controls() const { return {mode == "stop" ? 0.0f : stick, mode == "run"}; }
+  float seconds = 0.0f;    // > 0 (a one-tick "jump": 0)
+  // The controls of this segment after a segment with `previous` controls: a jump holds the
+  // jump button and keeps the stick and the run button as they were.
+  Controls controls(const Controls& previous = {}) const {
+    if (mode == "jump") return {previous.move_x, previous.run, true};
+    return {mode == "stop" ? 0.0f : stick, mode == "run", false};
+  }
+  // How many ticks it lasts at tick_hz (a one-tick "jump": 1).
+  int ticks(int tick_hz) const {
+    return mode == "jump" && seconds <= 0.0f ? 1 : static_cast<int>(std::lround(seconds * static_cast<float>(tick_hz)));
+  }
 };
-// Parses "mode:stick:seconds" segments separated by commas ("stop:seconds" for stops).
+// Parses "mode:stick:seconds" segments separated by commas ("stop:seconds" for stops;
+// "jump" presses the jump button for one tick, "jump:seconds" holds it, both keeping the stick
+// and the run button of the segment before).
 Result<std::vector<ScriptSegment>> parse_script(std::string_view text);
 
 struct SegmentMetrics {
@@ -38,6 +50,7 @@ struct SegmentMetrics {
   float froude = 0;
   std::string gait;           // most frequent gait in the window
   bool flight_phase = false;  // a tick with every foot in the air (moving segments)
+  float airborne_s = 0;       // s in the air (Animator::airborne(): jumps and falls)
 };
 
 // Watches an animator tick by tick.
@@ -55,6 +68,7 @@ class SimProbe {
   std::vector<glm::vec2> stance_anchor_;
   std::vector<int> stance_since_;
   int last_facing_ = 0;
+  int last_respawns_ = 0;
   uint64_t ticks_ = 0;
 };
 
@@ -71,6 +85,9 @@ struct SimResult {
   float blocked_s = 0.0f;   // s, simulated time with Animator::blocked() set after the tick
                             // (ticks × 1 / tick_hz): stopped at a wall, a step or a gap
   int steps = 0;
+  // Falls, jumps, hard landings, starts again below the kill height, the highest fall and
+  // jump, seconds in the air (Animator::locomotion_stats() after the last tick).
+  anim::LocomotionStats locomotion;
   float update_seconds = 0.0f;  // wall time spent in Entity::step
 };
 

@@ -49,8 +49,9 @@ class Level {
   std::string name;                     // shown in the editor; may be empty
   glm::vec2 spawn_ws{0.0f};             // where the player's creature starts (on the ground)
   std::optional<Background> background;
-  // A creature whose root falls below this height (world y, metres) has left the level and
-  // starts again at the spawn (a pit's floor may be it). Unset: kill_y()'s default.
+  // A creature that falls to this height (world y, metres: where its feet would stand under
+  // its root) has left the level and starts again at the spawn; a pit's floor may be it.
+  // Unset: kill_y()'s default.
   std::optional<float> kill_height_ws;
 
   Level() = default;

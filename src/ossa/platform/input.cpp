@@ -106,15 +106,15 @@ Controls Gamepad::controls() const {
   Controls c;
   if (!controller_) return c;
   c.move_x = stick().x;
-  c.run = SDL_GameControllerGetButton(controller_, SDL_CONTROLLER_BUTTON_A) != 0 ||
-          SDL_GameControllerGetButton(controller_, SDL_CONTROLLER_BUTTON_RIGHTSHOULDER) != 0 ||
+  c.run = SDL_GameControllerGetButton(controller_, SDL_CONTROLLER_BUTTON_RIGHTSHOULDER) != 0 ||
           SDL_GameControllerGetAxis(controller_, SDL_CONTROLLER_AXIS_TRIGGERRIGHT) > 16384;
+  c.jump = SDL_GameControllerGetButton(controller_, SDL_CONTROLLER_BUTTON_A) != 0;
   return c;
 }
 
 bool Gamepad::active() const {
   const Controls c = controls();
-  return c.move_x != 0.0f || c.run;
+  return c.move_x != 0.0f || c.run || c.jump;
 }
 
 // ---- Mouse and keyboard -------------------------------------------------------------------
@@ -136,6 +136,9 @@ void MouseKeyboardInput::handle_event(const SDL_Event& e, ActionPresses& presses
         case SDL_SCANCODE_RIGHT: key_right_ = down; break;
         case SDL_SCANCODE_LSHIFT: lshift_ = down; break;
         case SDL_SCANCODE_RSHIFT: rshift_ = down; break;
+        case SDL_SCANCODE_SPACE: key_space_ = down; break;
+        case SDL_SCANCODE_W: key_w_ = down; break;
+        case SDL_SCANCODE_UP: key_up_ = down; break;
         default: break;
       }
       if (down && e.key.repeat == 0) {
@@ -155,6 +158,7 @@ void MouseKeyboardInput::handle_event(const SDL_Event& e, ActionPresses& presses
       left_ = key_a_ || key_left_;
       right_ = key_d_ || key_right_;
       shift_ = lshift_ || rshift_;
+      jump_ = key_space_ || key_w_ || key_up_;
       break;
     }
     case SDL_MOUSEMOTION:
@@ -171,13 +175,14 @@ void MouseKeyboardInput::handle_event(const SDL_Event& e, ActionPresses& presses
 }
 
 void MouseKeyboardInput::release_all() {
-  key_a_ = key_d_ = key_left_ = key_right_ = lshift_ = rshift_ = false;
-  left_ = right_ = shift_ = false;
+  key_a_ = key_d_ = key_left_ = key_right_ = lshift_ = rshift_ = key_space_ = key_w_ = key_up_ = false;
+  left_ = right_ = shift_ = jump_ = false;
   mouse_buttons_ = 0;
 }
 
 Controls MouseKeyboardInput::controls() const {
   Controls c;
+  c.jump = jump_;
   const float dir = (right_ ? 1.0f : 0.0f) - (left_ ? 1.0f : 0.0f);
   if (dir == 0.0f) return c;
   c.move_x = dir * (shift_ ? 1.0f : 0.5f);

@@ -74,7 +74,8 @@ class Gamepad {
   glm::vec2 stick() const;
   // Stick x as move_x; run while A, the right shoulder or the right trigger is held.
   Controls controls() const;
-  // True when the stick is out of the dead zone or the run button is held.
+  // True when the stick is out of the dead zone or the run or jump button is held. A jumps;
+  // the right shoulder or trigger runs.
   bool active() const;
 
   float dead_zone = 0.15f;  // fraction of the stick's full throw, [0, 1)
@@ -93,9 +94,10 @@ class MouseKeyboardInput {
   // Forgets held keys (focus lost).
   void release_all();
 
-  // A/D or Left/Right: ±0.5 (walk); with Shift: ±1 and run. Both directions cancel.
+  // A/D or Left/Right: ±0.5 (walk); with Shift: ±1 and run. Both directions cancel. Space, W
+  // or Up: jump.
   Controls controls() const;
-  bool active() const { return left_ || right_; }
+  bool active() const { return left_ || right_ || jump_; }
   bool quit_requested() const { return quit_; }
   // Forgets a quit request (the game asked first and the user chose to stay).
   void clear_quit() { quit_ = false; }
@@ -111,9 +113,9 @@ class MouseKeyboardInput {
   }
 
  private:
-  bool left_ = false, right_ = false, shift_ = false;
+  bool left_ = false, right_ = false, shift_ = false, jump_ = false;
   bool key_a_ = false, key_d_ = false, key_left_ = false, key_right_ = false;
-  bool lshift_ = false, rshift_ = false;
+  bool lshift_ = false, rshift_ = false, key_space_ = false, key_w_ = false, key_up_ = false;
   bool quit_ = false;
   glm::vec2 mouse_px_{0.0f};
   uint32_t mouse_buttons_ = 0;
