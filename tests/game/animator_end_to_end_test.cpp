@@ -432,11 +432,7 @@ TEST_CASE("a blocked creature's planted feet do not move", "[game][anim]") {
       }
       blocked_runs += was_blocked ? 1 : 0;
       INFO(genomes[k].first << " on " << name);
-      // Known limit (README): the crocodile steps down into a dip of rough.json that its short
-      // legs cannot climb out of facing the other way; blocked there, one foot left deeper
-      // than its leg reaches jitters by up to 3.3 cm. Held to that, not let go.
-      const bool known = genomes[k].first == "crocodile" && std::string(name) == "rough.json";
-      CHECK(worst <= (known ? 0.035f : 0.001f));
+      CHECK(worst <= 0.001f);
     }
   }
   CHECK(blocked_runs >= 10);  // the walls, steps and ends of the levels do stop creatures

@@ -110,15 +110,15 @@ bool foot_fits(const FootholdInputs& in, int leg, glm::vec2 contact_ws) {
   return !in.ctx.level.overlaps(foot_box);
 }
 
-bool reaches(const FootholdInputs& in, int leg, glm::vec2 p_ws) {
+bool reaches(const FootholdInputs& in, int leg, glm::vec2 p_ws, float reach_use) {
   const RigLeg& info = in.ctx.rig.legs[leg];
   return glm::length(in.body.to_fs(p_ws) - in.body.to_fs(in.body.girdle_ws(in.ctx.rig, info.girdle))) <=
-         kFootReach * info.contact_reach;
+         reach_use * kFootReach * info.contact_reach;
 }
 
 namespace {
 
-bool nearest_fit_within(const FootholdInputs& in, int leg, glm::vec2 near_ws, glm::vec2* spot, bool in_reach) {
+bool nearest_fit_within(const FootholdInputs& in, int leg, glm::vec2 near_ws, glm::vec2* spot, bool in_reach, float reach_use) {
   // Centimetre by centimetre either way, up to half a leg's length, on ground within a step
   // (one every leg pair could follow up, as in find_landing).
   const AnimRig& rig = in.ctx.rig;
@@ -134,7 +134,7 @@ bool nearest_fit_within(const FootholdInputs& in, int leg, glm::vec2 near_ws, gl
     auto hit = ground_below(in.ctx.level, x + sole_lo, x + sole_hi, near_ws.y + up, up + down);
     if (!hit) continue;
     const glm::vec2 p(x, hit->height_ws);
-    if (in_reach && !reaches(in, leg, p)) continue;
+    if (in_reach && !reaches(in, leg, p, reach_use)) continue;
     if (foot_fits(in, leg, p)) {
       *spot = p;
       return true;
@@ -145,8 +145,9 @@ bool nearest_fit_within(const FootholdInputs& in, int leg, glm::vec2 near_ws, gl
 
 }  // namespace
 
-bool nearest_fit(const FootholdInputs& in, int leg, glm::vec2 near_ws, glm::vec2* spot, bool prefer_reach) {
-  return (prefer_reach && nearest_fit_within(in, leg, near_ws, spot, true)) || nearest_fit_within(in, leg, near_ws, spot, false);
+bool nearest_fit(const FootholdInputs& in, int leg, glm::vec2 near_ws, glm::vec2* spot, bool prefer_reach, float reach_use) {
+  return (prefer_reach && nearest_fit_within(in, leg, near_ws, spot, true, reach_use)) ||
+         nearest_fit_within(in, leg, near_ws, spot, false, reach_use);
 }
 
 bool find_landing(const FootholdInputs& in, int leg, glm::vec2 foot_ws, float x_wanted, glm::vec2* landing) {

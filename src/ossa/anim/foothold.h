@@ -54,12 +54,14 @@ float landing_x(const FootholdInputs& in, int leg, float speed, float swing_phas
 bool foot_fits(const FootholdInputs& in, int leg, glm::vec2 contact_ws);
 
 // The nearest place to near_ws (either way along the ground, up to half a leg's length) where
-// leg `leg`'s foot fits; prefer_reach: one the leg reaches from where its girdle is now, if
-// there is one.
-bool nearest_fit(const FootholdInputs& in, int leg, glm::vec2 near_ws, glm::vec2* spot, bool prefer_reach = false);
+// leg `leg`'s foot fits; prefer_reach: one the leg reaches (within reach_use of its reach)
+// from where its girdle is now, if there is one.
+bool nearest_fit(const FootholdInputs& in, int leg, glm::vec2 near_ws, glm::vec2* spot, bool prefer_reach = false,
+                 float reach_use = 1.0f);
 
-// Does leg `leg` reach p_ws (within kFootReach of its reach) from where its girdle is now?
-bool reaches(const FootholdInputs& in, int leg, glm::vec2 p_ws);
+// Does leg `leg` reach p_ws (within reach_use × kFootReach of its reach) from where its girdle
+// is now?
+bool reaches(const FootholdInputs& in, int leg, glm::vec2 p_ws, float reach_use = 1.0f);
 
 // How the ground profile is read for a girdle of rest height h whose shortest foot is f long
 // (SlopeReading): a run of treads narrower than kSlopeTreadOfRest·h with rises no higher than

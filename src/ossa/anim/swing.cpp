@@ -18,6 +18,9 @@ constexpr float kMaxRaiseOfLeg = 2.0f;
 constexpr int kRaiseIterations = 8;
 // Below this bump (near lift-off and touch-down) a needed raise counts as at this bump.
 constexpr float kMinBump = 0.1f;
+// A foot the body placement stretched past its reach steps to a spot within this fraction of
+// the reach (restep_in_reach).
+constexpr float kRestepReachUse = 0.9f;
 
 }  // namespace
 
@@ -169,9 +172,14 @@ void start_ease(const FootholdInputs& in, int leg, FootState& f, const glm::vec2
 }
 
 bool restep_in_reach(const FootholdInputs& in, int leg, FootState& f) {
-  const glm::vec2 joint = in.body.girdle_ws(in.ctx.rig, in.ctx.rig.legs[leg].girdle);
+  const RigLeg& info = in.ctx.rig.legs[leg];
+  const glm::vec2 joint = in.body.girdle_ws(in.ctx.rig, info.girdle);
   glm::vec2 spot;
-  if (!nearest_fit(in, leg, {joint.x, f.pos_ws.y}, &spot, true) || !reaches(in, leg, spot) ||
+  // Well within reach of the joint where it is now (a spot at the limit of the reach is where
+  // the foot came from: the body placement could not keep it), looked for from the ground the
+  // girdle stands over (a foot stretched down into a dip finds the ground beside it).
+  const float ground = std::max(f.pos_ws.y, joint.y - in.ctx.rig.girdles[info.girdle].rest_height * in.ctx.params.stance_height);
+  if (!nearest_fit(in, leg, {joint.x, ground}, &spot, true, kRestepReachUse) || !reaches(in, leg, spot, kRestepReachUse) ||
       glm::length(spot - f.pos_ws) < 1e-3f) {
     return false;
   }
