@@ -52,6 +52,8 @@ constexpr float kMaxKneeRaiseOfHip = 0.5f;
 constexpr int kKneePasses = 6;
 // A swinging knee's raise that would take a stance foot out of reach is halved up to this many
 // times (then dropped: the swing tucks the leg instead).
+// Ground this many climbable steps above the ground under a girdle is a wall to its keep-out.
+constexpr float kKeepOutStepsOfClimb = 1.5f;
 constexpr int kSwingRaiseHalvings = 5;
 // ... while it leaves no stance foot further than this (metres; under the slip tolerance) beyond
 // its reach than it was.
@@ -103,8 +105,14 @@ void move_girdle(Placement& p, int g, float dy) {
 // does not pop the body up by its height. Ground is looked for from half a rest height (plus
 // `extra`) above the joint; -1e30 where there is none.
 float girdle_keep_out(const AnimContext& ctx, glm::vec2 joint_ws, float rest, float extra) {
+  // Ground more than kKeepOutStepsOfClimb climbable steps above the ground the girdle stands
+  // over is a wall (the wall sweep stops the body at it), not ground to lift the body over: a
+  // creature turned round below a ledge would otherwise be lifted by the ledge's height as its
+  // shoulders near the face.
+  const float step = ctx.params.max_step_up * ctx.rig.climb_height;
+  const float top = std::min(joint_ws.y + 0.5f * rest, joint_ws.y - rest * ctx.params.stance_height + kKeepOutStepsOfClimb * step);
   return keep_out_height(ctx.level, joint_ws.x, kGirdleKeepOutHalfOfRest * rest, kGirdleKeepOutOfRest * rest,
-                         kKeepOutFadeOfRest * rest, joint_ws.y + 0.5f * rest + extra, 100.0f, ctx.hits);
+                         kKeepOutFadeOfRest * rest, top + extra, 100.0f, ctx.hits);
 }
 
 // Each girdle's target height: the mean ground under its feet (a swinging foot counts where
