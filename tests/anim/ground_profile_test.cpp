@@ -33,6 +33,30 @@ TEST_CASE("ground profile: every column is the level's ground below its span", "
   }
 }
 
+TEST_CASE("ground profile: may_rise_above never says no where the level has higher ground", "[anim][profile]") {
+  // The cheap test the body placement asks before a level query: when it answers false, the
+  // level has no box top above y (up to the profile's top) over the span.
+  int skipped = 0;
+  for (uint64_t seed = 1; seed <= 20; ++seed) {
+    const Level level = scenes::random_level(seed, 200);
+    const Box bounds = level.bounds();
+    const float x0 = bounds.min_ws.x + 0.37f * static_cast<float>(seed), x1 = x0 + 6.0f;
+    const float top = 0.5f * (bounds.min_ws.y + bounds.max_ws.y), depth = 3.0f;
+    GroundProfile profile;
+    profile.build(level, x0, x1, top, depth, 0.013f);
+    for (int k = 0; k < 400; ++k) {
+      const float a = x0 - 0.5f + 7.0f * static_cast<float>(k % 97) / 97.0f, b = a + 0.02f + 0.3f * static_cast<float>(k % 7) / 7.0f;
+      const float y = top - depth + depth * static_cast<float>(k % 13) / 12.0f;
+      if (profile.may_rise_above(a, b, y)) continue;
+      ++skipped;
+      const auto hit = level.ground_height_below(a, b, top, top - y);
+      INFO("seed " << seed << " span " << a << ".." << b << " y " << y);
+      CHECK((!hit || hit->height_ws <= y));
+    }
+  }
+  CHECK(skipped > 100);  // the test answers no often enough to matter
+}
+
 TEST_CASE("ground profile: a run of small steps reads as a slope, a real step keeps its riser", "[anim][profile]") {
   // 18°: 5 cm columns, each 1.6 cm higher, from flat ground at x = 2 up to a 3 m plateau.
   const Level tiles = test::tile_slope_level(2.0f, 40, 0.05f, 0.016f);

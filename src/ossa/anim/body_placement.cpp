@@ -150,8 +150,10 @@ void girdle_heights(Placement& p, std::vector<float>& height) {
     // knees stay clear of the step they pass over.
     const float gx = p.body.girdle_ws(rig, static_cast<int>(g)).x;
     const float half = kGirdleGroundHalfOfRest * girdle.rest_height;
-    if (auto below = ground_below(p.ctx.level, gx - half, gx + half, ground + params.max_step_up * girdle.step_height,
-                                  params.max_step_up * girdle.step_height)) {
+    if (auto below = p.ctx.ground.may_rise_above(gx - half, gx + half, ground)
+                         ? ground_below(p.ctx.level, gx - half, gx + half, ground + params.max_step_up * girdle.step_height,
+                                        params.max_step_up * girdle.step_height)
+                         : std::nullopt) {
       ground = std::max(ground, 0.5f * (ground + below->height_ws));
     }
     height[g] = ground + girdle.rest_height * params.stance_height + p.in.bob - p.in.crouch;

@@ -169,6 +169,7 @@ void hang(const AnimContext& ctx, const BodyFrame& body, int leg, float extensio
 }
 
 int update_air_feet(const AnimContext& ctx, const BodyFrame& body, float extension, float dt, bool reach_ground, FootSet& feet) {
+  if (std::none_of(feet.feet.begin(), feet.feet.end(), [](const FootState& f) { return f.air; })) return 0;
   const float keep = std::exp(-kAirEaseRate * dt);
   int planted = 0;
   for (size_t i = 0; i < ctx.rig.legs.size(); ++i) {
