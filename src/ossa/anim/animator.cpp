@@ -263,7 +263,7 @@ void Animator::update(float dt, const AnimatorIntent& intent, const Level& level
   if (take_off_now) {
     take_off(ctx, body_, {body_.facing * std::max(speed_, std::fabs(desired_velocity)), jump_speed(rig, params_)}, true, feet_, loco_);
     block_.blocked = false;
-  } else if (!landing && unsupported(feet_)) {
+  } else if (!landing && (rig.legs.empty() ? legless_over_drop(ctx, body_) : unsupported(feet_))) {
     take_off(ctx, body_, {body_.facing * speed_, 0.0f}, false, feet_, loco_);
   } else if (landing && std::isnan(landing_root(loco_))) {
     end_landing(level);

@@ -46,6 +46,8 @@ constexpr float kReachLeadSeconds = 0.12f;
 // descent takes at most this long.
 constexpr float kMaxCompressionOfHip = 0.35f;
 constexpr float kMaxDescentSeconds = 0.35f;
+// A legless body falls off a drop deeper than this share of its length.
+constexpr float kLeglessFallOfLength = 0.25f;
 // The crouch lasts at least this long, seconds.
 constexpr float kMinCrouchSeconds = 0.05f;
 
@@ -257,6 +259,18 @@ void take_off(const AnimContext& ctx, const BodyFrame& body, glm::vec2 velocity,
     if (jump && f.state == LegState::kStance && !front) continue;
     hang(ctx, body, static_cast<int>(i), 0.0f, f);
   }
+}
+
+bool legless_over_drop(const AnimContext& ctx, const BodyFrame& body) {
+  // Once the whole body has left a ledge, a drop deeper than a share of the body's length is
+  // fallen (a smaller one, or a tile slope, the body follows down).
+  const AnimRig& rig = ctx.rig;
+  const float ground = body.root_y_ws - rig.root_rest_y;
+  const float deepest = kLeglessFallOfLength * (rig.body_front - rig.body_back);
+  // (From above the root: a landing's compression may hold the root below its rest height.)
+  const float from = std::max(body.root_y_ws, ground) + 0.5f * rig.hip_height;
+  return !ground_below(ctx.level, rig.body_lo_ws(body.x_ws, body.facing), rig.body_hi_ws(body.x_ws, body.facing), from,
+                       from - (ground - deepest));
 }
 
 bool unsupported(const FootSet& feet) {

@@ -76,6 +76,9 @@ void take_off(const AnimContext& ctx, const BodyFrame& body, glm::vec2 velocity,
 
 // Is no foot on the ground and none about to land (every foot hangs in the air)?
 bool unsupported(const FootSet& feet);
+// Has a legless body crawled off a drop it falls (no ground within a quarter of its length
+// below it, under the whole body)?
+bool legless_over_drop(const AnimContext& ctx, const BodyFrame& body);
 
 // Where leg `leg`'s foot hangs in the air: under its girdle, tucked (extension 0) or reaching
 // for the ground (1), a front leg ahead and a hind leg behind.
