@@ -47,7 +47,7 @@ TEST_CASE("ground profile: may_rise_above never says no where the level has high
     for (int k = 0; k < 400; ++k) {
       const float a = x0 - 0.5f + 7.0f * static_cast<float>(k % 97) / 97.0f, b = a + 0.02f + 0.3f * static_cast<float>(k % 7) / 7.0f;
       const float y = top - depth + depth * static_cast<float>(k % 13) / 12.0f;
-      if (profile.may_rise_above(a, b, y)) continue;
+      if (profile.may_rise_above(a, b, y, top)) continue;
       ++skipped;
       const auto hit = level.ground_height_below(a, b, top, top - y);
       INFO("seed " << seed << " span " << a << ".." << b << " y " << y);

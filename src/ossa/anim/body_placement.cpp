@@ -66,6 +66,10 @@ struct Placement {
   BodyFrame& body;
   BodyState& state;
   TickHandoff& handoff;
+  // Clamp 1 left every stance foot within its leg's reach, the body as it was then: clamp 6
+  // has nothing to release while the later clamps do not move the body.
+  bool reach_checked = false;
+  float checked_root = 0.0f, checked_pitch = 0.0f;
 };
 
 // [SECTION] targets: girdle heights, pitch ----------------------------------------------------
@@ -104,15 +108,18 @@ void move_girdle(Placement& p, int g, float dy) {
 // less (keep_out_height), so that a bump's edge coming into reach as the body moves or turns
 // does not pop the body up by its height. Ground is looked for from half a rest height (plus
 // `extra`) above the joint; -1e30 where there is none.
-float girdle_keep_out(const AnimContext& ctx, glm::vec2 joint_ws, float rest, float extra) {
-  // Ground more than kKeepOutStepsOfClimb climbable steps above the ground the girdle stands
-  // over is a wall (the wall sweep stops the body at it), not ground to lift the body over: a
-  // creature turned round below a ledge would otherwise be lifted by the ledge's height as its
-  // shoulders near the face.
+// The highest ground a girdle's keep-out counts: ground more than kKeepOutStepsOfClimb
+// climbable steps above the ground the girdle stands over is a wall (the wall sweep stops the
+// body at it), not ground to lift the body over: a creature turned round below a ledge would
+// otherwise be lifted by the ledge's height as its shoulders near the face.
+float girdle_keep_out_top(const AnimContext& ctx, glm::vec2 joint_ws, float rest, float extra) {
   const float step = ctx.params.max_step_up * ctx.rig.climb_height;
-  const float top = std::min(joint_ws.y + 0.5f * rest, joint_ws.y - rest * ctx.params.stance_height + kKeepOutStepsOfClimb * step);
+  return std::min(joint_ws.y + 0.5f * rest, joint_ws.y - rest * ctx.params.stance_height + kKeepOutStepsOfClimb * step) + extra;
+}
+
+float girdle_keep_out(const AnimContext& ctx, glm::vec2 joint_ws, float rest, float extra) {
   return keep_out_height(ctx.level, joint_ws.x, kGirdleKeepOutHalfOfRest * rest, kGirdleKeepOutOfRest * rest,
-                         kKeepOutFadeOfRest * rest, top + extra, 100.0f, ctx.hits);
+                         kKeepOutFadeOfRest * rest, girdle_keep_out_top(ctx, joint_ws, rest, extra), 100.0f, ctx.hits);
 }
 
 // Each girdle's target height: the mean ground under its feet (a swinging foot counts where
@@ -150,7 +157,7 @@ void girdle_heights(Placement& p, std::vector<float>& height) {
     // knees stay clear of the step they pass over.
     const float gx = p.body.girdle_ws(rig, static_cast<int>(g)).x;
     const float half = kGirdleGroundHalfOfRest * girdle.rest_height;
-    if (auto below = p.ctx.ground.may_rise_above(gx - half, gx + half, ground)
+    if (auto below = p.ctx.ground.may_rise_above(gx - half, gx + half, ground, ground + params.max_step_up * girdle.step_height)
                          ? ground_below(p.ctx.level, gx - half, gx + half, ground + params.max_step_up * girdle.step_height,
                                         params.max_step_up * girdle.step_height)
                          : std::nullopt) {
@@ -222,6 +229,7 @@ void keep_stance_legs_in_reach(Placement& p, std::vector<float>& need, std::vect
   const AnimRig& rig = p.ctx.rig;
   const size_t n_groups = rig.girdles.size();
   for (int pass = 0; pass < 3; ++pass) {
+    bool beyond = false;  // a stance foot out of reach even level with the joint
     std::fill(need.begin(), need.end(), 0.0f);
     std::fill(room.begin(), room.end(), 1e30f);
     for (size_t i = 0; i < rig.legs.size(); ++i) {
@@ -234,8 +242,13 @@ void keep_stance_legs_in_reach(Placement& p, std::vector<float>& need, std::vect
       const glm::vec2 anchor = leg_anchor(p.ctx, p.body, static_cast<int>(i), p.body.to_fs(f.pos_ws), joint,
                                           f.state == LegState::kStance ? f.stance_clear : f.swing_clear, &r);
       const float dx = std::fabs(anchor.x - joint.x);
-      if (dx >= r) continue;
+      if (dx >= r) {
+        beyond = beyond || f.state == LegState::kStance;
+        continue;
+      }
       const float allowed = anchor.y + std::sqrt(r * r - dx * dx);
+      // (A joint further below the foot than the leg reaches is out of reach too.)
+      beyond = beyond || (f.state == LegState::kStance && 2.0f * anchor.y - allowed > joint.y);
       need[info.girdle] = std::max(need[info.girdle], joint.y - allowed);
       room[info.girdle] = std::min(room[info.girdle], allowed - joint.y);
       // A foot left behind and below (stairs) that drags the body down lifts on the next tick
@@ -249,7 +262,13 @@ void keep_stance_legs_in_reach(Placement& p, std::vector<float>& need, std::vect
     // the whole body, which keeps every joint's x.
     float most = 0.0f;
     for (float d : need) most = std::max(most, d);
-    if (most <= 0.0f) break;
+    if (most <= 0.0f) {
+      // Every stance foot within reach (need ≤ 0 is allowed ≥ joint.y: |anchor - joint| ≤ r).
+      p.reach_checked = !beyond;
+      p.checked_root = p.body.root_y_ws;
+      p.checked_pitch = p.body.pitch;
+      break;
+    }
     for (size_t g = 0; g < n_groups; ++g) {
       if (need[g] <= 0.0f) continue;
       if (pass < 2) move_girdle(p, static_cast<int>(g), -need[g]);
@@ -412,7 +431,15 @@ void keep_body_out_of_ground(Placement& p, float fell) {
   float raise = 0.0f;
   for (size_t g = 0; g < rig.girdles.size(); ++g) {
     const glm::vec2 joint = p.body.girdle_ws(rig, static_cast<int>(g));
-    raise = std::max(raise, girdle_keep_out(p.ctx, joint, rig.girdles[g].rest_height, fell) - joint.y);
+    const float rest = rig.girdles[g].rest_height;
+    // Ground within the window (twice its half, where claims fade) no higher than the keep
+    // below the joint cannot raise it: the ground profile says so without a level query.
+    const float half = 2.0f * kGirdleKeepOutHalfOfRest * rest;
+    if (!p.ctx.ground.may_rise_above(joint.x - half, joint.x + half, joint.y - kGirdleKeepOutOfRest * rest,
+                                     girdle_keep_out_top(p.ctx, joint, rest, fell))) {
+      continue;
+    }
+    raise = std::max(raise, girdle_keep_out(p.ctx, joint, rest, fell) - joint.y);
   }
   auto keep_shoulder_out = [&](const RigLimb& limb) {
     raise = std::max(raise, shoulder_need(p, p.body.body_point_ws(rig, bone_start(rig.model_rest[limb.bones[0]])), fell));
@@ -436,6 +463,7 @@ void keep_body_out_of_ground(Placement& p, float fell) {
 // a higher step lifts the body while another girdle's feet stand lower): such a foot lifts at
 // the next chance instead of sliding (the gait clock reads the hand-off).
 void release_overstretched_feet(Placement& p) {
+  if (p.reach_checked && p.body.root_y_ws == p.checked_root && p.body.pitch == p.checked_pitch) return;
   const AnimRig& rig = p.ctx.rig;
   for (size_t i = 0; i < rig.legs.size(); ++i) {
     const FootState& f = p.feet.of_leg(static_cast<int>(i));

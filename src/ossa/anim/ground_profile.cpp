@@ -50,8 +50,8 @@ bool GroundProfile::covers(const Level& level, float x0_ws, float x1_ws, float l
          x1_ws <= x0_ + static_cast<float>(size()) * step_ && hi_ws <= top_ && lo_ws >= top_ - depth_;
 }
 
-bool GroundProfile::may_rise_above(float a_ws, float b_ws, float y) const {
-  if (heights_.empty() || a_ws < x0_ || b_ws > x0_ + static_cast<float>(size() - 1) * step_ || y >= top_) return true;
+bool GroundProfile::may_rise_above(float a_ws, float b_ws, float y, float up_to) const {
+  if (heights_.empty() || a_ws < x0_ || b_ws > x0_ + static_cast<float>(size() - 1) * step_ || up_to > top_) return true;
   const int last = column_of(b_ws);
   for (int i = column_of(a_ws); i <= last; i = run_last_[i] + 1) {
     if (heights_[i] > y) return true;  // (NaN, no ground, is not higher)

@@ -50,10 +50,11 @@ class GroundProfile {
   float column(int i) const { return heights_[i]; }
   // The column holding x (clamped to the profile).
   int column_of(float x_ws) const;
-  // May the level have ground higher than y over [a_ws, b_ws] (a box top in y .. top())? False
+  // May the level have ground higher than y over [a_ws, b_ws] (a box top in y .. up_to)? False
   // only when every column touching the span is known and no higher: a cheap test before an
-  // exact level query (a span the profile does not hold gives true).
-  bool may_rise_above(float a_ws, float b_ws, float y) const;
+  // exact level query for tops up to up_to (a span or a band the profile does not hold gives
+  // true).
+  bool may_rise_above(float a_ws, float b_ws, float y, float up_to) const;
 
   // The surface under x read as a slope: the height of the line through the middles of the
   // treads either side (a tread is a run of columns at one height), when x's tread is narrower
