@@ -198,3 +198,45 @@ TEST_CASE("the humanoid exported to DAE and ASCII FBX walks with the same pose h
   }
   fs::remove_all(dir);
 }
+
+TEST_CASE("both characters walk off each ledge of drops.json, land clean and jump", "[render][character][locomotion]") {
+  // As every example animal does (tests/game/locomotion_test.cpp): from a little before each
+  // edge (0.3, 1, 2 and 4 m) on until past it and standing below; then a standing jump.
+  const Level level = shipped("drops.json");
+  const float edges[] = {6.0f, 12.0f, 18.0f, 26.0f};
+  const float tops[] = {7.3f, 7.0f, 6.0f, 4.0f};
+  for (const char* name : {"humanoid", "dog"}) {
+    const LoadedCharacter c = load(name);
+    for (int e = 0; e < 4; ++e) {
+      Player player(c.character, SplinePrototypes::defaults());
+      Animator& a = player.animator();
+      a.reset({edges[e] - 0.6f - a.rig().body_front, tops[e] + 0.5f}, level);
+      SimProbe probe;
+      const float past = edges[e] + a.rig().body_front - a.rig().body_back + 0.3f;
+      int grounded = 0;
+      bool done = false;
+      for (int t = 0; t < 120 * 60 && !done; ++t) {
+        player.step(1.0f / 120.0f, {0.5f, false, false}, level);
+        probe.observe(a, level);
+        grounded = a.locomotion() == Locomotion::kGrounded ? grounded + 1 : 0;
+        done = a.x() > past && a.root_y() - a.rig().root_rest_y < tops[e] - 0.2f && grounded > 60;
+      }
+      INFO(name << " over the ledge at x " << edges[e] << ": x " << a.x() << ", root y " << a.root_y());
+      CHECK(done);
+      CHECK(probe.max_penetration_m <= 0.001f);
+      CHECK(probe.nan_count == 0);
+      CHECK(a.locomotion_stats().respawns == 0);
+      // A standing jump on the ground below: it rises its jump height and lands again.
+      if (e == 3) {
+        for (int t = 0; t < 120 * 3; ++t) {
+          player.step(1.0f / 120.0f, {0.0f, false, t == 0}, level);
+          probe.observe(a, level);
+        }
+        CHECK(a.locomotion_stats().jumps == 1);
+        CHECK(a.locomotion_stats().max_jump_height_m == Approx(a.params().jump_height * a.hip_height()).epsilon(0.02));
+        CHECK(a.locomotion() == Locomotion::kGrounded);
+        CHECK(probe.max_penetration_m <= 0.001f);
+      }
+    }
+  }
+}
