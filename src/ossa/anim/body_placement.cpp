@@ -52,6 +52,9 @@ constexpr float kMaxKneeRaiseOfHip = 0.5f;
 constexpr int kKneePasses = 6;
 // A swinging knee's raise that would take a stance foot out of reach is halved up to this many
 // times (then dropped: the swing tucks the leg instead).
+// Clamp 1 vouches for a stance foot's reach (so clamp 6 need not test it) only this far inside
+// it, metres.
+constexpr float kReachCheckSlack = 1e-4f;
 // Ground this many climbable steps above the ground under a girdle is a wall to its keep-out.
 constexpr float kKeepOutStepsOfClimb = 1.5f;
 constexpr int kSwingRaiseHalvings = 5;
@@ -247,8 +250,10 @@ void keep_stance_legs_in_reach(Placement& p, std::vector<float>& need, std::vect
         continue;
       }
       const float allowed = anchor.y + std::sqrt(r * r - dx * dx);
-      // (A joint further below the foot than the leg reaches is out of reach too.)
-      beyond = beyond || (f.state == LegState::kStance && 2.0f * anchor.y - allowed > joint.y);
+      // (A joint further below the foot than the leg reaches is out of reach too; a foot within
+      // kReachCheckSlack of its reach is left to clamp 6's own test, whose rounding differs.)
+      beyond = beyond || (f.state == LegState::kStance &&
+                          (2.0f * anchor.y - allowed > joint.y - kReachCheckSlack || joint.y > allowed - kReachCheckSlack));
       need[info.girdle] = std::max(need[info.girdle], joint.y - allowed);
       room[info.girdle] = std::min(room[info.girdle], allowed - joint.y);
       // A foot left behind and below (stairs) that drags the body down lifts on the next tick
