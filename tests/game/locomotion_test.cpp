@@ -201,3 +201,30 @@ TEST_CASE("a step too tall to climb stops a walk; a running jump lands on it", "
   CHECK(probe.max_stance_slip_m <= 0.001f);
   CHECK(probe.nan_count == 0);
 }
+
+TEST_CASE("a jump into a wall stops horizontally at it without entering it", "[game][anim][locomotion]") {
+  // drops.json's left wall (x 0, 2.7 m above the first ledge) is taller than any jump: walking
+  // left into it blocks the horse; a jump there with the stick held rises and comes down in
+  // front of it, no limb in it.
+  const Level level = drops();
+  Player player(std::make_shared<const Creature>(scenes::quadruped()), SplinePrototypes::defaults());
+  Animator& a = player.animator();
+  a.reset({3.0f, 7.8f}, level);
+  SimProbe probe;
+  REQUIRE(step_until(player, level, {-0.5f, false, false}, 10.0f, probe, [&] { return a.facing() < 0 && a.blocked(); }));
+  const float x_blocked = a.x();
+  step_until(player, level, {-0.5f, false, true}, kDt, probe, [] { return true; });
+  bool flew = false;
+  float x_min = x_blocked;
+  step_until(player, level, {-0.5f, false, false}, 3.0f, probe, [&] {
+    flew = flew || a.airborne();
+    x_min = std::min(x_min, a.x());
+    return false;
+  });
+  CHECK(flew);
+  CHECK(a.locomotion_stats().jumps == 1);
+  CHECK(a.locomotion() == Locomotion::kGrounded);
+  CHECK(x_min > x_blocked - 0.1f);  // stopped horizontally at the wall
+  CHECK(probe.max_penetration_m <= 0.001f);
+  CHECK(probe.nan_count == 0);
+}
