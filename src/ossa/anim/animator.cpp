@@ -33,12 +33,10 @@ constexpr float kResetSearchOfHip = 2.0f;
 // The ground profile: columns a tenth of the shortest foot-or-leg size wide (at least 5 mm,
 // at most 2 cm); its window reaches this many body lengths plus strides either side and
 // this many hip heights above and below the root.
-constexpr float kProfileStepOfFoot = 0.1f;
-constexpr float kProfileSpanStrides = 2.0f;
-// ...of strides at least this many hip heights long (a walk's), so that a creature setting off
-// does not need a wider window at once.
-constexpr float kProfileStrideOfHip = 2.5f;
-constexpr float kProfileAboveOfHip = 1.0f, kProfileBelowOfHip = 4.0f;
+constexpr float kProfileStepOfFoot = 0.1f, kProfileSpanStrides = 2.0f;
+// ...of strides at least this many hip heights long (a walk's: a creature setting off needs
+// no wider window at once).
+constexpr float kProfileStrideOfHip = 2.5f, kProfileAboveOfHip = 1.0f, kProfileBelowOfHip = 4.0f;
 
 }  // namespace
 
@@ -243,6 +241,9 @@ void Animator::update(float dt, const AnimatorIntent& intent, const Level& level
   const BodyMotionResult swept = sweep_body(ctx, body_, model_, dx, body_boxes_);
   if (swept.hit_wall) block(-1);
   dx = limit_by_legs(ctx, body_, feet_, swept.dx, handoff_);
+  const float ledge = limit_by_ledges(ctx, body_, feet_, gait_.stride, dx);  // a face it cannot climb
+  if (ledge == 0.0f && dx != 0.0f) block(-1);
+  dx = ledge;
   body_.x_ws += dx;
 
   if (rig.legs.empty()) {

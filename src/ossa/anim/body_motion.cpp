@@ -296,4 +296,48 @@ float limit_by_legs(const AnimContext& ctx, const BodyFrame& body, const FootSet
   return dx;
 }
 
+float limit_by_ledges(const AnimContext& ctx, const BodyFrame& body, const FootSet& feet, float stride, float dx) {
+  const AnimRig& rig = ctx.rig;
+  const GroundProfile& ground = ctx.ground;
+  if (dx == 0.0f || ground.empty() || rig.girdles.empty()) return dx;
+  const float up = ctx.params.max_step_up * rig.climb_height;
+  const float margin = kWallMargin + kWallMarginOfHip * rig.hip_height;
+  float move = std::fabs(dx);
+  for (size_t g = 0; g < rig.girdles.size(); ++g) {
+    const RigGirdle& girdle = rig.girdles[g];
+    // The girdle's feet: the lowest on the ground (none: it stands where its joint says).
+    float feet_y = 1e30f;
+    for (int leg : girdle.legs) {
+      const FootState& f = feet.of_leg(leg);
+      if (f.state == LegState::kStance && !f.air) feet_y = std::min(feet_y, f.pos_ws.y);
+    }
+    if (feet_y > 1e29f) continue;
+    const float x = body.girdle_ws(rig, static_cast<int>(g)).x;
+    const float high = feet_y + up + kGroundEpsilon;
+    // Already over higher ground: not this rule's business (a creature that climbed or landed).
+    const int at = ground.column_of(x);
+    if (!(ground.column(at) <= high)) continue;
+    const int dir = body.facing;
+    const int reach = static_cast<int>(std::ceil((move + margin) / ground.step())) + 1;
+    const int span = std::max(1, static_cast<int>(std::ceil(stride / ground.step())));
+    for (int k = 1; k <= reach; ++k) {
+      const int i = at + dir * k;
+      if (i < 0 || i >= ground.size()) break;
+      if (!(ground.column(i) > high)) continue;
+      // A riser: a ledge if the ground stays high for a stride beyond it.
+      bool ledge = true;
+      for (int j = 0; j < span && ledge; ++j) {
+        const int c = i + dir * j;
+        if (c < 0 || c >= ground.size()) break;
+        ledge = ground.column(c) > high;
+      }
+      if (!ledge) continue;
+      const float face = ground.x0() + ground.step() * static_cast<float>(dir > 0 ? i : i + 1);
+      move = std::min(move, std::max(0.0f, dir * (face - x) - margin));
+      break;
+    }
+  }
+  return body.facing * move;
+}
+
 }  // namespace ossa::anim

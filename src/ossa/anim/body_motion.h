@@ -28,6 +28,13 @@ BodyMotionResult sweep_body(const AnimContext& ctx, const BodyFrame& body, const
 // Limits dx so that the legs keep up; marks in handoff.lift_now the feet that must lift.
 float limit_by_legs(const AnimContext& ctx, const BodyFrame& body, const FootSet& feet, float dx, TickHandoff& handoff);
 
+// Limits dx so that no girdle joint passes over the face of a ledge its legs cannot climb: a
+// riser (ground profile) ahead of the joint beyond which the ground stays more than a
+// climbable step above the girdle's feet for a whole stride. A high body would otherwise pass
+// over the ledge's top with its feet below (a bird walking back to a ledge it came down), and
+// its legs would cross the ledge's corner. A bump the feet step over is not a ledge.
+float limit_by_ledges(const AnimContext& ctx, const BodyFrame& body, const FootSet& feet, float stride, float dx);
+
 // World boxes of the body's parts: slabs of the spine, head, arms, fins (slabs = true), or one
 // box around them all.
 void body_boxes(const AnimRig& rig, const BodyFrame& body, const std::vector<Mat2x3>& model_fs, bool slabs,
