@@ -228,3 +228,34 @@ TEST_CASE("a jump into a wall stops horizontally at it without entering it", "[g
   CHECK(probe.max_penetration_m <= 0.001f);
   CHECK(probe.nan_count == 0);
 }
+
+TEST_CASE("every example animal with legs jumps its jump height from a standstill and lands clean", "[game][anim][locomotion]") {
+  // Birds' crouched legs reach much further than they stand: their feet must still leave the
+  // ground (they stayed planted through the whole jump, and the body came down through the
+  // floor). Legless animals have nothing to push off with and do not jump.
+#if defined(__SANITIZE_ADDRESS__)
+  const int every = 4;
+#else
+  const int every = 1;
+#endif
+  const Level flat = scenes::flat_level(40.0f);
+  int n = 0;
+  for (const Animal& animal : scenes::generator().dataset().animals) {
+    if (n++ % every != 0) continue;
+    Player player(example(animal.name), SplinePrototypes::defaults());
+    Animator& a = player.animator();
+    if (a.leg_count() == 0) continue;
+    a.reset({5.0f, 0.5f}, flat);
+    SimProbe probe;
+    step_until(player, flat, {}, 1.0f, probe, [] { return false; });
+    step_until(player, flat, {0.0f, false, true}, kDt, probe, [] { return true; });
+    step_until(player, flat, {}, 3.0f, probe, [] { return false; });
+    INFO(animal.name);
+    CHECK(a.locomotion_stats().jumps == 1);
+    CHECK(a.locomotion_stats().max_jump_height_m == Approx(a.params().jump_height * a.hip_height()).epsilon(0.02));
+    CHECK(a.locomotion() == Locomotion::kGrounded);
+    CHECK(probe.max_penetration_m <= 0.001f);
+    CHECK(probe.max_stance_slip_m <= 0.001f);
+    CHECK(probe.nan_count == 0);
+  }
+}

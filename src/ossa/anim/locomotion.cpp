@@ -46,6 +46,8 @@ constexpr float kReachLeadSeconds = 0.12f;
 // descent takes at most this long.
 constexpr float kMaxCompressionOfHip = 0.35f;
 constexpr float kMaxDescentSeconds = 0.35f;
+// A jump's feet leave the ground once their legs are this many times their standing length.
+constexpr float kPushOffOfStanding = 1.15f;
 // A legless body falls off a drop deeper than this share of its length.
 constexpr float kLeglessFallOfLength = 0.25f;
 // The crouch lasts at least this long, seconds.
@@ -170,7 +172,8 @@ void hang(const AnimContext& ctx, const BodyFrame& body, int leg, float extensio
   f.swing_clear = Clearance{};  // knows nothing: the leg IK tests the hanging leg against the level
 }
 
-int update_air_feet(const AnimContext& ctx, const BodyFrame& body, float extension, float dt, bool reach_ground, FootSet& feet) {
+int update_air_feet(const AnimContext& ctx, const BodyFrame& body, float extension, float dt, bool reach_ground, FootSet& feet,
+                    bool may_land) {
   if (std::none_of(feet.feet.begin(), feet.feet.end(), [](const FootState& f) { return f.air; })) return 0;
   const float keep = std::exp(-kAirEaseRate * dt);
   int planted = 0;
@@ -209,7 +212,7 @@ int update_air_feet(const AnimContext& ctx, const BodyFrame& body, float extensi
       const float from = f.pos_ws.y + 1e-3f;
       if (auto hit = ground_below(ctx.level, next.x + span.lo, next.x + span.hi, from, from - next.y + 1e-3f);
           hit && hit->height_ws >= next.y - 1e-3f) {
-        if (hit->height_ws < f.floor) {
+        if (hit->height_ws < f.floor && may_land) {
           plant(ctx, f, {next.x, hit->height_ws});
           ++planted;
           continue;
@@ -314,7 +317,9 @@ bool airborne_tick(const AnimContext& ctx, float dt, float keep_level, const std
   loco.top_y = std::max(loco.top_y, y);
   body.pitch = approach(body.pitch, 0.0f, keep_level);
   body.lean = approach(body.lean, 0.0f, keep_level);
-  // Feet still on the ground push off until their legs are stretched.
+  // Feet still on the ground push off until their legs are stretched past their standing
+  // length (a bird's crouched legs reach much further than they stand: they leave the ground
+  // long before they are straight), or the reach, and none stays once the body comes down.
   for (size_t i = 0; i < rig.legs.size(); ++i) {
     const int leg = static_cast<int>(i);
     FootState& f = feet.of_leg(leg);
@@ -322,11 +327,13 @@ bool airborne_tick(const AnimContext& ctx, float dt, float keep_level, const std
     const glm::vec2 joint = body.to_fs(body.girdle_ws(rig, rig.legs[i].girdle));
     float r;
     const glm::vec2 anchor = leg_anchor(ctx, body, leg, body.to_fs(f.pos_ws), joint, f.stance_clear, &r);
-    if (glm::length(anchor - joint) > r) hang(ctx, body, leg, 0.0f, f);
+    const float standing = kPushOffOfStanding * rig.girdles[rig.legs[i].girdle].rest_height * ctx.params.stance_height;
+    if (glm::length(anchor - joint) > std::min(r, standing) || loco.vy <= 0.0f) hang(ctx, body, leg, 0.0f, f);
   }
   bool any_stance = false;
   for (const FootState& f : feet.feet) any_stance = any_stance || f.state == LegState::kStance;
-  const int planted = update_air_feet(ctx, body, reach_extension(ctx, body, loco), dt, false, feet);
+  // (Rising, a foot that pushed off is carried along the ground, not planted again.)
+  const int planted = update_air_feet(ctx, body, reach_extension(ctx, body, loco), dt, false, feet, loco.vy < 0.0f);
   if (planted > 0) return true;
   if (any_stance || loco.vy >= 0.0f) return false;
   return body_meets_ground(ctx, feet.feet.empty() ? loco.floor : feet.feet[0].floor, body);

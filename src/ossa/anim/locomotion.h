@@ -89,9 +89,10 @@ void hang(const AnimContext& ctx, const BodyFrame& body, int leg, float extensio
 
 // Feet hanging in the air follow their targets and are planted where they meet the top of a
 // box on the way down; reach_ground (on the ground: stepping off, landing): a foot reaches
-// down to ground its leg reaches below it. Returns how many were planted.
+// down to ground its leg reaches below it; may_land false (the body still rising): a foot
+// meeting ground is carried along it, not planted. Returns how many were planted.
 int update_air_feet(const AnimContext& ctx, const BodyFrame& body, float extension, float dt, bool reach_ground,
-                    FootSet& feet);
+                    FootSet& feet, bool may_land = true);
 
 // One tick in the air: the body along its path (`model_fs`, the last pose's facing-space
 // matrices, give the wall sweep its outline; `boxes` is scratch), pitch and lean easing level
