@@ -306,18 +306,22 @@ void keep_stance_legs_unfolded(Placement& p, std::vector<float>& room) {
   }
 }
 
+// How far leg i's stance foot is beyond its leg's reach (≤ 0: in reach; -1e30 for a leg not
+// on the ground).
+float stance_excess(const Placement& p, size_t i) {
+  const AnimRig& rig = p.ctx.rig;
+  const FootState& f = p.feet.of_leg(static_cast<int>(i));
+  if (f.state != LegState::kStance) return -1e30f;
+  const glm::vec2 joint = p.body.to_fs(p.body.girdle_ws(rig, rig.legs[i].girdle));
+  float r;
+  const glm::vec2 anchor = leg_anchor(p.ctx, p.body, static_cast<int>(i), p.body.to_fs(f.pos_ws), joint, f.stance_clear, &r);
+  return glm::length(anchor - joint) - r;
+}
+
 // How far the stance foot furthest out of its leg's reach is beyond it (≤ 0: all in reach).
 float stance_reach_excess(const Placement& p) {
-  const AnimRig& rig = p.ctx.rig;
   float most = -1e30f;
-  for (size_t i = 0; i < rig.legs.size(); ++i) {
-    const FootState& f = p.feet.of_leg(static_cast<int>(i));
-    if (f.state != LegState::kStance) continue;
-    const glm::vec2 joint = p.body.to_fs(p.body.girdle_ws(rig, rig.legs[i].girdle));
-    float r;
-    const glm::vec2 anchor = leg_anchor(p.ctx, p.body, static_cast<int>(i), p.body.to_fs(f.pos_ws), joint, f.stance_clear, &r);
-    most = std::max(most, glm::length(anchor - joint) - r);
-  }
+  for (size_t i = 0; i < p.ctx.rig.legs.size(); ++i) most = std::max(most, stance_excess(p, i));
   return most;
 }
 
@@ -469,14 +473,8 @@ void keep_body_out_of_ground(Placement& p, float fell) {
 // the next chance instead of sliding (the gait clock reads the hand-off).
 void release_overstretched_feet(Placement& p) {
   if (p.reach_checked && p.body.root_y_ws == p.checked_root && p.body.pitch == p.checked_pitch) return;
-  const AnimRig& rig = p.ctx.rig;
-  for (size_t i = 0; i < rig.legs.size(); ++i) {
-    const FootState& f = p.feet.of_leg(static_cast<int>(i));
-    if (f.state != LegState::kStance) continue;
-    const glm::vec2 joint = p.body.to_fs(p.body.girdle_ws(rig, rig.legs[i].girdle));
-    float r;
-    const glm::vec2 anchor = leg_anchor(p.ctx, p.body, static_cast<int>(i), p.body.to_fs(f.pos_ws), joint, f.stance_clear, &r);
-    if (glm::length(anchor - joint) > r) p.handoff.lift_now[p.feet.foot_of_leg[i]] = 1;
+  for (size_t i = 0; i < p.ctx.rig.legs.size(); ++i) {
+    if (stance_excess(p, i) > 0.0f) p.handoff.lift_now[p.feet.foot_of_leg[i]] = 1;
   }
 }
 

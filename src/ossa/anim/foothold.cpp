@@ -150,16 +150,24 @@ bool nearest_fit(const FootholdInputs& in, int leg, glm::vec2 near_ws, glm::vec2
          nearest_fit_within(in, leg, near_ws, spot, false, reach_use);
 }
 
+StepLimits step_limits(const FootholdInputs& in, int leg, glm::vec2 foot_ws) {
+  const AnimRig& rig = in.ctx.rig;
+  const RigGirdle& girdle = rig.girdles[rig.legs[leg].girdle];
+  StepLimits l;
+  l.up = in.ctx.params.max_step_up * rig.climb_height;
+  l.down = in.ctx.params.max_step_down * girdle.rest_height;
+  // A step down counts from the foot, or from the ground its girdle stands over when the foot
+  // stands higher (a foot left up on a step steps back down as far as its girdle stands).
+  l.lowest = std::min(foot_ws.y, in.body.girdle_ws(rig, rig.legs[leg].girdle).y - girdle.rest_height) - l.down;
+  return l;
+}
+
 bool find_landing(const FootholdInputs& in, int leg, glm::vec2 foot_ws, float x_wanted, glm::vec2* landing) {
   const AnimRig& rig = in.ctx.rig;
   const RigLeg& info = rig.legs[leg];
   const RigGirdle& girdle = rig.girdles[info.girdle];
   const int facing = in.body.facing;
-  const float up = in.ctx.params.max_step_up * rig.climb_height;
-  const float down = in.ctx.params.max_step_down * girdle.rest_height;
-  // A step down counts from the foot, or from the ground its girdle stands over when the foot
-  // stands higher (a foot left up on a step steps back down as far as its girdle stands).
-  const float lowest = std::min(foot_ws.y, in.body.girdle_ws(rig, info.girdle).y - girdle.rest_height) - down;
+  const auto [up, down, lowest] = step_limits(in, leg, foot_ws);
   const FootSpan span = foot_span_ws(info, facing);
   const float span_lo = span.lo - 0.01f, span_hi = span.hi + 0.01f;
   const float height = foot_height(info);
@@ -211,13 +219,10 @@ bool find_landing(const FootholdInputs& in, int leg, glm::vec2 foot_ws, float x_
 }
 
 bool drop_ahead(const FootholdInputs& in, int leg, glm::vec2 foot_ws, float x_wanted, float* hang_beyond) {
-  const AnimRig& rig = in.ctx.rig;
-  const RigLeg& info = rig.legs[leg];
-  const RigGirdle& girdle = rig.girdles[info.girdle];
+  const RigLeg& info = in.ctx.rig.legs[leg];
   const int facing = in.body.facing;
-  const float up = in.ctx.params.max_step_up * rig.climb_height;
-  const float down = in.ctx.params.max_step_down * girdle.rest_height;
-  const float lowest = std::min(foot_ws.y, in.body.girdle_ws(rig, info.girdle).y - girdle.rest_height) - down;
+  const StepLimits limits = step_limits(in, leg, foot_ws);
+  const float up = limits.up, lowest = limits.lowest;
   const FootSpan span = foot_span_ws(info, facing);
   // Nothing rises a step above the foot between it and a little beyond the landing.
   const float far = x_wanted + facing * std::max(span.hi - span.lo, 0.01f);

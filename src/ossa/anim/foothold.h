@@ -59,6 +59,14 @@ bool foot_fits(const FootholdInputs& in, int leg, glm::vec2 contact_ws);
 bool nearest_fit(const FootholdInputs& in, int leg, glm::vec2 near_ws, glm::vec2* spot, bool prefer_reach = false,
                  float reach_use = 1.0f);
 
+// The step limits of a foot at foot_ws: how far it may step up and down, and the lowest ground
+// it may step to (from the foot, or from the ground its girdle stands over when the foot
+// stands higher).
+struct StepLimits {
+  float up = 0.0f, down = 0.0f, lowest = 0.0f;  // metres; lowest is a world y
+};
+StepLimits step_limits(const FootholdInputs& in, int leg, glm::vec2 foot_ws);
+
 // Does leg `leg` reach p_ws (within reach_use × kFootReach of its reach) from where its girdle
 // is now?
 bool reaches(const FootholdInputs& in, int leg, glm::vec2 p_ws, float reach_use = 1.0f);
