@@ -223,3 +223,29 @@ TEST_CASE("shipped levels are walkable with steps of at most 0.25 m", "[level][i
     CHECK(w.max_step >= 0.05f);
   }
 }
+
+TEST_CASE("the kill height round-trips, defaults below the lowest box, and a bad one names the field", "[level][io]") {
+  const std::string head = R"({"format":"ossa.level","version":1,"spawn":{"x":1,"y":0},"colliders":[{"x":0,"y":-1,"w":5,"h":1}])";
+  const Result<Level> plain = parse_level(head + "}", "levels/x.json");
+  REQUIRE(plain.ok());
+  CHECK_FALSE(plain->kill_height_ws.has_value());
+  CHECK(plain->kill_y() == Approx(-1.0f - Level::kKillMargin));  // kKillMargin below the lowest box
+  const Result<Level> set = parse_level(head + R"(,"kill_height":-6.5})", "levels/x.json");
+  REQUIRE(set.ok());
+  CHECK(set->kill_y() == -6.5f);
+  const Result<Level> again = parse_level(level_to_text(*set), "levels/y.json");
+  REQUIRE(again.ok());
+  CHECK(*again == *set);
+  CHECK(message_of(head + R"(,"kill_height":"low"})") ==
+        "levels/x.json: kill_height: expected a number in [-1000, 1000], got a string \"low\"");
+  CHECK(message_of(head + R"(,"kill_height":5000})") == "levels/x.json: kill_height: expected a number in [-1000, 1000], got 5000");
+}
+
+TEST_CASE("level_warnings names a spawn with no ground below it", "[level][io]") {
+  const Level over_gap({Box::from_corner(0.0f, -1.0f, 5.0f, 1.0f)}, {20.0f, 2.0f}, "gap");
+  const std::vector<std::string> w = level_warnings(over_gap);
+  REQUIRE(w.size() == 1);
+  CHECK_THAT(w[0], Catch::Contains("the spawn (20, 2) has no ground below it"));
+  const Level fine({Box::from_corner(0.0f, -1.0f, 5.0f, 1.0f)}, {2.0f, 0.0f}, "fine");
+  CHECK(level_warnings(fine).empty());
+}
