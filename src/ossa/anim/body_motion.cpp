@@ -318,6 +318,9 @@ float limit_by_ledges(const AnimContext& ctx, const BodyFrame& body, const FootS
     const int at = ground.column_of(x);
     if (!(ground.column(at) <= high)) continue;
     const int dir = body.facing;
+    // Nothing ahead higher than the feet may climb (the common case): no scan.
+    const float ahead = x + dir * (move + margin + 2.0f * ground.step());
+    if (!ground.may_rise_above(std::min(x, ahead), std::max(x, ahead), high, high)) continue;
     const int reach = static_cast<int>(std::ceil((move + margin) / ground.step())) + 1;
     const int span = std::max(1, static_cast<int>(std::ceil(stride / ground.step())));
     for (int k = 1; k <= reach; ++k) {
