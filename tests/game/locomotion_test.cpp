@@ -78,6 +78,59 @@ TEST_CASE("every example animal walks off each ledge of drops.json and lands cle
   }
 }
 
+TEST_CASE("every example animal turns back at drops.json's 1 m ledge with its feet still", "[game][anim][locomotion]") {
+  // From the spawn each animal walks to the 1 m ledge at x 12 (some stop with their leading
+  // feet stepped down it, some go over), stops, and walks back: feet left down the ledge step
+  // back up to the feet still on it, a body below the ledge stops at its face (no knee in
+  // it), and no stance foot slides or limb enters a box meanwhile.
+#if defined(__SANITIZE_ADDRESS__)
+  const int every = 4;
+#else
+  const int every = 1;
+#endif
+  const Level level = drops();
+  const auto script = parse_script("walk:0.5:6,stop:1,walk:-0.6:6").value();
+  int n = 0;
+  for (const Animal& animal : scenes::generator().dataset().animals) {
+    if (n++ % every != 0) continue;
+    Player player(example(animal.name), SplinePrototypes::defaults());
+    player.animator().reset(level.spawn_ws + glm::vec2(0.0f, 1.0f), level);
+    const SimResult r = run_script(player, level, script, 120);
+    INFO(animal.name << ": furthest x " << r.x_max_m << ", back to x " << r.x_reached);
+    CHECK(r.probe.max_stance_slip_m <= 0.001f);
+    CHECK(r.probe.max_penetration_m <= 0.001f);
+    CHECK(r.probe.nan_count == 0);
+  }
+}
+
+TEST_CASE("every example animal walks and runs across drops.json to the step that needs a jump", "[game][anim][locomotion]") {
+  // From the spawn over the four ledges, across (or into) the 3 m gap, to the 0.7 m step at
+  // x 48: a foot that reached down into the gap is planted once it is over its far side (it
+  // used to be carried along in the air, and the legs then climbed the step), no stance foot
+  // slides, and without a jump no animal whose legs climb less than 0.7 m gets onto the step.
+#if defined(__SANITIZE_ADDRESS__)
+  const int every = 4;
+#else
+  const int every = 1;
+#endif
+  const Level level = drops();
+  int n = 0;
+  for (const Animal& animal : scenes::generator().dataset().animals) {
+    if (n++ % every != 0) continue;
+    for (const char* text : {"walk:0.6:30", "run:1:15"}) {
+      Player player(example(animal.name), SplinePrototypes::defaults());
+      player.animator().reset(level.spawn_ws + glm::vec2(0.0f, 1.0f), level);
+      const SimResult r = run_script(player, level, parse_script(text).value(), 120);
+      INFO(animal.name << ", " << text << ": furthest x " << r.x_max_m);
+      CHECK(r.probe.max_stance_slip_m <= 0.001f);
+      CHECK(r.probe.nan_count == 0);
+      // (Birds' crouched legs climb 0.7 m: max_step_up of their reach.)
+      const Animator& a = player.animator();
+      if (a.params().max_step_up * a.rig().climb_height < 0.68f) CHECK(r.x_max_m < 50.0f);  // the step: x 48 to 60
+    }
+  }
+}
+
 TEST_CASE("a horse at full run (galloping) covers drops.json's gap with a running jump", "[game][anim][locomotion]") {
   // The gap from x 38 to 41 is wider than any stride: walking into it is a fall to the kill
   // height. Galloping up to its edge and jumping there carries the horse across.

@@ -94,6 +94,10 @@ struct FootState {                  // per foot: moves between legs when the cre
   glm::vec2 air_offset{0.0f};       // metres (_ws)
   float hang_beyond = NAN;          // stepping off: the world x the hanging foot reaches past
   float floor = 1e30f;              // a fall's feet are planted only on ground below this (_ws)
+  float stood_y = NAN;               // the height it last stood at (_ws), for note_ledge
+  // Stepped down off a ledge this high, more than a step up (_ws; NaN: none): while a foot still
+  // stands on it, this one may step back up to it (foothold.h step_limits).
+  float ledge_y = NAN;
   Clearance stance_clear;           // around pos_ws while in stance
   Clearance stance_reach_clear;     // within a leg's reach of pos_ws while in stance
   Clearance swing_clear;            // around the path of the current swing

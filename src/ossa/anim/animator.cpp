@@ -121,7 +121,7 @@ void Animator::reset(glm::vec2 position_ws, const Level& level, int facing) {
   }
   refresh_ground(level);
   const AnimContext ctx = context(level);
-  const FootholdInputs in{ctx, body_, gait_.stride, gait_.duty};
+  const FootholdInputs in{ctx, body_, gait_.stride, gait_.duty, &feet_};
   // Each foot stands where it fits (not across the edge of a step).
   for (size_t i = 0; i < rig.legs.size(); ++i) {
     glm::vec2 landing;
@@ -180,7 +180,7 @@ void Animator::block(int leg) {
 bool Animator::way_ahead_open(const Level& level, float speed) {
   // Re-tested now and then while blocked: the level may have changed.
   const AnimContext ctx = context(level);
-  const FootholdInputs in{ctx, body_, gait_.stride, gait_.duty};
+  const FootholdInputs in{ctx, body_, gait_.stride, gait_.duty, &feet_};
   glm::vec2 landing;
   return find_landing(in, block_.leg, step_from(feet_.of_leg(block_.leg)), landing_x(in, block_.leg, speed), &landing);
 }
@@ -297,7 +297,7 @@ void Animator::end_landing(const Level& level) {
   // Feet that found no ground as the body came down set down where they can.
   loco_.mode = Locomotion::kGrounded;
   const AnimContext ctx = context(level);
-  const FootholdInputs in{ctx, body_, gait_.stride, gait_.duty};
+  const FootholdInputs in{ctx, body_, gait_.stride, gait_.duty, &feet_};
   for (size_t i = 0; i < rig_->legs.size(); ++i) {
     FootState& f = feet_.of_leg(static_cast<int>(i));
     if (!f.air) continue;
@@ -313,7 +313,7 @@ void Animator::step_legs(float dt, float ism, const Level& level) {
   // swinging feet after a stop.
   const AnimRig& rig = *rig_;
   const AnimContext ctx = context(level);
-  const FootholdInputs in{ctx, body_, gait_.stride, gait_.duty};
+  const FootholdInputs in{ctx, body_, gait_.stride, gait_.duty, &feet_};
   const float dphi = gait_.frequency * dt;
   if (!(speed_ > 0.0f && !block_.blocked)) {
     gait_.moving = false;
@@ -355,7 +355,7 @@ void Animator::step_legs(float dt, float ism, const Level& level) {
         // reaches down past the edge; a wall too tall (or the way walled off) stops the creature.
         float beyond;
         if (drop_ahead(in, leg, f.pos_ws, landing_x(in, leg, speed_, swing_phase), &beyond)) {
-          f.floor = f.pos_ws.y - 0.01f;  // a fall that follows lands lower than this ledge
+          f.floor = f.pos_ws.y - kFloorBelowLedge;  // a fall that follows lands lower than this ledge
           hang(ctx, body_, leg, 1.0f, f);
           f.hang_beyond = beyond;
         } else {
@@ -371,7 +371,7 @@ void Animator::step_legs(float dt, float ism, const Level& level) {
 
 void Animator::advance_swings(float dt, const Level& level) {
   const AnimContext ctx = context(level);
-  const FootholdInputs in{ctx, body_, gait_.stride, gait_.duty};
+  const FootholdInputs in{ctx, body_, gait_.stride, gait_.duty, &feet_};
   const SwingTick tick{dt, speed_, gait_.moving};
   for (size_t i = 0; i < rig_->legs.size(); ++i) {
     FootState& f = feet_.of_leg(static_cast<int>(i));

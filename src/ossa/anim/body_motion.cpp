@@ -7,6 +7,7 @@
 #include "ossa/anim/foothold.h"
 #include "ossa/anim/ground_profile.h"
 #include "ossa/anim/leg_ik.h"
+#include "ossa/math/two_bone_ik.h"
 
 namespace ossa::anim {
 
@@ -296,6 +297,23 @@ float limit_by_legs(const AnimContext& ctx, const BodyFrame& body, const FootSet
   return dx;
 }
 
+namespace {
+
+// How far ahead of their joint the knees of girdle's legs reach, standing with the contact
+// points `height` below it (metres; 0 for knees bending back).
+float knees_ahead(const AnimRig& rig, const RigGirdle& girdle, float height) {
+  float ahead = 0.0f;
+  for (int leg : girdle.legs) {
+    const RigLeg& info = rig.legs[leg];
+    const float d = std::clamp(height + info.foot_offset_ms.y, info.fold, 0.999f * info.reach);  // to the ankle
+    const TwoBoneIkResult ik = solve_two_bone_ik_directions({0.0f, 0.0f}, info.upper, info.lower, {0.0f, -d}, info.bend);
+    ahead = std::max(ahead, ik.middle.x);
+  }
+  return ahead;
+}
+
+}  // namespace
+
 float limit_by_ledges(const AnimContext& ctx, const BodyFrame& body, const FootSet& feet, float stride, float dx) {
   const AnimRig& rig = ctx.rig;
   const GroundProfile& ground = ctx.ground;
@@ -312,16 +330,22 @@ float limit_by_ledges(const AnimContext& ctx, const BodyFrame& body, const FootS
       if (f.state == LegState::kStance && !f.air) feet_y = std::min(feet_y, f.pos_ws.y);
     }
     if (feet_y > 1e29f) continue;
-    const float x = body.girdle_ws(rig, static_cast<int>(g)).x;
+    const glm::vec2 joint = body.girdle_ws(rig, static_cast<int>(g));
+    const float x = joint.x;
     const float high = feet_y + up + kGroundEpsilon;
     // Already over higher ground: not this rule's business (a creature that climbed or landed).
     const int at = ground.column_of(x);
     if (!(ground.column(at) <= high)) continue;
     const int dir = body.facing;
-    // Nothing ahead higher than the feet may climb (the common case): no scan.
-    const float ahead = x + dir * (move + margin + 2.0f * ground.step());
+    // Nothing ahead higher than the feet may climb, within a thigh's length (the farthest a
+    // knee reaches ahead) of the margin (the common case): no scan.
+    float thigh = 0.0f;
+    for (int leg : girdle.legs) thigh = std::max(thigh, rig.legs[leg].upper);
+    const float ahead = x + dir * (move + margin + thigh + 2.0f * ground.step());
     if (!ground.may_rise_above(std::min(x, ahead), std::max(x, ahead), high, high)) continue;
-    const int reach = static_cast<int>(std::ceil((move + margin) / ground.step())) + 1;
+    // Nor may a knee bending forward cross a face taller than a step (a wall, not a stair).
+    const float knees = margin + knees_ahead(rig, girdle, joint.y - feet_y);
+    const int reach = static_cast<int>(std::ceil((move + knees) / ground.step())) + 1;
     const int span = std::max(1, static_cast<int>(std::ceil(stride / ground.step())));
     for (int k = 1; k <= reach; ++k) {
       const int i = at + dir * k;
@@ -336,7 +360,9 @@ float limit_by_ledges(const AnimContext& ctx, const BodyFrame& body, const FootS
       }
       if (!ledge) continue;
       const float face = ground.x0() + ground.step() * static_cast<float>(dir > 0 ? i : i + 1);
-      move = std::min(move, std::max(0.0f, dir * (face - x) - margin));
+      const float below = ground.column(i - dir);
+      const bool wall = std::isnan(below) || ground.column(i) - below > up;
+      move = std::min(move, std::max(0.0f, dir * (face - x) - (wall ? knees : margin)));
       break;
     }
   }

@@ -284,10 +284,13 @@ void keep_stance_legs_in_reach(Placement& p, std::vector<float>& need, std::vect
 }
 
 // 2. Nor fold a leg on the ground tighter than it can (short legs with long shins on a low
-// body): raise the body until each stance ankle is at least the folded length away.
-void keep_stance_legs_unfolded(Placement& p, std::vector<float>& room) {
+// body, a hind foot stepped up a ledge under its joint): raise its girdle until each stance
+// ankle is at least the folded length away. The end girdles turn the body about each other,
+// as in 1, so that the other end's feet stay where they are.
+void keep_stance_legs_unfolded(Placement& p, std::vector<float>& fold_raise, std::vector<float>& room) {
   const AnimRig& rig = p.ctx.rig;
-  float fold_raise = 0.0f;
+  std::fill(fold_raise.begin(), fold_raise.end(), 0.0f);
+  bool any = false;
   for (size_t i = 0; i < rig.legs.size(); ++i) {
     const FootState& f = p.feet.of_leg(static_cast<int>(i));
     if (f.state != LegState::kStance) continue;
@@ -298,11 +301,30 @@ void keep_stance_legs_unfolded(Placement& p, std::vector<float>& room) {
     glm::vec2 dir;
     const glm::vec2 ankle = leg_ankle(p.ctx, p.body, static_cast<int>(i), p.body.to_fs(f.pos_ws), joint, true, f.stance_clear, &dir, nullptr);
     const float dx = std::fabs(ankle.x - joint.x);
-    if (dx < fold) fold_raise = std::max(fold_raise, ankle.y + std::sqrt(fold * fold - dx * dx) - joint.y);
+    if (dx < fold) {
+      float& raise = fold_raise[rig.legs[i].girdle];
+      raise = std::max(raise, ankle.y + std::sqrt(fold * fold - dx * dx) - joint.y);
+      any = any || raise > 0.0f;
+    }
   }
-  if (fold_raise > 0.0f) {
-    p.body.root_y_ws += fold_raise;
-    for (float& r : room) r = std::max(r - fold_raise, 0.0f);
+  if (!any) return;
+  // The whole body rises when every girdle has the room; else the folded girdle alone.
+  float most = 0.0f, least_room = 1e30f;
+  for (size_t g = 0; g < fold_raise.size(); ++g) {
+    most = std::max(most, fold_raise[g]);
+    least_room = std::min(least_room, room[g]);
+  }
+  if (most <= least_room) {
+    p.body.root_y_ws += most;
+    for (float& r : room) r = std::max(r - most, 0.0f);
+    return;
+  }
+  for (size_t g = 0; g < fold_raise.size(); ++g) {
+    if (fold_raise[g] <= 0.0f) continue;
+    // What each girdle rises comes off its room.
+    for (size_t o = 0; o < room.size(); ++o) room[o] += p.body.girdle_ws(rig, static_cast<int>(o)).y;
+    move_girdle(p, static_cast<int>(g), fold_raise[g]);
+    for (size_t o = 0; o < room.size(); ++o) room[o] = std::max(room[o] - p.body.girdle_ws(rig, static_cast<int>(o)).y, 0.0f);
   }
 }
 
@@ -491,10 +513,11 @@ void place_body(const AnimContext& ctx, const PlacementInputs& in, const FootSet
   float target_root = body.root_y_ws, target_pitch = 0.0f;
   const size_t n = rig.girdles.size();
   // Scratch per girdle (a creature has a few).
-  thread_local std::vector<float> height, need, room, swing_up;
+  thread_local std::vector<float> height, need, room, fold, swing_up;
   height.resize(n);
   need.resize(n);
   room.resize(n);
+  fold.resize(n);
   swing_up.resize(n);
   if (rig.girdles.empty()) {
     // Legless: follow the highest ground under the body, lifted lately so that the wave keeps
@@ -517,7 +540,7 @@ void place_body(const AnimContext& ctx, const PlacementInputs& in, const FootSet
   body.root_y_ws = std::isnan(in.root) ? approach(body.root_y_ws, target_root, snap ? 0.0f : in.keep_root) : in.root;
 
   keep_stance_legs_in_reach(p, need, room);
-  keep_stance_legs_unfolded(p, room);
+  keep_stance_legs_unfolded(p, fold, room);
   keep_knees_off_ground(p, need, swing_up, room);
   pitch_for_front_shoulder(p);
   keep_body_out_of_ground(p, rig.girdles.empty() ? 0.0f : std::max(old_root - body.root_y_ws, 0.0f));

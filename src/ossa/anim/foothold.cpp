@@ -150,6 +150,17 @@ bool nearest_fit(const FootholdInputs& in, int leg, glm::vec2 near_ws, glm::vec2
          nearest_fit_within(in, leg, near_ws, spot, false, reach_use);
 }
 
+void note_ledge(const AnimContext& ctx, FootState& f, float ledge_y) {
+  const float up = ctx.params.max_step_up * ctx.rig.climb_height;
+  const float from_y = std::isnan(ledge_y) ? f.stood_y : ledge_y;
+  f.stood_y = f.pos_ws.y;
+  if (from_y - f.pos_ws.y > up) {
+    f.ledge_y = from_y;
+  } else if (!std::isnan(f.ledge_y) && f.pos_ws.y + up >= f.ledge_y) {
+    f.ledge_y = NAN;
+  }
+}
+
 StepLimits step_limits(const FootholdInputs& in, int leg, glm::vec2 foot_ws) {
   const AnimRig& rig = in.ctx.rig;
   const RigGirdle& girdle = rig.girdles[rig.legs[leg].girdle];
@@ -159,6 +170,20 @@ StepLimits step_limits(const FootholdInputs& in, int leg, glm::vec2 foot_ws) {
   // A step down counts from the foot, or from the ground its girdle stands over when the foot
   // stands higher (a foot left up on a step steps back down as far as its girdle stands).
   l.lowest = std::min(foot_ws.y, in.body.girdle_ws(rig, rig.legs[leg].girdle).y - girdle.rest_height) - l.down;
+  l.top = foot_ws.y + l.up;
+  const float ledge = in.feet ? in.feet->of_leg(leg).ledge_y : NAN;
+  if (!std::isnan(ledge) && ledge > l.top) {
+    const SlopeReading reading = girdle_slope_reading(in.ctx, rig.legs[leg].girdle);
+    for (size_t j = 0; j < rig.legs.size(); ++j) {
+      const FootState& o = in.feet->of_leg(static_cast<int>(j));
+      const glm::vec2 on = step_from(o);  // where it stands, or stepped from
+      if (o.air || on.y + l.up <= l.top || std::fabs(on.y - ledge) > l.up) continue;
+      // From this foot to the whole of the other one (its toe may stand out over the edge).
+      const FootSpan span = foot_span_ws(rig.legs[j], in.body.facing);
+      const float a = std::min(on.x + span.lo, foot_ws.x), b = std::max(on.x + span.hi, foot_ws.x);
+      if (in.ctx.ground.largest_jump(a, b, reading) > l.up) l.top = o.pos_ws.y + l.up;
+    }
+  }
   return l;
 }
 
@@ -167,7 +192,7 @@ bool find_landing(const FootholdInputs& in, int leg, glm::vec2 foot_ws, float x_
   const RigLeg& info = rig.legs[leg];
   const RigGirdle& girdle = rig.girdles[info.girdle];
   const int facing = in.body.facing;
-  const auto [up, down, lowest] = step_limits(in, leg, foot_ws);
+  const auto [up, down, lowest, top] = step_limits(in, leg, foot_ws);
   const FootSpan span = foot_span_ws(info, facing);
   const float span_lo = span.lo - 0.01f, span_hi = span.hi + 0.01f;
   const float height = foot_height(info);
@@ -176,44 +201,50 @@ bool find_landing(const FootholdInputs& in, int leg, glm::vec2 foot_ws, float x_
   const float stepx = std::max(kLandingStepOfStride * stride, 0.005f);
   const float shortest = facing * (x_wanted - foot_ws.x) - kShortestAheadOfStride * stride;
   const float longest = kMaxLongerOfStride * stride;
-  for (int k = 0; k <= kLandingCandidates; ++k) {
-    const int n = (k + 1) / 2;
-    const float d = k % 2 == 1 ? -stepx * static_cast<float>(n) : 0.25f * stepx * static_cast<float>(n);
-    if (-d > shortest) {
-      if (k % 2 == 1) continue;
-      if (d > longest) break;
-    } else if (k % 2 == 0 && d > longest) {
-      continue;
-    }
-    if (d > longest) continue;
-    const float x = x_wanted + facing * d;
-    // Up or down a slope (a tile hill read as a ramp, with no real riser between the foot and
-    // the landing) a stride may climb or descend further than a step: the step limits count
-    // from the slope's height at the landing.
-    // (Asked only when the plain step limits find no ground there.)
-    auto hit = ground_below(in.ctx.level, x + span_lo, x + span_hi, foot_ws.y + up, foot_ws.y + up - lowest);
-    if (!hit) {
-      const float along = in.ctx.ground.slope_top(foot_ws.x, x + span_lo, x + span_hi, reading);
-      if (!std::isnan(along)) {
-        const float top = std::max(foot_ws.y + up, along + up), bottom = std::min(lowest, along - down);
-        hit = ground_below(in.ctx.level, x + span_lo, x + span_hi, top, top - bottom);
+  // A foot left down a ledge its body stands on (step_limits) looks for a landing back up on
+  // the ledge first (ground within a step of it), and only then below it.
+  const bool ledge = top > foot_ws.y + up;
+  for (int pass = ledge ? 0 : 1; pass < 2; ++pass) {
+    const float floor_y = pass == 0 ? top - 2.0f * up : -1e30f;
+    for (int k = 0; k <= kLandingCandidates; ++k) {
+      const int n = (k + 1) / 2;
+      const float d = k % 2 == 1 ? -stepx * static_cast<float>(n) : 0.25f * stepx * static_cast<float>(n);
+      if (-d > shortest) {
+        if (k % 2 == 1) continue;
+        if (d > longest) break;
+      } else if (k % 2 == 0 && d > longest) {
+        continue;
       }
+      if (d > longest) continue;
+      const float x = x_wanted + facing * d;
+      // Up or down a slope (a tile hill read as a ramp, with no real riser between the foot and
+      // the landing) a stride may climb or descend further than a step: the step limits count
+      // from the slope's height at the landing.
+      // (Asked only when the plain step limits find no ground there.)
+      auto hit = ground_below(in.ctx.level, x + span_lo, x + span_hi, top, top - lowest);
+      if (!hit) {
+        const float along = in.ctx.ground.slope_top(foot_ws.x, x + span_lo, x + span_hi, reading);
+        if (!std::isnan(along)) {
+          const float slope_top = std::max(top, along + up), bottom = std::min(lowest, along - down);
+          hit = ground_below(in.ctx.level, x + span_lo, x + span_hi, slope_top, slope_top - bottom);
+        }
+      }
+      if (!hit || hit->height_ws < floor_y) continue;
+      const float y = hit->height_ws;
+      const Box foot_box{{x + span_lo + 0.002f, y + 0.002f}, {x + span_hi - 0.002f, y + height}};
+      if (in.ctx.level.overlaps(foot_box)) continue;
+      // Nothing between the foot and its landing rises more than a step above both: the foot
+      // would have to be lifted over a wall (the swing could raise it, the leg could not).
+      const float wall = std::max(foot_ws.y, y) + up;
+      const float between_lo = std::min(foot_ws.x, x) + 0.001f, between_hi = std::max(foot_ws.x, x) - 0.001f;
+      if (between_lo < between_hi && in.ctx.level.overlaps(Box{{between_lo, wall}, {between_hi, wall + 0.001f}})) continue;
+      // Down a step the shin comes from above and behind: keep the foot off the riser it steps
+      // down from, or the shin cuts the step's edge.
+      const float back = facing > 0 ? x + span_lo : x + span_hi;
+      if (k + 1 < kLandingCandidates && riser_behind(in, info, girdle.rest_height, reading, back, y, up)) continue;
+      *landing = {x, y};
+      return true;
     }
-    if (!hit) continue;
-    const float y = hit->height_ws;
-    const Box foot_box{{x + span_lo + 0.002f, y + 0.002f}, {x + span_hi - 0.002f, y + height}};
-    if (in.ctx.level.overlaps(foot_box)) continue;
-    // Nothing between the foot and its landing rises more than a step above both: the foot
-    // would have to be lifted over a wall (the swing could raise it, the leg could not).
-    const float wall = std::max(foot_ws.y, y) + up;
-    const float between_lo = std::min(foot_ws.x, x) + 0.001f, between_hi = std::max(foot_ws.x, x) - 0.001f;
-    if (between_lo < between_hi && in.ctx.level.overlaps(Box{{between_lo, wall}, {between_hi, wall + 0.001f}})) continue;
-    // Down a step the shin comes from above and behind: keep the foot off the riser it steps
-    // down from, or the shin cuts the step's edge.
-    const float back = facing > 0 ? x + span_lo : x + span_hi;
-    if (k + 1 < kLandingCandidates && riser_behind(in, info, girdle.rest_height, reading, back, y, up)) continue;
-    *landing = {x, y};
-    return true;
   }
   return false;
 }
@@ -222,7 +253,7 @@ bool drop_ahead(const FootholdInputs& in, int leg, glm::vec2 foot_ws, float x_wa
   const RigLeg& info = in.ctx.rig.legs[leg];
   const int facing = in.body.facing;
   const StepLimits limits = step_limits(in, leg, foot_ws);
-  const float up = limits.up, lowest = limits.lowest;
+  const float up = limits.up, lowest = limits.lowest, top = limits.top;
   const FootSpan span = foot_span_ws(info, facing);
   // Nothing rises a step above the foot between it and a little beyond the landing.
   const float far = x_wanted + facing * std::max(span.hi - span.lo, 0.01f);
@@ -230,7 +261,7 @@ bool drop_ahead(const FootholdInputs& in, int leg, glm::vec2 foot_ws, float x_wa
   if (lo < hi && in.ctx.level.overlaps(Box{{lo, foot_ws.y + up}, {hi, foot_ws.y + up + 0.001f}})) return false;
   // No ground within the step limits over the landing and the shorter steps find_landing tried.
   const float near = x_wanted - facing * kShortestAheadOfStride * in.stride;
-  if (ground_below(in.ctx.level, std::min(near, far), std::max(near, far), foot_ws.y + up, foot_ws.y + up - lowest)) return false;
+  if (ground_below(in.ctx.level, std::min(near, far), std::max(near, far), top, top - lowest)) return false;
   // The whole foot over the groundless stretch: its back edge at `near`.
   if (hang_beyond) *hang_beyond = near - (facing > 0 ? span.lo : span.hi);
   return true;

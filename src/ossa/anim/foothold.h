@@ -20,6 +20,9 @@ struct FootholdInputs {
   const BodyFrame& body;
   float stride = 0.0f;  // metres per cycle (GaitState::stride)
   float duty = 0.65f;   // GaitState::duty
+  // The feet, when the planner may count a step up from the feet standing on a ledge
+  // (step_limits); nullptr: from the foot alone.
+  const FootSet* feet = nullptr;
 };
 
 // Where a foot steps from, for find_landing's step limits: where it stands, or where a
@@ -59,13 +62,23 @@ bool foot_fits(const FootholdInputs& in, int leg, glm::vec2 contact_ws);
 bool nearest_fit(const FootholdInputs& in, int leg, glm::vec2 near_ws, glm::vec2* spot, bool prefer_reach = false,
                  float reach_use = 1.0f);
 
-// The step limits of a foot at foot_ws: how far it may step up and down, and the lowest ground
+// The step limits of a foot at foot_ws: how far it may step up and down, the lowest ground
 // it may step to (from the foot, or from the ground its girdle stands over when the foot
-// stands higher).
+// stands higher) and the highest (a step up from the foot, or from the highest foot standing
+// on — or stepping from — a ledge above it, a riser more than a step high between them, when
+// the foot came down that ledge (FootState::ledge_y): a creature that stepped down a drop with
+// its leading feet and turned back steps them back up, rather than walling itself in below the
+// ledge's face).
 struct StepLimits {
-  float up = 0.0f, down = 0.0f, lowest = 0.0f;  // metres; lowest is a world y
+  float up = 0.0f, down = 0.0f;     // metres
+  float lowest = 0.0f, top = 0.0f;  // world y
 };
 StepLimits step_limits(const FootholdInputs& in, int leg, glm::vec2 foot_ws);
+
+// A foot set down at f.pos_ws: one that came down further than a step up from where it last
+// stood (or from `ledge_y`, the ledge a fall or a reach down left) remembers the ledge
+// (FootState::ledge_y, for step_limits); one back up on that ledge forgets it.
+void note_ledge(const AnimContext& ctx, FootState& f, float ledge_y = NAN);
 
 // Does leg `leg` reach p_ws (within reach_use × kFootReach of its reach) from where its girdle
 // is now?

@@ -61,6 +61,7 @@ void plant(const AnimContext& ctx, FootState& f, glm::vec2 p) {
   f.easing = false;
   f.hover = 0.0f;
   f.hang_beyond = NAN;
+  note_ledge(ctx, f, f.floor < 1e29f ? f.floor + kFloorBelowLedge : NAN);
   f.floor = 1e30f;
   update_stance_clearance(ctx, f);
 }
@@ -207,12 +208,15 @@ int update_air_feet(const AnimContext& ctx, const BodyFrame& body, float extensi
       }
     }
     // Touch-down: the top of a box under the whole foot, met on the way down, plants it; the
-    // ledge a fall left (f.floor and above) only carries it along.
+    // ledge a fall left (f.floor and above) only carries it along — unless the foot, stepping
+    // off, is a foot's length past the ledge's edge: ground there is the far side of a gap.
     if (next.y < f.pos_ws.y + 1e-3f) {
       const float from = f.pos_ws.y + 1e-3f;
+      const bool across =
+          !std::isnan(f.hang_beyond) && (next.x - f.hang_beyond) * static_cast<float>(body.facing) > info.foot_length;
       if (auto hit = ground_below(ctx.level, next.x + span.lo, next.x + span.hi, from, from - next.y + 1e-3f);
           hit && hit->height_ws >= next.y - 1e-3f) {
-        if (hit->height_ws < f.floor && may_land) {
+        if ((hit->height_ws < f.floor || across) && may_land) {
           plant(ctx, f, {next.x, hit->height_ws});
           ++planted;
           continue;
@@ -242,10 +246,10 @@ void take_off(const AnimContext& ctx, const BodyFrame& body, glm::vec2 velocity,
   // A fall lands nowhere as high as the ground it left (the highest ledge a foot stepped off).
   float floor = 1e30f;
   if (!jump && rig.legs.empty()) {
-    floor = body.root_y_ws - rig.root_rest_y - 0.01f;  // the legless: the ground it crawled off
+    floor = body.root_y_ws - rig.root_rest_y - kFloorBelowLedge;  // the legless: the ground it crawled off
   } else if (!jump) {
     for (const FootState& f : feet.feet) {
-      const float left = f.floor < 1e29f ? f.floor : f.state == LegState::kStance && !f.air ? f.pos_ws.y - 0.01f : -1e30f;
+      const float left = f.floor < 1e29f ? f.floor : f.state == LegState::kStance && !f.air ? f.pos_ws.y - kFloorBelowLedge : -1e30f;
       floor = floor < 1e29f ? std::max(floor, left) : left;
     }
     if (floor < -1e29f) floor = 1e30f;

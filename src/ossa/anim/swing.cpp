@@ -267,6 +267,7 @@ bool advance_swing(const FootholdInputs& in, const SwingTick& tick, int leg, Foo
     f.state = LegState::kStance;
     f.pos_ws = f.to_ws;
     f.easing = false;
+    note_ledge(ctx, f);
     update_stance_clearance(ctx, f);
     return true;
   }

@@ -53,7 +53,7 @@ void turn_round(const AnimContext& ctx, const SplinePrototypes& prototypes, floa
   }
   body.facing = -body.facing;
   body.lean = 0.0f;
-  const FootholdInputs in{ctx, body, stride, duty};
+  const FootholdInputs in{ctx, body, stride, duty, &feet};
   // Girdles spaced unevenly along the body (three leg pairs) cannot all land on feet: a leg
   // whose foot (standing or in the air) is now out of reach lifts from the nearest foot on the
   // ground it reaches and steps under its girdle. A foot in the air heading out of reach (to
