@@ -12,6 +12,7 @@ namespace {
 
 constexpr size_t kMaxTailBones = 48;   // keep_tail_clear curls at most this many tail bones
 constexpr float kMaxTailCurl = 1.6f;   // radians over the tail's length
+constexpr float kMaxTailLift = 1.6f;   // radians at the tail's root, when curling is not enough
 constexpr size_t kMaxFinBones = 7;
 constexpr int kClearBisections = 6;
 constexpr int kFinBisections = 7;
@@ -124,8 +125,8 @@ float body_out_of_ground(const AnimContext& ctx, const BodyFrame& body, const st
 
 void keep_tail_clear(const AnimContext& ctx, const BodyFrame& body, const std::vector<Mat2x3>& model, Pose& pose) {
   // A tail hanging into a step (down a flight, or one rising behind) curls up from its root,
-  // the least that clears, up to kMaxTailCurl over its length. Only asked when ground rises
-  // to within a tail's length of its root.
+  // the least that clears, up to kMaxTailCurl over its length (or, if that is not enough,
+  // lifts at its root). Only asked when ground rises to within a tail's length of its root.
   const AnimRig& rig = ctx.rig;
   Mat2x3 base = model[rig.tail_base_bone] * rig.tail_between_rest;
   for (int b : rig.tail_between) base = base * local_matrix(pose.locals[b]);
@@ -135,11 +136,11 @@ void keep_tail_clear(const AnimContext& ctx, const BodyFrame& body, const std::v
   if (!ground || ground->height_ws < root.y - len) return;
   const size_t n = std::min<size_t>(rig.tail.size(), kMaxTailBones);
   glm::vec2 p[kMaxTailBones + 1];
-  auto hits = [&](float turn) {
+  auto hits = [&](float turn, float lift = 0.0f) {
     Mat2x3 m = base;
     for (size_t k = 0; k < n; ++k) {
       BoneLocal local = pose.locals[rig.tail[k]];
-      local.angle_ls += turn / static_cast<float>(n);
+      local.angle_ls += turn / static_cast<float>(n) + (k == 0 ? lift : 0.0f);
       m = m * local_matrix(local);
       p[k] = body.to_ws(bone_start(m));
       if (k + 1 == n) p[n] = body.to_ws(bone_end(m, rig.skeleton.length(rig.tail[k])));
@@ -156,7 +157,25 @@ void keep_tail_clear(const AnimContext& ctx, const BodyFrame& body, const std::v
     const float mid = 0.5f * (lo + hi);
     (hits(mid * most) ? lo : hi) = mid;
   }
-  for (size_t k = 0; k < n; ++k) pose.locals[rig.tail[k]].angle_ls += hi * most / static_cast<float>(n);
+  float curl = hi * most, lift = 0.0f;
+  if (hi == 1.0f && hits(most)) {
+    // Curled as far as it goes and still in the step (a ledge's face right behind a body that
+    // came down it): the tail lifts at its root instead, straight, the least that clears; if
+    // nothing does, lifted and curled.
+    const float most_lift = kMaxTailLift * (most > 0.0f ? 1.0f : -1.0f);
+    if (!hits(0.0f, most_lift)) {
+      curl = 0.0f;
+      lo = 0.0f, hi = 1.0f;
+      for (int k = 0; k < kClearBisections; ++k) {
+        const float mid = 0.5f * (lo + hi);
+        (hits(0.0f, mid * most_lift) ? lo : hi) = mid;
+      }
+      lift = hi * most_lift;
+    } else {
+      lift = most_lift;
+    }
+  }
+  for (size_t k = 0; k < n; ++k) pose.locals[rig.tail[k]].angle_ls += curl / static_cast<float>(n) + (k == 0 ? lift : 0.0f);
 }
 
 void keep_fin_clear(const AnimContext& ctx, const BodyFrame& body, const RigLimb& fin, const std::vector<Mat2x3>& model, Pose& pose) {
