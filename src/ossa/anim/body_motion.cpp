@@ -175,7 +175,7 @@ BodyMotionResult sweep_body(const AnimContext& ctx, const BodyFrame& body, const
   // The ground line under the body runs through the girdles' support, tilted with the body's
   // pitch. The whole body is swept first; only if that meets something, its parts one by one.
   const float support = body.root_y_ws - rig.root_rest_y * ctx.params.stance_height;
-  const float slope = std::tan(body.pitch);
+  float slope = 0.0f;  // tan(pitch); set, with `reading`, once a part is swept (below)
   // The margin lies ahead only: behind, the body moves away from what it is near (a tail
   // still beside the ledge it came down from).
   const float m = kWallMargin + kWallMarginOfHip * hip;
@@ -185,7 +185,7 @@ BodyMotionResult sweep_body(const AnimContext& ctx, const BodyFrame& body, const
   // step — a tile hill, read as a slope from the ground profile and walked from the root up to
   // the first real riser — is not a wall: a part over it rides up with it, lifted by as much
   // as the hill stands above the ground line, however low the part is (a crocodile's head).
-  const SlopeReading reading = body_slope_reading(ctx);
+  SlopeReading reading;
   auto swept_part = [&](Box box) {
     const float a = slope * facing * (box.min_ws.x - body.x_ws), b = slope * facing * (box.max_ws.x - body.x_ws);
     const float line = support + std::min(a, b);
@@ -218,6 +218,8 @@ BodyMotionResult sweep_body(const AnimContext& ctx, const BodyFrame& body, const
   }
   boxes.clear();
   if (near_something) {
+    slope = std::tan(body.pitch);
+    reading = body_slope_reading(ctx);
     body_boxes(rig, body, model_fs, false, &boxes);
     const Box all = swept_part(boxes[0]);
     auto hit = level.sweep_box(Box{all.min_ws - margin_lo, all.max_ws + margin_hi}, {dx, 0.0f});

@@ -59,11 +59,6 @@ bool GroundProfile::may_rise_above(float a_ws, float b_ws, float y, float up_to)
   return false;
 }
 
-int GroundProfile::column_of(float x_ws) const {
-  const float i = std::floor((x_ws - x0_) / step_);
-  return static_cast<int>(std::clamp(i, 0.0f, static_cast<float>(size() - 1)));
-}
-
 GroundProfile::Tread GroundProfile::tread_at(int i, int most) const {
   // The columns either side of i at its height, no further than `most` columns to the left
   // and then `most` in all (as walking left first, then right, would find them).

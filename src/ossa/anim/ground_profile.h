@@ -49,7 +49,16 @@ class GroundProfile {
   // Column i's ground height, or NaN where there is none.
   float column(int i) const { return heights_[i]; }
   // The column holding x (clamped to the profile).
-  int column_of(float x_ws) const;
+  int column_of(float x_ws) const {
+    // floor, then clamp to the columns: compared before the floor (t < 0 exactly when
+    // floor(t) < 0, t >= n - 1 exactly when floor(t) >= n - 1, and between them truncation is
+    // the floor), which spares the floor's long sequence; NaN converts as before.
+    const float t = (x_ws - x0_) / step_;
+    const int last = size() - 1;
+    if (t < 0.0f) return 0;
+    if (t >= static_cast<float>(last)) return last;
+    return static_cast<int>(t);
+  }
   // May the level have ground higher than y over [a_ws, b_ws] (a box top in y .. up_to)? False
   // only when every column touching the span is known and no higher: a cheap test before an
   // exact level query for tops up to up_to (a span or a band the profile does not hold gives
