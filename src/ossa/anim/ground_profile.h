@@ -63,7 +63,15 @@ class GroundProfile {
   // only when every column touching the span is known and no higher: a cheap test before an
   // exact level query for tops up to up_to (a span or a band the profile does not hold gives
   // true).
-  bool may_rise_above(float a_ws, float b_ws, float y, float up_to) const;
+  // (Inline: asked a few times per girdle and tick.)
+  bool may_rise_above(float a_ws, float b_ws, float y, float up_to) const {
+    if (heights_.empty() || a_ws < x0_ || b_ws > x0_ + static_cast<float>(size() - 1) * step_ || up_to > top_) return true;
+    const int last = column_of(b_ws);
+    for (int i = column_of(a_ws); i <= last; i = run_last_[i] + 1) {
+      if (heights_[i] > y) return true;  // (NaN, no ground, is not higher)
+    }
+    return false;
+  }
 
   // The surface under x read as a slope: the height of the line through the middles of the
   // treads either side (a tread is a run of columns at one height), when x's tread is narrower

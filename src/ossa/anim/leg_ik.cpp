@@ -99,13 +99,20 @@ bool stance_leg_hits(const AnimContext& ctx, const BodyFrame& body, int leg, con
   return polyline_hits_level(ctx.level, p, info.foot_length > 0.0f ? 4 : 3, ctx.hits);
 }
 
-bool LegIkJob::validate() const {
-  return ctx && body && feet && pose && model_fs && leg_dirs && feet->foot_of_leg.size() == ctx->rig.legs.size() &&
-         leg_dirs->size() == ctx->rig.legs.size() && model_fs->size() == static_cast<size_t>(ctx->rig.skeleton.bone_count());
+namespace {
+
+// Shared by validate() and run() (a public member function is not inlined into run()).
+inline bool valid(const LegIkJob& j) {
+  return j.ctx && j.body && j.feet && j.pose && j.model_fs && j.leg_dirs && j.feet->foot_of_leg.size() == j.ctx->rig.legs.size() &&
+         j.leg_dirs->size() == j.ctx->rig.legs.size() && j.model_fs->size() == static_cast<size_t>(j.ctx->rig.skeleton.bone_count());
 }
 
+}  // namespace
+
+bool LegIkJob::validate() const { return valid(*this); }
+
 bool LegIkJob::run() const {
-  if (!validate()) return false;
+  if (!valid(*this)) return false;
   const AnimContext& c = *ctx;
   const BodyFrame& b = *body;
   std::vector<Mat2x3>& model = *model_fs;

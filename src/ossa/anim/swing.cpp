@@ -34,17 +34,26 @@ SwingShape ease_shape(float ease_time) {
           1.0f / std::max(ease_time, 0.01f), true};
 }
 
+namespace {
+
+// swing_point's height alone (a check of the path's heights needs no x).
+float swing_height(const FootState& f, float s) {
+  const float up = f.to_ws.y - f.from_ws.y;
+  const float ease = up >= 0.0f ? smoothstep(0.0f, 0.55f, s) : smoothstep(0.45f, 1.0f, s);
+  const float lift = prototype_range(PrototypeId::kLegSwingY).clamp(f.swing_y.position(s));
+  return f.from_ws.y + ease * up + f.lift * lift + (f.raise != 0.0f ? f.raise * bump(s) : 0.0f);
+}
+
+}  // namespace
+
 glm::vec2 swing_point(const FootState& f, float s) {
   // The blended prototype shapes the step [T 4.4.1]; on steps the foot rises before it moves
   // forward (up) or moves over before it descends (down), so it never clips a riser's corner.
   const float up = f.to_ws.y - f.from_ws.y;
   const float sx = up > 0.0f ? std::clamp((s - 0.12f) / 0.88f, 0.0f, 1.0f)
                  : up < 0.0f ? std::clamp(s / 0.85f, 0.0f, 1.0f) : s;
-  const float ease = up >= 0.0f ? smoothstep(0.0f, 0.55f, s) : smoothstep(0.45f, 1.0f, s);
   const float along = prototype_range(PrototypeId::kLegSwingX).clamp(f.swing_x.position(sx));
-  const float lift = prototype_range(PrototypeId::kLegSwingY).clamp(f.swing_y.position(s));
-  return {f.from_ws.x + along * (f.to_ws.x - f.from_ws.x),
-          f.from_ws.y + ease * up + f.lift * lift + (f.raise != 0.0f ? f.raise * bump(s) : 0.0f)};
+  return {f.from_ws.x + along * (f.to_ws.x - f.from_ws.x), swing_height(f, s)};
 }
 
 void update_stance_clearance(const AnimContext& ctx, FootState& f) {
@@ -78,7 +87,7 @@ bool raise_for_clearance(const AnimContext& ctx, int facing, int leg, FootState&
   if (f.swing_clear.top < f.swing_clear.base) {
     const float lowest = std::min(f.from_ws.y, f.to_ws.y) - std::min(0.0f, ankle_rel.y);
     bool above = true;
-    for (int k = 1; k < 12 && above; ++k) above = swing_point(f, static_cast<float>(k) / 12.0f).y >= lowest;
+    for (int k = 1; k < 12 && above; ++k) above = swing_height(f, static_cast<float>(k) / 12.0f) >= lowest;
     if (above) return true;
   }
   Box foot[kSwingSamples];
