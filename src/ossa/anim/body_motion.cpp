@@ -254,12 +254,13 @@ float limit_by_legs(const AnimContext& ctx, const BodyFrame& body, const FootSet
   if (dx == 0.0f) return dx;
   const AnimRig& rig = ctx.rig;
   const int facing = body.facing;
+  GirdleJointFs joints;
   for (size_t i = 0; i < rig.legs.size(); ++i) {
     const int leg = static_cast<int>(i);
     const FootState& f = feet.of_leg(leg);
     if (f.air) continue;  // hanging over a drop: it holds nothing back
     const RigLeg& info = rig.legs[i];
-    const glm::vec2 joint = body.to_fs(body.girdle_ws(rig, info.girdle));
+    const glm::vec2 joint = joints.of(rig, body, info.girdle);
     const bool stance = f.state == LegState::kStance;
     const glm::vec2 contact = body.to_fs(stance ? f.pos_ws : f.to_ws);
     // The anchor lies within a foot's length of the contact point: a foot that far ahead of
