@@ -165,27 +165,27 @@ bool LegIkJob::run() const {
         const glm::vec2 p[4] = {b.to_ws(joint), b.to_ws(r.middle), b.to_ws(r.end), b.to_ws(tip)};
         return polyline_hits_level(c.level, p, F > 0.0f ? 4 : 3, c.hits);
       };
-      // Candidates run from the planned ankle straight up, then in towards a tuck under the
-      // joint; the first (bisected) that clears wins.
-      const glm::vec2 up = glm::vec2(ankle.x, std::max(ankle.y, joint.y - kLiftBelowJointOfLeg * info.reach));
-      const glm::vec2 tuck = joint + glm::vec2(0.0f, -kTuckBelowJointOfLeg * info.reach);
-      // Last, drawn back from under the joint by a foot's length (a toe against a riser).
-      const glm::vec2 back = tuck - glm::vec2(F + kDrawBackOfLeg * info.reach, 0.0f);
-      // A lifted foot turns back from its roll to hang in its rest direction; drawn back, it
-      // folds up behind the ankle.
-      const glm::vec2 folded(-0.98f, 0.2f);
-      auto candidate = [&](float t) {  // t in [0, 3]: 0 planned, 1 lifted, 2 tucked, 3 back
-        const glm::vec2 a = t <= 1.0f   ? glm::mix(ankle, up, t)
-                            : t <= 2.0f ? glm::mix(up, tuck, t - 1.0f)
-                                        : glm::mix(tuck, back, t - 2.0f);
-        const glm::vec2 d = t <= 1.0f   ? glm::mix(foot_dir, info.foot_dir_ms, t)
-                            : t <= 2.0f ? info.foot_dir_ms
-                                        : glm::mix(info.foot_dir_ms, folded, t - 2.0f);
-        dir = d / std::max(glm::length(d), 1e-6f);
-        return leg_ik(a);
-      };
       const float min_y = std::min({joint.y, ik.middle.y, ik.end.y, ik.end.y + F * foot_dir.y});
       if (!near.clear_above(min_y) && leg_hits(ik)) {
+        // Candidates run from the planned ankle straight up, then in towards a tuck under the
+        // joint; the first (bisected) that clears wins.
+        const glm::vec2 up = glm::vec2(ankle.x, std::max(ankle.y, joint.y - kLiftBelowJointOfLeg * info.reach));
+        const glm::vec2 tuck = joint + glm::vec2(0.0f, -kTuckBelowJointOfLeg * info.reach);
+        // Last, drawn back from under the joint by a foot's length (a toe against a riser).
+        const glm::vec2 back = tuck - glm::vec2(F + kDrawBackOfLeg * info.reach, 0.0f);
+        // A lifted foot turns back from its roll to hang in its rest direction; drawn back, it
+        // folds up behind the ankle.
+        const glm::vec2 folded(-0.98f, 0.2f);
+        auto candidate = [&](float t) {  // t in [0, 3]: 0 planned, 1 lifted, 2 tucked, 3 back
+          const glm::vec2 a = t <= 1.0f   ? glm::mix(ankle, up, t)
+                              : t <= 2.0f ? glm::mix(up, tuck, t - 1.0f)
+                                          : glm::mix(tuck, back, t - 2.0f);
+          const glm::vec2 d = t <= 1.0f   ? glm::mix(foot_dir, info.foot_dir_ms, t)
+                              : t <= 2.0f ? info.foot_dir_ms
+                                          : glm::mix(info.foot_dir_ms, folded, t - 2.0f);
+          dir = d / std::max(glm::length(d), 1e-6f);
+          return leg_ik(a);
+        };
         float lo = 0.0f, hi = -1.0f;
         for (float t : {1.0f, 2.0f, 3.0f}) {
           if (!leg_hits(candidate(t))) {
