@@ -11,21 +11,26 @@ namespace {
 
 bool finite(glm::vec2 v) { return std::isfinite(v.x) && std::isfinite(v.y); }
 
+// The inputs' contract (validate()), on plain values.
+inline bool valid_inputs(glm::vec2 root, float upper_length, float lower_length, glm::vec2 target,
+                         float bend_sign, float soft_reach) {
+  return finite(root) && finite(target) && std::isfinite(upper_length) &&
+         std::isfinite(lower_length) && upper_length >= 0.0f && lower_length >= 0.0f &&
+         (bend_sign == 1.0f || bend_sign == -1.0f) && soft_reach >= 0.0f &&
+         soft_reach < 1.0f;
+}
+
 // Shared by validate() and run(): a public member function is not inlined into run() in a
 // -fPIC build (it could be interposed), and run() is hot.
 inline bool valid(const TwoBoneIkJob& j) {
-  return finite(j.root) && finite(j.target) && std::isfinite(j.upper_length) &&
-         std::isfinite(j.lower_length) && j.upper_length >= 0.0f && j.lower_length >= 0.0f &&
-         (j.bend_sign == 1.0f || j.bend_sign == -1.0f) && j.soft_reach >= 0.0f &&
-         j.soft_reach < 1.0f;
+  return valid_inputs(j.root, j.upper_length, j.lower_length, j.target, j.bend_sign, j.soft_reach);
 }
 
-}  // namespace
-
-bool TwoBoneIkJob::validate() const { return valid(*this); }
-
-bool TwoBoneIkJob::run() {
-  if (!valid(*this)) return false;
+// run()'s solve on plain values, written into `out` (the angles only when compute_angles): the
+// job and the solve_* shortcuts share it, so that a shortcut neither builds a job nor copies
+// its result out.
+[[gnu::always_inline]] inline void solve_into(glm::vec2 root, float upper_length, float lower_length, glm::vec2 target,
+                                             float bend_sign, float soft_reach, bool compute_angles, TwoBoneIkResult& out) {
   // The triangle is solved in double: the lower bone's direction is (r - l1 c, -l1 s) / l2
   // (below), and with a short lower bone (foot-sized l2 under a long thigh) float rounding of
   // c and s would be amplified by l1 / l2. In double that amplification stays far below float
@@ -115,7 +120,6 @@ bool TwoBoneIkJob::run() {
     }
   }
 
-  TwoBoneIkResult& out = result;
   const double upper_x = ux * dir_x - uy * dir_y;
   const double upper_y = ux * dir_y + uy * dir_x;
   out.upper_dir = {static_cast<float>(upper_x), static_cast<float>(upper_y)};
@@ -128,27 +132,27 @@ bool TwoBoneIkJob::run() {
     out.upper_angle = fast_atan2(out.upper_dir.y, out.upper_dir.x);
     out.lower_angle = lower_angle;
   }
-  return true;
 }
 
-namespace {
-
-TwoBoneIkResult solve(glm::vec2 root, float upper_length, float lower_length, glm::vec2 target,
-                      float bend_sign, float soft_reach, bool compute_angles) {
-  TwoBoneIkJob job;
-  job.root = root;
-  job.upper_length = upper_length;
-  job.lower_length = lower_length;
-  job.target = target;
-  job.bend_sign = bend_sign;
-  job.soft_reach = soft_reach;
-  job.compute_angles = compute_angles;
-  const bool ok = job.run();
+[[gnu::always_inline]] inline TwoBoneIkResult solve(glm::vec2 root, float upper_length, float lower_length, glm::vec2 target,
+                                                    float bend_sign, float soft_reach, bool compute_angles) {
+  // As a fresh TwoBoneIkJob's run() would.
+  const bool ok = valid_inputs(root, upper_length, lower_length, target, bend_sign, soft_reach);
   OSSA_ASSERT(ok, "solve_two_bone_ik: invalid inputs (see TwoBoneIkJob::validate)");
-  return job.result;
+  TwoBoneIkResult out;
+  solve_into(root, upper_length, lower_length, target, bend_sign, soft_reach, compute_angles, out);
+  return out;
 }
 
 }  // namespace
+
+bool TwoBoneIkJob::validate() const { return valid(*this); }
+
+bool TwoBoneIkJob::run() {
+  if (!valid(*this)) return false;
+  solve_into(root, upper_length, lower_length, target, bend_sign, soft_reach, compute_angles, result);
+  return true;
+}
 
 TwoBoneIkResult solve_two_bone_ik(glm::vec2 root, float upper_length, float lower_length,
                                   glm::vec2 target, float bend_sign, float soft_reach) {
