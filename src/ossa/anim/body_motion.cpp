@@ -276,8 +276,9 @@ float limit_by_legs(const AnimContext& ctx, const BodyFrame& body, const FootSet
     const bool near_steps =
         anchor.x < joint.x && !(stance ? f.stance_reach_clear : f.swing_clear).clear_above(anchor.y + 0.1f * rig.hip_height) &&
         !on_slope(ctx, body, info, anchor, {anchor.x + level_reach, joint.y});
-    const float near_reach = std::max(std::sqrt(std::max(kStepReach * kStepReach * r * r - h * h, 0.0f)), 0.5f * level_reach);
-    const float ahead = anchor.x + (near_steps ? near_reach : level_reach) - joint.x;
+    float joint_reach = level_reach;  // (the step reach only near steps)
+    if (near_steps) joint_reach = std::max(std::sqrt(std::max(kStepReach * kStepReach * r * r - h * h, 0.0f)), 0.5f * level_reach);
+    const float ahead = anchor.x + joint_reach - joint.x;
     dx = facing * std::min(std::fabs(dx), std::max(ahead, 0.0f));
     // Nor does the body leave a swinging foot behind further than its leg reaches (a foot
     // that lifted late, far back on stairs, would sweep the leg through the steps between).

@@ -191,9 +191,14 @@ void body_target(Placement& p, const std::vector<float>& height, float* target_r
   if (rig.girdles.size() >= 2) {
     const glm::vec2 df = rig.girdles.front().joint_ms - root_rest, db = rig.girdles.back().joint_ms - root_rest;
     const glm::vec2 d = df - db;  // the rest chord between the girdles
-    const float len = std::sqrt(d.x * d.x + d.y * d.y);
+    if (!(d == p.state.chord)) {
+      p.state.chord = d;
+      p.state.chord_length = std::sqrt(d.x * d.x + d.y * d.y);
+      p.state.chord_angle = fast_atan2(d.y, d.x);
+    }
+    const float len = p.state.chord_length;
     const float dy = height.front() - height.back();
-    const float total = std::asin(std::clamp(dy / std::max(len, 1e-4f), -0.9f, 0.9f)) - fast_atan2(d.y, d.x);
+    const float total = std::asin(std::clamp(dy / std::max(len, 1e-4f), -0.9f, 0.9f)) - p.state.chord_angle;
     *target_pitch = std::clamp(wrap_angle(total - angle_extra), -kMaxTargetPitch, kMaxTargetPitch);
     const float a = *target_pitch + angle_extra;
     const float c = std::cos(a), s = std::sin(a);
@@ -233,8 +238,10 @@ void keep_stance_legs_in_reach(Placement& p, std::vector<float>& need, std::vect
   const size_t n_groups = rig.girdles.size();
   for (int pass = 0; pass < 3; ++pass) {
     bool beyond = false;  // a stance foot out of reach even level with the joint
-    std::fill(need.begin(), need.end(), 0.0f);
-    std::fill(room.begin(), room.end(), 1e30f);
+    for (size_t g = 0; g < n_groups; ++g) {  // (one loop: no call to memset for two floats)
+      need[g] = 0.0f;
+      room[g] = 1e30f;
+    }
     GirdleJointFs joints;
     for (size_t i = 0; i < rig.legs.size(); ++i) {
       const RigLeg& info = rig.legs[i];
