@@ -43,8 +43,12 @@ constexpr float kDrawBackOfLeg = 0.02f;
 
 }  // namespace
 
-glm::vec2 leg_ankle(const AnimContext& ctx, const BodyFrame& body, int leg, glm::vec2 contact_fs, glm::vec2 joint_fs,
-                    bool level_aware, const Clearance& near, glm::vec2* foot_dir, bool* limited) {
+namespace {
+
+// leg_ankle, inline in the leg IK and leg_anchor (run once per leg and tick, and more).
+[[gnu::always_inline]] inline glm::vec2 ankle_of(const AnimContext& ctx, const BodyFrame& body, int leg, glm::vec2 contact_fs,
+                                                 glm::vec2 joint_fs, bool level_aware, const Clearance& near, glm::vec2* foot_dir,
+                                                 bool* limited) {
   // Hooves and toes roll: with the contact point c fixed, the ankle a(θ) = c - F·u(θ) lies on
   // a circle of the foot's length F around it. The leg (joint j → ankle) reaches r, so
   // |a - j| <= r, i.e. u(θ)·d >= q with d = c - j and q = (|d|² + F² - r²) / 2F: an arc of
@@ -75,11 +79,18 @@ glm::vec2 leg_ankle(const AnimContext& ctx, const BodyFrame& body, int leg, glm:
   return contact_fs - F * *foot_dir;
 }
 
+}  // namespace
+
+glm::vec2 leg_ankle(const AnimContext& ctx, const BodyFrame& body, int leg, glm::vec2 contact_fs, glm::vec2 joint_fs,
+                    bool level_aware, const Clearance& near, glm::vec2* foot_dir, bool* limited) {
+  return ankle_of(ctx, body, leg, contact_fs, joint_fs, level_aware, near, foot_dir, limited);
+}
+
 glm::vec2 leg_anchor(const AnimContext& ctx, const BodyFrame& body, int leg, glm::vec2 contact_fs, glm::vec2 joint_fs,
                      const Clearance& near, float* radius) {
   glm::vec2 dir;
   bool limited = false;
-  const glm::vec2 ankle = leg_ankle(ctx, body, leg, contact_fs, joint_fs, true, near, &dir, &limited);
+  const glm::vec2 ankle = ankle_of(ctx, body, leg, contact_fs, joint_fs, true, near, &dir, &limited);
   if (!limited) {
     *radius = ctx.rig.legs[leg].contact_reach;
     return contact_fs;
@@ -136,7 +147,7 @@ bool LegIkJob::run() const {
     }
     glm::vec2 foot_dir;
     const Clearance& near = f.state == LegState::kStance ? f.stance_clear : f.swing_clear;
-    glm::vec2 ankle = leg_ankle(c, b, leg, contact, joint, true, near, &foot_dir, nullptr);
+    glm::vec2 ankle = ankle_of(c, b, leg, contact, joint, true, near, &foot_dir, nullptr);
     if (f.state == LegState::kSwing) {
       // The same for the ankle when the foot could not roll far enough.
       const float r = info.leg_reach;
