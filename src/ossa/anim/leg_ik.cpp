@@ -19,10 +19,12 @@ constexpr float kLiftBelowJointOfLeg = 0.3f;
 constexpr float kTuckBelowJointOfLeg = 0.45f;
 constexpr float kDrawBackOfLeg = 0.02f;
 
-// leg_ankle's rare part, out of line so that the common one stays small: turns a rolled foot
-// back until it clears the level; false if it already did.
-[[gnu::noinline]] bool limit_foot_roll(const AnimContext& ctx, const BodyFrame& body, int leg, glm::vec2 contact_fs,
-                                       glm::vec2* foot_dir) {
+
+}  // namespace
+
+// leg_ankle's rare part (leg_ik.h), out of line so that the common one stays small.
+[[gnu::noinline]] bool detail::limit_foot_roll(const AnimContext& ctx, const BodyFrame& body, int leg, glm::vec2 contact_fs,
+                                               glm::vec2* foot_dir) {
   const RigLeg& info = ctx.rig.legs[leg];
   const float F = info.foot_span;
   auto clear = [&](glm::vec2 u) {
@@ -39,64 +41,6 @@ constexpr float kDrawBackOfLeg = 0.02f;
   }
   *foot_dir = lo > 0.0f ? rotate(rest, lo * full) : rest;
   return true;
-}
-
-}  // namespace
-
-namespace {
-
-// leg_ankle, inline in the leg IK and leg_anchor (run once per leg and tick, and more).
-[[gnu::always_inline]] inline glm::vec2 ankle_of(const AnimContext& ctx, const BodyFrame& body, int leg, glm::vec2 contact_fs,
-                                                 glm::vec2 joint_fs, bool level_aware, const Clearance& near, glm::vec2* foot_dir,
-                                                 bool* limited) {
-  // Hooves and toes roll: with the contact point c fixed, the ankle a(θ) = c - F·u(θ) lies on
-  // a circle of the foot's length F around it. The leg (joint j → ankle) reaches r, so
-  // |a - j| <= r, i.e. u(θ)·d >= q with d = c - j and q = (|d|² + F² - r²) / 2F: an arc of
-  // directions within β = acos(q / |d|) of d. The foot keeps its rest direction inside the
-  // arc and turns to the arc's nearer end outside it (into line with d when it is empty).
-  const RigLeg& info = ctx.rig.legs[leg];
-  *foot_dir = info.foot_dir_ms;
-  if (limited) *limited = false;
-  const float F = info.foot_span;
-  if (F <= 0.0f) return contact_fs;  // flat contact: the contact point is the ankle
-  const glm::vec2 d = contact_fs - joint_fs;
-  const float r = info.leg_reach;
-  const float dd = glm::dot(d, d);
-  const float q = (dd + F * F - r * r) / (2.0f * F);
-  if (glm::dot(d, info.foot_dir_ms) < q && dd > 1e-12f) {
-    const float len = std::sqrt(dd);
-    const glm::vec2 n = d / len;
-    const float cos_b = std::min(q / len, 1.0f);
-    const float sin_b = std::sqrt(std::max(1.0f - cos_b * cos_b, 0.0f));
-    // The side of d the rest direction lies on.
-    const float side = n.x * info.foot_dir_ms.y - n.y * info.foot_dir_ms.x >= 0.0f ? 1.0f : -1.0f;
-    *foot_dir = {cos_b * n.x - side * sin_b * n.y, side * sin_b * n.x + cos_b * n.y};
-    if (level_aware && *foot_dir != info.foot_dir_ms && !near.clear_above(std::min(contact_fs.y, contact_fs.y - F * foot_dir->y)) &&
-        limit_foot_roll(ctx, body, leg, contact_fs, foot_dir) && limited) {
-      *limited = true;
-    }
-  }
-  return contact_fs - F * *foot_dir;
-}
-
-}  // namespace
-
-glm::vec2 leg_ankle(const AnimContext& ctx, const BodyFrame& body, int leg, glm::vec2 contact_fs, glm::vec2 joint_fs,
-                    bool level_aware, const Clearance& near, glm::vec2* foot_dir, bool* limited) {
-  return ankle_of(ctx, body, leg, contact_fs, joint_fs, level_aware, near, foot_dir, limited);
-}
-
-glm::vec2 leg_anchor(const AnimContext& ctx, const BodyFrame& body, int leg, glm::vec2 contact_fs, glm::vec2 joint_fs,
-                     const Clearance& near, float* radius) {
-  glm::vec2 dir;
-  bool limited = false;
-  const glm::vec2 ankle = ankle_of(ctx, body, leg, contact_fs, joint_fs, true, near, &dir, &limited);
-  if (!limited) {
-    *radius = ctx.rig.legs[leg].contact_reach;
-    return contact_fs;
-  }
-  *radius = kReachLimit * ctx.rig.legs[leg].reach;
-  return ankle;
 }
 
 bool stance_leg_hits(const AnimContext& ctx, const BodyFrame& body, int leg, const FootState& f, glm::vec2 joint_fs) {
@@ -147,7 +91,7 @@ bool LegIkJob::run() const {
     }
     glm::vec2 foot_dir;
     const Clearance& near = f.state == LegState::kStance ? f.stance_clear : f.swing_clear;
-    glm::vec2 ankle = ankle_of(c, b, leg, contact, joint, true, near, &foot_dir, nullptr);
+    glm::vec2 ankle = leg_ankle(c, b, leg, contact, joint, true, near, &foot_dir, nullptr);
     if (f.state == LegState::kSwing) {
       // The same for the ankle when the foot could not roll far enough.
       const float r = info.leg_reach;
