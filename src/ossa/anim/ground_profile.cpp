@@ -45,11 +45,6 @@ void GroundProfile::build(const Level& level, float x0_ws, float x1_ws, float to
   for (int i = n - 1; i >= 0; --i) run_last_[i] = i + 1 < n && heights_[i + 1] == heights_[i] ? run_last_[i + 1] : i;
 }
 
-bool GroundProfile::covers(const Level& level, float x0_ws, float x1_ws, float lo_ws, float hi_ws) const {
-  return !heights_.empty() && level_ == &level && revision_ == level.revision() && x0_ws >= x0_ &&
-         x1_ws <= x0_ + static_cast<float>(size()) * step_ && hi_ws <= top_ && lo_ws >= top_ - depth_;
-}
-
 GroundProfile::Tread GroundProfile::tread_at(int i, int most) const {
   // The columns either side of i at its height, no further than `most` columns to the left
   // and then `most` in all (as walking left first, then right, would find them).

@@ -39,7 +39,10 @@ class GroundProfile {
 
   // Does the profile hold [x0_ws, x1_ws] with its vertical band around [lo_ws, hi_ws], sampled
   // from this revision of the level?
-  bool covers(const Level& level, float x0_ws, float x1_ws, float lo_ws, float hi_ws) const;
+  bool covers(const Level& level, float x0_ws, float x1_ws, float lo_ws, float hi_ws) const {  // (inline: every tick)
+    return !heights_.empty() && level_ == &level && revision_ == level.revision() && x0_ws >= x0_ &&
+           x1_ws <= x0_ + static_cast<float>(size()) * step_ && hi_ws <= top_ && lo_ws >= top_ - depth_;
+  }
 
   bool empty() const { return heights_.empty(); }
   int size() const { return static_cast<int>(heights_.size()); }
