@@ -45,9 +45,8 @@ namespace {
   return f.from_ws.y + ease * up + f.lift * lift + (f.raise != 0.0f ? f.raise * bump(s) : 0.0f);
 }
 
-}  // namespace
-
-glm::vec2 swing_point(const FootState& f, float s) {
+// swing_point, inline in this file's callers (the swing of every foot, every tick).
+[[gnu::always_inline]] inline glm::vec2 point_on_swing(const FootState& f, float s) {
   // The blended prototype shapes the step [T 4.4.1]; on steps the foot rises before it moves
   // forward (up) or moves over before it descends (down), so it never clips a riser's corner.
   const float up = f.to_ws.y - f.from_ws.y;
@@ -56,6 +55,10 @@ glm::vec2 swing_point(const FootState& f, float s) {
   const float along = prototype_range(PrototypeId::kLegSwingX).clamp(f.swing_x.position(sx));
   return {f.from_ws.x + along * (f.to_ws.x - f.from_ws.x), swing_height(f, s)};
 }
+
+}  // namespace
+
+glm::vec2 swing_point(const FootState& f, float s) { return point_on_swing(f, s); }
 
 void update_stance_clearance(const AnimContext& ctx, FootState& f) {
   // Any leg's foot may stand here after a turn: the longest foot's circle around the contact,
@@ -95,7 +98,7 @@ bool raise_for_clearance(const AnimContext& ctx, int facing, int leg, FootState&
   // A foot that stands pressed against a step (turned round on a narrow tread) only has to
   // clear it once it has left it.
   auto foot_box = [&](float s) {
-    const glm::vec2 p = swing_point(f, s);
+    const glm::vec2 p = point_on_swing(f, s);
     const glm::vec2 q = p + glm::vec2(facing * ankle_rel.x, ankle_rel.y);
     const glm::vec2 r = p + glm::vec2(facing * tip_rel.x, tip_rel.y);
     // A little narrower than find_landing's test, so a landing it found clears at its end.
@@ -201,7 +204,7 @@ void step_to(const FootholdInputs& in, int leg, FootState& f, glm::vec2 spot) {
   start_ease(in, leg, f, &spot);
   // Already lifted on this tick: the first sample of a path cleared from the second on.
   f.progress = 1.0f / static_cast<float>(kSwingSamples);
-  f.pos_ws = swing_point(f, f.progress);
+  f.pos_ws = point_on_swing(f, f.progress);
 }
 
 namespace {
@@ -280,7 +283,7 @@ bool advance_swing(const FootholdInputs& in, const SwingTick& tick, int leg, Foo
     update_stance_clearance(ctx, f);
     return true;
   }
-  f.pos_ws = swing_point(f, std::clamp(f.progress, 0.0f, 1.0f));
+  f.pos_ws = point_on_swing(f, std::clamp(f.progress, 0.0f, 1.0f));
   return false;
 }
 
