@@ -73,6 +73,21 @@ struct BodyFrame {
   mutable glm::vec2 cs_{1.0f, 0.0f};  // cos, sin of cached_angle_
 };
 
+// A girdle's joint in facing space for a loop over the legs (a girdle's legs come one after
+// another): worked out once per girdle while the body stays where it is. One per loop; stale
+// once the body moves.
+struct GirdleJointFs {
+  int girdle = -1;
+  glm::vec2 joint_fs{0.0f};
+  glm::vec2 of(const AnimRig& rig, const BodyFrame& body, int g) {
+    if (g != girdle) {
+      girdle = g;
+      joint_fs = body.to_fs(body.girdle_ws(rig, g));
+    }
+    return joint_fs;
+  }
+};
+
 struct FootState {                  // per foot: moves between legs when the creature turns
   LegState state = LegState::kStance;
   glm::vec2 pos_ws{0.0f};           // contact point target

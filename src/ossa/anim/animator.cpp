@@ -342,7 +342,7 @@ void Animator::step_legs(float dt, float ism, const Level& level) {
       bool lift = lp.lift_due || handoff_.lift_now[feet_.foot_of_leg[i]];
       // A foot left behind (a gait change, a shortened step) lifts before it would slide.
       const RigLeg& info = rig.legs[i];
-      const glm::vec2 joint = body_.to_fs(body_.girdle_ws(rig, info.girdle));
+      const glm::vec2 joint = lift ? glm::vec2(0.0f) : body_.to_fs(body_.girdle_ws(rig, info.girdle));
       const glm::vec2 contact = body_.to_fs(f.pos_ws);
       if (!lift && contact.x - info.foot_span < joint.x) {  // else its anchor is ahead of the joint
         float r;

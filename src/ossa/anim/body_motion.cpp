@@ -176,7 +176,7 @@ BodyMotionResult sweep_body(const AnimContext& ctx, const BodyFrame& body, const
   // The ground line under the body runs through the girdles' support, tilted with the body's
   // pitch. The whole body is swept first; only if that meets something, its parts one by one.
   const float support = body.root_y_ws - rig.root_rest_y * ctx.params.stance_height;
-  const float slope = std::tan(body.pitch);
+  float slope = 0.0f;  // tan(pitch); set, with `reading`, once a part is swept (below)
   // The margin lies ahead only: behind, the body moves away from what it is near (a tail
   // still beside the ledge it came down from).
   const float m = kWallMargin + kWallMarginOfHip * hip;
@@ -186,7 +186,7 @@ BodyMotionResult sweep_body(const AnimContext& ctx, const BodyFrame& body, const
   // step — a tile hill, read as a slope from the ground profile and walked from the root up to
   // the first real riser — is not a wall: a part over it rides up with it, lifted by as much
   // as the hill stands above the ground line, however low the part is (a crocodile's head).
-  const SlopeReading reading = body_slope_reading(ctx);
+  SlopeReading reading;
   auto swept_part = [&](Box box) {
     const float a = slope * facing * (box.min_ws.x - body.x_ws), b = slope * facing * (box.max_ws.x - body.x_ws);
     const float line = support + std::min(a, b);
@@ -219,6 +219,8 @@ BodyMotionResult sweep_body(const AnimContext& ctx, const BodyFrame& body, const
   }
   boxes.clear();
   if (near_something) {
+    slope = std::tan(body.pitch);
+    reading = body_slope_reading(ctx);
     body_boxes(rig, body, model_fs, false, &boxes);
     const Box all = swept_part(boxes[0]);
     auto hit = level.sweep_box(Box{all.min_ws - margin_lo, all.max_ws + margin_hi}, {dx, 0.0f});
@@ -253,12 +255,13 @@ float limit_by_legs(const AnimContext& ctx, const BodyFrame& body, const FootSet
   if (dx == 0.0f) return dx;
   const AnimRig& rig = ctx.rig;
   const int facing = body.facing;
+  GirdleJointFs joints;
   for (size_t i = 0; i < rig.legs.size(); ++i) {
     const int leg = static_cast<int>(i);
     const FootState& f = feet.of_leg(leg);
     if (f.air) continue;  // hanging over a drop: it holds nothing back
     const RigLeg& info = rig.legs[i];
-    const glm::vec2 joint = body.to_fs(body.girdle_ws(rig, info.girdle));
+    const glm::vec2 joint = joints.of(rig, body, info.girdle);
     const bool stance = f.state == LegState::kStance;
     const glm::vec2 contact = body.to_fs(stance ? f.pos_ws : f.to_ws);
     // The anchor lies within a foot's length of the contact point: a foot that far ahead of
@@ -274,8 +277,9 @@ float limit_by_legs(const AnimContext& ctx, const BodyFrame& body, const FootSet
     const bool near_steps =
         anchor.x < joint.x && !(stance ? f.stance_reach_clear : f.swing_clear).clear_above(anchor.y + 0.1f * rig.hip_height) &&
         !on_slope(ctx, body, info, anchor, {anchor.x + level_reach, joint.y});
-    const float near_reach = std::max(std::sqrt(std::max(kStepReach * kStepReach * r * r - h * h, 0.0f)), 0.5f * level_reach);
-    const float ahead = anchor.x + (near_steps ? near_reach : level_reach) - joint.x;
+    float joint_reach = level_reach;  // (the step reach only near steps)
+    if (near_steps) joint_reach = std::max(std::sqrt(std::max(kStepReach * kStepReach * r * r - h * h, 0.0f)), 0.5f * level_reach);
+    const float ahead = anchor.x + joint_reach - joint.x;
     dx = facing * std::min(std::fabs(dx), std::max(ahead, 0.0f));
     // Nor does the body leave a swinging foot behind further than its leg reaches (a foot
     // that lifted late, far back on stairs, would sweep the leg through the steps between).

@@ -166,10 +166,10 @@ void girdle_heights(Placement& p, std::vector<float>& height) {
                          : std::nullopt) {
       ground = std::max(ground, 0.5f * (ground + below->height_ws));
     }
-    height[g] = ground + girdle.rest_height * params.stance_height + p.in.bob - p.in.crouch;
+    const float standing = ground + girdle.rest_height * params.stance_height + p.in.bob - p.in.crouch;
     // A foot waiting above a lower step (see the swing) brings its girdle down to it, but not
     // so far that a leg on the ground folds up (its knee would reach into the ground).
-    float floor = -1e30f, lowest = height[g];
+    float floor = -1e30f, lowest = standing;
     for (int leg : girdle.legs) {
       const FootState& f = p.feet.of_leg(leg);
       if (f.state == LegState::kStance) floor = std::max(floor, f.pos_ws.y + kLowestGirdleOfRest * girdle.rest_height);
@@ -179,7 +179,7 @@ void girdle_heights(Placement& p, std::vector<float>& height) {
       const float dx = std::min(std::fabs(foot.x - gx), 0.95f * r);
       lowest = std::min(lowest, foot.y + std::sqrt(r * r - dx * dx));
     }
-    height[g] = std::min(height[g], std::max(lowest, floor));
+    height[g] = std::min(standing, std::max(lowest, floor));
   }
 }
 
@@ -191,9 +191,14 @@ void body_target(Placement& p, const std::vector<float>& height, float* target_r
   if (rig.girdles.size() >= 2) {
     const glm::vec2 df = rig.girdles.front().joint_ms - root_rest, db = rig.girdles.back().joint_ms - root_rest;
     const glm::vec2 d = df - db;  // the rest chord between the girdles
-    const float len = std::sqrt(d.x * d.x + d.y * d.y);
+    if (!(d == p.state.chord)) {
+      p.state.chord = d;
+      p.state.chord_length = std::sqrt(d.x * d.x + d.y * d.y);
+      p.state.chord_angle = fast_atan2(d.y, d.x);
+    }
+    const float len = p.state.chord_length;
     const float dy = height.front() - height.back();
-    const float total = std::asin(std::clamp(dy / std::max(len, 1e-4f), -0.9f, 0.9f)) - fast_atan2(d.y, d.x);
+    const float total = std::asin(std::clamp(dy / std::max(len, 1e-4f), -0.9f, 0.9f)) - p.state.chord_angle;
     *target_pitch = std::clamp(wrap_angle(total - angle_extra), -kMaxTargetPitch, kMaxTargetPitch);
     const float a = *target_pitch + angle_extra;
     const float c = std::cos(a), s = std::sin(a);
@@ -233,14 +238,17 @@ void keep_stance_legs_in_reach(Placement& p, std::vector<float>& need, std::vect
   const size_t n_groups = rig.girdles.size();
   for (int pass = 0; pass < 3; ++pass) {
     bool beyond = false;  // a stance foot out of reach even level with the joint
-    std::fill(need.begin(), need.end(), 0.0f);
-    std::fill(room.begin(), room.end(), 1e30f);
+    for (size_t g = 0; g < n_groups; ++g) {  // (one loop: no call to memset for two floats)
+      need[g] = 0.0f;
+      room[g] = 1e30f;
+    }
+    GirdleJointFs joints;
     for (size_t i = 0; i < rig.legs.size(); ++i) {
       const RigLeg& info = rig.legs[i];
       const FootState& f = p.feet.of_leg(static_cast<int>(i));
       // On the turn tick, swinging feet (taken over by other legs) must stay in reach too.
       if (f.state != LegState::kStance && !(p.in.turning && !f.easing)) continue;
-      const glm::vec2 joint = p.body.to_fs(p.body.girdle_ws(rig, info.girdle));
+      const glm::vec2 joint = joints.of(rig, p.body, info.girdle);
       float r;
       const glm::vec2 anchor = leg_anchor(p.ctx, p.body, static_cast<int>(i), p.body.to_fs(f.pos_ws), joint,
                                           f.state == LegState::kStance ? f.stance_clear : f.swing_clear, &r);
@@ -291,11 +299,12 @@ void keep_stance_legs_unfolded(Placement& p, std::vector<float>& fold_raise, std
   const AnimRig& rig = p.ctx.rig;
   std::fill(fold_raise.begin(), fold_raise.end(), 0.0f);
   bool any = false;
+  GirdleJointFs joints;
   for (size_t i = 0; i < rig.legs.size(); ++i) {
     const FootState& f = p.feet.of_leg(static_cast<int>(i));
     if (f.state != LegState::kStance) continue;
     const float fold = rig.legs[i].fold;
-    const glm::vec2 joint = p.body.to_fs(p.body.girdle_ws(rig, rig.legs[i].girdle));
+    const glm::vec2 joint = joints.of(rig, p.body, rig.legs[i].girdle);
     // The ankle lies within a foot's length of the contact point.
     if (glm::length(p.body.to_fs(f.pos_ws) - joint) - rig.legs[i].foot_span >= fold) continue;
     glm::vec2 dir;
@@ -330,11 +339,11 @@ void keep_stance_legs_unfolded(Placement& p, std::vector<float>& fold_raise, std
 
 // How far leg i's stance foot is beyond its leg's reach (≤ 0: in reach; -1e30 for a leg not
 // on the ground).
-float stance_excess(const Placement& p, size_t i) {
+float stance_excess(const Placement& p, size_t i, GirdleJointFs& joints) {
   const AnimRig& rig = p.ctx.rig;
   const FootState& f = p.feet.of_leg(static_cast<int>(i));
   if (f.state != LegState::kStance) return -1e30f;
-  const glm::vec2 joint = p.body.to_fs(p.body.girdle_ws(rig, rig.legs[i].girdle));
+  const glm::vec2 joint = joints.of(rig, p.body, rig.legs[i].girdle);
   float r;
   const glm::vec2 anchor = leg_anchor(p.ctx, p.body, static_cast<int>(i), p.body.to_fs(f.pos_ws), joint, f.stance_clear, &r);
   return glm::length(anchor - joint) - r;
@@ -343,7 +352,8 @@ float stance_excess(const Placement& p, size_t i) {
 // How far the stance foot furthest out of its leg's reach is beyond it (≤ 0: all in reach).
 float stance_reach_excess(const Placement& p) {
   float most = -1e30f;
-  for (size_t i = 0; i < p.ctx.rig.legs.size(); ++i) most = std::max(most, stance_excess(p, i));
+  GirdleJointFs joints;
+  for (size_t i = 0; i < p.ctx.rig.legs.size(); ++i) most = std::max(most, stance_excess(p, i, joints));
   return most;
 }
 
@@ -359,11 +369,12 @@ void keep_knees_off_ground(Placement& p, std::vector<float>& stance_up, std::vec
   for (int pass = 0; pass < kKneePasses; ++pass) {
     std::fill(stance_up.begin(), stance_up.end(), 0.0f);
     std::fill(swing_up.begin(), swing_up.end(), 0.0f);
+    GirdleJointFs joints;
     for (size_t i = 0; i < rig.legs.size(); ++i) {
       const FootState& f = p.feet.of_leg(static_cast<int>(i));
       const bool stance = f.state == LegState::kStance;
       const RigLeg& info = rig.legs[i];
-      const glm::vec2 joint = p.body.to_fs(p.body.girdle_ws(rig, info.girdle));
+      const glm::vec2 joint = joints.of(rig, p.body, info.girdle);
       const float margin = kKneeMarginOfReach * info.reach;
       // The knee is no lower than a thigh below the joint nor a shin below the ankle: cheap
       // tests before the IK (unless steps rise near the foot, or any ground above it: a shin
@@ -495,8 +506,9 @@ void keep_body_out_of_ground(Placement& p, float fell) {
 // the next chance instead of sliding (the gait clock reads the hand-off).
 void release_overstretched_feet(Placement& p) {
   if (p.reach_checked && p.body.root_y_ws == p.checked_root && p.body.pitch == p.checked_pitch) return;
+  GirdleJointFs joints;
   for (size_t i = 0; i < p.ctx.rig.legs.size(); ++i) {
-    if (stance_excess(p, i) > 0.0f) p.handoff.lift_now[p.feet.foot_of_leg[i]] = 1;
+    if (stance_excess(p, i, joints) > 0.0f) p.handoff.lift_now[p.feet.foot_of_leg[i]] = 1;
   }
 }
 

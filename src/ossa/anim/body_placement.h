@@ -28,6 +28,10 @@ struct BodyState {
   float pitch_target = 0.0f;  // the pitch of the ground under the girdles, radians
   float root_vy = 0.0f;       // vertical speed of the root, m/s (drives the tail)
   float body_lift = 0.0f;     // legless: how far the wave has lately lifted the body, metres
+  // The rest chord between the end girdles (model space) the placement last used, and its
+  // length and angle: worked out once, not every tick.
+  glm::vec2 chord{NAN, NAN};
+  float chord_length = 0.0f, chord_angle = 0.0f;
 };
 
 struct PlacementInputs {

@@ -36,9 +36,6 @@ constexpr float kStanceReachUse = 0.9f;
 constexpr float kMinStrideOfHip = 0.25f;
 // Froude number of the full run (full stick with run).
 constexpr float kRunFroude = 2.5f;
-// Phase offsets ease towards their targets at this many cycles per second (× the
-// interpolation speed multiplier).
-constexpr float kOffsetEaseRate = 0.6f;
 
 }  // namespace
 
@@ -144,16 +141,6 @@ void start_clock(GaitState& gait, FootSet& feet, int lead) {
   for (FootState& f : feet.feet) f.phase_prev = frac(gait.phase + f.offset);
 }
 
-LegPhase advance_leg_phase(const GaitState& gait, FootState& f, float target_offset, bool starting, float ism, float dt) {
-  if (f.offset != target_offset) {
-    f.offset = circular_lerp(f.offset, target_offset,
-                             std::min(1.0f, kOffsetEaseRate * ism * dt / std::max(std::fabs(phase_diff(f.offset, target_offset)), 1e-6f)));
-  }
-  LegPhase out;
-  out.phase = frac(gait.phase + f.offset);
-  if (f.state == LegState::kStance) out.lift_due = starting ? out.phase >= gait.duty : crossed(f.phase_prev, out.phase, gait.duty);
-  return out;
-}
 
 }  // namespace anim
 }  // namespace ossa

@@ -10,6 +10,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "ossa/anim/anim_math.h"
 #include "ossa/anim/anim_rig.h"
 #include "ossa/anim/anim_state.h"
 #include "ossa/anim/animator_params.h"
@@ -64,7 +65,20 @@ struct LegPhase {
   float phase = 0.0f;
   bool lift_due = false;
 };
-LegPhase advance_leg_phase(const GaitState& gait, FootState& foot, float target_offset, bool starting, float ism, float dt);
+// (Inline: once per leg and tick.)
+inline LegPhase advance_leg_phase(const GaitState& gait, FootState& f, float target_offset, bool starting, float ism, float dt) {
+  // Phase offsets ease towards their targets at this many cycles per second (× the
+  // interpolation speed multiplier).
+  constexpr float kOffsetEaseRate = 0.6f;
+  if (f.offset != target_offset) {
+    f.offset = circular_lerp(f.offset, target_offset,
+                             std::min(1.0f, kOffsetEaseRate * ism * dt / std::max(std::fabs(phase_diff(f.offset, target_offset)), 1e-6f)));
+  }
+  LegPhase out;
+  out.phase = frac(gait.phase + f.offset);
+  if (f.state == LegState::kStance) out.lift_due = starting ? out.phase >= gait.duty : crossed(f.phase_prev, out.phase, gait.duty);
+  return out;
+}
 
 // Walk and run reference speeds, m/s: the walk at Froude 0.5, the full run at 2.5 (for two or
 // more leg pairs inside the gallop band, params.gallop_froude).

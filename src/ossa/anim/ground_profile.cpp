@@ -45,25 +45,6 @@ void GroundProfile::build(const Level& level, float x0_ws, float x1_ws, float to
   for (int i = n - 1; i >= 0; --i) run_last_[i] = i + 1 < n && heights_[i + 1] == heights_[i] ? run_last_[i + 1] : i;
 }
 
-bool GroundProfile::covers(const Level& level, float x0_ws, float x1_ws, float lo_ws, float hi_ws) const {
-  return !heights_.empty() && level_ == &level && revision_ == level.revision() && x0_ws >= x0_ &&
-         x1_ws <= x0_ + static_cast<float>(size()) * step_ && hi_ws <= top_ && lo_ws >= top_ - depth_;
-}
-
-bool GroundProfile::may_rise_above(float a_ws, float b_ws, float y, float up_to) const {
-  if (heights_.empty() || a_ws < x0_ || b_ws > x0_ + static_cast<float>(size() - 1) * step_ || up_to > top_) return true;
-  const int last = column_of(b_ws);
-  for (int i = column_of(a_ws); i <= last; i = run_last_[i] + 1) {
-    if (heights_[i] > y) return true;  // (NaN, no ground, is not higher)
-  }
-  return false;
-}
-
-int GroundProfile::column_of(float x_ws) const {
-  const float i = std::floor((x_ws - x0_) / step_);
-  return static_cast<int>(std::clamp(i, 0.0f, static_cast<float>(size() - 1)));
-}
-
 GroundProfile::Tread GroundProfile::tread_at(int i, int most) const {
   // The columns either side of i at its height, no further than `most` columns to the left
   // and then `most` in all (as walking left first, then right, would find them).

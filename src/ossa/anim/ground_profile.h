@@ -39,7 +39,10 @@ class GroundProfile {
 
   // Does the profile hold [x0_ws, x1_ws] with its vertical band around [lo_ws, hi_ws], sampled
   // from this revision of the level?
-  bool covers(const Level& level, float x0_ws, float x1_ws, float lo_ws, float hi_ws) const;
+  bool covers(const Level& level, float x0_ws, float x1_ws, float lo_ws, float hi_ws) const {  // (inline: every tick)
+    return !heights_.empty() && level_ == &level && revision_ == level.revision() && x0_ws >= x0_ &&
+           x1_ws <= x0_ + static_cast<float>(size()) * step_ && hi_ws <= top_ && lo_ws >= top_ - depth_;
+  }
 
   bool empty() const { return heights_.empty(); }
   int size() const { return static_cast<int>(heights_.size()); }
@@ -49,12 +52,29 @@ class GroundProfile {
   // Column i's ground height, or NaN where there is none.
   float column(int i) const { return heights_[i]; }
   // The column holding x (clamped to the profile).
-  int column_of(float x_ws) const;
+  int column_of(float x_ws) const {
+    // floor, then clamp to the columns: compared before the floor (t < 0 exactly when
+    // floor(t) < 0, t >= n - 1 exactly when floor(t) >= n - 1, and between them truncation is
+    // the floor), which spares the floor's long sequence; NaN converts as before.
+    const float t = (x_ws - x0_) / step_;
+    const int last = size() - 1;
+    if (t < 0.0f) return 0;
+    if (t >= static_cast<float>(last)) return last;
+    return static_cast<int>(t);
+  }
   // May the level have ground higher than y over [a_ws, b_ws] (a box top in y .. up_to)? False
   // only when every column touching the span is known and no higher: a cheap test before an
   // exact level query for tops up to up_to (a span or a band the profile does not hold gives
   // true).
-  bool may_rise_above(float a_ws, float b_ws, float y, float up_to) const;
+  // (Inline: asked a few times per girdle and tick.)
+  bool may_rise_above(float a_ws, float b_ws, float y, float up_to) const {
+    if (heights_.empty() || a_ws < x0_ || b_ws > x0_ + static_cast<float>(size() - 1) * step_ || up_to > top_) return true;
+    const int last = column_of(b_ws);
+    for (int i = column_of(a_ws); i <= last; i = run_last_[i] + 1) {
+      if (heights_[i] > y) return true;  // (NaN, no ground, is not higher)
+    }
+    return false;
+  }
 
   // The surface under x read as a slope: the height of the line through the middles of the
   // treads either side (a tread is a run of columns at one height), when x's tread is narrower

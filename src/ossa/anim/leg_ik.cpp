@@ -19,10 +19,12 @@ constexpr float kLiftBelowJointOfLeg = 0.3f;
 constexpr float kTuckBelowJointOfLeg = 0.45f;
 constexpr float kDrawBackOfLeg = 0.02f;
 
-// leg_ankle's rare part, out of line so that the common one stays small: turns a rolled foot
-// back until it clears the level; false if it already did.
-[[gnu::noinline]] bool limit_foot_roll(const AnimContext& ctx, const BodyFrame& body, int leg, glm::vec2 contact_fs,
-                                       glm::vec2* foot_dir) {
+
+}  // namespace
+
+// leg_ankle's rare part (leg_ik.h), out of line so that the common one stays small.
+[[gnu::noinline]] bool detail::limit_foot_roll(const AnimContext& ctx, const BodyFrame& body, int leg, glm::vec2 contact_fs,
+                                               glm::vec2* foot_dir) {
   const RigLeg& info = ctx.rig.legs[leg];
   const float F = info.foot_span;
   auto clear = [&](glm::vec2 u) {
@@ -41,53 +43,6 @@ constexpr float kDrawBackOfLeg = 0.02f;
   return true;
 }
 
-}  // namespace
-
-glm::vec2 leg_ankle(const AnimContext& ctx, const BodyFrame& body, int leg, glm::vec2 contact_fs, glm::vec2 joint_fs,
-                    bool level_aware, const Clearance& near, glm::vec2* foot_dir, bool* limited) {
-  // Hooves and toes roll: with the contact point c fixed, the ankle a(θ) = c - F·u(θ) lies on
-  // a circle of the foot's length F around it. The leg (joint j → ankle) reaches r, so
-  // |a - j| <= r, i.e. u(θ)·d >= q with d = c - j and q = (|d|² + F² - r²) / 2F: an arc of
-  // directions within β = acos(q / |d|) of d. The foot keeps its rest direction inside the
-  // arc and turns to the arc's nearer end outside it (into line with d when it is empty).
-  const RigLeg& info = ctx.rig.legs[leg];
-  *foot_dir = info.foot_dir_ms;
-  if (limited) *limited = false;
-  const float F = info.foot_span;
-  if (F <= 0.0f) return contact_fs;  // flat contact: the contact point is the ankle
-  const glm::vec2 d = contact_fs - joint_fs;
-  const float r = info.leg_reach;
-  const float dd = glm::dot(d, d);
-  const float q = (dd + F * F - r * r) / (2.0f * F);
-  if (glm::dot(d, info.foot_dir_ms) < q && dd > 1e-12f) {
-    const float len = std::sqrt(dd);
-    const glm::vec2 n = d / len;
-    const float cos_b = std::min(q / len, 1.0f);
-    const float sin_b = std::sqrt(std::max(1.0f - cos_b * cos_b, 0.0f));
-    // The side of d the rest direction lies on.
-    const float side = n.x * info.foot_dir_ms.y - n.y * info.foot_dir_ms.x >= 0.0f ? 1.0f : -1.0f;
-    *foot_dir = {cos_b * n.x - side * sin_b * n.y, side * sin_b * n.x + cos_b * n.y};
-    if (level_aware && *foot_dir != info.foot_dir_ms && !near.clear_above(std::min(contact_fs.y, contact_fs.y - F * foot_dir->y)) &&
-        limit_foot_roll(ctx, body, leg, contact_fs, foot_dir) && limited) {
-      *limited = true;
-    }
-  }
-  return contact_fs - F * *foot_dir;
-}
-
-glm::vec2 leg_anchor(const AnimContext& ctx, const BodyFrame& body, int leg, glm::vec2 contact_fs, glm::vec2 joint_fs,
-                     const Clearance& near, float* radius) {
-  glm::vec2 dir;
-  bool limited = false;
-  const glm::vec2 ankle = leg_ankle(ctx, body, leg, contact_fs, joint_fs, true, near, &dir, &limited);
-  if (!limited) {
-    *radius = ctx.rig.legs[leg].contact_reach;
-    return contact_fs;
-  }
-  *radius = kReachLimit * ctx.rig.legs[leg].reach;
-  return ankle;
-}
-
 bool stance_leg_hits(const AnimContext& ctx, const BodyFrame& body, int leg, const FootState& f, glm::vec2 joint_fs) {
   const RigLeg& info = ctx.rig.legs[leg];
   const glm::vec2 contact = body.to_fs(f.pos_ws);
@@ -99,13 +54,20 @@ bool stance_leg_hits(const AnimContext& ctx, const BodyFrame& body, int leg, con
   return polyline_hits_level(ctx.level, p, info.foot_length > 0.0f ? 4 : 3, ctx.hits);
 }
 
-bool LegIkJob::validate() const {
-  return ctx && body && feet && pose && model_fs && leg_dirs && feet->foot_of_leg.size() == ctx->rig.legs.size() &&
-         leg_dirs->size() == ctx->rig.legs.size() && model_fs->size() == static_cast<size_t>(ctx->rig.skeleton.bone_count());
+namespace {
+
+// Shared by validate() and run() (a public member function is not inlined into run()).
+inline bool valid(const LegIkJob& j) {
+  return j.ctx && j.body && j.feet && j.pose && j.model_fs && j.leg_dirs && j.feet->foot_of_leg.size() == j.ctx->rig.legs.size() &&
+         j.leg_dirs->size() == j.ctx->rig.legs.size() && j.model_fs->size() == static_cast<size_t>(j.ctx->rig.skeleton.bone_count());
 }
 
+}  // namespace
+
+bool LegIkJob::validate() const { return valid(*this); }
+
 bool LegIkJob::run() const {
-  if (!validate()) return false;
+  if (!valid(*this)) return false;
   const AnimContext& c = *ctx;
   const BodyFrame& b = *body;
   std::vector<Mat2x3>& model = *model_fs;
@@ -158,27 +120,27 @@ bool LegIkJob::run() const {
         const glm::vec2 p[4] = {b.to_ws(joint), b.to_ws(r.middle), b.to_ws(r.end), b.to_ws(tip)};
         return polyline_hits_level(c.level, p, F > 0.0f ? 4 : 3, c.hits);
       };
-      // Candidates run from the planned ankle straight up, then in towards a tuck under the
-      // joint; the first (bisected) that clears wins.
-      const glm::vec2 up = glm::vec2(ankle.x, std::max(ankle.y, joint.y - kLiftBelowJointOfLeg * info.reach));
-      const glm::vec2 tuck = joint + glm::vec2(0.0f, -kTuckBelowJointOfLeg * info.reach);
-      // Last, drawn back from under the joint by a foot's length (a toe against a riser).
-      const glm::vec2 back = tuck - glm::vec2(F + kDrawBackOfLeg * info.reach, 0.0f);
-      // A lifted foot turns back from its roll to hang in its rest direction; drawn back, it
-      // folds up behind the ankle.
-      const glm::vec2 folded(-0.98f, 0.2f);
-      auto candidate = [&](float t) {  // t in [0, 3]: 0 planned, 1 lifted, 2 tucked, 3 back
-        const glm::vec2 a = t <= 1.0f   ? glm::mix(ankle, up, t)
-                            : t <= 2.0f ? glm::mix(up, tuck, t - 1.0f)
-                                        : glm::mix(tuck, back, t - 2.0f);
-        const glm::vec2 d = t <= 1.0f   ? glm::mix(foot_dir, info.foot_dir_ms, t)
-                            : t <= 2.0f ? info.foot_dir_ms
-                                        : glm::mix(info.foot_dir_ms, folded, t - 2.0f);
-        dir = d / std::max(glm::length(d), 1e-6f);
-        return leg_ik(a);
-      };
       const float min_y = std::min({joint.y, ik.middle.y, ik.end.y, ik.end.y + F * foot_dir.y});
       if (!near.clear_above(min_y) && leg_hits(ik)) {
+        // Candidates run from the planned ankle straight up, then in towards a tuck under the
+        // joint; the first (bisected) that clears wins.
+        const glm::vec2 up = glm::vec2(ankle.x, std::max(ankle.y, joint.y - kLiftBelowJointOfLeg * info.reach));
+        const glm::vec2 tuck = joint + glm::vec2(0.0f, -kTuckBelowJointOfLeg * info.reach);
+        // Last, drawn back from under the joint by a foot's length (a toe against a riser).
+        const glm::vec2 back = tuck - glm::vec2(F + kDrawBackOfLeg * info.reach, 0.0f);
+        // A lifted foot turns back from its roll to hang in its rest direction; drawn back, it
+        // folds up behind the ankle.
+        const glm::vec2 folded(-0.98f, 0.2f);
+        auto candidate = [&](float t) {  // t in [0, 3]: 0 planned, 1 lifted, 2 tucked, 3 back
+          const glm::vec2 a = t <= 1.0f   ? glm::mix(ankle, up, t)
+                              : t <= 2.0f ? glm::mix(up, tuck, t - 1.0f)
+                                          : glm::mix(tuck, back, t - 2.0f);
+          const glm::vec2 d = t <= 1.0f   ? glm::mix(foot_dir, info.foot_dir_ms, t)
+                              : t <= 2.0f ? info.foot_dir_ms
+                                          : glm::mix(info.foot_dir_ms, folded, t - 2.0f);
+          dir = d / std::max(glm::length(d), 1e-6f);
+          return leg_ik(a);
+        };
         float lo = 0.0f, hi = -1.0f;
         for (float t : {1.0f, 2.0f, 3.0f}) {
           if (!leg_hits(candidate(t))) {

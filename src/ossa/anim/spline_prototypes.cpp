@@ -36,20 +36,6 @@ const char* prototype_name(PrototypeId id) {
   return "unknown";
 }
 
-PrototypeRange prototype_range(PrototypeId id) {
-  // Bounds exact in binary, so a file holding the bound itself ("0.0625") reads back.
-  switch (id) {
-    case PrototypeId::kLegSwingX: return {-0.5f, 1.5f};
-    case PrototypeId::kLegSwingY: return {0.0f, 1.0f};
-    case PrototypeId::kPelvisY:
-    case PrototypeId::kIdleY: return {-0.0625f, 0.0625f};
-    case PrototypeId::kArmSwing:
-    case PrototypeId::kArmBend: return {-3.0f, 3.0f};
-    case PrototypeId::kCount: break;
-  }
-  return {0.0f, 0.0f};
-}
-
 SplinePrototypes SplinePrototypes::defaults() {
   SplinePrototypes p;
   // Swing: the foot leaves slowly, crosses fast and sets down gently; the run version

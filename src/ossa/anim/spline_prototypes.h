@@ -57,7 +57,20 @@ struct PrototypeRange {
   float min, max;
   float clamp(float v) const { return v >= min ? (v <= max ? v : max) : min; }  // NaN → min
 };
-PrototypeRange prototype_range(PrototypeId id);
+// (Inline: the swing reads it twice per foot and tick.)
+inline constexpr PrototypeRange prototype_range(PrototypeId id) {
+  // Bounds exact in binary, so a file holding the bound itself ("0.0625") reads back.
+  switch (id) {
+    case PrototypeId::kLegSwingX: return {-0.5f, 1.5f};
+    case PrototypeId::kLegSwingY: return {0.0f, 1.0f};
+    case PrototypeId::kPelvisY:
+    case PrototypeId::kIdleY: return {-0.0625f, 0.0625f};
+    case PrototypeId::kArmSwing:
+    case PrototypeId::kArmBend: return {-3.0f, 3.0f};
+    case PrototypeId::kCount: break;
+  }
+  return {0.0f, 0.0f};
+}
 // Bound on key tangents (|m|, value units per unit time).
 inline constexpr float kMaxPrototypeTangent = 1000.0f;
 

@@ -34,18 +34,31 @@ SwingShape ease_shape(float ease_time) {
           1.0f / std::max(ease_time, 0.01f), true};
 }
 
-glm::vec2 swing_point(const FootState& f, float s) {
+namespace {
+
+// swing_point's height alone (a check of the path's heights needs no x). Inline in both: once
+// per swinging foot and tick, and a dozen times per step planned.
+[[gnu::always_inline]] inline float swing_height(const FootState& f, float s) {
+  const float up = f.to_ws.y - f.from_ws.y;
+  const float ease = up >= 0.0f ? smoothstep(0.0f, 0.55f, s) : smoothstep(0.45f, 1.0f, s);
+  const float lift = prototype_range(PrototypeId::kLegSwingY).clamp(f.swing_y.position(s));
+  return f.from_ws.y + ease * up + f.lift * lift + (f.raise != 0.0f ? f.raise * bump(s) : 0.0f);
+}
+
+// swing_point, inline in this file's callers (the swing of every foot, every tick).
+[[gnu::always_inline]] inline glm::vec2 point_on_swing(const FootState& f, float s) {
   // The blended prototype shapes the step [T 4.4.1]; on steps the foot rises before it moves
   // forward (up) or moves over before it descends (down), so it never clips a riser's corner.
   const float up = f.to_ws.y - f.from_ws.y;
   const float sx = up > 0.0f ? std::clamp((s - 0.12f) / 0.88f, 0.0f, 1.0f)
                  : up < 0.0f ? std::clamp(s / 0.85f, 0.0f, 1.0f) : s;
-  const float ease = up >= 0.0f ? smoothstep(0.0f, 0.55f, s) : smoothstep(0.45f, 1.0f, s);
   const float along = prototype_range(PrototypeId::kLegSwingX).clamp(f.swing_x.position(sx));
-  const float lift = prototype_range(PrototypeId::kLegSwingY).clamp(f.swing_y.position(s));
-  return {f.from_ws.x + along * (f.to_ws.x - f.from_ws.x),
-          f.from_ws.y + ease * up + f.lift * lift + (f.raise != 0.0f ? f.raise * bump(s) : 0.0f)};
+  return {f.from_ws.x + along * (f.to_ws.x - f.from_ws.x), swing_height(f, s)};
 }
+
+}  // namespace
+
+glm::vec2 swing_point(const FootState& f, float s) { return point_on_swing(f, s); }
 
 void update_stance_clearance(const AnimContext& ctx, FootState& f) {
   // Any leg's foot may stand here after a turn: the longest foot's circle around the contact,
@@ -78,14 +91,14 @@ bool raise_for_clearance(const AnimContext& ctx, int facing, int leg, FootState&
   if (f.swing_clear.top < f.swing_clear.base) {
     const float lowest = std::min(f.from_ws.y, f.to_ws.y) - std::min(0.0f, ankle_rel.y);
     bool above = true;
-    for (int k = 1; k < 12 && above; ++k) above = swing_point(f, static_cast<float>(k) / 12.0f).y >= lowest;
+    for (int k = 1; k < 12 && above; ++k) above = swing_height(f, static_cast<float>(k) / 12.0f) >= lowest;
     if (above) return true;
   }
   Box foot[kSwingSamples];
   // A foot that stands pressed against a step (turned round on a narrow tread) only has to
   // clear it once it has left it.
   auto foot_box = [&](float s) {
-    const glm::vec2 p = swing_point(f, s);
+    const glm::vec2 p = point_on_swing(f, s);
     const glm::vec2 q = p + glm::vec2(facing * ankle_rel.x, ankle_rel.y);
     const glm::vec2 r = p + glm::vec2(facing * tip_rel.x, tip_rel.y);
     // A little narrower than find_landing's test, so a landing it found clears at its end.
@@ -191,7 +204,7 @@ void step_to(const FootholdInputs& in, int leg, FootState& f, glm::vec2 spot) {
   start_ease(in, leg, f, &spot);
   // Already lifted on this tick: the first sample of a path cleared from the second on.
   f.progress = 1.0f / static_cast<float>(kSwingSamples);
-  f.pos_ws = swing_point(f, f.progress);
+  f.pos_ws = point_on_swing(f, f.progress);
 }
 
 namespace {
@@ -271,7 +284,7 @@ bool advance_swing(const FootholdInputs& in, const SwingTick& tick, int leg, Foo
     update_stance_clearance(ctx, f);
     return true;
   }
-  f.pos_ws = swing_point(f, std::clamp(f.progress, 0.0f, 1.0f));
+  f.pos_ws = point_on_swing(f, std::clamp(f.progress, 0.0f, 1.0f));
   return false;
 }
 
