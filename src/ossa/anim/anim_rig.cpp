@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "ossa/anim/anim_math.h"
+#include "ossa/math/two_bone_ik.h"
 #include "ossa/skeleton/pose.h"
 
 namespace ossa {
@@ -95,8 +96,14 @@ void build_legs(const RigRoles& roles, AnimRig& rig) {
   for (size_t g = 0; g < rig.girdles.size(); ++g) {
     RigGirdle& girdle = rig.girdles[g];
     for (int leg : girdle.legs) {
+      const RigLeg& info = rig.legs[leg];
       rig.legs[leg].girdle = static_cast<int>(g);
-      girdle.step_height = std::max(girdle.step_height, kStepHeightOfReach * rig.legs[leg].contact_reach);
+      girdle.step_height = std::max(girdle.step_height, kStepHeightOfReach * info.contact_reach);
+      // Standing, the ankle below the joint: which way does the knee point (facing +x)?
+      const float d = std::clamp(girdle.rest_height, info.fold, 0.999f * info.reach);
+      if (solve_two_bone_ik_directions({0.0f, 0.0f}, info.upper, info.lower, {0.0f, -d}, info.bend).middle.x > 0.0f) {
+        girdle.knee_reach = std::max(girdle.knee_reach, info.upper);
+      }
     }
   }
   rig.climb_height = 0.0f;

@@ -60,6 +60,9 @@ struct RigGirdle {                  // a girdle slot carrying a leg pair
   // reach further than they stand tall.
   float step_height = 0.0f;
   std::vector<int> legs;            // leg indices (near first)
+  // The farthest a knee of its legs reaches ahead of the joint, metres: the thigh's length for
+  // a knee that bends forward, 0 for knees that bend back.
+  float knee_reach = 0.0f;
 };
 
 struct RigLimb {                    // an arm, fin or wing: a chain hanging from a girdle bone

@@ -341,14 +341,12 @@ float limit_by_ledges(const AnimContext& ctx, const BodyFrame& body, const FootS
     const int at = ground.column_of(x);
     if (!(ground.column(at) <= high)) continue;
     const int dir = body.facing;
-    // Nothing ahead higher than the feet may climb, within a thigh's length (the farthest a
-    // knee reaches ahead) of the margin (the common case): no scan.
-    float thigh = 0.0f;
-    for (int leg : girdle.legs) thigh = std::max(thigh, rig.legs[leg].upper);
-    const float ahead = x + dir * (move + margin + thigh + 2.0f * ground.step());
+    // Nothing ahead higher than the feet may climb, within the margin and as far as a knee
+    // reaches ahead (the common case): no scan.
+    const float ahead = x + dir * (move + margin + girdle.knee_reach + 2.0f * ground.step());
     if (!ground.may_rise_above(std::min(x, ahead), std::max(x, ahead), high, high)) continue;
     // Nor may a knee bending forward cross a face taller than a step (a wall, not a stair).
-    const float knees = margin + knees_ahead(rig, girdle, joint.y - feet_y);
+    const float knees = margin + (girdle.knee_reach > 0.0f ? knees_ahead(rig, girdle, joint.y - feet_y) : 0.0f);
     const int reach = static_cast<int>(std::ceil((move + knees) / ground.step())) + 1;
     const int span = std::max(1, static_cast<int>(std::ceil(stride / ground.step())));
     for (int k = 1; k <= reach; ++k) {

@@ -297,8 +297,7 @@ void keep_stance_legs_in_reach(Placement& p, std::vector<float>& need, std::vect
 // as in 1, so that the other end's feet stay where they are.
 void keep_stance_legs_unfolded(Placement& p, std::vector<float>& fold_raise, std::vector<float>& room) {
   const AnimRig& rig = p.ctx.rig;
-  std::fill(fold_raise.begin(), fold_raise.end(), 0.0f);
-  bool any = false;
+  bool any = false;  // fold_raise holds this tick's raises (filled at the first)
   GirdleJointFs joints;
   for (size_t i = 0; i < rig.legs.size(); ++i) {
     const FootState& f = p.feet.of_leg(static_cast<int>(i));
@@ -311,9 +310,10 @@ void keep_stance_legs_unfolded(Placement& p, std::vector<float>& fold_raise, std
     const glm::vec2 ankle = leg_ankle(p.ctx, p.body, static_cast<int>(i), p.body.to_fs(f.pos_ws), joint, true, f.stance_clear, &dir, nullptr);
     const float dx = std::fabs(ankle.x - joint.x);
     if (dx < fold) {
+      if (!any) std::fill(fold_raise.begin(), fold_raise.end(), 0.0f);
+      any = true;
       float& raise = fold_raise[rig.legs[i].girdle];
       raise = std::max(raise, ankle.y + std::sqrt(fold * fold - dx * dx) - joint.y);
-      any = any || raise > 0.0f;
     }
   }
   if (!any) return;
@@ -323,6 +323,7 @@ void keep_stance_legs_unfolded(Placement& p, std::vector<float>& fold_raise, std
     most = std::max(most, fold_raise[g]);
     least_room = std::min(least_room, room[g]);
   }
+  if (most <= 0.0f) return;
   if (most <= least_room) {
     p.body.root_y_ws += most;
     for (float& r : room) r = std::max(r - most, 0.0f);
@@ -524,13 +525,14 @@ void place_body(const AnimContext& ctx, const PlacementInputs& in, const FootSet
   const float old_root = body.root_y_ws;
   float target_root = body.root_y_ws, target_pitch = 0.0f;
   const size_t n = rig.girdles.size();
-  // Scratch per girdle (a creature has a few).
-  thread_local std::vector<float> height, need, room, fold, swing_up;
-  height.resize(n);
-  need.resize(n);
-  room.resize(n);
-  fold.resize(n);
-  swing_up.resize(n);
+  // Scratch per girdle (a creature has a few), one thread-local lookup for all.
+  thread_local struct {
+    std::vector<float> height, need, room, fold, swing_up;
+  } scratch;
+  auto& [height, need, room, fold, swing_up] = scratch;
+  if (height.size() != n) {
+    for (std::vector<float>* v : {&height, &need, &room, &fold, &swing_up}) v->resize(n);
+  }
   if (rig.girdles.empty()) {
     // Legless: follow the highest ground under the body, lifted lately so that the wave keeps
     // the body out of the ground (held there, settling back slowly, rather than pulled down
