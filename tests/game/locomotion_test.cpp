@@ -6,6 +6,7 @@
 #include <cmath>
 #include <memory>
 #include <string>
+#include <vector>
 
 #include "ossa/game/player.h"
 #include "ossa/game/sim.h"
@@ -39,6 +40,28 @@ bool step_until(Player& player, const Level& level, Controls controls, float sec
   return false;
 }
 
+// The example animals' names: all of them, every fourth under the sanitizers.
+std::vector<std::string> sampled_animals() {
+#if defined(__SANITIZE_ADDRESS__)
+  const int every = 4;
+#else
+  const int every = 1;
+#endif
+  std::vector<std::string> names;
+  int n = 0;
+  for (const Animal& animal : scenes::generator().dataset().animals) {
+    if (n++ % every == 0) names.push_back(animal.name);
+  }
+  return names;
+}
+
+// Example animal `name` placed at the level's spawn and driven by `script`.
+SimResult run_from_spawn(const std::string& name, const Level& level, const char* script) {
+  Player player(example(name), SplinePrototypes::defaults());
+  player.animator().reset(level.spawn_ws + glm::vec2(0.0f, 1.0f), level);
+  return run_script(player, level, parse_script(script).value(), 120);
+}
+
 }  // namespace
 
 TEST_CASE("every example animal walks off each ledge of drops.json and lands clean", "[game][anim][locomotion]") {
@@ -46,18 +69,11 @@ TEST_CASE("every example animal walks off each ledge of drops.json and lands cle
   // each edge, walks over it and on until its whole body is past the edge and it stands on the
   // ground below: no limb more than 1 mm in a box, no NaN. (Stance slip is reported by
   // ossa-sim on drops.json; a landing may still slide a foot: README, Known limits.)
-#if defined(__SANITIZE_ADDRESS__)
-  const int every = 4;
-#else
-  const int every = 1;
-#endif
   const Level level = drops();
   const float edges[] = {6.0f, 12.0f, 18.0f, 26.0f};
   const float tops[] = {7.3f, 7.0f, 6.0f, 4.0f};
-  int n = 0;
-  for (const Animal& animal : scenes::generator().dataset().animals) {
-    if (n++ % every != 0) continue;
-    const auto creature = example(animal.name);
+  for (const std::string& name : sampled_animals()) {
+    const auto creature = example(name);
     for (int e = 0; e < 4; ++e) {
       Player player(creature, SplinePrototypes::defaults());
       Animator& a = player.animator();
@@ -69,7 +85,7 @@ TEST_CASE("every example animal walks off each ledge of drops.json and lands cle
         grounded = a.locomotion() == Locomotion::kGrounded ? grounded + 1 : 0;
         return a.x() > past && a.root_y() - a.rig().root_rest_y < tops[e] - 0.2f && grounded > 60;
       });
-      INFO(animal.name << " over the ledge at x " << edges[e] << ": x " << a.x() << ", root y " << a.root_y());
+      INFO(name << " over the ledge at x " << edges[e] << ": x " << a.x() << ", root y " << a.root_y());
       CHECK(done);
       CHECK(probe.max_penetration_m <= 0.001f);
       CHECK(probe.nan_count == 0);
@@ -83,20 +99,10 @@ TEST_CASE("every example animal turns back at drops.json's 1 m ledge with its fe
   // feet stepped down it, some go over), stops, and walks back: feet left down the ledge step
   // back up to the feet still on it, a body below the ledge stops at its face (no knee in
   // it), and no stance foot slides or limb enters a box meanwhile.
-#if defined(__SANITIZE_ADDRESS__)
-  const int every = 4;
-#else
-  const int every = 1;
-#endif
   const Level level = drops();
-  const auto script = parse_script("walk:0.5:6,stop:1,walk:-0.6:6").value();
-  int n = 0;
-  for (const Animal& animal : scenes::generator().dataset().animals) {
-    if (n++ % every != 0) continue;
-    Player player(example(animal.name), SplinePrototypes::defaults());
-    player.animator().reset(level.spawn_ws + glm::vec2(0.0f, 1.0f), level);
-    const SimResult r = run_script(player, level, script, 120);
-    INFO(animal.name << ": furthest x " << r.x_max_m << ", back to x " << r.x_reached);
+  for (const std::string& name : sampled_animals()) {
+    const SimResult r = run_from_spawn(name, level, "walk:0.5:6,stop:1,walk:-0.6:6");
+    INFO(name << ": furthest x " << r.x_max_m << ", back to x " << r.x_reached);
     CHECK(r.probe.max_stance_slip_m <= 0.001f);
     CHECK(r.probe.max_penetration_m <= 0.001f);
     CHECK(r.probe.nan_count == 0);
@@ -108,25 +114,18 @@ TEST_CASE("every example animal walks and runs across drops.json to the step tha
   // x 48: a foot that reached down into the gap is planted once it is over its far side (it
   // used to be carried along in the air, and the legs then climbed the step), no stance foot
   // slides, and without a jump no animal whose legs climb less than 0.7 m gets onto the step.
-#if defined(__SANITIZE_ADDRESS__)
-  const int every = 4;
-#else
-  const int every = 1;
-#endif
   const Level level = drops();
-  int n = 0;
-  for (const Animal& animal : scenes::generator().dataset().animals) {
-    if (n++ % every != 0) continue;
+  const float step = 0.7f;  // the step's height, from x 48 to 60
+  for (const std::string& name : sampled_animals()) {
+    // (Birds' crouched legs climb it: max_step_up of their reach.)
+    const Animator climber(*example(name), SplinePrototypes::defaults());
+    const bool climbs = climber.params().max_step_up * climber.rig().climb_height >= step - kGroundEpsilon;
     for (const char* text : {"walk:0.6:30", "run:1:15"}) {
-      Player player(example(animal.name), SplinePrototypes::defaults());
-      player.animator().reset(level.spawn_ws + glm::vec2(0.0f, 1.0f), level);
-      const SimResult r = run_script(player, level, parse_script(text).value(), 120);
-      INFO(animal.name << ", " << text << ": furthest x " << r.x_max_m);
+      const SimResult r = run_from_spawn(name, level, text);
+      INFO(name << ", " << text << ": furthest x " << r.x_max_m);
       CHECK(r.probe.max_stance_slip_m <= 0.001f);
       CHECK(r.probe.nan_count == 0);
-      // (Birds' crouched legs climb 0.7 m: max_step_up of their reach.)
-      const Animator& a = player.animator();
-      if (a.params().max_step_up * a.rig().climb_height < 0.68f) CHECK(r.x_max_m < 50.0f);  // the step: x 48 to 60
+      if (!climbs) CHECK(r.x_max_m < 50.0f);
     }
   }
 }
@@ -286,16 +285,9 @@ TEST_CASE("every example animal with legs jumps its jump height from a standstil
   // Birds' crouched legs reach much further than they stand: their feet must still leave the
   // ground (they stayed planted through the whole jump, and the body came down through the
   // floor). Legless animals have nothing to push off with and do not jump.
-#if defined(__SANITIZE_ADDRESS__)
-  const int every = 4;
-#else
-  const int every = 1;
-#endif
   const Level flat = scenes::flat_level(40.0f);
-  int n = 0;
-  for (const Animal& animal : scenes::generator().dataset().animals) {
-    if (n++ % every != 0) continue;
-    Player player(example(animal.name), SplinePrototypes::defaults());
+  for (const std::string& name : sampled_animals()) {
+    Player player(example(name), SplinePrototypes::defaults());
     Animator& a = player.animator();
     if (a.leg_count() == 0) continue;
     a.reset({5.0f, 0.5f}, flat);
@@ -303,7 +295,7 @@ TEST_CASE("every example animal with legs jumps its jump height from a standstil
     step_until(player, flat, {}, 1.0f, probe, [] { return false; });
     step_until(player, flat, {0.0f, false, true}, kDt, probe, [] { return true; });
     step_until(player, flat, {}, 3.0f, probe, [] { return false; });
-    INFO(animal.name);
+    INFO(name);
     CHECK(a.locomotion_stats().jumps == 1);
     CHECK(a.locomotion_stats().max_jump_height_m == Approx(a.params().jump_height * a.hip_height()).epsilon(0.02));
     CHECK(a.locomotion() == Locomotion::kGrounded);

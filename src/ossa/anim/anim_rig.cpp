@@ -99,11 +99,8 @@ void build_legs(const RigRoles& roles, AnimRig& rig) {
       const RigLeg& info = rig.legs[leg];
       rig.legs[leg].girdle = static_cast<int>(g);
       girdle.step_height = std::max(girdle.step_height, kStepHeightOfReach * info.contact_reach);
-      // Standing, the ankle below the joint: which way does the knee point (facing +x)?
-      const float d = std::clamp(girdle.rest_height, info.fold, 0.999f * info.reach);
-      if (solve_two_bone_ik_directions({0.0f, 0.0f}, info.upper, info.lower, {0.0f, -d}, info.bend).middle.x > 0.0f) {
-        girdle.knee_reach = std::max(girdle.knee_reach, info.upper);
-      }
+      // Standing, which way does the knee point?
+      if (knee_ahead(info, girdle.rest_height) > 0.0f) girdle.knee_reach = std::max(girdle.knee_reach, info.upper);
     }
   }
   rig.climb_height = 0.0f;
@@ -284,6 +281,11 @@ RigRoles rig_roles(const Creature& creature) {
                            2 * static_cast<int>(limb.girdle) + limb.slot});
   }
   return roles;
+}
+
+float knee_ahead(const RigLeg& leg, float height) {
+  const float d = std::clamp(height + leg.foot_offset_ms.y, leg.fold, 0.999f * leg.reach);  // joint to ankle
+  return solve_two_bone_ik_directions({0.0f, 0.0f}, leg.upper, leg.lower, {0.0f, -d}, leg.bend).middle.x;
 }
 
 std::shared_ptr<const AnimRig> build_anim_rig(const Creature& creature) {

@@ -166,4 +166,9 @@ std::shared_ptr<const AnimRig> build_anim_rig(const Skeleton& skeleton, const Po
 // Builds the rig of a generated creature: build_anim_rig(skeleton, rest pose, rig_roles).
 std::shared_ptr<const AnimRig> build_anim_rig(const Creature& creature);
 
+// How far ahead of its girdle joint (facing +x) leg's knee lies with the contact point
+// `height` metres straight below the joint (the ankle clamped to what the leg reaches): < 0
+// for a knee that bends back.
+float knee_ahead(const RigLeg& leg, float height);
+
 }  // namespace ossa

@@ -7,7 +7,6 @@
 #include "ossa/anim/foothold.h"
 #include "ossa/anim/ground_profile.h"
 #include "ossa/anim/leg_ik.h"
-#include "ossa/math/two_bone_ik.h"
 
 namespace ossa::anim {
 
@@ -301,23 +300,6 @@ float limit_by_legs(const AnimContext& ctx, const BodyFrame& body, const FootSet
   return dx;
 }
 
-namespace {
-
-// How far ahead of their joint the knees of girdle's legs reach, standing with the contact
-// points `height` below it (metres; 0 for knees bending back).
-float knees_ahead(const AnimRig& rig, const RigGirdle& girdle, float height) {
-  float ahead = 0.0f;
-  for (int leg : girdle.legs) {
-    const RigLeg& info = rig.legs[leg];
-    const float d = std::clamp(height + info.foot_offset_ms.y, info.fold, 0.999f * info.reach);  // to the ankle
-    const TwoBoneIkResult ik = solve_two_bone_ik_directions({0.0f, 0.0f}, info.upper, info.lower, {0.0f, -d}, info.bend);
-    ahead = std::max(ahead, ik.middle.x);
-  }
-  return ahead;
-}
-
-}  // namespace
-
 float limit_by_ledges(const AnimContext& ctx, const BodyFrame& body, const FootSet& feet, float stride, float dx) {
   const AnimRig& rig = ctx.rig;
   const GroundProfile& ground = ctx.ground;
@@ -346,7 +328,10 @@ float limit_by_ledges(const AnimContext& ctx, const BodyFrame& body, const FootS
     const float ahead = x + dir * (move + margin + girdle.knee_reach + 2.0f * ground.step());
     if (!ground.may_rise_above(std::min(x, ahead), std::max(x, ahead), high, high)) continue;
     // Nor may a knee bending forward cross a face taller than a step (a wall, not a stair).
-    const float knees = margin + (girdle.knee_reach > 0.0f ? knees_ahead(rig, girdle, joint.y - feet_y) : 0.0f);
+    float knees = margin;
+    if (girdle.knee_reach > 0.0f) {
+      for (int leg : girdle.legs) knees = std::max(knees, margin + knee_ahead(rig.legs[leg], joint.y - feet_y));
+    }
     const int reach = static_cast<int>(std::ceil((move + knees) / ground.step())) + 1;
     const int span = std::max(1, static_cast<int>(std::ceil(stride / ground.step())));
     for (int k = 1; k <= reach; ++k) {

@@ -181,7 +181,7 @@ StepLimits step_limits(const FootholdInputs& in, int leg, glm::vec2 foot_ws) {
       // From this foot to the whole of the other one (its toe may stand out over the edge).
       const FootSpan span = foot_span_ws(rig.legs[j], in.body.facing);
       const float a = std::min(on.x + span.lo, foot_ws.x), b = std::max(on.x + span.hi, foot_ws.x);
-      if (in.ctx.ground.largest_jump(a, b, reading) > l.up) l.top = o.pos_ws.y + l.up;
+      if (in.ctx.ground.largest_jump(a, b, reading) > l.up) l.top = on.y + l.up;
     }
   }
   return l;
