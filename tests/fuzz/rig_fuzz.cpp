@@ -9,8 +9,8 @@
 #include <string_view>
 
 #include "ossa/anim/animator.h"
-#include "ossa/anim/character.h"
-#include "ossa/anim/rig_mapping.h"
+#include "ossa/rig/character.h"
+#include "ossa/rig/rig_mapping.h"
 
 namespace {
 

@@ -1,7 +1,7 @@
 // Rigged sprite meshes through Assimp: the shipped character, skinning, the rig mapping, the
 // tool's round trip, FBX/DAE round trips and malformed files (errors, never crashes).
 
-#include "ossa/anim/rig_mapping.h"
+#include "ossa/rig/rig_mapping.h"
 #include "ossa/render/character_mesh.h"
 #include "ossa/render/rigged_mesh.h"
 

@@ -17,8 +17,8 @@
 #include <vector>
 
 #include "ossa/anim/animator.h"
-#include "ossa/anim/rig_guess.h"
-#include "ossa/anim/rig_mapping.h"
+#include "ossa/rig/rig_guess.h"
+#include "ossa/rig/rig_mapping.h"
 #include "ossa/io/file.h"
 #include "ossa/io/json.h"
 #include "ossa/level/level.h"

@@ -23,8 +23,8 @@
 #include <vector>
 
 #include "ossa/anim/animator.h"
-#include "ossa/anim/character.h"
-#include "ossa/anim/rig_mapping.h"
+#include "ossa/rig/character.h"
+#include "ossa/rig/rig_mapping.h"
 #include "ossa/editor/undo_stack.h"
 #include "ossa/io/result.h"
 #include "ossa/level/level.h"

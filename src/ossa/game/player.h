@@ -10,7 +10,7 @@
 #include <memory>
 
 #include "ossa/anim/animator.h"
-#include "ossa/anim/character.h"
+#include "ossa/rig/character.h"
 #include "ossa/game/controls.h"
 
 namespace ossa {

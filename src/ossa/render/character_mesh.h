@@ -16,7 +16,7 @@
 #include <string>
 #include <vector>
 
-#include "ossa/anim/character.h"
+#include "ossa/rig/character.h"
 #include "ossa/io/result.h"
 #include "ossa/render/rigged_mesh.h"
 #include "ossa/render/sprite_mesh.h"

@@ -10,7 +10,7 @@
 // [SECTION] Skinning       rest_locals, RiggedPaletteJob, rigged_palette, skin_position
 //
 // Which bones play which part for the animator (the rig mapping, *.rig.json) is a core type:
-// ossa/anim/rig_mapping.h; ossa/render/character_mesh.h loads a mapping with its mesh.
+// ossa/rig/rig_mapping.h; ossa/render/character_mesh.h loads a mapping with its mesh.
 //
 // How 3D becomes 2D
 // -----------------

@@ -7,7 +7,7 @@
 #include <string>
 #include <unistd.h>
 
-#include "ossa/anim/rig_mapping.h"
+#include "ossa/rig/rig_mapping.h"
 #include "ossa/io/file.h"
 
 using namespace ossa;

@@ -1,4 +1,4 @@
-#include "ossa/anim/rig_guess.h"
+#include "ossa/rig/rig_guess.h"
 
 #include <algorithm>
 #include <cctype>

@@ -44,7 +44,7 @@
 #include <glm/vec2.hpp>
 
 #include "ossa/anim/anim_rig.h"
-#include "ossa/anim/rig_mapping.h"
+#include "ossa/rig/rig_mapping.h"
 #include "ossa/io/result.h"
 #include "ossa/math/transform2d.h"
 #include "ossa/skeleton/pose.h"

@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "ossa/anim/rig_guess.h"
+#include "ossa/rig/rig_guess.h"
 
 using namespace ossa;
 

@@ -1,4 +1,4 @@
-#include "ossa/anim/rig_mapping.h"
+#include "ossa/rig/rig_mapping.h"
 
 #include <algorithm>
 #include <filesystem>

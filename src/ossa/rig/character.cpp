@@ -1,4 +1,4 @@
-#include "ossa/anim/character.h"
+#include "ossa/rig/character.h"
 
 // build_character: (1) look every mapped bone up and check the chains, (2) place the joints in
 // ossa model space, (3) pick each ossa bone's direction and length, (4) check the rest pose can

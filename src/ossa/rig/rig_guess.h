@@ -19,8 +19,8 @@
 #include <string>
 #include <vector>
 
-#include "ossa/anim/character.h"
-#include "ossa/anim/rig_mapping.h"
+#include "ossa/rig/character.h"
+#include "ossa/rig/rig_mapping.h"
 
 namespace ossa {
 

@@ -10,7 +10,7 @@
 #include <memory>
 
 #include "ossa/anim/animator.h"
-#include "ossa/anim/character.h"
+#include "ossa/rig/character.h"
 #include "ossa/game/player.h"
 #include "ossa/game/sim.h"
 #include "shared/level_scenes.h"
