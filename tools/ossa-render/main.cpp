@@ -247,33 +247,25 @@ int run(const Args& a) {
                       : Texture::from_image(Image{rig->texture_width, rig->texture_height, rig->texture_rgba});
   }
   const Texture& texture = rig ? rig_texture : atlas.texture;
-  CreatureBatch batch;
+  // Where each creature stands: the highest ground under its body, searching from well above
+  // the spawn.
+  std::vector<glm::vec2> feet(static_cast<size_t>(a.count));
   Box view{{1e9f, 1e9f}, {-1e9f, -1e9f}};
   for (int i = 0; i < a.count; ++i) {
     const float x = start.x + spacing * static_cast<float>(i);
     float ground = start.y;
     if (level) {
-      // The highest ground under the body, searching from well above the spawn.
-      if (auto hit = level->ground_height_below(x + body.min_ws.x, x + body.max_ws.x,
-                                                start.y + 2.0f, 100.0f)) {
+      if (auto hit = level->ground_height_below(x + body.min_ws.x, x + body.max_ws.x, start.y + 2.0f, 100.0f)) {
         ground = hit->height_ws;
       }
     }
-    const int id = batch.add(mesh, creature.skeleton);
-    Transform2D place;
-    place.translation = {x, ground + lift};
-    batch.set_pose(id, creature.skeleton, creature.rest_pose.locals, place.to_mat2x3());
+    feet[static_cast<size_t>(i)] = {x, ground};
     view = view.united(body.translated({x, ground}));
   }
-  batch.upload_palettes();
-
-  // The ground: the level's colliders, or a plain strip under the creatures.
-  DebugDraw debug;
-  const glm::vec4 ground_fill{0.42f, 0.36f, 0.27f, 1.0f}, ground_edge{0.25f, 0.20f, 0.14f, 1.0f};
   Camera2D& camera = renderer->camera;
   camera.fit(view, static_cast<float>(a.width) / static_cast<float>(a.height), 0.08f);
   // The camera fits the whole row, so a row too long for the picture would draw creatures
-  // narrower than a pixel: nothing visible. Refuse it and say what fits.
+  // narrower than a pixel: nothing visible. Refuse it and say what fits (before building it).
   const float creature_px = static_cast<float>(a.width) * body.width() / (2.0f * camera.half_height * camera.aspect);
   if (creature_px < kMinCreaturePixels) {
     const int fits = std::max(1, static_cast<int>(static_cast<float>(a.count) * creature_px / kMinCreaturePixels));
@@ -282,6 +274,18 @@ int run(const Args& a) {
          std::to_string(static_cast<int>(kMinCreaturePixels)) + " px: nothing would show); use --count " +
          std::to_string(fits) + " or less, or a larger --width");
   }
+  CreatureBatch batch;
+  for (const glm::vec2& at : feet) {
+    const int id = batch.add(mesh, creature.skeleton);
+    Transform2D place;
+    place.translation = {at.x, at.y + lift};
+    batch.set_pose(id, creature.skeleton, creature.rest_pose.locals, place.to_mat2x3());
+  }
+  batch.upload_palettes();
+
+  // The ground: the level's colliders, or a plain strip under the creatures.
+  DebugDraw debug;
+  const glm::vec4 ground_fill{0.42f, 0.36f, 0.27f, 1.0f}, ground_edge{0.25f, 0.20f, 0.14f, 1.0f};
   // Keep the ground near the bottom edge (a long row would otherwise float mid-frame).
   camera.center_ws.y = view.min_ws.y - 0.2f * camera.half_height + camera.half_height;
   const Box visible = camera.visible_box();
