@@ -12,13 +12,13 @@
 #include "ossa/io/json.h"
 #include "ossa/level/level.h"
 #include "ossa/level/level_io.h"
+#include "ossa/level/level_load.h"
 #include "ossa/level/tiled.h"
 
 namespace ossa::tiled_detail {
 
 constexpr int kMaxGroupDepth = 32;
 constexpr uint32_t kGidFlags = 0xF0000000u;       // flip x, flip y, flip diagonal, hex rotation
-constexpr int64_t kMaxCellsPerLayer = 1LL << 24;  // 16 M cells (64 MB of gids) per layer or chunk
 
 std::string lower(std::string s);
 // A custom property of any Tiled element (map, layer, tile), matched case-insensitively, in
@@ -52,6 +52,7 @@ struct Importer {
   std::vector<Tileset> tilesets;  // by firstgid
   int64_t solid_cells = 0;
   int64_t boxes_from_cells = 0;
+  int64_t cells_read = 0;  // tile cells of every layer and chunk so far (level_load.h kMaxMapCells)
   std::string layer_what;  // 'tile layer "Ground": ', the start of tile layer errors
 
   // Pixel x / y (y-down) to metres, checked against the level file's coordinate bound.

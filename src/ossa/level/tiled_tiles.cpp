@@ -151,11 +151,17 @@ bool Importer::gid_solid(uint32_t gid) const {
 // The gids of a layer or chunk `holder` (fields data, width, height) in row order.
 bool Importer::read_gids(const Json& holder, const std::string& path, const std::string& encoding,
                const std::string& compression, std::vector<uint32_t>& gids, long long& w, long long& h) {
-  w = r.integer(holder, path, "width", 0, kMaxCellsPerLayer);
-  h = r.integer(holder, path, "height", 0, kMaxCellsPerLayer);
+  w = r.integer(holder, path, "width", 0, kMaxMapCells);
+  h = r.integer(holder, path, "height", 0, kMaxMapCells);
   if (r.failed()) return false;
-  if (w * h > kMaxCellsPerLayer) {
-    r.fail(path, layer_what + "has " + std::to_string(w * h) + " cells; at most " + std::to_string(kMaxCellsPerLayer) + " per layer or chunk");
+  // The cells of every layer and chunk of the map count together (level_load.h kMaxMapCells):
+  // many layers of a highly compressible map may not add up to more work than one may.
+  const int64_t before = cells_read;
+  cells_read += w * h;
+  if (cells_read > kMaxMapCells) {
+    r.fail(path, layer_what + "has " + std::to_string(w * h) + " cells" +
+                     (before > 0 ? ", " + std::to_string(cells_read) + " with the layers before" : std::string()) +
+                     "; at most " + std::to_string(kMaxMapCells) + " in all the layers of a map");
     return false;
   }
   const size_t n = static_cast<size_t>(w * h);
@@ -250,14 +256,10 @@ void Importer::tile_layer(const Json& layer, const std::string& path, double off
       const Json& c = (*chunks)[i];
       const std::string cpath = json_path(json_path(path, "chunks"), i);
       if (!r.expect_object(c, cpath)) return;
-      const long long cx = r.integer(c, cpath, "x", -kMaxCellsPerLayer * 64, kMaxCellsPerLayer * 64);
-      const long long cy = r.integer(c, cpath, "y", -kMaxCellsPerLayer * 64, kMaxCellsPerLayer * 64);
+      const long long cx = r.integer(c, cpath, "x", -kMaxMapCells * 64, kMaxMapCells * 64);
+      const long long cy = r.integer(c, cpath, "y", -kMaxMapCells * 64, kMaxMapCells * 64);
       if (r.failed() || !read_gids(c, cpath, encoding, compression, gids, w, h)) return;
       collect(cx, cy, w, h);
-      if (cells.size() > static_cast<size_t>(kMaxCellsPerLayer)) {
-        r.fail(path, layer_what + "more than " + std::to_string(kMaxCellsPerLayer) + " solid cells in one layer");
-        return;
-      }
     }
   } else {
     if (!read_gids(layer, path, encoding, compression, gids, w, h)) return;
