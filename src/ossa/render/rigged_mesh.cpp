@@ -4,12 +4,18 @@
 // conversion is in rigged_mesh_convert.cpp, the checks before Assimp in
 // rigged_mesh_precheck.cpp, skinning in rigged_skinning.cpp.
 
+#include <assimp/DefaultIOSystem.h>
 #include <assimp/Importer.hpp>
+#include <assimp/MemoryIOWrapper.h>
 #include <assimp/scene.h>
+#include <sys/stat.h>
 
+#include <algorithm>
+#include <cstring>
 #include <filesystem>
 
 #include "ossa/io/file.h"
+#include "ossa/io/image_info.h"
 #include "ossa/render/rigged_mesh_internal.h"
 
 // stb_image, static so that it cannot clash with another translation unit of ossa::render (or
@@ -31,6 +37,9 @@ Status decode_embedded(const aiTexture& t, const std::string& file, RiggedMesh& 
   if (!t.pcData) return Error::at(file, "embedded texture", "has no data");
   if (t.mHeight == 0) {  // compressed (PNG, JPEG, ...): mWidth bytes
     if (t.mWidth == 0 || t.mWidth > (1u << 30)) return Error::at(file, "embedded texture", "is empty");
+    // Its size from the header before stb_image allocates it (io/image_info.h).
+    const std::string_view bytes(reinterpret_cast<const char*>(t.pcData), t.mWidth);
+    if (Result<ImageInfo> info = check_image(bytes, file + ": embedded texture"); !info) return info.error();
     int w = 0, h = 0, n = 0;
     stbi_uc* px = stbi_load_from_memory(reinterpret_cast<const stbi_uc*>(t.pcData),
                                         static_cast<int>(t.mWidth), &w, &h, &n, 4);
@@ -44,8 +53,11 @@ Status decode_embedded(const aiTexture& t, const std::string& file, RiggedMesh& 
     out.texture_height = h;
     return {};
   }
-  if (t.mWidth > kMaxTextureSide || t.mHeight > kMaxTextureSide) {
-    return Error::at(file, "embedded texture", "is larger than 16384 pixels");
+  if (t.mWidth > kMaxImageSide || t.mHeight > kMaxImageSide ||
+      static_cast<int64_t>(t.mWidth) * t.mHeight > kMaxImagePixels) {
+    return Error::at(file, "embedded texture", "is " + std::to_string(t.mWidth) + " × " + std::to_string(t.mHeight) +
+                                                   " pixels; images may be at most " + std::to_string(kMaxImageSide) +
+                                                   " pixels on a side and " + std::to_string(kMaxImagePixels) + " in all");
   }
   const size_t n = static_cast<size_t>(t.mWidth) * t.mHeight;
   out.texture_rgba.resize(n * 4);
@@ -75,6 +87,41 @@ std::string assimp_error(const Assimp::Importer& importer) {
   return std::string("cannot import: ") + (e && *e ? e : "unknown error");
 }
 
+// Every file Assimp opens goes through the input rule (io/file.h) here: a regular file of at
+// most kMaxDataFileBytes, at most rigged_detail::kMaxMeshFilesBytes for the mesh and every file it names
+// together, read whole into memory (so a file swapped for a pipe cannot block a read), never
+// written. A glTF buffer that is a pipe made Assimp wait for ever; a 3 GB one was read whole.
+class CheckedIOSystem : public Assimp::DefaultIOSystem {
+ public:
+  bool Exists(const char* file) const override {
+    struct stat st {};
+    return file && ::stat(file, &st) == 0;  // (the default opens the file: a pipe blocks)
+  }
+
+  Assimp::IOStream* Open(const char* file, const char* mode) override {
+    if (!file || !mode || std::strpbrk(mode, "wa+")) return nullptr;
+    Result<std::string> bytes = read_file(file);
+    if (bytes && total_ + static_cast<long long>(bytes->size()) > rigged_detail::kMaxMeshFilesBytes) {
+      bytes = Error::at(file, "", "would take the files of this mesh past " + std::to_string(rigged_detail::kMaxMeshFilesBytes) + " bytes in all");
+    }
+    if (!bytes) {
+      if (refused.empty()) refused = bytes.message();
+      return nullptr;
+    }
+    total_ += static_cast<long long>(bytes->size());
+    files.push_back(file);
+    auto* data = new uint8_t[std::max<size_t>(bytes->size(), 1)];
+    std::memcpy(data, bytes->data(), bytes->size());
+    return new Assimp::MemoryIOStream(data, bytes->size(), true);
+  }
+
+  std::string refused;              // the first file refused, and why
+  std::vector<std::string> files;   // every file read
+
+ private:
+  long long total_ = 0;
+};
+
 }  // namespace
 
 using namespace rigged_detail;
@@ -102,9 +149,14 @@ Result<RiggedMesh> load_rigged_mesh(const std::string& path) {
     if (Status s = probe_import_in_child(raw, ext.empty() ? "" : ext.substr(1), path); !s.ok()) return s.error();
     Assimp::Importer importer;
     configure(importer);
+    auto* io = new CheckedIOSystem;  // owned by the importer
+    importer.SetIOHandler(io);
     const aiScene* scene = importer.ReadFile(path, kImportFlags);
+    if (!scene && !io->refused.empty()) return Error::at(path, "", "a file it refers to: " + io->refused);
     if (!scene) return Error::at(path, "", assimp_error(importer));
-    return convert(scene, path, fs::path(path).parent_path().generic_string());
+    Result<RiggedMesh> mesh = convert(scene, path, fs::path(path).parent_path().generic_string());
+    if (mesh) mesh->files = io->files;
+    return mesh;
   } catch (const std::exception& e) {
     return Error::at(path, "", std::string("cannot import: ") + e.what());
   } catch (...) {
@@ -121,8 +173,11 @@ Result<RiggedMesh> load_rigged_mesh_from_memory(std::span<const uint8_t> bytes,
     if (Status s = probe_import_in_child(bytes, hint, name); !s.ok()) return s.error();
     Assimp::Importer importer;
     configure(importer);
+    auto* io = new CheckedIOSystem;  // owned by the importer; no file should be opened
+    importer.SetIOHandler(io);
     const aiScene* scene = importer.ReadFileFromMemory(bytes.data(), bytes.size(), kImportFlags,
                                                        hint.c_str());
+    if (!scene && !io->refused.empty()) return Error::at(name, "", "a file it refers to: " + io->refused);
     if (!scene) return Error::at(name, "", assimp_error(importer));
     return convert(scene, name, "");
   } catch (const std::exception& e) {
@@ -135,8 +190,10 @@ Result<RiggedMesh> load_rigged_mesh_from_memory(std::span<const uint8_t> bytes,
 Status load_rigged_texture(RiggedMesh& mesh) {
   if (!mesh.texture_rgba.empty()) return {};
   if (mesh.texture_path.empty()) return Error::at(mesh.source, "texture", "the mesh has none");
-  Result<std::string> bytes = read_file(mesh.texture_path);
+  Result<std::string> bytes = read_file(mesh.texture_path, kMaxImageFileBytes);
   if (!bytes.ok()) return bytes.error();
+  // The size from the header before decoding (a 55 KB PNG may declare 16384 × 16384).
+  if (Result<ImageInfo> info = check_image(*bytes, mesh.texture_path); !info) return info.error();
   int w = 0, h = 0, n = 0;
   stbi_uc* px = stbi_load_from_memory(reinterpret_cast<const stbi_uc*>(bytes->data()),
                                       static_cast<int>(bytes->size()), &w, &h, &n, 4);

@@ -22,7 +22,8 @@ class Importer;
 
 namespace ossa::rigged_detail {
 
-constexpr int kMaxTextureSide = 16384;  // pixels; larger embedded textures are rejected
+// The mesh file and every file it names (glTF buffers) together, bytes.
+constexpr long long kMaxMeshFilesBytes = 256LL * 1024 * 1024;
 
 constexpr unsigned kImportFlags = aiProcess_Triangulate | aiProcess_JoinIdenticalVertices |
                                   aiProcess_LimitBoneWeights | aiProcess_SortByPType |

@@ -8,6 +8,8 @@
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
+#include <optional>
+#include <vector>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -15,6 +17,81 @@
 #include "ossa/render/rigged_mesh_internal.h"
 
 namespace ossa::rigged_detail {
+
+namespace {
+
+// Deepest node hierarchy a glTF may have. Assimp 5.2 walks the hierarchy recursively (import,
+// validation, destruction): a 20 000-node chain overflowed its stack. A skeleton is a few
+// dozen nodes deep; long tails or hair chains a few hundred.
+constexpr uint32_t kMaxNodeDepth = 1024;
+
+// The glTF node graph must be trees (one parent per node, no cycles) at most kMaxNodeDepth
+// deep; checked iteratively before Assimp sees it. Children out of range are Assimp's to
+// report.
+Status check_node_tree(const Json& doc, const std::string& file) {
+  auto nodes = doc.find("nodes");
+  if (nodes == doc.end() || !nodes->is_array()) return {};
+  const size_t n = nodes->size();
+  const auto children = [&](size_t i) -> const Json* {
+    const Json& node = (*nodes)[i];
+    if (!node.is_object()) return nullptr;
+    auto c = node.find("children");
+    return c != node.end() && c->is_array() ? &*c : nullptr;
+  };
+  const auto child_index = [&](const Json& c) -> std::optional<size_t> {
+    if (!c.is_number_unsigned() || c.get<uint64_t>() >= n) return std::nullopt;
+    return static_cast<size_t>(c.get<uint64_t>());
+  };
+  std::vector<int64_t> parent(n, -1);
+  for (size_t i = 0; i < n; ++i) {
+    const Json* list = children(i);
+    if (!list) continue;
+    for (const Json& c : *list) {
+      const std::optional<size_t> k = child_index(c);
+      if (!k) continue;
+      const std::string field = json_path(json_path("nodes", i), "children");
+      if (*k == i) return Error::at(file, field, "node " + std::to_string(i) + " is its own ancestor");
+      if (parent[*k] >= 0) {
+        return Error::at(file, field, "node " + std::to_string(*k) + " already has a parent (node " +
+                                          std::to_string(parent[*k]) + "); glTF nodes form trees");
+      }
+      parent[*k] = static_cast<int64_t>(i);
+    }
+  }
+  std::vector<uint32_t> depth(n, 0);
+  std::vector<size_t> stack;
+  for (size_t root = 0; root < n; ++root) {
+    if (parent[root] >= 0) continue;
+    depth[root] = 1;
+    stack.push_back(root);
+    while (!stack.empty()) {
+      const size_t i = stack.back();
+      stack.pop_back();
+      if (depth[i] > kMaxNodeDepth) {
+        return Error::at(file, "nodes", "the node hierarchy is more than " + std::to_string(kMaxNodeDepth) +
+                                            " nodes deep (at node " + std::to_string(i) + "); a skeleton needs far fewer");
+      }
+      if (const Json* list = children(i)) {
+        for (const Json& c : *list) {
+          if (const std::optional<size_t> k = child_index(c)) {
+            depth[*k] = depth[i] + 1;
+            stack.push_back(*k);
+          }
+        }
+      }
+    }
+  }
+  // Every node reached from a root; the others hang in a cycle.
+  for (size_t i = 0; i < n; ++i) {
+    if (depth[i] == 0) {
+      return Error::at(file, json_path(json_path("nodes", static_cast<size_t>(parent[i])), "children"),
+                       "node " + std::to_string(i) + " is its own ancestor");
+    }
+  }
+  return {};
+}
+
+}  // namespace
 
 // Guards against inputs that crash Assimp 5.2 itself (found by tests/fuzz/mesh_fuzz.cpp).
 // - a glTF skin without "inverseBindMatrices" (optional in the spec, identity by default)
@@ -51,6 +128,7 @@ Status precheck(std::string_view bytes, const std::string& file) {
   if (!parsed.ok()) return parsed.error();
   const Json& doc = *parsed;
   if (!doc.is_object()) return {};
+  if (Status s = check_node_tree(doc, file); !s.ok()) return s;
   auto skins = doc.find("skins");
   if (skins == doc.end() || !skins->is_array()) return {};
   auto accessors = doc.find("accessors");
