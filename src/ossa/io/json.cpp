@@ -135,9 +135,17 @@ class DomBuilder {
 
   // The path of the value about to be read: in each open container the child being read (an
   // array's last element; the next one in the innermost array), ending in `key` when given.
+  // Deep paths are cut after kPathLevels containers ("a[0][0]...": 256 levels of "[0]" say
+  // nothing more).
   std::string path_to(const std::string* key) const {
+    constexpr size_t kPathLevels = 8;
     std::string p;
     for (size_t i = 0; i < stack_.size(); ++i) {
+      if (i == kPathLevels && stack_.size() > kPathLevels + 1) {
+        p += "...";
+        if (key) p += "." + *key;
+        break;
+      }
       const Frame& f = stack_[i];
       const bool innermost = i + 1 == stack_.size();
       if (f.value->is_array()) {
