@@ -90,6 +90,11 @@ int main(int argc, char** argv) {
     out["spawn"] = {{"x", shortest_decimal(level->spawn_ws.x)}, {"y", shortest_decimal(level->spawn_ws.y)}};
     std::vector<std::string> warnings = report.warnings;
     for (std::string& w : level_warnings(*level)) warnings.push_back(std::move(w));
+    // A background image must be in the level's folder (level_load.h resolve_level_resource).
+    if (level->background && !level->background->image.empty()) {
+      Result<std::string> image = resolve_level_resource(positional[1], "background.image", level->background->image);
+      if (!image) warnings.push_back(image.message() + " (not drawn)");
+    }
     out["warnings"] = warnings;
     std::printf("%s\n", json_text(out, 2).c_str());
     return 0;
