@@ -13,6 +13,7 @@
 #include <glm/geometric.hpp>
 
 #include "ossa/anim/anim_math.h"
+#include "ossa/rig/character_checks.h"
 #include "ossa/math/angle.h"
 #include "ossa/math/two_bone_ik.h"
 
@@ -31,17 +32,6 @@ constexpr float kStraightOfReach = 1e-3f;
 constexpr float kFloatingOfHip = 0.05f;
 // The standing pose keeps every leg's hip within this fraction of its reach of its ankle.
 constexpr float kStandOfReach = 0.97f;
-// A foot (ankle to contact point) longer than this many legs (upper + lower) is refused: the
-// contact point sizes the foot, and with it the ground the animator samples around the
-// creature and where its planner looks, so a contact point far away must not pass. One longer
-// than kLongFootOfLeg legs is reported.
-constexpr float kMaxFootOfLeg = 2.0f;
-constexpr float kLongFootOfLeg = 1.0f;
-// Legs (upper + lower) outside this range, metres, are reported: a mesh in the wrong unit.
-constexpr float kMinLegMetres = 0.01f;
-constexpr float kMaxLegMetres = 20.0f;
-// The animator's gaits are written for one to three leg pairs (bipeds, quadrupeds, six legs).
-constexpr int kMaxPlausibleLegPairs = 3;
 
 bool finite(const Mat2x3& m) {
   for (float v : m.m) {
@@ -367,28 +357,8 @@ Result<Character> build_character(const ImportedSkeleton& sk, const RigMapping& 
     } else {
       bend[i] = cross > 0.0f ? 1 : -1;
     }
-    const float foot = glm::length(contacts[i] - ankle);
-    if (!(foot <= kMaxFootOfLeg * reach)) {
-      char what[240];
-      std::snprintf(what, sizeof what,
-                    "the contact point of foot %s lies %.3g m from its ankle, more than %g times the leg's length (%.3g m): "
-                    "expected a point on the sole",
-                    quoted(map.legs[i].end).c_str(), double(foot), double(kMaxFootOfLeg), double(reach));
-      return b.err(json_path(c.path, "contact"), what);
-    }
-    if (foot > kLongFootOfLeg * reach) {
-      char what[240];
-      std::snprintf(what, sizeof what, "%s: the contact point of foot %s lies %.3g m from its ankle, further than the leg is long (%.3g m)",
-                    c.path.c_str(), quoted(map.legs[i].end).c_str(), double(foot), double(reach));
-      ch.warnings.push_back(what);
-    }
-    if (reach < kMinLegMetres || reach > kMaxLegMetres) {
-      char what[300];
-      std::snprintf(what, sizeof what,
-                    "%s: the leg is %.3g m long (upper + lower), outside the %g m to %g m of walking animals: is \"scale\" "
-                    "right? (a mesh in centimetres needs 0.01)",
-                    c.path.c_str(), double(reach), double(kMinLegMetres), double(kMaxLegMetres));
-      ch.warnings.push_back(what);
+    if (Status st = check_leg_size(c.path, map.legs[i].end, ankle, contacts[i], reach, file, ch.warnings); !st.ok()) {
+      return st.error();
     }
     const float hip_h = hip.y;
     if (contacts[i].y > kFloatingOfHip * hip_h) {
@@ -399,20 +369,7 @@ Result<Character> build_character(const ImportedSkeleton& sk, const RigMapping& 
     }
   }
 
-  {
-    std::vector<int> pairs;
-    for (size_t i = 0; i < map.legs.size(); ++i) pairs.push_back(map.leg_pair(i));
-    std::sort(pairs.begin(), pairs.end());
-    const long n_pairs = std::unique(pairs.begin(), pairs.end()) - pairs.begin();
-    if (n_pairs > kMaxPlausibleLegPairs) {
-      char what[240];
-      std::snprintf(what, sizeof what,
-                    "legs: %ld leg pairs; the animator's gaits are made for 1 to %d (bipeds, quadrupeds, six legs): more "
-                    "walk, but their feet slide on steps",
-                    n_pairs, kMaxPlausibleLegPairs);
-      ch.warnings.push_back(what);
-    }
-  }
+  check_leg_pairs(map, ch.warnings);
 
   // (5) The ossa skeleton: root first, then the mesh order; a bone outside the root's subtree
   // (or above it) hangs from the root.
