@@ -294,5 +294,24 @@ TEST_CASE("tuning: files round trip, bad values are reported, a failing save kee
   REQUIRE(m.dirty());
 }
 
+
+TEST_CASE("tuning: the documented range ends load (float ends, not their doubles)", "[editor]") {
+  // stance_height's range is [0.7, 1.05]: a hand-written 1.05 was refused ("got 1.05") and
+  // the whole file ignored.
+  const Json doc = Json::parse(R"({"format": "ossa.tuning", "version": 1, "params": {"stance_height": 1.05}})");
+  Result<AnimatorParams> p = params_from_json(doc, "t.json");
+  INFO((p.ok() ? std::string() : p.message()));
+  REQUIRE(p.ok());
+  CHECK(p->stance_height == 1.05f);
+  for (const TuningField& f : tuning_fields()) {
+    for (const float end : {f.min, f.max}) {
+      Json d = Json::parse(R"({"format": "ossa.tuning", "version": 1, "params": {}})");
+      d["params"][f.name] = json_float(end);
+      INFO(f.name << " = " << end);
+      CHECK(params_from_json(d, "t.json").ok());
+    }
+  }
+}
+
 }  // namespace
 }  // namespace ossa

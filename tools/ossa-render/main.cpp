@@ -16,6 +16,7 @@
 #include "ossa/gen/genome.h"
 #include "ossa/gen/skeleton_builder.h"
 #include "ossa/io/data_dir.h"
+#include "ossa/io/file.h"
 #include "ossa/io/parse_arg.h"
 #include "ossa/level/level_io.h"
 #include "ossa/platform/window.h"
@@ -133,6 +134,13 @@ Args parse_args(int argc, char** argv) {
   if (sources == 0) fail("nothing to render: give --example NAME, --random, --creature F, --mesh F or --character F");
   if (sources > 1) fail("give only one of --example, --random, --creature, --mesh, --character");
   if (!a.png && !a.stats) fail("nothing to do: give --png OUT and/or --stats");
+  if (a.png) {  // no output may be one of the inputs (io/file.h)
+    std::vector<std::string> inputs;
+    for (const auto* in : {&a.creature, &a.mesh, &a.character, &a.level}) {
+      if (*in) inputs.push_back(**in);
+    }
+    if (Status st = check_output_path("--png", *a.png, inputs); !st) fail(st.message());
+  }
   return a;
 }
 

@@ -275,8 +275,9 @@ void Animator::update(float dt, const AnimatorIntent& intent, const Level& level
 
 bool Animator::below_kill_height(const Level& level) const {
   // Where the feet would stand under the root: a creature standing on a floor at the kill
-  // height is below it once its legs give on landing.
-  return body_.root_y_ws - rig_->root_rest_y < level.kill_y();
+  // height is below it once its legs give on landing. The default margin scales with the
+  // creature (Level::kill_y).
+  return body_.root_y_ws - rig_->root_rest_y < level.kill_y(rig_->hip_height);
 }
 
 void Animator::fly(float dt, const Level& level) {

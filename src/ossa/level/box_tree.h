@@ -29,6 +29,12 @@ class BoxTree {
   // The tree stays correct; its quality drops if boxes move far, so rebuild now and then.
   void update(int index, const Box& box);
   int size() const { return static_cast<int>(items_.size()); }
+  // The smallest box holding every box (the root's bounds: exact, as update() refits from the
+  // children), or nullopt for an empty tree. O(1).
+  std::optional<Box> bounds() const {
+    if (nodes_.empty()) return std::nullopt;
+    return nodes_.front().bounds;
+  }
 
   // Highest box top in [lo, hi] among boxes touching [x_min, x_max] (is_ground_candidate).
   std::optional<GroundHit> ground(float x_min, float x_max, float lo, float hi) const;
