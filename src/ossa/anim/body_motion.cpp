@@ -356,4 +356,58 @@ float limit_by_ledges(const AnimContext& ctx, const BodyFrame& body, const FootS
   return body.facing * move;
 }
 
+namespace {
+
+// A blocked creature tests the way ahead again this often, seconds.
+constexpr float kBlockedRetrySeconds = 0.5f;
+// Below this (m/s, and of the stick) the creature stands.
+constexpr float kStandingSpeed = 1e-4f;
+
+void block(int leg, int facing, MotionState& motion) {
+  MotionState::Block& b = motion.block;
+  b.blocked = true;
+  if (leg >= 0) b.leg = leg;
+  b.dir = facing;
+  b.retry = kBlockedRetrySeconds;
+}
+
+}  // namespace
+
+void command_speed(const FootholdInputs& in, float desired_velocity, float dt, bool landing, MotionState& motion) {
+  MotionState::Block& b = motion.block;
+  const int want = desired_velocity > kStandingSpeed ? 1 : desired_velocity < -kStandingSpeed ? -1 : 0;
+  float target = std::fabs(desired_velocity);
+  if (b.blocked) {
+    if (want != b.dir) {
+      b.blocked = false;
+    } else {
+      target = 0.0f;
+      b.retry -= dt;
+      if (b.retry <= 0.0f && !in.ctx.rig.legs.empty()) {
+        b.retry = kBlockedRetrySeconds;
+        glm::vec2 landing_at;
+        if (find_landing(in, b.leg, step_from(in.feet->of_leg(b.leg)), landing_x(in, b.leg, std::fabs(desired_velocity)), &landing_at)) {
+          b.blocked = false;
+        }
+      }
+    }
+  }
+  motion.speed = target <= kStandingSpeed || landing ? 0.0f : target;
+}
+
+float allowed_move(const AnimContext& ctx, const BodyFrame& body, const std::vector<Mat2x3>& model_fs, const FootSet& feet,
+                   float stride, float dx, std::vector<Box>& boxes, TickHandoff& handoff) {
+  const BodyMotionResult swept = sweep_body(ctx, body, model_fs, dx, boxes);
+  if (swept.hit_wall) handoff.wall_ahead = true;
+  dx = limit_by_legs(ctx, body, feet, swept.dx, handoff);
+  const float ledge = limit_by_ledges(ctx, body, feet, stride, dx);  // a face it cannot climb
+  if (ledge == 0.0f && dx != 0.0f) handoff.wall_ahead = true;
+  return ledge;
+}
+
+void update_block(const TickHandoff& handoff, int facing, MotionState& motion) {
+  if (handoff.wall_ahead) block(-1, facing, motion);
+  if (handoff.no_foothold_leg >= 0) block(handoff.no_foothold_leg, facing, motion);
+}
+
 }  // namespace ossa::anim
