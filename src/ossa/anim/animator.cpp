@@ -23,8 +23,6 @@ namespace {
 constexpr float kLeanRate = 6.0f, kRunRate = 5.0f, kGaitRate = 4.0f, kPitchRate = 10.0f, kRootRate = 14.0f;
 // A reset looks for ground from this many hip heights (and at least 1 m) above the position.
 constexpr float kResetSearchOfHip = 2.0f;
-// Below this (m/s) a command does not turn the creature round.
-constexpr float kTurnSpeed = 1e-4f;
 
 }  // namespace
 
@@ -93,7 +91,7 @@ void Animator::reset(glm::vec2 position_ws, const Level& level, int facing) {
   handoff_.begin_tick();
   refresh_ground_profile(level, rig, body_, gait_.stride, ground_);
   const AnimContext ctx = context(level);
-  reset_feet(ctx, body_, gait_.stride, gait_.duty, position_ws.y, from, depth, falling, step_);
+  reset_feet(ctx, body_, gait_, position_ws.y, from, depth, falling, step_);
   reset_offsets(rig, step_.feet, gait_);
   if (falling) {
     take_off(ctx, body_, {0.0f, 0.0f}, false, step_.feet, loco_);  // counts a fall
@@ -150,13 +148,12 @@ void Animator::update(float dt, const AnimatorIntent& intent, const Level& level
 
   const bool landing = loco_.mode == Locomotion::kLanding;
   begin_tick(rig, params_, intent.jump, dt, loco_);                             //  3 locomotion: the crouch
-  const int want = intent.velocity > kTurnSpeed ? 1 : intent.velocity < -kTurnSpeed ? -1 : 0;
-  handoff_.turned = turn_wanted(want, body_.facing, landing);
+  handoff_.turned = turn_wanted(intent.velocity, body_.facing, landing);
   if (handoff_.turned) {                                                        //  4 turn
     mirror_body(rig, body_);
-    turn_feet(ctx, spline_prototypes_, gait_.run_factor, gait_.stride, gait_.duty, body_, step_.feet);
+    turn_feet(ctx, spline_prototypes_, gait_, body_, step_.feet);
   }
-  command_speed(planner(ctx), intent.velocity, dt, landing, motion_);           //  5 body motion: speed
+  command_speed(planner(ctx, body_, gait_, step_.feet), intent.velocity, dt, landing, motion_);  //  5 body motion: speed
   update_gait(rig, params_, motion_.speed, decay_.run, decay_.gait, gait_);     //  6 gait clock
   lean_body(-params_.max_spine_rotation * std::min(motion_.speed / run_speed(), 1.2f), decay_.lean, body_);  // 7 body motion
   const float dx = allowed_move(ctx, body_, pose_.facing, step_.feet, gait_.stride, body_.facing * motion_.speed * dt,
@@ -167,16 +164,11 @@ void Animator::update(float dt, const AnimatorIntent& intent, const Level& level
     tick_crawl(rig, motion_.speed, motion_.block.blocked, dt, gait_);
     halt_if_blocked(motion_);
   } else {                                                                      //  8 gait clock, step
-    const bool running = motion_.speed > 0.0f && !motion_.block.blocked;
-    const float dphi = gait_.frequency * dt;
-    tick_clock(rig, step_.feet, running, dt, ism, gait_, handoff_.leg_phase);
-    StepTick tick{dt, motion_.speed, running, dphi, gait_.run_factor, gait_.stride, gait_.duty, &handoff_.leg_phase};
-    step_feet(ctx, spline_prototypes_, body_, tick, handoff_, step_);
+    tick_clock(rig, step_.feet, motion_.speed, motion_.block.blocked, dt, ism, gait_, handoff_.leg_phase);
+    step_feet(ctx, spline_prototypes_, body_, gait_, motion_.speed, dt, handoff_, step_);
     update_block(handoff_, body_.facing, motion_);
     halt_if_blocked(motion_);
-    tick.speed = motion_.speed;
-    tick.moving = gait_.moving;
-    advance_feet(ctx, body_, tick, handoff_, step_);
+    advance_feet(ctx, body_, gait_, motion_.speed, dt, handoff_, step_);
   }
   handoff_.crouch_done = tick_crouch(rig, params_, dt, loco_);                  //  9 locomotion: the crouch
   place_body(ctx, dt);                                                          // 10 body placement
@@ -193,7 +185,7 @@ void Animator::update(float dt, const AnimatorIntent& intent, const Level& level
       break;
     case ModeChange::kLanded:
       finish_landing(loco_);
-      set_down_after_landing(ctx, body_, gait_.stride, gait_.duty, step_);
+      set_down_after_landing(ctx, body_, gait_, step_);
       break;
     case ModeChange::kNone: break;
   }

@@ -166,7 +166,6 @@ class Animator {
   };
 
   anim::AnimContext context(const Level& level) { return {*rig_, params_, level, ground_, hits_}; }
-  anim::FootholdInputs planner(const anim::AnimContext& ctx) const { return {ctx, body_, gait_.stride, gait_.duty, &step_.feet}; }
   anim::PlacementInputs placement_inputs(float dt) const;
   void place_body(const anim::AnimContext& ctx, float dt);
   void finish_tick(const anim::AnimContext& ctx, float dt);

@@ -7,7 +7,7 @@
 #include "ossa/anim/animator_params.h"
 #include "ossa/anim/body_placement_internal.h"
 #include "ossa/anim/foothold.h"
-#include "ossa/anim/leg_ik.h"
+#include "ossa/anim/leg_geometry.h"
 #include "ossa/math/two_bone_ik.h"
 
 namespace ossa::anim::placement {
@@ -91,7 +91,7 @@ void keep_stance_legs_in_reach(Placement& p, std::vector<float>& need, std::vect
         beyond = beyond || f.state == LegState::kStance;
         continue;
       }
-      const float allowed = anchor.y + std::sqrt(r * r - dx * dx);
+      const float allowed = anchor.y + reach_across(r, dx);
       // (A joint further below the foot than the leg reaches is out of reach too; a foot within
       // kReachCheckSlack of its reach is left to clamp 6's own test, whose rounding differs.)
       beyond = beyond || (f.state == LegState::kStance &&
@@ -147,7 +147,7 @@ void keep_stance_legs_unfolded(Placement& p, std::vector<float>& fold_raise, std
       if (!any) std::fill(fold_raise.begin(), fold_raise.end(), 0.0f);
       any = true;
       float& raise = fold_raise[rig.legs[i].girdle];
-      raise = std::max(raise, ankle.y + std::sqrt(fold * fold - dx * dx) - joint.y);
+      raise = std::max(raise, ankle.y + reach_across(fold, dx) - joint.y);
     }
   }
   if (!any) return;

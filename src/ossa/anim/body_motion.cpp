@@ -3,10 +3,11 @@
 #include <algorithm>
 #include <cmath>
 
+#include "ossa/anim/anim_math.h"
 #include "ossa/anim/animator_params.h"
 #include "ossa/anim/foothold.h"
 #include "ossa/anim/ground_profile.h"
-#include "ossa/anim/leg_ik.h"
+#include "ossa/anim/leg_geometry.h"
 
 namespace ossa::anim {
 
@@ -272,7 +273,7 @@ float limit_by_legs(const AnimContext& ctx, const BodyFrame& body, const FootSet
     // Near steps a foot behind keeps the joint within kStepReach of the leg's reach: a leg
     // stretched back across a flight of stairs would cut the edges between.
     // How far forward the joint may go with this foot still in reach (facing x).
-    const float level_reach = std::sqrt(std::max(r * r - h * h, 0.0f));
+    const float level_reach = reach_across(r, h);
     const bool near_steps =
         anchor.x < joint.x && !(stance ? f.stance_reach_clear : f.swing_clear).clear_above(anchor.y + 0.1f * rig.hip_height) &&
         !on_slope(ctx, body, info, anchor, {anchor.x + level_reach, joint.y});
@@ -285,7 +286,7 @@ float limit_by_legs(const AnimContext& ctx, const BodyFrame& body, const FootSet
     const glm::vec2 now = body.to_fs(f.pos_ws);
     if (!stance && now.x < joint.x) {
       const float R = info.contact_reach, hn = joint.y - now.y;
-      const float lead = now.x + std::sqrt(std::max(R * R - hn * hn, 0.0f)) - joint.x;
+      const float lead = now.x + reach_across(R, hn) - joint.x;
       dx = facing * std::min(std::fabs(dx), std::max(lead, 0.0f));
     }
     // A foot left below and behind on stairs whose leg would cut the edge of a step above it

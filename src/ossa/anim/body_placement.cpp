@@ -12,7 +12,7 @@
 #include "ossa/anim/animator_params.h"
 #include "ossa/anim/body_placement_internal.h"
 #include "ossa/anim/foothold.h"
-#include "ossa/anim/leg_ik.h"
+#include "ossa/anim/leg_geometry.h"
 
 namespace ossa::anim {
 
@@ -75,7 +75,7 @@ void girdle_heights(Placement& p, std::vector<float>& height) {
       const glm::vec2 foot = f.to_ws;
       const float r = kFootReach * rig.legs[leg].contact_reach;
       const float dx = std::min(std::fabs(foot.x - gx), 0.95f * r);
-      lowest = std::min(lowest, foot.y + std::sqrt(r * r - dx * dx));
+      lowest = std::min(lowest, foot.y + reach_across(r, dx));
     }
     height[g] = std::min(standing, std::max(lowest, floor));
   }

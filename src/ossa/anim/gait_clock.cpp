@@ -81,7 +81,7 @@ void update_gait(const AnimRig& rig, const AnimatorParams& params, float speed, 
     gait.min_reach_x = 1e30f;
     for (const RigLeg& leg : rig.legs) {
       const float h = rig.girdles[leg.girdle].rest_height * params.stance_height;
-      gait.min_reach_x = std::min(gait.min_reach_x, std::sqrt(std::max(leg.contact_reach * leg.contact_reach - h * h, 0.0f)));
+      gait.min_reach_x = std::min(gait.min_reach_x, reach_across(leg.contact_reach, h));
     }
   }
   // The shortest reach limits most: x ↦ 1.8 x / duty is monotonic also in float arithmetic.
@@ -149,9 +149,9 @@ void start_clock(GaitState& gait, const FootSet& feet, int lead) {
   for (size_t k = 0; k < gait.foot_offset.size(); ++k) gait.foot_phase_prev[k] = frac(gait.phase + gait.foot_offset[k]);
 }
 
-void tick_clock(const AnimRig& rig, const FootSet& feet, bool running, float dt, float ism, GaitState& gait,
+void tick_clock(const AnimRig& rig, const FootSet& feet, float speed, bool blocked, float dt, float ism, GaitState& gait,
                 std::vector<LegPhase>& leg_phase) {
-  if (!running) {
+  if (!(speed > 0.0f && !blocked)) {
     rest(gait, dt);
     return;
   }

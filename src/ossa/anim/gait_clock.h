@@ -79,10 +79,10 @@ inline void stop_clock(GaitState& gait) { gait.moving = false; }
 // idle time runs.
 void tick_crawl(const AnimRig& rig, float speed, bool blocked, float dt, GaitState& gait);
 
-// Stage 8: the clock ticks. `running` (the creature moves and is not blocked): it starts if it
-// stood (the lead leg lifts now), the phase advances by f·dt, and every foot's phase and
-// lift-off go to leg_phase (per leg). Standing: it rests.
-void tick_clock(const AnimRig& rig, const FootSet& feet, bool running, float dt, float ism, GaitState& gait,
+// Stage 8: the clock ticks. While the creature moves (speed > 0, m/s) and is not blocked: the
+// clock starts if it stood (the lead leg lifts now; GaitState::moving), the phase advances by
+// f·dt, and every foot's phase and lift-off go to leg_phase (per leg). Else it rests.
+void tick_clock(const AnimRig& rig, const FootSet& feet, float speed, bool blocked, float dt, float ism, GaitState& gait,
                 std::vector<LegPhase>& leg_phase);
 
 // Advances foot `foot`'s phase by one tick of the running clock: its offset eases towards its

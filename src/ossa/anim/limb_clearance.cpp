@@ -84,11 +84,10 @@ void keep_arm_above_ground(const AnimContext& ctx, const BodyFrame& body, const 
         set_wrist(q, tuck);
         if (hits(current())) continue;
         float lo = 0.0f, hi = 1.0f;  // fractions of the way to the tuck: lo hits, hi clears
-        for (int k = 0; k < kClearBisections; ++k) {
-          const float mid = 0.5f * (lo + hi);
+        bisect(lo, hi, kClearBisections, [&](float mid) {
           set_wrist(q, glm::mix(q.wrist, tuck, mid));
-          (hits(current()) ? lo : hi) = mid;
-        }
+          return hits(current());
+        });
         set_wrist(q, glm::mix(q.wrist, tuck, hi));
         return;
       }
@@ -153,10 +152,7 @@ void keep_tail_clear(const AnimContext& ctx, const BodyFrame& body, const std::v
   float most = kMaxTailCurl * up;
   if (hits(most) && !hits(-most)) most = -most;
   float lo = 0.0f, hi = 1.0f;  // fractions of the most: lo hits, hi clears (or is the last resort)
-  for (int k = 0; k < kClearBisections; ++k) {
-    const float mid = 0.5f * (lo + hi);
-    (hits(mid * most) ? lo : hi) = mid;
-  }
+  bisect(lo, hi, kClearBisections, [&](float mid) { return hits(mid * most); });
   float curl = hi * most, lift = 0.0f;
   if (hi == 1.0f && hits(most)) {
     // Curled as far as it goes and still in the step (a ledge's face right behind a body that
@@ -166,10 +162,7 @@ void keep_tail_clear(const AnimContext& ctx, const BodyFrame& body, const std::v
     if (!hits(0.0f, most_lift)) {
       curl = 0.0f;
       lo = 0.0f, hi = 1.0f;
-      for (int k = 0; k < kClearBisections; ++k) {
-        const float mid = 0.5f * (lo + hi);
-        (hits(0.0f, mid * most_lift) ? lo : hi) = mid;
-      }
+      bisect(lo, hi, kClearBisections, [&](float mid) { return hits(0.0f, mid * most_lift); });
       lift = hi * most_lift;
     } else {
       lift = most_lift;
@@ -216,10 +209,7 @@ void keep_fin_clear(const AnimContext& ctx, const BodyFrame& body, const RigLimb
   }
   if (turn == 0.0f) turn = 0.5f * kPi * up;  // nothing clears: the tip up, as before
   float lo = 0.0f, hi = 1.0f;  // fractions of the turn: lo hits, hi clears (or is the last resort)
-  for (int k = 0; k < kFinBisections; ++k) {
-    const float mid = 0.5f * (lo + hi);
-    (clears(mid * turn) ? hi : lo) = mid;
-  }
+  bisect(lo, hi, kFinBisections, [&](float mid) { return !clears(mid * turn); });
   pose.locals[fin.bones[0]].angle_ls = wrap_angle(base + hi * turn);
 }
 

@@ -10,7 +10,7 @@
 
 #include "ossa/anim/anim_math.h"
 #include "ossa/anim/animator_params.h"
-#include "ossa/anim/leg_ik.h"
+#include "ossa/anim/leg_geometry.h"
 #include "ossa/anim/locomotion.h"
 #include "ossa/anim/swing.h"
 
@@ -90,7 +90,7 @@ bool foot_consistent(const FootState& f) {
 
 // [SECTION] reset and the level's changes ---------------------------------------------------------
 
-void reset_feet(const AnimContext& ctx, const BodyFrame& body, float stride, float duty, float ground_y_fallback,
+void reset_feet(const AnimContext& ctx, const BodyFrame& body, const GaitState& gait, float ground_y_fallback,
                 float search_from_y, float search_depth, bool falling, StepState& step) {
   const AnimRig& rig = ctx.rig;
   step.steps = 0;
@@ -105,7 +105,7 @@ void reset_feet(const AnimContext& ctx, const BodyFrame& body, float stride, flo
     f.pos_ws = {x, hit ? hit->height_ws : ground_y_fallback};
   }
   // Each foot stands where it fits (not across the edge of a step).
-  const FootholdInputs in{ctx, body, stride, duty, &step.feet};
+  const FootholdInputs in = planner(ctx, body, gait, step.feet);
   for (size_t i = 0; i < rig.legs.size(); ++i) {
     glm::vec2 landing;
     FootState& f = step.feet.of_leg(static_cast<int>(i));
@@ -153,16 +153,16 @@ bool lift_now(const AnimContext& ctx, const BodyFrame& body, int leg, const Foot
 
 }  // namespace
 
-void step_feet(const AnimContext& ctx, const SplinePrototypes& prototypes, const BodyFrame& body, const StepTick& tick,
-               TickHandoff& handoff, StepState& step) {
+void step_feet(const AnimContext& ctx, const SplinePrototypes& prototypes, const BodyFrame& body, const GaitState& gait,
+               float speed, float dt, TickHandoff& handoff, StepState& step) {
   const AnimRig& rig = ctx.rig;
   FootSet& feet = step.feet;
-  const FootholdInputs in{ctx, body, tick.stride, tick.duty, &feet};
+  const FootholdInputs in = planner(ctx, body, gait, feet);
   auto asked = [&](int leg) {
     const int k = feet.foot_of_leg[leg];
     return handoff.lift_now[k] || handoff.release_next[k];
   };
-  if (!tick.moving) {
+  if (!gait.moving) {
     // Standing: swinging feet set down, eased; a foot the body placement stretched past its
     // reach steps to where it reaches, once, rather than hang off its leg (and stays if there
     // is no such place).
@@ -175,22 +175,23 @@ void step_feet(const AnimContext& ctx, const SplinePrototypes& prototypes, const
     }
     return;
   }
+  const float dphi = gait.frequency * dt;  // cycles the clock advanced
   for (size_t i = 0; i < rig.legs.size(); ++i) {
     const int leg = static_cast<int>(i);
     FootState& f = feet.of_leg(leg);
-    const LegPhase& lp = (*tick.leg_phase)[i];
+    const LegPhase& lp = handoff.leg_phase[i];
     if (f.air) continue;  // hanging over a drop (update_air_feet)
     if (f.state == LegState::kSwing) {
-      if (!f.easing) f.progress += f.rate * tick.dphi;
+      if (!f.easing) f.progress += f.rate * dphi;
       continue;
     }
     if (!lp.lift_due && !lift_now(ctx, body, leg, f, asked(leg))) continue;
     const float swing_phase = std::max(1.0f - lp.phase, 0.05f);
-    if (set_new_splines(in, prototypes, tick.run_factor, tick.speed, leg, f, swing_phase)) continue;
+    if (set_new_splines(in, prototypes, gait.run_factor, speed, leg, f, swing_phase)) continue;
     // No foothold ahead: over a drop deeper than the legs reach the foot steps off and reaches
     // down past the edge; a wall too tall (or the way walled off) stops the creature.
     float beyond;
-    if (drop_ahead(in, leg, f.pos_ws, landing_x(in, leg, tick.speed, swing_phase), &beyond)) {
+    if (drop_ahead(in, leg, f.pos_ws, landing_x(in, leg, speed, swing_phase), &beyond)) {
       f.floor = f.pos_ws.y - kFloorBelowLedge;  // a fall that follows lands lower than this ledge
       hang(ctx, body, leg, 1.0f, f);
       f.hang_beyond = beyond;
@@ -200,15 +201,16 @@ void step_feet(const AnimContext& ctx, const SplinePrototypes& prototypes, const
   }
 }
 
-void advance_feet(const AnimContext& ctx, const BodyFrame& body, const StepTick& tick, TickHandoff& handoff, StepState& step) {
+void advance_feet(const AnimContext& ctx, const BodyFrame& body, const GaitState& gait, float speed, float dt,
+                  TickHandoff& handoff, StepState& step) {
   FootSet& feet = step.feet;
-  const FootholdInputs in{ctx, body, tick.stride, tick.duty, &feet};
-  const SwingTick swing{tick.dt, tick.speed, tick.moving};
+  const FootholdInputs in = planner(ctx, body, gait, feet);
+  const SwingTick swing{dt, speed, gait.moving};
   for (size_t i = 0; i < ctx.rig.legs.size(); ++i) {
     FootState& f = feet.of_leg(static_cast<int>(i));
     if (f.state == LegState::kSwing && !f.air && advance_swing(in, swing, static_cast<int>(i), f)) ++step.steps;
   }
-  update_air_feet(ctx, body, 1.0f, tick.dt, true, feet);  // feet reaching down over a drop, or to land
+  update_air_feet(ctx, body, 1.0f, dt, true, feet);  // feet reaching down over a drop, or to land
   for (size_t k = 0; k < feet.feet.size(); ++k) {
     const FootState& f = feet.feet[k];
     handoff.waiting[k] = f.state == LegState::kSwing && f.hover > 0.0f;
@@ -241,7 +243,7 @@ int update_air_feet(const AnimContext& ctx, const BodyFrame& body, float extensi
       const glm::vec2 j = body.girdle_ws(ctx.rig, info.girdle);
       const float r = kFootReach * info.contact_reach, dx = next.x - j.x;
       if (std::fabs(dx) < r) {
-        const float lowest = j.y - std::sqrt(r * r - dx * dx);
+        const float lowest = j.y - reach_across(r, dx);
         if (auto hit = ground_below(ctx.level, next.x + span.lo, next.x + span.hi, std::min(f.pos_ws.y, f.floor), f.pos_ws.y - lowest);
             hit && hit->height_ws < next.y) {
           // Down to it at the rate the air offset eases (no jump), planted on arrival.
@@ -316,8 +318,8 @@ void push_off_and_reach(const AnimContext& ctx, const BodyFrame& body, float vy,
   handoff.planted = update_air_feet(ctx, body, extension, dt, false, step.feet, vy < 0.0f);
 }
 
-void set_down_after_landing(const AnimContext& ctx, const BodyFrame& body, float stride, float duty, StepState& step) {
-  const FootholdInputs in{ctx, body, stride, duty, &step.feet};
+void set_down_after_landing(const AnimContext& ctx, const BodyFrame& body, const GaitState& gait, StepState& step) {
+  const FootholdInputs in = planner(ctx, body, gait, step.feet);
   for (size_t i = 0; i < ctx.rig.legs.size(); ++i) {
     FootState& f = step.feet.of_leg(static_cast<int>(i));
     if (!f.air) continue;

@@ -37,6 +37,11 @@ struct StepState {
   std::uint64_t level_revision = 0;  // the level revision the feet's clearance caches are for
 };
 
+// The foothold planner's inputs for the feet as they stand, the body and the gait as they are.
+inline FootholdInputs planner(const AnimContext& ctx, const BodyFrame& body, const GaitState& gait, const FootSet& feet) {
+  return {ctx, body, gait.stride, gait.duty, &feet};
+}
+
 // ---- Transitions of one foot -----------------------------------------------------------------
 
 // Where leg `leg`'s foot hangs in the air: under its girdle, tucked (extension 0) or reaching
@@ -58,7 +63,7 @@ bool foot_consistent(const FootState& foot);
 
 // Animator::reset: every foot under its girdle at the ground below (or, `falling`, where the
 // body is, about to hang), each where it fits; the counts cleared.
-void reset_feet(const AnimContext& ctx, const BodyFrame& body, float stride, float duty, float ground_y_fallback,
+void reset_feet(const AnimContext& ctx, const BodyFrame& body, const GaitState& gait, float ground_y_fallback,
                 float search_from_y, float search_depth, bool falling, StepState& step);
 
 // Stage 2: the level changed under the feet (its revision moved). A standing foot whose
@@ -71,20 +76,14 @@ void watch_level(const AnimContext& ctx, const BodyFrame& body, StepState& step)
 // — and the swings' progress by the clock. Standing: swinging feet set down eased, and a foot
 // the body placement stretched past its reach re-steps. Then every swing advances, and the
 // feet hanging over a drop reach down.
-struct StepTick {
-  float dt = 0.0f;                  // seconds
-  float speed = 0.0f;               // m/s along the facing
-  bool moving = false;              // the gait clock runs (GaitState::moving)
-  float dphi = 0.0f;                // cycles the clock advanced on this tick
-  float run_factor = 0.0f;          // walk→run blend of the prototypes
-  float stride = 0.0f, duty = 0.65f;
-  const std::vector<LegPhase>* leg_phase = nullptr;  // per leg, while moving
-};
-void step_feet(const AnimContext& ctx, const SplinePrototypes& prototypes, const BodyFrame& body, const StepTick& tick,
-               TickHandoff& handoff, StepState& step);
+// `gait` has ticked (gait_clock.h tick_clock: GaitState::moving, handoff.leg_phase); `speed`
+// is the speed asked for (m/s), dt seconds.
+void step_feet(const AnimContext& ctx, const SplinePrototypes& prototypes, const BodyFrame& body, const GaitState& gait,
+               float speed, float dt, TickHandoff& handoff, StepState& step);
 // The swings' progress after step_feet (the block may have stopped the creature meanwhile:
-// `tick.speed` 0), then the hanging feet; fills handoff.waiting.
-void advance_feet(const AnimContext& ctx, const BodyFrame& body, const StepTick& tick, TickHandoff& handoff, StepState& step);
+// `speed` 0), then the hanging feet; fills handoff.waiting.
+void advance_feet(const AnimContext& ctx, const BodyFrame& body, const GaitState& gait, float speed, float dt,
+                  TickHandoff& handoff, StepState& step);
 
 // The body leaves the ground (locomotion.h take_off): a jump's stance feet but the front ones
 // of a quadruped keep pushing off (push_off_and_reach), every other foot hangs; `floor`: a
@@ -98,7 +97,7 @@ void leave_ground(const AnimContext& ctx, const BodyFrame& body, bool jump, floa
 void push_off_and_reach(const AnimContext& ctx, const BodyFrame& body, float vy, float extension, float dt,
                         TickHandoff& handoff, StepState& step);
 // The landing is over: feet that found no ground as the body came down set down where they can.
-void set_down_after_landing(const AnimContext& ctx, const BodyFrame& body, float stride, float duty, StepState& step);
+void set_down_after_landing(const AnimContext& ctx, const BodyFrame& body, const GaitState& gait, StepState& step);
 
 // Feet hanging in the air follow their targets and are planted where they meet the top of a
 // box on the way down; reach_ground (on the ground: stepping off, landing): a foot reaches

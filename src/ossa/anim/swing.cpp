@@ -5,7 +5,7 @@
 
 #include "ossa/anim/anim_math.h"
 #include "ossa/anim/animator_params.h"
-#include "ossa/anim/leg_ik.h"
+#include "ossa/anim/leg_geometry.h"
 
 namespace ossa::anim {
 
@@ -176,7 +176,7 @@ void start_ease(const FootholdInputs& in, int leg, FootState& f, const glm::vec2
     const glm::vec2 joint = in.body.to_fs(in.body.girdle_ws(in.ctx.rig, info.girdle));
     const float reach = kFootReach * info.contact_reach;
     const float h = joint.y - landing.y;
-    const float reach_x = 0.9f * std::sqrt(std::max(reach * reach - h * h, 0.0f));
+    const float reach_x = 0.9f * reach_across(reach, h);
     const float dx = std::clamp(in.body.to_fs(landing).x - joint.x, -reach_x, reach_x);
     glm::vec2 spot;
     if (nearest_fit(in, leg, in.body.to_ws({joint.x + dx, landing.y}), &spot, true)) landing = spot;
@@ -268,7 +268,7 @@ bool advance_swing(const FootholdInputs& in, const SwingTick& tick, int leg, Foo
       if (nearest_fit(in, leg, below_joint, &spot) && reaches(in, leg, spot)) {
         const float R = info.contact_reach;
         const float dxj = body.to_fs(f.to_ws).x - joint.x;
-        f.pos_ws = body.to_ws({body.to_fs(f.to_ws).x, joint.y - std::sqrt(std::max(R * R - dxj * dxj, 0.0f))});
+        f.pos_ws = body.to_ws({body.to_fs(f.to_ws).x, joint.y - reach_across(R, dxj)});
         start_ease(in, leg, f, &spot);
         f.hover = 0.0f;
         return false;

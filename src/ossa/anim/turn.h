@@ -11,17 +11,22 @@
 // placement's snap).
 
 #include "ossa/anim/anim_state.h"
+#include "ossa/anim/gait_clock.h"
 #include "ossa/anim/spline_prototypes.h"
 
 namespace ossa::anim {
 
-// Does a command `want` (+1, -1, 0: none) turn a creature facing `facing` round? Not while a
-// landing's descent holds the body.
-inline bool turn_wanted(int want, int facing, bool landing) { return !landing && want != 0 && want != facing; }
+// Does a command of `velocity` (m/s, signed along x) turn a creature facing `facing` round? Not
+// while a landing's descent holds the body, nor for a stick at rest.
+inline bool turn_wanted(float velocity, int facing, bool landing) {
+  constexpr float kTurnSpeed = 1e-4f;  // m/s
+  const int want = velocity > kTurnSpeed ? 1 : velocity < -kTurnSpeed ? -1 : 0;
+  return !landing && want != 0 && want != facing;
+}
 
 // The step stage's part of a turn, the body already mirrored (`body`): the feet handed to the
 // legs now over them, feet hanging in the air unhung, and the re-steps above.
-void turn_feet(const AnimContext& ctx, const SplinePrototypes& prototypes, float run_factor, float stride, float duty,
-               const BodyFrame& body, FootSet& feet);
+void turn_feet(const AnimContext& ctx, const SplinePrototypes& prototypes, const GaitState& gait, const BodyFrame& body,
+               FootSet& feet);
 
 }  // namespace ossa::anim
