@@ -4,24 +4,28 @@
 // AnimRig. Each stage is a file pair of its own; animator.cpp runs them in the order of its
 // numbered stage list (Animator::update) and keeps the state between ticks, one owner each:
 //
-//   state (member)          owner (stage)                     read by
-//   ground_   GroundProfile ground profile (1), keyed on the  every stage after it
-//                           level's revision
-//   step_     StepState     the step stage (2, 4, 8, A3):     gait clock, body motion, body
-//             the feet        step.h, foothold.h, swing.h,      placement, locomotion, pose
-//                             turn.h
-//   loco_     Locomotion-   locomotion (3, 9, 11, A1)         the orchestrator's branch, body
-//             State: mode                                       placement (crouch, landing)
-//   motion_   MotionState:  body motion (5, 7): body_motion.h gait clock, step stage, pose
-//             speed, block
-//   gait_     GaitState     gait clock (6, 8): gait_clock.h   step stage, body placement (bob),
-//                                                               pose
-//   body_     BodyFrame     body placement (4, 7, 10, 12,     every stage
-//   body_state_ BodyState     A2, A4): body_placement.h
-//   pose_     PoseState     the pose stage (12): pose, tail   the outputs below
-//                             spring, matrices (pose_stage.h)
-//   handoff_  TickHandoff   per tick: each field names its writer and readers (anim_state.h)
-//   decay_    Decay         the orchestrator: smoothing factors cached per (dt, ism)
+//   member        state                    owner (its stages)             read by
+//   ground_       GroundProfile            ground profile (1), keyed on   every stage after it
+//                                            the level's revision
+//   step_         StepState: the feet,     the step stage (2, 4, 8, A3):  gait clock, body motion,
+//                   touch-downs, the level   step.h, turn.h, swing.h,       body placement,
+//                   revision they saw        foothold.h                     locomotion, pose
+//   loco_         LocomotionState: mode,   locomotion (3, 9, 11, A1,      the orchestrator (which
+//                   crouch, air path,        A4, A5): locomotion.h          branch), body placement
+//                   landing, counts                                         (crouch, landing)
+//   motion_       MotionState: speed,      body motion (5, 7, 8):         gait clock, step stage,
+//                   block                    body_motion.h                  body placement, pose
+//   gait_         GaitState: phase,        gait clock (6, 8):             step stage, body
+//                   blends, stride, foot     gait_clock.h                   placement (bob), pose
+//                   offsets, idle & crawl
+//   body_,        BodyFrame, BodyState     body placement (4, 7, 10, 12,  every stage
+//   body_state_                              A2, A4): body_placement.h
+//   pose_         PoseState: pose, tail    the pose stage (12):           the outputs below
+//                   spring, matrices         pose_stage.h
+//   handoff_      TickHandoff              per tick; each field names its writer and readers
+//                                            (anim_state.h)
+//   decay_        Decay                    the orchestrator: smoothing factors cached per
+//                                            (dt, ism), derived state
 //
 // Spaces — one suffix, one meaning:
 //   _ws  world: metres, +x right, +y up.
@@ -113,6 +117,9 @@ class Animator {
   const std::vector<Mat2x3>& world_matrices() const { return anim::world_matrices(*rig_, body_, pose_); }
   // The ground profile of the last tick (stage 1).
   const GroundProfile& ground_profile() const { return ground_; }
+  // What the stages told each other on the last tick (anim_state.h TickHandoff): for tools and
+  // tests that follow the pipeline.
+  const anim::TickHandoff& last_tick() const { return handoff_; }
 
   // ---- State ------------------------------------------------------------------------------
   float x() const { return body_.x_ws; }               // world x of the root

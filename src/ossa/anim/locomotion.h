@@ -1,5 +1,6 @@
 #pragma once
-// Locomotion mode (DESIGN.md §7; stages 3 and 11 of Animator::update, and A1 in the air):
+// Locomotion mode (DESIGN.md §7; stages 3, 9 and 11 of Animator::update, and A1, A4 and A5 in
+// the air):
 // grounded → airborne → landing → grounded, and the jump's crouch and take-off.
 //   kGrounded  the gait clock, the step stage and body placement run (stages 6–10);
 //   kCrouch    the same, the girdles lowered by the crouch before a jump;
@@ -101,7 +102,7 @@ bool unsupported(const FootSet& feet);
 // below it, under the whole body)?
 bool legless_over_drop(const AnimContext& ctx, const BodyFrame& body);
 
-// ---- In the air (stage A1) ----------------------------------------------------------------
+// ---- In the air (stages A1, A4) ----------------------------------------------------------------
 // The path's time advances by dt; its horizontal step is swept against walls (`model_fs`, the
 // last pose's facing-space matrices, give the sweep its outline; `boxes` is scratch): a wall
 // stops the path horizontally. True with *dx (world metres) when the body moves along x.
@@ -113,11 +114,12 @@ float path_height(const AnimContext& ctx, const BodyFrame& body, const std::vect
                   LocomotionState& loco);
 // How far the legs reach for the ground, in [0, 1]: tucked while rising or high above it.
 float reach_extension(const AnimContext& ctx, const BodyFrame& body, const LocomotionState& loco);
-// No foot planted yet: may the body itself meet the ground (no foot stands, and it falls)?
+// Stage A4. No foot planted yet: may the body itself meet the ground (no foot stands, and it
+// falls)?
 // `floor` is the height below which it lands (the ledge a fall left).
 bool body_may_land(const LocomotionState& loco, const FootSet& feet, float* floor);
 
-// Touch-down: the landing's descent from the root's height now to `standing_root` (body
+// Stage A5, touch-down: the landing's descent from the root's height now to `standing_root` (body
 // placement's, for the feet where they are) less the compression. Counts the fall.
 void begin_landing(const AnimContext& ctx, const BodyFrame& body, float standing_root, LocomotionState& loco);
 // The root's height during the landing's descent at loco.time; NaN once it is over.
