@@ -109,7 +109,7 @@ TEST_CASE("locomotion: a fall lands only below the ledge it left", "[anim][locom
   anim::LocomotionState loco;
   anim::take_off(s.ctx, s.body, {1.0f, 0.0f}, false, feet, loco);
   CHECK(loco.stats.falls == 1);
-  CHECK(loco.floor == Approx(0.0f - anim::kFloorBelowLedge));
+  CHECK(loco.floor == Approx(0.0f - s.rig->scale.ledge_gap));
   CHECK(loco.vx == 1.0f);
 }
 

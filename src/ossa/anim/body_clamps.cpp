@@ -57,7 +57,7 @@ float girdle_keep_out_top(const AnimContext& ctx, glm::vec2 joint_ws, float rest
 
 float girdle_keep_out(const AnimContext& ctx, glm::vec2 joint_ws, float rest, float extra) {
   return keep_out_height(ctx.level, joint_ws.x, kGirdleKeepOutHalfOfRest * rest, kGirdleKeepOutOfRest * rest,
-                         kKeepOutFadeOfRest * rest, girdle_keep_out_top(ctx, joint_ws, rest, extra), 100.0f, ctx.hits);
+                         kKeepOutFadeOfRest * rest, girdle_keep_out_top(ctx, joint_ws, rest, extra), ctx.rig.scale.search_depth, ctx.hits);
 }
 
 // [SECTION] clamps, in their order ------------------------------------------------------------
@@ -278,7 +278,7 @@ void keep_knees_off_ground(Placement& p, std::vector<float>& stance_up, std::vec
 float shoulder_need(const Placement& p, glm::vec2 shoulder, float extra) {
   const float hip = p.ctx.rig.hip_height;
   const float half = 0.05f * hip;
-  auto below = ground_below(p.ctx.level, shoulder.x - half, shoulder.x + half, shoulder.y + 0.5f * hip + extra, 100.0f);
+  auto below = ground_below(p.ctx.level, shoulder.x - half, shoulder.x + half, shoulder.y + 0.5f * hip + extra, p.ctx.rig.scale.search_depth);
   return below ? below->height_ws + kShoulderKeepOutOfHip * hip - shoulder.y : 0.0f;
 }
 

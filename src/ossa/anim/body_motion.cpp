@@ -19,10 +19,8 @@ namespace {
 constexpr float kStepReach = 0.8f;
 constexpr float kLegLineMarginOfHip = 0.08f;
 // The wall sweep ignores the lowest part of the body this many hip heights high (the legs'
-// business), and meets walls this far early: 3 cm plus this many hip heights.
+// business); it meets walls RigScale::wall_margin early.
 constexpr float kSweepFloorOfHip = 0.3f;
-constexpr float kWallMarginOfHip = 0.02f;
-constexpr float kWallMargin = 0.03f;
 
 // A box holding body_boxes(false, ·)'s single box, from the root and the hull's extent (no
 // hull points), and *top_y the height of one of its points; false if fins or arms take part.
@@ -179,7 +177,7 @@ BodyMotionResult sweep_body(const AnimContext& ctx, const BodyFrame& body, const
   float slope = 0.0f;  // tan(pitch); set, with `reading`, once a part is swept (below)
   // The margin lies ahead only: behind, the body moves away from what it is near (a tail
   // still beside the ledge it came down from).
-  const float m = kWallMargin + kWallMarginOfHip * hip;
+  const float m = rig.scale.wall_margin;
   const glm::vec2 margin_lo(dx < 0.0f ? m : 0.0f, 0.0f), margin_hi(dx > 0.0f ? m : 0.0f, 0.0f);
   // A part's box as swept: from kSweepFloorOfHip above its bottom or a step above the ground
   // line under it (whichever is higher, at most its top). Ground the legs climb without a
@@ -278,7 +276,7 @@ float limit_by_legs(const AnimContext& ctx, const BodyFrame& body, const FootSet
         anchor.x < joint.x && !(stance ? f.stance_reach_clear : f.swing_clear).clear_above(anchor.y + 0.1f * rig.hip_height) &&
         !on_slope(ctx, body, info, anchor, {anchor.x + level_reach, joint.y});
     float joint_reach = level_reach;  // (the step reach only near steps)
-    if (near_steps) joint_reach = std::max(std::sqrt(std::max(kStepReach * kStepReach * r * r - h * h, 0.0f)), 0.5f * level_reach);
+    if (near_steps) joint_reach = std::max(reach_across(kStepReach * r, h), 0.5f * level_reach);
     const float ahead = anchor.x + joint_reach - joint.x;
     dx = facing * std::min(std::fabs(dx), std::max(ahead, 0.0f));
     // Nor does the body leave a swinging foot behind further than its leg reaches (a foot
@@ -306,7 +304,7 @@ float limit_by_ledges(const AnimContext& ctx, const BodyFrame& body, const FootS
   const GroundProfile& ground = ctx.ground;
   if (dx == 0.0f || ground.empty() || rig.girdles.empty()) return dx;
   const float up = ctx.params.max_step_up * rig.climb_height;
-  const float margin = kWallMargin + kWallMarginOfHip * rig.hip_height;
+  const float margin = rig.scale.wall_margin;
   float move = std::fabs(dx);
   for (size_t g = 0; g < rig.girdles.size(); ++g) {
     const RigGirdle& girdle = rig.girdles[g];

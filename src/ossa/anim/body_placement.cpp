@@ -40,7 +40,8 @@ void girdle_heights(Placement& p, std::vector<float>& height) {
         // girdle down to it and a little lower, so the foot reaches it (a drop the legs can
         // step down); else it holds nothing up.
         const float r = rig.legs[leg].contact_reach;
-        if (auto below = ground_below(p.ctx.level, f.pos_ws.x - 0.01f, f.pos_ws.x + 0.01f, std::min(f.pos_ws.y, f.floor), kHangGroundOfReach * r)) {
+        const float span = 0.5f * rig.scale.ground_span;
+        if (auto below = ground_below(p.ctx.level, f.pos_ws.x - span, f.pos_ws.x + span, std::min(f.pos_ws.y, f.floor), kHangGroundOfReach * r)) {
           sum += below->height_ws - kHangDipOfRest * girdle.rest_height;
           ++count;
         }
@@ -152,7 +153,7 @@ void place_body(const AnimContext& ctx, const PlacementInputs& in, const FootSet
     // step by the time it reaches it (the root height is smoothed).
     const float ahead = body.facing * in.speed * kLeglessLookAhead;
     auto hit = ground_below(ctx.level, rig.body_lo_ws(body.x_ws, body.facing) + std::min(ahead, 0.0f),
-                            rig.body_hi_ws(body.x_ws, body.facing) + std::max(ahead, 0.0f), body.root_y_ws + rig.hip_height, 100.0f);
+                            rig.body_hi_ws(body.x_ws, body.facing) + std::max(ahead, 0.0f), body.root_y_ws + rig.hip_height, ctx.rig.scale.search_depth);
     if (in.dt > 0.0f) state.body_lift *= std::exp(-in.dt);
     target_root = (hit ? hit->height_ws : body.root_y_ws - rig.root_rest_y) + rig.root_rest_y + state.body_lift;
   } else {
@@ -178,7 +179,7 @@ float standing_root(const AnimContext& ctx, const PlacementInputs& in, const Foo
   const AnimRig& rig = ctx.rig;
   if (rig.girdles.empty()) {
     auto hit = ground_below(ctx.level, rig.body_lo_ws(body.x_ws, body.facing), rig.body_hi_ws(body.x_ws, body.facing),
-                            body.root_y_ws + rig.hip_height, 100.0f);
+                            body.root_y_ws + rig.hip_height, ctx.rig.scale.search_depth);
     return (hit ? hit->height_ws : body.root_y_ws - rig.root_rest_y) + rig.root_rest_y;
   }
   BodyFrame frame = body;
@@ -245,7 +246,7 @@ bool rest_body_on_ground(const AnimContext& ctx, float floor, BodyFrame& body) {
   const AnimRig& rig = ctx.rig;
   if (rig.girdles.empty()) {
     auto hit = ground_below(ctx.level, rig.body_lo_ws(body.x_ws, body.facing), rig.body_hi_ws(body.x_ws, body.facing),
-                            std::min(body.root_y_ws + 0.5f * rig.hip_height, floor), 100.0f);
+                            std::min(body.root_y_ws + 0.5f * rig.hip_height, floor), ctx.rig.scale.search_depth);
     if (!hit || hit->height_ws + rig.root_rest_y <= body.root_y_ws) return false;
     body.root_y_ws = hit->height_ws + rig.root_rest_y;
     return true;
@@ -257,7 +258,7 @@ bool rest_body_on_ground(const AnimContext& ctx, float floor, BodyFrame& body) {
     const glm::vec2 joint = body.girdle_ws(rig, g);
     const float rest = rig.girdles[g].rest_height;
     const float half = kGirdleKeepOutHalfOfRest * rest;
-    auto hit = ground_below(ctx.level, joint.x - half, joint.x + half, joint.y + 0.5f * rest, 100.0f);
+    auto hit = ground_below(ctx.level, joint.x - half, joint.x + half, joint.y + 0.5f * rest, ctx.rig.scale.search_depth);
     if (!hit) continue;
     const float need = hit->height_ws + kGirdleKeepOutOfRest * rest - joint.y;
     if (need <= 0.0f) continue;

@@ -16,9 +16,6 @@ constexpr float kMaxTailLift = 1.6f;   // radians at the tail's root, when curli
 constexpr size_t kMaxFinBones = 7;
 constexpr int kClearBisections = 6;
 constexpr int kFinBisections = 7;
-// An arm's hand keeps 1 cm plus this many hip heights above the ground.
-constexpr float kArmMargin = 0.01f;
-constexpr float kArmMarginOfHip = 0.02f;
 
 }  // namespace
 
@@ -57,8 +54,8 @@ void keep_arm_above_ground(const AnimContext& ctx, const BodyFrame& body, const 
       x1 = std::max(x1, xw);
       low = std::min(low, q.y);
     }
-    const auto ground = ground_below(ctx.level, x0, x1, p.shoulder.y, 100.0f);
-    const float margin = kArmMargin + kArmMarginOfHip * ctx.rig.hip_height;
+    const auto ground = ground_below(ctx.level, x0, x1, p.shoulder.y, ctx.rig.scale.search_depth);
+    const float margin = ctx.rig.scale.arm_margin;
     if (!ground || low >= ground->height_ws + margin) break;
     set_wrist(p, p.wrist + glm::vec2(0.0f, ground->height_ws + margin - low));
   }
@@ -105,7 +102,8 @@ float body_out_of_ground(const AnimContext& ctx, const BodyFrame& body, const st
   auto keep_out = [&](glm::vec2 p_fs, float from_y_fs) {
     const glm::vec2 p = body.to_ws(p_fs);
     const float from = body.to_ws({p_fs.x, std::max(from_y_fs, p_fs.y)}).y;
-    if (auto below = ground_below(ctx.level, p.x - 0.02f, p.x + 0.02f, from + ctx.rig.hip_height, 100.0f)) {
+    const float span = ctx.rig.scale.ground_span;
+    if (auto below = ground_below(ctx.level, p.x - span, p.x + span, from + ctx.rig.hip_height, ctx.rig.scale.search_depth)) {
       raise = std::max(raise, below->height_ws - p.y);
     }
   };

@@ -43,7 +43,7 @@ float reach_extension(const AnimContext& ctx, const BodyFrame& body, const Locom
   if (loco.vy >= 0.0f) return 0.0f;
   const AnimRig& rig = ctx.rig;
   const float feet_y = body.root_y_ws - rig.root_rest_y * ctx.params.stance_height;
-  auto ground = ground_below(ctx.level, rig.body_lo_ws(body.x_ws, body.facing), rig.body_hi_ws(body.x_ws, body.facing), feet_y, 100.0f);
+  auto ground = ground_below(ctx.level, rig.body_lo_ws(body.x_ws, body.facing), rig.body_hi_ws(body.x_ws, body.facing), feet_y, ctx.rig.scale.search_depth);
   if (!ground) return 0.0f;
   const float gap = feet_y - ground->height_ws;
   const float lead = -loco.vy * kReachLeadSeconds;
@@ -83,10 +83,10 @@ void take_off(const AnimContext& ctx, const BodyFrame& body, glm::vec2 velocity,
   // A fall lands nowhere as high as the ground it left (the highest ledge a foot stepped off).
   float floor = 1e30f;
   if (!jump && rig.legs.empty()) {
-    floor = body.root_y_ws - rig.root_rest_y - kFloorBelowLedge;  // the legless: the ground it crawled off
+    floor = body.root_y_ws - rig.root_rest_y - rig.scale.ledge_gap;  // the legless: the ground it crawled off
   } else if (!jump) {
     for (const FootState& f : feet.feet) {
-      const float left = f.floor < 1e29f ? f.floor : f.state == LegState::kStance && !f.air ? f.pos_ws.y - kFloorBelowLedge : -1e30f;
+      const float left = f.floor < 1e29f ? f.floor : f.state == LegState::kStance && !f.air ? f.pos_ws.y - rig.scale.ledge_gap : -1e30f;
       floor = floor < 1e29f ? std::max(floor, left) : left;
     }
     if (floor < -1e29f) floor = 1e30f;

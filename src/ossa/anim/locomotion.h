@@ -35,9 +35,6 @@ const char* locomotion_name(Locomotion mode);  // "grounded", "crouch", "airborn
 
 namespace anim {
 
-// A foot stepping off a ledge, or a fall, lands only on ground this far below the ledge left
-// (FootState::floor, LocomotionState::floor), metres.
-inline constexpr float kFloorBelowLedge = 0.01f;
 
 // Counted since the animator's reset (a respawn keeps them).
 struct LocomotionStats {

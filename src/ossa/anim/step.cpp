@@ -71,7 +71,7 @@ void plant(const AnimContext& ctx, FootState& f, glm::vec2 p) {
   f.easing = false;
   f.hover = 0.0f;
   f.hang_beyond = NAN;
-  note_ledge(ctx, f, f.floor < 1e29f ? f.floor + kFloorBelowLedge : NAN);
+  note_ledge(ctx, f, f.floor < 1e29f ? f.floor + ctx.rig.scale.ledge_gap : NAN);
   f.floor = 1e30f;
   update_stance_clearance(ctx, f);
 }
@@ -101,7 +101,7 @@ void reset_feet(const AnimContext& ctx, const BodyFrame& body, const GaitState& 
     FootState& f = step.feet.of_leg(static_cast<int>(i));
     f = FootState{};
     const float x = body.to_ws(ankle + info.foot_offset_ms).x;
-    auto hit = ground_below(ctx.level, x - 0.02f, x + 0.02f, search_from_y, search_depth);
+    auto hit = ground_below(ctx.level, x - rig.scale.ground_span, x + rig.scale.ground_span, search_from_y, search_depth);
     f.pos_ws = {x, hit ? hit->height_ws : ground_y_fallback};
   }
   // Each foot stands where it fits (not across the edge of a step).
@@ -192,7 +192,7 @@ void step_feet(const AnimContext& ctx, const SplinePrototypes& prototypes, const
     // down past the edge; a wall too tall (or the way walled off) stops the creature.
     float beyond;
     if (drop_ahead(in, leg, f.pos_ws, landing_x(in, leg, speed, swing_phase), &beyond)) {
-      f.floor = f.pos_ws.y - kFloorBelowLedge;  // a fall that follows lands lower than this ledge
+      f.floor = f.pos_ws.y - ctx.rig.scale.ledge_gap;  // a fall that follows lands lower than this ledge
       hang(ctx, body, leg, 1.0f, f);
       f.hang_beyond = beyond;
     } else {

@@ -11,8 +11,6 @@ namespace ossa::anim {
 
 namespace {
 
-// Clearance the raised path keeps above a box, metres.
-constexpr float kSwingClearance = 0.01f;
 // A path that would have to rise more than this many leg-plus-foot lengths meets a wall.
 constexpr float kMaxRaiseOfLeg = 2.0f;
 constexpr int kRaiseIterations = 8;
@@ -101,8 +99,11 @@ bool raise_for_clearance(const AnimContext& ctx, int facing, int leg, FootState&
     const glm::vec2 p = point_on_swing(f, s);
     const glm::vec2 q = p + glm::vec2(facing * ankle_rel.x, ankle_rel.y);
     const glm::vec2 r = p + glm::vec2(facing * tip_rel.x, tip_rel.y);
-    // A little narrower than find_landing's test, so a landing it found clears at its end.
-    return Box{glm::min(glm::min(p, q), r) - glm::vec2(0.006f, 0.0f), glm::max(glm::max(p, q), r) + glm::vec2(0.006f, 0.005f)};
+    // A little narrower than find_landing's test, so a landing it found clears at its end
+    // (rig_scale.h).
+    const RigScale& scale = ctx.rig.scale;
+    return Box{glm::min(glm::min(p, q), r) - glm::vec2(scale.swing_side, 0.0f),
+               glm::max(glm::max(p, q), r) + glm::vec2(scale.swing_side, scale.swing_top)};
   };
   foot[0] = foot_box(0.0f);
   std::vector<int>& hits = ctx.hits;
@@ -125,7 +126,7 @@ bool raise_for_clearance(const AnimContext& ctx, int facing, int leg, FootState&
       }
       for (; k < kSwingSamples; ++k) {
         if (!box.overlaps(foot[k])) continue;
-        const float depth = box.top() + kSwingClearance - foot[k].min_ws.y;
+        const float depth = box.top() + ctx.rig.scale.swing_clearance - foot[k].min_ws.y;
         need = std::max(need, depth / std::max(bump(static_cast<float>(k) / kSwingSamples), kMinBump));
       }
     }
