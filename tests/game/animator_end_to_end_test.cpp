@@ -460,7 +460,7 @@ TEST_CASE("the joint values of pose() give the animator's matrices", "[game][ani
       w.player->step(1.0f / 120.0f, {t < 700 ? 0.7f : -0.4f, t % 300 > 200}, level);
       if (t % 37 != 0) continue;
       const std::vector<Mat2x3> fk = model_matrices(c.skeleton, a.pose().locals);
-      const std::vector<Mat2x3>& model = a.model_matrices();
+      const std::vector<Mat2x3>& model = a.facing_matrices();
       float worst = 0.0f;
       for (size_t b = 0; b < fk.size(); ++b) {
         for (int k = 0; k < 6; ++k) worst = std::max(worst, std::fabs(fk[b].m[k] - model[b].m[k]));

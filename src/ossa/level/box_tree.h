@@ -60,6 +60,13 @@ class BoxTree {
     int count = 0;
   };
 
+  // The one traversal of the tree, depth first from the root: a node `skip(node)` says is of
+  // no use is left with all below it; `leaf(node)` visits a leaf's items and returns false to
+  // end the walk; an inner node's left child (node index + 1) is visited before its right one
+  // (nodes_[first]) when `left_first(left, right)` (the node indices) says so.
+  template <class Skip, class Leaf, class LeftFirst>
+  void walk(Skip&& skip, Leaf&& leaf, LeftFirst&& left_first) const;
+
   int build_node(int begin, int end, int parent);
   void sort_leaf(int node);
   Box leaf_bounds(const Node& n) const;
