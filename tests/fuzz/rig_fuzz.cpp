@@ -23,9 +23,9 @@ const ossa::ImportedSkeleton& skeleton() {
       ossa::ImportedBone b;
       b.name = name;
       b.parent = parent ? k.find(parent) : -1;
-      b.rest_ms.m[0] = std::cos(angle), b.rest_ms.m[1] = std::sin(angle);
-      b.rest_ms.m[2] = -std::sin(angle), b.rest_ms.m[3] = std::cos(angle);
-      b.rest_ms.m[4] = x, b.rest_ms.m[5] = y;
+      b.rest_mesh.m[0] = std::cos(angle), b.rest_mesh.m[1] = std::sin(angle);
+      b.rest_mesh.m[2] = -std::sin(angle), b.rest_mesh.m[3] = std::cos(angle);
+      b.rest_mesh.m[4] = x, b.rest_mesh.m[5] = y;
       b.extent_min = {x - 0.05f, y - 0.1f};
       b.extent_max = {x + 0.1f, y + 0.05f};
       k.bones.push_back(b);

@@ -1,4 +1,4 @@
-// Character (anim/character.h): an imported skeleton and a rig mapping become an ossa
+// Character (rig/character.h): an imported skeleton and a rig mapping become an ossa
 // Skeleton, its standing pose and the same AnimRig a creature gets; what cannot work is an
 // Error naming the file, the field and the bone. The skeleton here is built by hand the way
 // Blender exports one (bones along their local +y, centimetres, a ground-level "root" above
@@ -12,85 +12,15 @@
 
 #include "ossa/anim/animator.h"
 #include "ossa/rig/character.h"
-#include "ossa/game/player.h"
-#include "ossa/game/sim.h"
-#include "shared/level_scenes.h"
+#include "shared/imported_biped.h"
 
 using namespace ossa;
 
 namespace {
 
-// A bone frame whose local +y runs from `head` towards `tail` (Blender's convention).
-Mat2x3 blender_frame(glm::vec2 head, glm::vec2 tail) {
-  const glm::vec2 d = glm::normalize(tail - head);
-  Mat2x3 m;
-  m.m[0] = d.y, m.m[1] = -d.x;  // local x: d turned clockwise
-  m.m[2] = d.x, m.m[3] = d.y;   // local y: along the bone
-  m.m[4] = head.x, m.m[5] = head.y;
-  return m;
-}
-
-struct Biped {
-  ImportedSkeleton skeleton;
-  RigMapping mapping;
-};
-
-// A 1.6 m biped in centimetres, standing straight, facing +x.
-Biped biped() {
-  Biped b;
-  ImportedSkeleton& s = b.skeleton;
-  s.source = "biped.gltf";
-  auto add = [&](const char* name, const char* parent, glm::vec2 head, glm::vec2 tail) {
-    ImportedBone bone;
-    bone.name = name;
-    bone.parent = parent ? s.find(parent) : -1;
-    bone.rest_ms = blender_frame(head, tail);
-    s.bones.push_back(bone);
-  };
-  add("root", nullptr, {0, 0}, {0, 20});  // Rigify's root at the ground, above the hips
-  add("hips", "root", {0, 90}, {0, 105});
-  add("spine", "hips", {0, 105}, {0, 125});
-  add("chest", "spine", {0, 125}, {0, 145});
-  add("neck", "chest", {0, 145}, {2, 152});
-  add("head", "neck", {2, 152}, {4, 175});
-  add("prop", "root", {30, 50}, {40, 50});  // beside the body: hangs from the hips in ossa
-  for (const char* side : {".L", ".R"}) {
-    auto n = [&](const char* stem) { return std::string(stem) + side; };
-    add(n("thigh").c_str(), "hips", {0, 90}, {0, 48});
-    add(n("shin").c_str(), n("thigh").c_str(), {0, 48}, {0, 8});
-    add(n("foot").c_str(), n("shin").c_str(), {0, 8}, {10, 2});
-    add(n("toe").c_str(), n("foot").c_str(), {10, 2}, {16, 1});
-    add(n("upper_arm").c_str(), "chest", {0, 140}, {0, 115});
-    add(n("forearm").c_str(), n("upper_arm").c_str(), {0, 115}, {0, 90});
-    add(n("hand").c_str(), n("forearm").c_str(), {0, 90}, {0, 80});
-  }
-  add("tail", "hips", {-10, 95}, {-25, 100});
-  add("tail.001", "tail", {-25, 100}, {-35, 108});
-  RigMapping& m = b.mapping;
-  m.mesh = "biped.gltf";
-  m.scale = 0.01f;
-  m.root = "hips";
-  m.spine = {"spine", "chest"};
-  m.neck = {"neck"};
-  m.head = "head";
-  m.tail = {"tail", "tail.001"};
-  for (const char* side : {".L", ".R"}) {
-    RigChain leg;
-    leg.side = side[1] == 'L' ? Side::kNear : Side::kFar;
-    leg.upper = std::string("thigh") + side;
-    leg.lower = std::string("shin") + side;
-    leg.end = std::string("foot") + side;
-    if (side[1] == 'L') leg.contact = glm::vec2(16.0f, 0.0f);  // the right foot: its toe's joint
-    m.legs.push_back(leg);
-    RigChain arm;
-    arm.side = leg.side;
-    arm.upper = std::string("upper_arm") + side;
-    arm.lower = std::string("forearm") + side;
-    arm.end = std::string("hand") + side;
-    m.arms.push_back(arm);
-  }
-  return b;
-}
+using Biped = scenes::ImportedBiped;
+Biped biped() { return scenes::imported_biped(); }
+using scenes::blender_frame;
 
 std::string error_of(const Biped& b) {
   Result<Character> c = build_character(b.skeleton, b.mapping, "biped.rig.json");
@@ -133,7 +63,7 @@ TEST_CASE("an imported skeleton and a mapping build an ossa skeleton re-rooted a
   for (int k = 0; k < sk.bone_count(); ++k) {
     const ImportedBone& mb = b.skeleton.bones[static_cast<size_t>(c.mesh_bone[static_cast<size_t>(k)])];
     CHECK(mb.name == sk.name(k));
-    check_near(rest[static_cast<size_t>(k)] * c.to_mesh[static_cast<size_t>(k)], c.mesh_to_model * mb.rest_ms, 1e-5f);
+    check_near(rest[static_cast<size_t>(k)] * c.to_mesh[static_cast<size_t>(k)], c.mesh_to_model * mb.rest_mesh, 1e-5f);
   }
   // The rig: one leg pair, knees forward (straight in the rest pose: the mapping's default),
   // arms, a head kept level, a tail; the straight legs stand a little bent.
@@ -150,26 +80,6 @@ TEST_CASE("an imported skeleton and a mapping build an ossa skeleton re-rooted a
   CHECK_FALSE(c.warnings.empty());
 }
 
-TEST_CASE("a built character walks, runs, stops and turns on flat ground like a creature", "[anim][rig]") {
-  const Biped b = biped();
-  auto c = std::make_shared<const Character>(build_character(b.skeleton, b.mapping, "biped.rig.json").value());
-  const Level flat = scenes::flat_level(400.0f);
-  Player player(c, SplinePrototypes::defaults());
-  CHECK(player.is_character());
-  CHECK(player.name() == "biped");
-  CHECK_FALSE(player.animator().has_creature());
-  player.animator().reset(flat.spawn_ws + glm::vec2(0.0f, 1.0f), flat);
-  const SimResult r = run_script(player, flat, parse_script("walk:0.5:6,run:1:6,stop:1,walk:-0.5:6").value(), 120);
-  CHECK(r.probe.max_stance_slip_m <= 0.001f);
-  CHECK(r.probe.max_penetration_m <= 0.001f);
-  CHECK(r.probe.nan_count == 0);
-  for (const SegmentMetrics& s : r.segments) {
-    INFO(s.command);
-    CHECK(s.speed_error <= 0.02f);
-  }
-  CHECK(r.steps > 20);
-}
-
 TEST_CASE("a mapping that cannot work names the file, the field and the bone", "[anim][rig]") {
   {
     Biped b = biped();
@@ -184,7 +94,7 @@ TEST_CASE("a mapping that cannot work names the file, the field and the bone", "
   }
   {
     Biped b = biped();  // a leg of one bone: the shin starts where the thigh does
-    b.skeleton.bones[static_cast<size_t>(b.skeleton.find("shin.R"))].rest_ms =
+    b.skeleton.bones[static_cast<size_t>(b.skeleton.find("shin.R"))].rest_mesh =
         blender_frame({0, 90}, {0, 8});
     CHECK_THAT(error_of(b), Catch::Contains("legs[1].upper: bone \"thigh.R\" has no length"));
   }
@@ -212,7 +122,7 @@ TEST_CASE("a mapping that cannot work names the file, the field and the bone", "
   }
   {
     Biped b = biped();
-    b.skeleton.bones[3].rest_ms.m[0] = NAN;
+    b.skeleton.bones[3].rest_mesh.m[0] = NAN;
     CHECK_THAT(error_of(b), Catch::Contains("bone \"chest\": its rest transform is not finite"));
   }
   {
@@ -266,7 +176,7 @@ TEST_CASE("implausible sizes and leg counts are reported by the build", "[anim][
         ImportedBone bone;
         bone.name = name;
         bone.parent = parent;
-        bone.rest_ms = blender_frame(head, tail);
+        bone.rest_mesh = blender_frame(head, tail);
         s.bones.push_back(bone);
         return static_cast<int>(s.bones.size()) - 1;
       };

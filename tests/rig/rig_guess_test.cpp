@@ -32,7 +32,7 @@ ImportedSkeleton skeleton(const Names& n) {
     ImportedBone b;
     b.name = name;
     b.parent = parent.empty() ? -1 : s.find(parent);
-    b.rest_ms.m[4] = head.x, b.rest_ms.m[5] = head.y;
+    b.rest_mesh.m[4] = head.x, b.rest_mesh.m[5] = head.y;
     s.bones.push_back(b);
   };
   add(n.root, "", {0.0f, 0.95f});
@@ -118,7 +118,7 @@ TEST_CASE("a quadruped's front legs named as arms are guessed as legs: arms that
     ImportedBone b;
     b.name = name;
     b.parent = parent.empty() ? -1 : s.find(parent);
-    b.rest_ms.m[4] = head.x, b.rest_ms.m[5] = head.y;
+    b.rest_mesh.m[4] = head.x, b.rest_mesh.m[5] = head.y;
     s.bones.push_back(b);
   };
   add("pelvis", "", {-0.3f, 0.5f});

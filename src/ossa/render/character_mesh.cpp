@@ -17,7 +17,7 @@ ImportedSkeleton imported_skeleton(const RiggedMesh& mesh) {
     ImportedBone b;
     b.name = mesh.bones[i].name;
     b.parent = mesh.bones[i].parent;
-    b.rest_ms = b.parent >= 0 ? out.bones[static_cast<size_t>(b.parent)].rest_ms * locals[i] : locals[i];
+    b.rest_mesh = b.parent >= 0 ? out.bones[static_cast<size_t>(b.parent)].rest_mesh * locals[i] : locals[i];
     out.bones.push_back(b);
   }
   // Weights are sorted descending: the first influence moves the vertex most.

@@ -55,7 +55,7 @@ namespace ossa {
 struct ImportedBone {
   std::string name;                 // unique within the skeleton
   int parent = -1;                  // index of the parent (< own index), -1 for a root
-  Mat2x3 rest_ms;                   // bone frame → the mesh's model space, rest pose (mesh units)
+  Mat2x3 rest_mesh;                 // bone frame → the mesh's model space, rest pose (mesh units)
   // The box around the vertices this bone moves most (their largest weight), rest pose, mesh
   // units; empty (min > max) when it moves none.
   glm::vec2 extent_min{1e30f}, extent_max{-1e30f};
