@@ -7,6 +7,8 @@
 
 #include <cmath>
 
+#include "ossa/anim/step.h"
+#include "ossa/math/rng.h"
 #include "shared/level_scenes.h"
 #include "shared/scenes.h"
 
@@ -102,4 +104,28 @@ TEST_CASE("animator: the level changing under a standing foot is seen first on t
   level.set_box(0, Box::from_corner(-50.0f, -1.5f, 100.0f, 1.0f));
   a.update(1.0f / 120.0f, 0.0f, level);
   for (int i = 0; i < a.leg_count(); ++i) CHECK(a.leg_state(i) == LegState::kSwing);
+}
+
+TEST_CASE("animator: every foot keeps the step stage's invariants through random input on random levels", "[anim][animator]") {
+  // FootState's invariants (anim_state.h: hanging => swinging, not easing, not hovering;
+  // hang_beyond only while hanging; easing => swinging), checked after every tick of random
+  // sticks and jumps over random levels of steps and ledges, both directions.
+  const Creature creatures[] = {scenes::quadruped(), scenes::biped(), scenes::three_leg_pairs()};
+  for (uint64_t seed = 1; seed <= 6; ++seed) {
+    const Level level = scenes::random_level(seed, 40, {2.0f, 3.0f, 0.2f, 2.0f});
+    for (const Creature& c : creatures) {
+      INFO("seed " << seed << " " << c.name);
+      Animator a(c, SplinePrototypes::defaults());
+      a.reset(level.spawn_ws + glm::vec2(0.0f, 1.0f), level, seed % 2 ? 1 : -1);
+      Rng rng(seed);
+      float stick = 0.0f;
+      int bad = 0;
+      for (int t = 0; t < 120 * 20; ++t) {
+        if (t % 90 == 0) stick = static_cast<float>(rng.uniform(-1.0, 1.0));
+        a.update(1.0f / 120.0f, AnimatorIntent{stick * a.run_speed(), rng.uniform() < 0.003}, level);
+        for (int i = 0; i < a.leg_count(); ++i) bad += anim::foot_consistent(a.foot_state(i)) ? 0 : 1;
+      }
+      CHECK(bad == 0);
+    }
+  }
 }

@@ -165,6 +165,8 @@ class Animator {
   }
   // True while the leg sets down after a stop (a short eased swing, not a step).
   bool easing(int leg) const { return step_.feet.of_leg(leg).easing; }
+  // Leg i's foot as the step stage keeps it (read-only: for tools and tests).
+  const anim::FootState& foot_state(int leg) const { return step_.feet.of_leg(leg); }
 
  private:
   struct Decay {                     // exp(-rate·dt) of each smoothed quantity, per (dt, ism)
