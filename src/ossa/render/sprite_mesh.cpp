@@ -1,201 +1,17 @@
 #include "ossa/render/sprite_mesh.h"
 
-// Sections:
-//   [SECTION] Sprite set — names, built-in anchors, sprites.json loader
-//   [SECTION] Sprite choice — BoneKind + limb + contact + skull variant → SpriteId
-//   [SECTION] Mesh — anchor mapping [Z 7.4], strips, weights, layers
+// The sprite mesh builder: anchor mapping [Z 7.4], strips, smooth weights across chain
+// joints, layers (sprite_mesh.h). The sprite set is in sprite_set.cpp, the sprite choice in
+// sprite_choice.cpp, the mid-joint frames and chain joints in sprite_skinning.cpp.
 
 #include <algorithm>
 #include <cmath>
 
-#include "ossa/io/json.h"
-#include "ossa/math/angle.h"
 #include "ossa/skeleton/pose.h"
 
 #include <glm/common.hpp>
 
 namespace ossa {
-namespace {
-
-constexpr size_t kSpriteCount = static_cast<size_t>(SpriteId::kCount);
-
-constexpr const char* kSpriteNames[kSpriteCount] = {
-    "skull_mammal", "skull_bird", "skull_reptile", "skull_fish", "vertebra", "tail_vertebra",
-    "rib",          "scapula",    "pelvis",        "long_bone",  "paw",      "hoof",
-    "flat_foot",    "bird_foot",  "wing_hand",     "fin"};
-
-// [SECTION] Sprite set -----------------------------------------------------------------------
-
-struct DefaultAnchors {
-  float pu, pv, cu, cv, aspect;
-};
-// Measured from the SVG sources by tools/make-bone-sprites (sprites.json, 4 decimals).
-constexpr DefaultAnchors kDefaults[kSpriteCount] = {
-    {0.0703f, 0.4000f, 0.9609f, 0.4000f, 0.6140f},  // skull_mammal
-    {0.0938f, 0.4286f, 0.9766f, 0.4286f, 0.4956f},  // skull_bird
-    {0.0547f, 0.4565f, 0.9688f, 0.4565f, 0.3932f},  // skull_reptile
-    {0.0391f, 0.4839f, 0.9766f, 0.4839f, 0.5167f},  // skull_fish
-    {0.0469f, 0.2222f, 0.9531f, 0.2222f, 1.2414f},  // vertebra
-    {0.0312f, 0.4643f, 0.9688f, 0.4643f, 0.4667f},  // tail_vertebra
-    {0.0547f, 0.8056f, 0.9570f, 0.8056f, 0.3117f},  // rib
-    {0.0469f, 0.5000f, 0.9219f, 0.5000f, 0.5000f},  // scapula
-    {0.0469f, 0.5625f, 0.7031f, 0.5625f, 0.7619f},  // pelvis
-    {0.0781f, 0.5000f, 0.9219f, 0.5000f, 0.2037f},  // long_bone
-    {0.0703f, 0.2045f, 0.9062f, 0.2045f, 0.4112f},  // paw
-    {0.0625f, 0.4500f, 0.9766f, 0.4500f, 0.3419f},  // hoof
-    {0.1328f, 0.5000f, 0.9688f, 0.5000f, 0.2804f},  // flat_foot
-    {0.0800f, 0.3000f, 0.8500f, 0.3000f, 0.6494f},  // bird_foot
-    {0.0547f, 0.5417f, 0.9766f, 0.5208f, 0.2034f},  // wing_hand
-    {0.0547f, 0.5000f, 0.9531f, 0.5000f, 0.8696f},  // fin
-};
-
-// The anchors must span a positive u range, and the design's width/height ratio
-// r = sqrt(1/aspect² - dv²) / du must exist (see sprite_frame below).
-bool anchors_consistent(glm::vec2 p, glm::vec2 c, float aspect) {
-  const float du = c.x - p.x, dv = c.y - p.y;
-  return du > 1e-4f && aspect > 0.0f && 1.0f / (aspect * aspect) > dv * dv + 1e-8f;
-}
-
-glm::vec2 read_anchor(JsonReader& r, const Json& sprite, const std::string& path, const char* key) {
-  const Json* a = r.array(sprite, path, key);
-  const std::string apath = json_path(path, key);
-  if (!a) return glm::vec2(0.0f);
-  if (a->size() != 2) {
-    r.fail(apath, "expected [u, v], two numbers in [0, 1], got " + std::to_string(a->size()) + " values");
-    return glm::vec2(0.0f);
-  }
-  return {static_cast<float>(r.as_number((*a)[0], json_path(apath, size_t{0}), 0.0, 1.0)),
-          static_cast<float>(r.as_number((*a)[1], json_path(apath, size_t{1}), 0.0, 1.0))};
-}
-
-}  // namespace
-
-const char* sprite_name(SpriteId id) {
-  const auto i = static_cast<size_t>(id);
-  return i < kSpriteCount ? kSpriteNames[i] : "unknown";
-}
-
-SpriteId sprite_id_from_name(std::string_view name) {
-  for (size_t i = 0; i < kSpriteCount; ++i) {
-    if (name == kSpriteNames[i]) return static_cast<SpriteId>(i);
-  }
-  return SpriteId::kCount;
-}
-
-SpriteSet default_sprite_set() {
-  SpriteSet set;
-  for (size_t i = 0; i < kSpriteCount; ++i) {
-    SpriteInfo& s = set.sprites[i];
-    s.name = kSpriteNames[i];
-    s.file = s.name + ".png";
-    s.parent_anchor = {kDefaults[i].pu, kDefaults[i].pv};
-    s.child_anchor = {kDefaults[i].cu, kDefaults[i].cv};
-    s.aspect = kDefaults[i].aspect;
-  }
-  return set;
-}
-
-glm::vec2 joint_reach(const SpriteInfo& info, bool child_end) {
-  const glm::vec2 measured = child_end ? info.child_reach : info.parent_reach;
-  if (measured.x >= 0.0f && measured.y >= 0.0f) return measured;
-  const float v = child_end ? info.child_anchor.y : info.parent_anchor.y;
-  return {v, 1.0f - v};
-}
-
-Result<SpriteSet> load_sprite_set(const std::string& path) {
-  Result<Json> doc = read_json_file(path);
-  if (!doc.ok()) return doc.error();
-  JsonReader r(path);
-  const Json& root = doc.value();
-  if (!r.expect_object(root, "")) return r.error();
-  const std::string format = r.string(root, "", "format");
-  if (!r.failed() && format != "ossa.sprites") r.fail("format", "expected \"ossa.sprites\", got \"" + format + "\"");
-  r.integer(root, "", "version", 1, 1);
-  const Json* sprites = r.object(root, "", "sprites");
-  if (r.failed()) return r.error();
-
-  for (auto it = sprites->begin(); it != sprites->end(); ++it) {
-    if (sprite_id_from_name(it.key()) == SpriteId::kCount) {
-      r.fail(json_path("sprites", it.key()), "unknown sprite name");
-      return r.error();
-    }
-  }
-  SpriteSet set;
-  for (size_t i = 0; i < kSpriteCount; ++i) {
-    const Json* s = r.object(*sprites, "sprites", kSpriteNames[i]);
-    if (!s) return r.error();
-    const std::string spath = json_path("sprites", kSpriteNames[i]);
-    SpriteInfo& info = set.sprites[i];
-    info.name = kSpriteNames[i];
-    info.file = r.string(*s, spath, "file");
-    if (!r.failed() && (info.file.size() < 5 || info.file.substr(info.file.size() - 4) != ".png" ||
-                        info.file.find_first_of("/\\") != std::string::npos)) {
-      r.fail(json_path(spath, "file"), "expected a .png file name without folders, got \"" + info.file + "\"");
-    }
-    info.parent_anchor = read_anchor(r, *s, spath, "parent_anchor");
-    info.child_anchor = read_anchor(r, *s, spath, "child_anchor");
-    info.aspect = r.number_f(*s, spath, "aspect", 1e-3, 100.0);
-    if (r.failed()) return r.error();
-    if (info.child_anchor.x <= info.parent_anchor.x + 1e-4f) {
-      r.fail(json_path(spath, "child_anchor"), "expected u greater than parent_anchor's u");
-    } else if (!anchors_consistent(info.parent_anchor, info.child_anchor, info.aspect)) {
-      r.fail(json_path(spath, "aspect"), "expected 1 / aspect > |child v - parent v| (the anchors' distance)");
-    }
-    if (r.failed()) return r.error();
-  }
-  return set;
-}
-
-// [SECTION] Sprite choice --------------------------------------------------------------------
-
-SpriteId sprite_for_bone(const Creature& creature, int bone) {
-  const Skeleton& s = creature.skeleton;
-  OSSA_ASSERT(bone >= 0 && bone < s.bone_count(), "sprite_for_bone: bone index out of range");
-  switch (s.kind(bone)) {
-    case BoneKind::kRoot:
-    case BoneKind::kBackVertebra: return SpriteId::kVertebra;
-    // Neck vertebrae are long spools with low spines, like tail vertebrae: the tall-spined
-    // back vertebra stretched to a neck segment's length reads as a row of spikes.
-    case BoneKind::kNeckVertebra:
-    case BoneKind::kTailVertebra: return SpriteId::kTailVertebra;
-    case BoneKind::kSkull:
-      return static_cast<SpriteId>(static_cast<int>(SpriteId::kSkullMammal) +
-                                   std::clamp(creature.skull_variant, 0, 3));
-    case BoneKind::kRib: return SpriteId::kRib;
-    case BoneKind::kScapula: return SpriteId::kScapula;
-    case BoneKind::kPelvis: return SpriteId::kPelvis;
-    case BoneKind::kUpperLimb:
-    case BoneKind::kLowerLimb: return SpriteId::kLongBone;
-    case BoneKind::kHand: break;
-  }
-  const Limb* limb = nullptr;
-  for (const Limb& l : creature.limbs) {
-    if (l.bones[2] == bone) limb = &l;
-  }
-  if (!limb) return SpriteId::kFlatFoot;
-  switch (limb->kind) {
-    case LimbKind::kWing: return SpriteId::kWingHand;
-    case LimbKind::kFin: return SpriteId::kFin;
-    case LimbKind::kArm: return SpriteId::kFlatFoot;
-    case LimbKind::kLeg: break;
-  }
-  if (creature.count(LimbKind::kWing) > 0) return SpriteId::kBirdFoot;
-  if (creature.contact == ContactMode::kFlat) return SpriteId::kFlatFoot;
-  // Tip contact: the rest-pose direction of the bone is the sum of the joint angles up the
-  // chain (rest locals carry no scale or mirror). Same rule as export_svg's hand_shape.
-  const std::vector<BoneLocal>& locals =
-      creature.rest_pose.locals.size() == static_cast<size_t>(s.bone_count()) ? creature.rest_pose.locals
-                                                                             : s.rest_locals();
-  float angle = 0.0f;
-  for (int b = bone; b >= 0; b = s.parent(b)) angle += locals[static_cast<size_t>(b)].angle_ls;
-  const float steep = std::fabs(std::sin(angle));
-  if (steep < 0.5f) return SpriteId::kFlatFoot;
-  const int lower = limb->bones[1];
-  const bool cannon = lower >= 0 && s.length(bone) >= 0.45f * s.length(lower);
-  return steep > 0.7f && cannon ? SpriteId::kHoof : SpriteId::kPaw;
-}
-
-// [SECTION] Mesh -----------------------------------------------------------------------------
 
 namespace {
 
@@ -250,26 +66,6 @@ SpriteFrame sprite_frame(const SpriteInfo& info, float length, float width, bool
 }
 
 }  // namespace
-
-std::vector<int> chain_children(const Skeleton& s, const std::vector<BoneLocal>& locals) {
-  const int n = s.bone_count();
-  std::vector<int> child(static_cast<size_t>(n), -1);
-  std::vector<float> turn(static_cast<size_t>(n), 0.0f);
-  const auto drawn = [&](int b) { return s.length(b) > 1e-6f && std::isfinite(s.length(b)); };
-  for (int c = 0; c < n; ++c) {
-    const int p = s.parent(c);
-    if (p < 0 || !drawn(p) || !drawn(c) || s.layer(c) != s.layer(p)) continue;
-    // A girdle's flat blade meets the limb at a ball joint, not a hinge: blending would bend
-    // the blade's end (the pelvis's hook, the scapula's neck) after the limb.
-    if (s.kind(p) == BoneKind::kScapula || s.kind(p) == BoneKind::kPelvis) continue;
-    const BoneLocal& l = locals[static_cast<size_t>(c)];
-    if (glm::length(l.offset_ls - glm::vec2(s.length(p), 0.0f)) > 0.01f * s.length(p)) continue;
-    const float t = std::fabs(wrap_angle(l.angle_ls));
-    const auto pi = static_cast<size_t>(p);
-    if (child[pi] < 0 || t < turn[pi]) child[pi] = c, turn[pi] = t;
-  }
-  return child;
-}
 
 namespace {
 
@@ -532,73 +328,6 @@ SpriteMesh build_sprite_mesh(const Creature& creature, const SpriteSet& sprites,
     for (const SpriteVertex& v : mesh.vertices) mesh.rest_positions.push_back(skin_vertex(v, palette));
   }
   return mesh;
-}
-
-glm::vec2 skin_vertex(const SpriteVertex& v, std::span<const Mat2x3> palette) {
-  glm::vec2 p(0.0f);
-  for (size_t k = 0; k < 4; ++k) {
-    if (v.weights[k] != 0.0f) p += v.weights[k] * palette[v.bones[k]].apply(v.position_ms);
-  }
-  return p;
-}
-
-namespace {
-
-// The unit complex square root of the unit complex z, the shorter way: normalise(1 + z)
-// (a half turn gives a quarter turn).
-glm::vec2 unit_sqrt(glm::vec2 z) {
-  const glm::vec2 h(1.0f + z.x, z.y);
-  const float len = glm::length(h);
-  return len > 1e-6f * (1.0f + glm::length(z)) ? h / len : glm::vec2(0.0f, 1.0f);
-}
-
-}  // namespace
-
-Mat2x3 mid_joint_frame(const Mat2x3& parent, const Mat2x3& child, float turn) {
-  // The child's turn relative to the parent: L_p⁻¹ L_c is a rotation (any common scale or
-  // mirror cancels), the unit complex z; its quarters are square roots, no trigonometry.
-  const float a = parent.m[0], b = parent.m[1], c = parent.m[2], d = parent.m[3];
-  const float det = a * d - b * c;
-  glm::vec2 z(1.0f, 0.0f);
-  if (std::fabs(det) > 1e-20f) {
-    z = glm::vec2(d * child.m[0] - c * child.m[1], -b * child.m[0] + a * child.m[1]) / det;
-    z /= std::max(glm::length(z), 1e-20f);
-  }
-  const glm::vec2 half = unit_sqrt(z);
-  glm::vec2 r = half;
-  if (turn < 0.375f) {
-    r = unit_sqrt(half);  // a quarter
-  } else if (turn > 0.625f) {
-    const glm::vec2 q = unit_sqrt(half);
-    r = glm::vec2(half.x * q.x - half.y * q.y, half.x * q.y + half.y * q.x);  // three quarters
-  }
-  Mat2x3 turn_m;
-  turn_m.m[0] = r.x, turn_m.m[1] = r.y, turn_m.m[2] = -r.y, turn_m.m[3] = r.x;
-  Mat2x3 mid = parent * turn_m;
-  mid.m[4] = child.m[4];
-  mid.m[5] = child.m[5];
-  return mid;
-}
-
-void mid_joint_palette(std::span<const MidJoint> mid_joints, std::span<const Mat2x3> world,
-                       std::span<Mat2x3> palette) {
-  const size_t bones = world.size();
-  OSSA_ASSERT(palette.size() == bones + mid_joints.size(), "mid_joint_palette: one entry per bone and mid joint");
-  for (size_t i = 0; i < mid_joints.size(); ++i) {
-    const MidJoint& j = mid_joints[i];
-    palette[bones + i] =
-        mid_joint_frame(world[static_cast<size_t>(j.parent)], world[static_cast<size_t>(j.child)], j.turn) * j.inverse_bind;
-  }
-}
-
-int max_weights_per_vertex(const SpriteMesh& mesh) {
-  int most = 0;
-  for (const SpriteVertex& v : mesh.vertices) {
-    int count = 0;
-    for (float w : v.weights) count += w > 0.0f;
-    most = std::max(most, count);
-  }
-  return most;
 }
 
 Box sprite_mesh_bounds(const SpriteMesh& mesh) {

@@ -23,6 +23,7 @@
 #include "ossa/io/result.h"
 #include "ossa/level/box.h"
 #include "ossa/math/transform2d.h"
+#include "ossa/skeleton/mid_joint.h"
 
 namespace ossa {
 
@@ -113,16 +114,6 @@ struct SpriteMeshOptions {
   float far_shade = 0.62f;          // brightness of far-side bones
 };
 
-// A mid-joint frame of smooth skinning: at the child's start, its axes turned `turn` of the
-// way from the parent's to the child's (mid_joint_frame). It has a palette entry of its own
-// after the bones' (index bone_count + i in SpriteMesh::mid_joints), computed every frame
-// from the two bones' world matrices (CreatureBatch::set_world).
-struct MidJoint {
-  int parent = 0, child = 0;  // bones
-  float turn = 0.5f;          // 0.25, 0.5 or 0.75
-  Mat2x3 inverse_bind;        // model space → the mid frame of the bind pose
-};
-
 // Triangles in three index ranges, one per Layer (far first, then body, then near), so one
 // draw call per layer draws every creature of a batch in the right order.
 struct SpriteMesh {
@@ -139,17 +130,6 @@ struct SpriteMesh {
   // Palette entries a creature with this mesh needs: its bones, then its mid joints.
   int palette_size() const { return static_cast<int>(inverse_bind.size() + mid_joints.size()); }
 };
-
-// The mid-joint frame of a parent and a child bone frame (bone frame → model or world): at
-// the child's origin, turned from the parent's axes by `turn` (0.25, 0.5 or 0.75; others are
-// rounded to these) of the child's turn relative to the parent (the shorter way). Any common
-// scale or mirror of the two is kept: the frames of a creature facing left give the mirrored
-// mid frame.
-Mat2x3 mid_joint_frame(const Mat2x3& parent, const Mat2x3& child, float turn = 0.5f);
-// palette[bones + i] = mid_joint_frame(world[parent], world[child], turn) · inverse_bind for
-// every mid joint; `palette` holds bone_count + mid_joints.size() entries, its bones' already set.
-void mid_joint_palette(std::span<const MidJoint> mid_joints, std::span<const Mat2x3> world,
-                       std::span<Mat2x3> palette);
 
 // Sprite choice (documented rule, same as the SVG exporter's shapes):
 //   skull → skull variant (creature.skull_variant: 0 mammal, 1 bird, 2 reptile, 3 fish);
