@@ -143,6 +143,11 @@ Drawing draw_creature(const Creature& c, const SvgOptions& options) {
   Bounds bounds;
   float max_extent = 0.0f;
   std::string layers[kLayerCount];
+  if (!options.bones) order.clear();
+  if (options.body) {
+    bounds.add(options.body->lo);
+    bounds.add(options.body->hi);
+  }
   for (int i : order) {
     const Mat2x3& mi = m[static_cast<size_t>(i)];
     const float L = s.length(i);
@@ -245,10 +250,16 @@ Drawing draw_creature(const Creature& c, const SvgOptions& options) {
     bounds.add({x1, 0.0f});
   }
   for (int l = 0; l < kLayerCount; ++l) {
-    if (layers[l].empty()) continue;
-    g += "<g class=\"" + std::string(layer_name(static_cast<Layer>(l))) + "\" fill=\"" +
-         kLayerStyles[l].fill + "\" stroke=\"" + kLayerStyles[l].stroke + "\">\n" + layers[l] +
-         "</g>\n";
+    if (!layers[l].empty()) {
+      g += "<g class=\"" + std::string(layer_name(static_cast<Layer>(l))) + "\" fill=\"" +
+           kLayerStyles[l].fill + "\" stroke=\"" + kLayerStyles[l].stroke + "\">\n" + layers[l] +
+           "</g>\n";
+    }
+    if (options.body && !options.body->layers[static_cast<size_t>(l)].empty()) {
+      g += "<g class=\"body-" + std::string(layer_name(static_cast<Layer>(l))) + "\" stroke=\"none\"";
+      if (options.body->opacity < 1.0f) g += " opacity=\"" + num(options.body->opacity) + "\"";
+      g += ">\n" + options.body->layers[static_cast<size_t>(l)] + "</g>\n";
+    }
   }
   g += "</g>\n";
   d.vx = bounds.lo.x - margin;
@@ -306,7 +317,7 @@ std::string creature_svg(const Creature& creature, const SvgOptions& options) {
 
 std::string sheet_svg(const std::vector<std::pair<std::string, Creature>>& creatures,
                       int columns, const std::vector<int>& skull_variants,
-                      const SvgOptions& options) {
+                      const SvgOptions& options, const std::vector<SvgBody>& bodies) {
   columns = std::max(1, columns);
   const int count = static_cast<int>(creatures.size());
   const int rows = std::max(1, (count + columns - 1) / columns);
@@ -320,6 +331,7 @@ std::string sheet_svg(const std::vector<std::pair<std::string, Creature>>& creat
   for (int i = 0; i < count; ++i) {
     SvgOptions o = options;
     if (skull_variants.size() == creatures.size()) o.skull_variant = skull_variants[static_cast<size_t>(i)];
+    if (bodies.size() == creatures.size()) o.body = &bodies[static_cast<size_t>(i)];
     const Drawing d = draw_creature(creatures[static_cast<size_t>(i)].second, o);
     const int x = (i % columns) * cell_w, y = (i / columns) * (cell_h + label_h);
     out += "<svg x=\"" + std::to_string(x + pad) + "\" y=\"" + std::to_string(y + pad) +
