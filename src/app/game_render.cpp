@@ -313,41 +313,54 @@ void Game::Impl::render(Game& game, float alpha) {
     batch->clear();
     meshes.clear();  // creatures may have been replaced (an address can be reused)
     // NPCs first, the player last: within each layer instances draw in order, so the
-    // player's creature stays in front of the walkers it passes.
+    // player's creature stays in front of the walkers it passes. A creature brings its
+    // sprites and/or its body, as the look shows it.
+    bodies.clear();
+    instances.assign(static_cast<size_t>(n), {});
     for (int k = 0; k < n; ++k) {
-      const Entity& e = entity_at(world, k == n - 1 ? 0 : k + 1);
+      const int index = k == n - 1 ? 0 : k + 1;
+      const Entity& e = entity_at(world, index);
+      std::vector<int>& ids = instances[static_cast<size_t>(index)];
       if (e.is_character()) {
         int slot = 0;
         for (size_t j = 0; j < characters.size(); ++j) {
           if (characters[j]->loaded.character.get() == e.character()) slot = static_cast<int>(j) + 1;
         }
         const CharacterEntry* entry = entry_of(e.character());
-        // A character the game did not load (an embedder's) is drawn with nothing: skip it.
-        if (entry) batch->add(entry->loaded.sprite_mesh, e.skeleton(), slot);
+        // A character the game did not load (an embedder's) is drawn with nothing.
+        if (entry) ids.push_back(batch->add(entry->loaded.sprite_mesh, e.skeleton(), slot));
         else {
           SpriteMesh empty;
           empty.inverse_bind.assign(e.skeleton().bone_count(), Mat2x3{});
-          batch->add(empty, e.skeleton());
+          ids.push_back(batch->add(empty, e.skeleton()));
         }
         continue;
       }
       const Creature& c = e.creature();
-      auto it = meshes.find(&c);
-      if (it == meshes.end()) it = meshes.emplace(&c, build_sprite_mesh(c, atlas->sprites)).first;
-      batch->add(it->second, c.skeleton);
+      if (look != CreatureLook::kBody) {
+        auto it = meshes.find(&c);
+        if (it == meshes.end()) it = meshes.emplace(&c, build_sprite_mesh(c, atlas->sprites)).first;
+        ids.push_back(batch->add(it->second, c.skeleton));
+      }
+      if (look != CreatureLook::kBones) {
+        auto it = bodies.find(&c);
+        if (it == bodies.end()) it = bodies.emplace(&c, build_body(c)).first;
+        ids.push_back(batch->add_body(it->second, c.skeleton));
+      }
     }
     batch_dirty = false;
   }
-  for (int i = 0; i < n && i < static_cast<int>(curr.size()); ++i) {
-    const int instance = i == 0 ? n - 1 : i - 1;
+  for (int i = 0; i < n && i < static_cast<int>(curr.size()) && i < static_cast<int>(instances.size()); ++i) {
     const auto& b = curr[i];
     const auto& a = prev[i].size() == b.size() ? prev[i] : b;
     blended.resize(b.size());
     for (size_t k = 0; k < b.size(); ++k) blended[k] = blend(a[k], b[k], alpha);
-    if (!blended.empty() && static_cast<int>(blended.size()) == batch->bone_count(instance)) batch->set_world(instance, blended);
+    for (const int instance : instances[static_cast<size_t>(i)]) {
+      if (!blended.empty() && static_cast<int>(blended.size()) == batch->bone_count(instance)) batch->set_world(instance, blended);
+    }
   }
   batch->upload_palettes();
-  r.draw_batch(*batch, textures);
+  r.draw_creatures(*batch, textures, look);
   if (game.on_viewport) {
     DebugDraw overlay;
     game.on_viewport(overlay);
