@@ -91,9 +91,9 @@ Animal read_animal(JsonReader& r, const Json& v, size_t index) {
     if (const Json* sk = r.object(v, path, "skull")) {
       const std::string sp = json_path(path, "skull");
       SkullShape shape;
-      shape.length = r.number_f(*sk, sp, "length", kMinSkullLength, kMaxSkullLength);
-      shape.height = r.number_f(*sk, sp, "height", kMinSkullHeight, kMaxSkullHeight);
-      shape.snout = r.number_f(*sk, sp, "snout", kMinSnout, kMaxSnout);
+      shape.length = r.number_f(*sk, sp, "length", json_float(kMinSkullLength), json_float(kMaxSkullLength));
+      shape.height = r.number_f(*sk, sp, "height", json_float(kMinSkullHeight), json_float(kMaxSkullHeight));
+      shape.snout = r.number_f(*sk, sp, "snout", json_float(kMinSnout), json_float(kMaxSnout));
       if (!r.failed()) a.skull = shape;
     }
   }

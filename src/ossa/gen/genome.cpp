@@ -195,9 +195,9 @@ Result<Genome> genome_from_json(const Json& doc, std::string_view file) {
   if (version >= 2) {
     if (r.has(doc, "skull_shape")) {
       if (const Json* ss = r.object(doc, "", "skull_shape")) {
-        g.skull_shape.length = r.number_f(*ss, "skull_shape", "length", kMinSkullLength, kMaxSkullLength);
-        g.skull_shape.height = r.number_f(*ss, "skull_shape", "height", kMinSkullHeight, kMaxSkullHeight);
-        g.skull_shape.snout = r.number_f(*ss, "skull_shape", "snout", kMinSnout, kMaxSnout);
+        g.skull_shape.length = r.number_f(*ss, "skull_shape", "length", json_float(kMinSkullLength), json_float(kMaxSkullLength));
+        g.skull_shape.height = r.number_f(*ss, "skull_shape", "height", json_float(kMinSkullHeight), json_float(kMaxSkullHeight));
+        g.skull_shape.snout = r.number_f(*ss, "skull_shape", "snout", json_float(kMinSnout), json_float(kMaxSnout));
       }
     }
     if (r.has(doc, "look")) read_look(r, doc, "", "look", g.look);

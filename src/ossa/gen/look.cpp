@@ -210,8 +210,8 @@ void read_look(JsonReader& r, const Json& parent, std::string_view parent_path, 
              "expected \"none\", \"stripes\", \"spots\", \"rosettes\", \"dapples\" or \"patches\", got \"" + pattern + "\"");
     }
   }
-  l.pattern_scale = static_cast<float>(r.number_or(*o, path, "pattern_scale", l.pattern_scale, kMinPatternScale, kMaxPatternScale));
-  l.fatness = static_cast<float>(r.number_or(*o, path, "fatness", l.fatness, kMinFatness, kMaxFatness));
+  l.pattern_scale = static_cast<float>(r.number_or(*o, path, "pattern_scale", l.pattern_scale, json_float(kMinPatternScale), json_float(kMaxPatternScale)));
+  l.fatness = static_cast<float>(r.number_or(*o, path, "fatness", l.fatness, json_float(kMinFatness), json_float(kMaxFatness)));
   const std::string wings = r.string_or(*o, path, "wings", wing_cover_name(l.wings));
   if (!r.failed()) {
     if (wings == "feathered") l.wings = WingCover::kFeathered;
@@ -247,7 +247,7 @@ void read_appendages(JsonReader& r, const Json& parent, std::string_view parent_
       break;
     }
     app.kind = *k;
-    app.size = static_cast<float>(r.number_or(a, ipath, "size", 1.0, kMinAppendageSize, kMaxAppendageSize));
+    app.size = static_cast<float>(r.number_or(a, ipath, "size", 1.0, json_float(kMinAppendageSize), json_float(kMaxAppendageSize)));
     for (const Appendage& before : result) {
       if (before.kind == app.kind) r.fail(json_path(ipath, "kind"), "expected each kind once, but \"" + kind + "\" is given twice");
     }
