@@ -85,13 +85,14 @@ HandShape hand_shape(const Creature& c, const Limb& limb, bool winged, const Ske
     case LimbKind::kArm: return HandShape::kHand;
     case LimbKind::kLeg: break;
   }
-  if (winged) return HandShape::kBirdFoot;
   if (c.contact == ContactMode::kFlat) return HandShape::kFlat;
   // Tip contact: ungulates stand on long, steep metapodials (cannon bones) ending in a hoof;
-  // a foot that lies nearly flat (kangaroo) reads as a flat foot; the rest as a paw.
+  // a foot that lies nearly flat (kangaroo, a resting bird's tarsus) reads as a flat foot;
+  // birds' steep ones as bird feet; the rest as a paw.
   const float lower = s.length(limb.bones[1]);
   const float steep = std::fabs(dir_ms.y);
   if (steep < 0.5f) return HandShape::kFlat;
+  if (winged) return HandShape::kBirdFoot;
   return steep > 0.7f && s.length(limb.bones[2]) >= 0.45f * lower ? HandShape::kHoof
                                                                    : HandShape::kPaw;
 }

@@ -147,7 +147,7 @@ Result<ExportMesh> smooth_sprites(const Creature& creature, const SpriteSet& spr
     ExportMesh::Vertex v;
     v.position = mesh.rest_positions.size() == mesh.vertices.size() ? mesh.rest_positions[i] : sv.position_ms;
     v.z = depth(s, sv.bones[0]);
-    v.uv = {sv.uv.x, 1.0f - sv.uv.y};  // sprite meshes' t runs down, Assimp's v up
+    v.uv = sv.uv;  // t up in both (sprite_mesh.h SpriteInfo::uv_min, Assimp)
     int used = 0;
     const auto add = [&](int bone, float w) {
       if (!(w > 0.0f)) return;

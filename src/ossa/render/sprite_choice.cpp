@@ -39,10 +39,11 @@ SpriteId sprite_for_bone(const Creature& creature, int bone) {
     case LimbKind::kArm: return SpriteId::kFlatFoot;
     case LimbKind::kLeg: break;
   }
-  if (creature.count(LimbKind::kWing) > 0) return SpriteId::kBirdFoot;
   if (creature.contact == ContactMode::kFlat) return SpriteId::kFlatFoot;
   // Tip contact: the rest-pose direction of the bone is the sum of the joint angles up the
-  // chain (rest locals carry no scale or mirror). Same rule as export_svg's hand_shape.
+  // chain (rest locals carry no scale or mirror). Same rule as export_svg's hand_shape. A foot
+  // lying nearly flat on the ground (a kangaroo's, a resting bird's tarsus) is drawn flat, its
+  // sole on the ground.
   const std::vector<BoneLocal>& locals =
       creature.rest_pose.locals.size() == static_cast<size_t>(s.bone_count()) ? creature.rest_pose.locals
                                                                              : s.rest_locals();
@@ -50,6 +51,7 @@ SpriteId sprite_for_bone(const Creature& creature, int bone) {
   for (int b = bone; b >= 0; b = s.parent(b)) angle += locals[static_cast<size_t>(b)].angle_ls;
   const float steep = std::fabs(std::sin(angle));
   if (steep < 0.5f) return SpriteId::kFlatFoot;
+  if (creature.count(LimbKind::kWing) > 0) return SpriteId::kBirdFoot;
   const int lower = limb->bones[1];
   const bool cannon = lower >= 0 && s.length(bone) >= 0.45f * s.length(lower);
   return steep > 0.7f && cannon ? SpriteId::kHoof : SpriteId::kPaw;

@@ -7,6 +7,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include <glm/geometric.hpp>
+
 #include "ossa/skeleton/pose.h"
 
 #include <glm/common.hpp>
@@ -34,11 +36,21 @@ int kind_order(BoneKind kind) {
   return 7;
 }
 
+// The limb index of a leg's hand (foot) bone, or -1.
+int s_kind_hand(const Creature& c, int bone) {
+  if (c.skeleton.kind(bone) != BoneKind::kHand) return -1;
+  for (size_t i = 0; i < c.limbs.size(); ++i) {
+    if (c.limbs[i].bones[2] == bone && c.limbs[i].kind == LimbKind::kLeg) return static_cast<int>(i);
+  }
+  return -1;
+}
+
 // Maps the sprite's unit box onto a bone's frame [Z 7.4: "two offsets per bone, to the joint
 // with the parent and to the joint with the child, so the placement fits whatever the size"].
 // In design space (u·r, v) — height 1, width r — the anchors lie 1/aspect apart; a similarity
 // takes the parent anchor to (0, 0) and the child anchor to (length, 0), then the bone's
-// perpendicular axis is stretched by k so the drawn height is max(aspect·length, width).
+// perpendicular axis is stretched by k so the drawn height is drawn_height(): width / thickness
+// (the sprite's thickness, SpriteInfo), or max(aspect·length, width) without one.
 struct SpriteFrame {
   glm::vec2 p{0.0f};     // parent anchor, unit box
   float r = 1.0f;        // design width / height
@@ -51,6 +63,11 @@ struct SpriteFrame {
   }
 };
 
+float drawn_height(const SpriteInfo& info, float length, float width) {
+  if (info.thickness > 0.0f && width > 0.0f) return width / info.thickness;
+  return std::max(info.aspect * length, width);
+}
+
 SpriteFrame sprite_frame(const SpriteInfo& info, float length, float width, bool flip) {
   SpriteFrame f;
   f.p = info.parent_anchor;
@@ -60,7 +77,7 @@ SpriteFrame sprite_frame(const SpriteInfo& info, float length, float width, bool
   f.r = std::sqrt(std::max(span * span - dv * dv, 1e-12f)) / std::max(du, 1e-6f);
   f.e = glm::vec2(du * f.r, dv) / span;
   f.sx = length / span;  // = aspect · length per design unit
-  const float k = std::max(1.0f, width / std::max(info.aspect * length, 1e-12f));
+  const float k = drawn_height(info, length, width) / std::max(info.aspect * length, 1e-12f);
   f.sy = f.sx * k * (flip ? -1.0f : 1.0f);
   return f;
 }
@@ -70,8 +87,30 @@ SpriteFrame sprite_frame(const SpriteInfo& info, float length, float width, bool
 namespace {
 
 // A sprite's drawn half height (metres) — the joint's thickness as the sprite shows it.
+// How far a foot's contact part turns (radians, in the bone's frame) so it stands on the ground
+// in the rest pose: the angle from the bone's direction to straight down, for the hand bone of
+// a leg whose sprite has a contact part (0 otherwise).
+constexpr float kContactRamp = 0.06f;
+float contact_angle(const Creature& c, int bone, const SpriteInfo& info, const Mat2x3& rest) {
+  if (s_kind_hand(c, bone) < 0 || info.contact_from < 0.0f) return 0.0f;
+  // World down in the bone's frame (the rest frame's inverse rotation; a mirror flips it).
+  const glm::vec2 x(rest.m[0], rest.m[1]), y(rest.m[2], rest.m[3]);
+  const glm::vec2 down(glm::dot(glm::vec2(0.0f, -1.0f), x) / std::max(glm::dot(x, x), 1e-12f),
+                       glm::dot(glm::vec2(0.0f, -1.0f), y) / std::max(glm::dot(y, y), 1e-12f));
+  return std::atan2(down.y, down.x);
+}
+
+// Whether a bone's sprite is drawn mirrored across its bone: Skeleton::sprite_flip_y, and a
+// leg's flat foot (no contact part to stand up) with its sole on the ground, its art's top up
+// whichever way the rest pose points the foot (a hind foot folded back points it down).
+bool drawn_flipped(const Creature& c, int bone, const SpriteInfo& info, const Mat2x3& rest) {
+  bool flip = c.skeleton.sprite_flip_y(bone);
+  if (s_kind_hand(c, bone) >= 0 && !(info.contact_from >= 0.0f) && rest.m[3] < 0.0f) flip = !flip;
+  return flip;
+}
+
 float half_height(const SpriteInfo& info, float length, float width) {
-  return 0.5f * std::max(info.aspect * length, width);
+  return 0.5f * drawn_height(info, length, width);
 }
 
 // One blended chain joint: parent and child bones, the palette indices of its mid-joint
@@ -162,7 +201,15 @@ SpriteMesh build_sprite_mesh(const Creature& creature, const SpriteSet& sprites,
     return k == BoneKind::kLowerLimb || k == BoneKind::kHand;
   };
   if (smooth) {
-    const std::vector<int> chain = chain_children(s, locals);
+    std::vector<int> chain = chain_children(s, locals);
+    // A foot drawn flat has its sole on the ground from the ankle on: blending the ankle would
+    // swing the sole's start with the shin, below the ground; its sprite stays rigid there.
+    for (int p = 0; p < n; ++p) {
+      const int c = chain[static_cast<size_t>(p)];
+      if (c >= 0 && s_kind_hand(creature, c) >= 0 && mesh.bone_sprites[static_cast<size_t>(c)] == SpriteId::kFlatFoot) {
+        chain[static_cast<size_t>(p)] = -1;
+      }
+    }
     // kSmoothJointFrames frames per limb joint while the uint8 indices last, else one (which
     // every genome within its limits has room for, see kMaxSpriteMeshBones).
     int limb_joints = 0;
@@ -190,8 +237,8 @@ SpriteMesh build_sprite_mesh(const Creature& creature, const SpriteSet& sprites,
         // thicker parent, or a bigger knob at that end of the art) its outline shows beside
         // the child's as a second one. So the parent's end shrinks across the bone to within
         // the child's reach, from where the child's sprite begins to half way to the joint.
-        const glm::vec2 pr = reach_ms(pi, true, 2.0f * hp, s.sprite_flip_y(p));
-        const glm::vec2 cr = reach_ms(ci, false, 2.0f * hc, s.sprite_flip_y(c));
+        const glm::vec2 pr = reach_ms(pi, true, 2.0f * hp, drawn_flipped(creature, p, pi, rest[static_cast<size_t>(p)]));
+        const glm::vec2 cr = reach_ms(ci, false, 2.0f * hc, drawn_flipped(creature, c, ci, rest[static_cast<size_t>(c)]));
         j.squeeze = std::min(1.0f, std::min(pr.x > 0.0f ? cr.x / pr.x : 1.0f, pr.y > 0.0f ? cr.y / pr.y : 1.0f));
         const float child_begins = -ci.parent_anchor.x / (ci.child_anchor.x - ci.parent_anchor.x) * s.length(c);
         j.squeeze_from = std::max(child_begins, -0.5f * s.length(p));
@@ -217,6 +264,28 @@ SpriteMesh build_sprite_mesh(const Creature& creature, const SpriteSet& sprites,
       mesh.mid_joints.push_back(mid);
     }
   }
+  // Feet whose contact part stands on the ground get a level frame (MidJoint::level): their
+  // toes, hooves and claws keep their rest turn while the foot bone turns over them, as planted
+  // toes do — where the uint8 palette indices have room (else the contact part stays rigid).
+  std::vector<int> level_entry(static_cast<size_t>(n), -1);
+  for (int b = 0; b < n && smooth; ++b) {
+    const SpriteInfo& info = sprites[mesh.bone_sprites[static_cast<size_t>(b)]];
+    if (contact_angle(creature, b, info, rest[static_cast<size_t>(b)]) == 0.0f) continue;
+    if (n + static_cast<int>(mesh.mid_joints.size()) >= kMaxSpriteMeshBones + 1) break;
+    MidJoint j;
+    j.level = true;
+    j.parent = j.child = b;
+    j.point_ls = {s.length(b), 0.0f};
+    const glm::vec2 x(rest[static_cast<size_t>(b)].m[0], rest[static_cast<size_t>(b)].m[1]);
+    j.rest_x = glm::length(x) > 0.0f ? glm::normalize(x) : glm::vec2(1.0f, 0.0f);
+    Mat2x3 bind = model[static_cast<size_t>(b)];
+    const glm::vec2 tip = bind.apply(j.point_ls);
+    bind.m[4] = tip.x;
+    bind.m[5] = tip.y;
+    j.inverse_bind = inverse(bind);
+    level_entry[static_cast<size_t>(b)] = n + static_cast<int>(mesh.mid_joints.size());
+    mesh.mid_joints.push_back(j);
+  }
 
   std::vector<int> order;
   for (int i = 0; i < n; ++i) {
@@ -237,13 +306,36 @@ SpriteMesh build_sprite_mesh(const Creature& creature, const SpriteSet& sprites,
     while (layer < bone_layer) mesh.layer_begin[static_cast<size_t>(++layer)] = static_cast<uint32_t>(mesh.indices.size());
 
     const SpriteInfo& info = sprites[mesh.bone_sprites[static_cast<size_t>(bone)]];
-    const SpriteFrame frame = sprite_frame(info, s.length(bone), std::max(s.width(bone), 0.0f), s.sprite_flip_y(bone));
+    const SpriteFrame frame = sprite_frame(info, s.length(bone), std::max(s.width(bone), 0.0f),
+                                           drawn_flipped(creature, bone, info, rest[static_cast<size_t>(bone)]));
     const Mat2x3& m = model[static_cast<size_t>(bone)];
     const float shade = s.layer(bone) == Layer::kFar ? options.far_shade : 1.0f;
     const float pu = info.parent_anchor.x, cu = info.child_anchor.x;
     const float metres_per_u = s.length(bone) / (cu - pu);  // along the bone
     const JointBlend& at_start = start_blend[static_cast<size_t>(bone)];
     const JointBlend& at_end = end_blend[static_cast<size_t>(bone)];
+    // A skull's muzzle takes the creature's share of its length (SpriteInfo::snout_from).
+    const bool snout = s.kind(bone) == BoneKind::kSkull && info.snout_from > pu && info.snout_from < cu;
+    const float snout_x0 = snout ? frame.map({info.snout_from, info.parent_anchor.y}).x : 0.0f;
+    const float snout_x = (1.0f - std::clamp(creature.skull_snout, 0.05f, 0.95f)) * s.length(bone);
+    const auto warp = [&](float x) {
+      if (!snout || !(snout_x0 > 0.0f) || !(snout_x0 < s.length(bone))) return x;
+      return x < snout_x0 ? x * snout_x / snout_x0
+                          : snout_x + (x - snout_x0) * (s.length(bone) - snout_x) / (s.length(bone) - snout_x0);
+    };
+    // A foot's contact part stands on the ground in the rest pose: turned about the contact
+    // point (the child anchor, the bone's end) from the bone's direction to straight down,
+    // ramping in over kContactRamp of u before contact_from (SpriteInfo::contact_from).
+    const float contact_turn = contact_angle(creature, bone, info, rest[static_cast<size_t>(bone)]);
+    const bool contact = contact_turn != 0.0f;
+    const float ramp_from = info.contact_from - kContactRamp;
+    const auto turn = [&](glm::vec2 p, float u) {
+      if (!contact || u <= ramp_from) return p;
+      const float t = std::clamp((u - ramp_from) / kContactRamp, 0.0f, 1.0f);
+      const float a = contact_turn * t * t * (3.0f - 2.0f * t);
+      const glm::vec2 pivot(s.length(bone), 0.0f), d = p - pivot;
+      return pivot + glm::vec2(std::cos(a) * d.x - std::sin(a) * d.y, std::sin(a) * d.x + std::cos(a) * d.y);
+    };
 
     // Columns: the sprite's ends and both anchors; around each blended joint kSmoothColumns
     // more on either side, evenly over the blend, and where the end's squeeze ramps (those on
@@ -262,6 +354,10 @@ SpriteMesh build_sprite_mesh(const Creature& creature, const SpriteSet& sprites,
       for (const float at : {at_end.squeeze_from, at_end.squeeze_to}) {
         if (const float u = cu + at / metres_per_u; u > 0.0f && u < 1.0f) columns.push_back(u);
       }
+    }
+    if (snout) columns.push_back(info.snout_from);
+    if (contact) {
+      for (int k = 0; k <= 4; ++k) columns.push_back(ramp_from + kContactRamp * static_cast<float>(k) / 4.0f);
     }
     std::sort(columns.begin(), columns.end());
     columns.erase(std::unique(columns.begin(), columns.end(), [](float a, float b) { return b - a < 1e-5f; }),
@@ -292,14 +388,24 @@ SpriteMesh build_sprite_mesh(const Creature& creature, const SpriteSet& sprites,
           weights[static_cast<size_t>(used++)] = bw.weight;
         }
       }
+      // The contact part follows the foot's level frame, ramping in with its turn.
+      if (contact && level_entry[static_cast<size_t>(bone)] >= 0 && u > ramp_from && used < 4) {
+        const float t = std::clamp((u - ramp_from) / kContactRamp, 0.0f, 1.0f);
+        const float level = t * t * (3.0f - 2.0f * t);
+        for (float& wk : weights) wk *= 1.0f - level;
+        bones[static_cast<size_t>(used)] = static_cast<uint8_t>(level_entry[static_cast<size_t>(bone)]);
+        weights[static_cast<size_t>(used++)] = level;
+      }
       const float squeeze = at_end.parent >= 0 ? end_squeeze(at_end, s_end) : 1.0f;
       for (int r = 0; r <= rows; ++r) {
         const float v = static_cast<float>(r) / static_cast<float>(rows);
         glm::vec2 p = frame.map({u, v});  // bone frame: x along the bone, y across it
         p.y *= squeeze;
+        p.x = warp(p.x);
+        p = turn(p, u);
         SpriteVertex vert;
         vert.position_ms = m.apply(p);
-        vert.uv = info.uv_min + glm::vec2(u, 1.0f - v) * (info.uv_max - info.uv_min);
+        vert.uv = info.uv_min + glm::vec2(u, v) * (info.uv_max - info.uv_min);
         vert.bones = bones;
         vert.weights = weights;
         vert.shade = shade;

@@ -47,14 +47,32 @@ Mat2x3 mid_joint_frame(const Mat2x3& parent, const Mat2x3& child, float turn) {
   return mid;
 }
 
+Mat2x3 level_frame(const MidJoint& j, const Mat2x3& child) {
+  // The creature's mirror and scale: a rest pose has neither, so the world matrix's
+  // determinant is the model-to-world transform's.
+  const float det = child.m[0] * child.m[3] - child.m[1] * child.m[2];
+  const float scale = std::sqrt(std::fabs(det));
+  const float mirror = det < 0.0f ? -1.0f : 1.0f;
+  Mat2x3 f;
+  f.m[0] = mirror * scale * j.rest_x.x;
+  f.m[1] = scale * j.rest_x.y;
+  f.m[2] = mirror * scale * -j.rest_x.y;
+  f.m[3] = scale * j.rest_x.x;
+  const glm::vec2 at = child.apply(j.point_ls);
+  f.m[4] = at.x;
+  f.m[5] = at.y;
+  return f;
+}
+
 void mid_joint_palette(std::span<const MidJoint> mid_joints, std::span<const Mat2x3> world,
                        std::span<Mat2x3> palette) {
   const size_t bones = world.size();
   OSSA_ASSERT(palette.size() == bones + mid_joints.size(), "mid_joint_palette: one entry per bone and mid joint");
   for (size_t i = 0; i < mid_joints.size(); ++i) {
     const MidJoint& j = mid_joints[i];
-    palette[bones + i] =
-        mid_joint_frame(world[static_cast<size_t>(j.parent)], world[static_cast<size_t>(j.child)], j.turn) * j.inverse_bind;
+    const Mat2x3 frame = j.level ? level_frame(j, world[static_cast<size_t>(j.child)])
+                                 : mid_joint_frame(world[static_cast<size_t>(j.parent)], world[static_cast<size_t>(j.child)], j.turn);
+    palette[bones + i] = frame * j.inverse_bind;
   }
 }
 

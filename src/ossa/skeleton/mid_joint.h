@@ -9,6 +9,8 @@
 
 #include <span>
 
+#include <glm/vec2.hpp>
+
 #include "ossa/math/transform2d.h"
 
 namespace ossa {
@@ -21,7 +23,18 @@ struct MidJoint {
   int parent = 0, child = 0;  // bones
   float turn = 0.5f;          // 0.25, 0.5 or 0.75
   Mat2x3 inverse_bind;        // model space → the mid frame of the bind pose
+  // A level frame instead (a foot's toes, hoof or claws, which stay flat on the ground while
+  // the foot bone turns over them): at `point_ls` of bone `child` (its contact point, the
+  // bone's end), turned as that bone is in the rest pose, `rest_x` (its unit x axis in model
+  // space), whatever it turns since; mirrored and scaled with the creature.
+  bool level = false;
+  glm::vec2 point_ls{0.0f};
+  glm::vec2 rest_x{1.0f, 0.0f};
 };
+
+// The level frame of `j` (MidJoint::level) for the child bone's frame `child` (bone frame →
+// world): at its contact point, with the child's rest turn, mirrored and scaled as `child`.
+Mat2x3 level_frame(const MidJoint& j, const Mat2x3& child);
 
 // The mid-joint frame of a parent and a child bone frame (bone frame → model or world): at
 // the child's origin, turned from the parent's axes by `turn` (0.25, 0.5 or 0.75; others are
@@ -29,8 +42,9 @@ struct MidJoint {
 // scale or mirror of the two is kept: the frames of a creature facing left give the mirrored
 // mid frame.
 Mat2x3 mid_joint_frame(const Mat2x3& parent, const Mat2x3& child, float turn = 0.5f);
-// palette[bones + i] = mid_joint_frame(world[parent], world[child], turn) · inverse_bind for
-// every mid joint; `palette` holds bone_count + mid_joints.size() entries, its bones' already set.
+// palette[bones + i] = mid_joint_frame(world[parent], world[child], turn) · inverse_bind (or
+// level_frame(j, world[child]) · inverse_bind) for every mid joint; `palette` holds
+// bone_count + mid_joints.size() entries, its bones' already set.
 void mid_joint_palette(std::span<const MidJoint> mid_joints, std::span<const Mat2x3> world,
                        std::span<Mat2x3> palette);
 
