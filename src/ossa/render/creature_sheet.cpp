@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstring>
+#include <utility>
 
 #pragma GCC diagnostic push
 #pragma GCC diagnostic ignored "-Wunused-function"
@@ -13,9 +14,34 @@ namespace ossa {
 
 namespace {
 
+// The font draws ASCII: German letters become their usual spellings (ä ae, ö oe, ü ue, ß ss),
+// any other UTF-8 sequence one '?'.
 std::string ascii(const std::string& text) {
+  static const std::pair<const char*, const char*> kLetters[] = {
+      {"\xc3\xa4", "ae"}, {"\xc3\xb6", "oe"}, {"\xc3\xbc", "ue"}, {"\xc3\x84", "Ae"},
+      {"\xc3\x96", "Oe"}, {"\xc3\x9c", "Ue"}, {"\xc3\x9f", "ss"}};
   std::string out;
-  for (const char ch : text) out += static_cast<unsigned char>(ch) >= 32 && static_cast<unsigned char>(ch) < 127 ? ch : '?';
+  for (size_t i = 0; i < text.size();) {
+    const auto ch = static_cast<unsigned char>(text[i]);
+    if (ch >= 32 && ch < 127) {
+      out += text[i++];
+      continue;
+    }
+    bool known = false;
+    for (const auto& [utf8, plain] : kLetters) {
+      if (text.compare(i, 2, utf8) == 0) {
+        out += plain;
+        i += 2;
+        known = true;
+        break;
+      }
+    }
+    if (known) continue;
+    out += '?';
+    // Skip the sequence's continuation bytes.
+    for (++i; i < text.size() && (static_cast<unsigned char>(text[i]) & 0xC0) == 0x80; ++i) {
+    }
+  }
   return out;
 }
 
