@@ -12,6 +12,7 @@ layout(location = 4) in vec4 a_colour;        // sRGB + alpha
 layout(location = 5) in vec4 a_pattern;       // sRGB of the pattern + its strength
 layout(location = 6) in uint a_kind;          // CoatPattern
 layout(location = 7) in uint a_palette_base;  // first palette entry of this creature
+layout(location = 8) in uint a_floor_base;    // its floor: kBodyFloorEntries entries
 
 uniform samplerBuffer u_palette;
 uniform mat3 u_view_proj;                     // world metres -> clip
@@ -29,11 +30,29 @@ vec2 skin(uint bone, vec2 p) {
   return x_axis * p.x + y_axis * p.y + origin;
 }
 
+// The floor (src/ossa/body/body_floor.h, floor_point): box tops under the creature, two per
+// palette entry (x from, x to, top; then the next), unused ones with x from > x to; flesh
+// below a top over which it lies is lifted onto it.
+vec2 rest_on_floor(vec2 p) {
+  for (int k = 0; k < 4; ++k) {
+    int t = int(a_floor_base) * 3 + k * 3;
+    vec2 a = texelFetch(u_palette, t).xy;
+    vec2 b = texelFetch(u_palette, t + 1).xy;
+    vec2 c = texelFetch(u_palette, t + 2).xy;
+    if (a.x > a.y) break;  // segments are filled in order
+    if (p.x >= a.x && p.x <= a.y && p.y < b.x) p.y = b.x;
+    if (b.y > c.x) break;
+    if (p.x >= b.y && p.x <= c.x && p.y < c.y) p.y = c.y;
+  }
+  return p;
+}
+
 void main() {
   vec2 p_ws = a_weights.x * skin(a_bones.x, a_position_ms);
   if (a_weights.y > 0.0) p_ws += a_weights.y * skin(a_bones.y, a_position_ms);
   if (a_weights.z > 0.0) p_ws += a_weights.z * skin(a_bones.z, a_position_ms);
   if (a_weights.w > 0.0) p_ws += a_weights.w * skin(a_bones.w, a_position_ms);
+  p_ws = rest_on_floor(p_ws);
   v_coat = a_coat;
   v_colour = a_colour;
   v_pattern = a_pattern;

@@ -357,7 +357,13 @@ void Game::Impl::render(Game& game, float alpha) {
     blended.resize(b.size());
     for (size_t k = 0; k < b.size(); ++k) blended[k] = blend(a[k], b[k], alpha);
     for (const int instance : instances[static_cast<size_t>(i)]) {
-      if (!blended.empty() && static_cast<int>(blended.size()) == batch->bone_count(instance)) batch->set_world(instance, blended);
+      if (blended.empty() || static_cast<int>(blended.size()) != batch->bone_count(instance)) continue;
+      batch->set_world(instance, blended);
+      // A body rests on the ground under it (body_floor.h): flesh flattens, never enters it.
+      const Entity& e = entity_at(world, i);
+      if (const auto it = e.is_character() ? bodies.end() : bodies.find(&e.creature()); it != bodies.end()) {
+        batch->set_floor(instance, body_floor(level, e.skeleton(), blended, it->second.reach));
+      }
     }
   }
   batch->upload_palettes();

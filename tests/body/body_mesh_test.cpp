@@ -114,8 +114,8 @@ double recomputed_mass(const BodyMesh& m) {
 TEST_CASE("every example's body weighs what its genome's weight asks at its size, within 25 %", "[body]") {
   const bool print = std::getenv("OSSA_PRINT_MASS_TABLE") != nullptr;
   if (print) {
-    std::printf("| example | weight kg | scale m/fu | true scale m/fu | expected kg (weight x (scale/true)^3) | body kg | body/expected | girth |\n");
-    std::printf("| --- | ---: | ---: | ---: | ---: | ---: | ---: | ---: |\n");
+    std::printf("| example | weight kg | scale m/fu | true scale m/fu | expected kg (weight x (scale/true)^3) | body kg | body/expected | girth | depth scale |\n");
+    std::printf("| --- | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: |\n");
   }
   int within = 0;
   for (const Animal& a : scenes::generator().dataset().animals) {
@@ -131,9 +131,9 @@ TEST_CASE("every example's body weighs what its genome's weight asks at its size
     const double mass = recomputed_mass(body);
     CHECK(mass == Approx(body.mass_kg).epsilon(1e-3));
     if (print) {
-      std::printf("| %s | %g | %.5f | %.5f | %.4g | %.4g | %.2f | %.2f |\n", a.name.c_str(), g.pca[kWeightKg],
+      std::printf("| %s | %g | %.5f | %.5f | %.4g | %.4g | %.2f | %.2f | %.2f |\n", a.name.c_str(), g.pca[kWeightKg],
                   static_cast<double>(c.scale), static_cast<double>(*t), expected, mass, mass / expected,
-                  static_cast<double>(body.girth));
+                  static_cast<double>(body.girth), static_cast<double>(body.depth_scale));
     }
     INFO(a.name << ": body " << mass << " kg, expected " << expected << " kg, girth " << body.girth);
     CHECK(mass / expected > 0.75);
@@ -149,7 +149,7 @@ void check_body(const Creature& c, const std::string& who) {
   const BodyMesh m = build_body(c);
   INFO(who);
   REQUIRE(!m.parts.empty());
-  REQUIRE(m.palette_size() <= 256);
+  REQUIRE(m.floor_entry() <= 256);
   // Skinning: weights sum to 1, indices inside the palette; the rest palette gives the rest pose.
   const auto model = model_matrices(c.skeleton, c.rest_pose.locals);
   std::vector<Mat2x3> palette(static_cast<size_t>(m.palette_size()));
@@ -158,7 +158,7 @@ void check_body(const Creature& c, const std::string& who) {
     float sum = 0.0f;
     for (int k = 0; k < 4; ++k) {
       sum += v.weights[static_cast<size_t>(k)];
-      if (v.weights[static_cast<size_t>(k)] > 0.0f) REQUIRE(v.bones[static_cast<size_t>(k)] < m.palette_size());
+      if (v.weights[static_cast<size_t>(k)] > 0.0f) REQUIRE(v.bones[static_cast<size_t>(k)] < m.floor_entry());
     }
     REQUIRE(sum == Approx(1.0f).margin(1e-5));
     REQUIRE(glm::length(skin_body_vertex(v, palette) - v.position_ms) < 1e-4f * m.parts.size() + 1e-4f);

@@ -257,6 +257,27 @@ void plan_axial(const BodyRig& rig, BodyParts& plan) {
     if (sec.dorsal.y < -0.05f) sec.top_cap = room / -sec.dorsal.y;
     tube.sections.push_back(sec);
   }
+  // The girdles' joints (shoulders, hips) lie inside the trunk whatever the girth: a limb
+  // grows out of the body, not below it (a long scapula or pelvis, a lean body).
+  for (const Limb& l : c.limbs) {
+    if (l.kind == LimbKind::kFin || l.bones[0] < 0) continue;
+    const glm::vec2 joint = rig.bone_start(l.bones[0]);
+    // The nearest chain point.
+    float best = 1e30f, gs = 0.0f;
+    for (size_t k = 0; k + 1 < ch.points.size(); ++k) {
+      const glm::vec2 a = ch.points[k], d = ch.points[k + 1] - a;
+      const float len2 = glm::dot(d, d);
+      const float t = len2 > 0.0f ? std::clamp(glm::dot(joint - a, d) / len2, 0.0f, 1.0f) : 0.0f;
+      const float dist = glm::length(a + t * d - joint);
+      if (dist < best) best = dist, gs = ch.start_s[k] + t * (ch.start_s[k + 1] - ch.start_s[k]);
+    }
+    for (size_t i = 0; i < at.size(); ++i) {
+      Section& sec = tube.sections[i];
+      const float below = glm::dot(sec.centre - joint, sec.dorsal) + 0.03f * B;
+      const float w = 1.0f - smooth01(0.06f * B, 0.22f * B, std::fabs(at[i] - gs));
+      if (w > 0.0f && below > 0.0f) sec.bottom_fixed = std::max(sec.bottom_fixed, w * below);
+    }
+  }
   // A bird's beak in horn colour.
   if (c.skull_variant == 1 && rig.snout_s > 0.0f) {
     const float beak_s = rig.snout * rig.snout_s;

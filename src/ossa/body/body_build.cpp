@@ -68,6 +68,14 @@ const TubePlan* find_axial(const BodyParts& parts) {
   return nullptr;
 }
 
+// The girth a tube takes of the body's: limbs follow it to 1.25, then slowly (an animal
+// heavier than its skeleton's default carries the weight in its trunk, not in thighs that
+// would outgrow the body).
+float tube_girth(const TubePlan& t, float girth) {
+  const bool limb = t.kind == BodyPartKind::kLeg || t.kind == BodyPartKind::kArm;
+  return limb && girth > 1.25f ? 1.25f + 0.3f * (girth - 1.25f) : girth;
+}
+
 // The body's mass at `girth` from its plan, by body_mass.h's rules (the mesh built at that
 // girth measures the same: its sections are these points).
 double plan_mass(const BodyParts& parts, float girth) {
@@ -82,8 +90,8 @@ double plan_mass(const BodyParts& parts, float girth) {
     counts.clear();
     const bool limb = t.kind == BodyPartKind::kLeg || t.kind == BodyPartKind::kArm;
     for (const Section& s : t.sections) {
-      tops.push_back(section_top(s, girth));
-      bottoms.push_back(section_bottom(s, girth));
+      tops.push_back(section_top(s, tube_girth(t, girth)));
+      bottoms.push_back(section_bottom(s, tube_girth(t, girth)));
       const glm::vec2 mid = 0.5f * (tops.back() + bottoms.back());
       counts.push_back(limb && !axial_outline.empty() && inside_polygon(axial_outline, mid) ? 0.0f : 1.0f);
     }
@@ -142,7 +150,7 @@ BodyMesh build_body(const Creature& c, const BodyOptions& options) {
   plan_limbs(rig, parts);
   plan_appendages(rig, parts);
   mesh.mid_joints = rig.mid_joints;
-  OSSA_ASSERT(mesh.palette_size() <= 256, "build_body: palette entries beyond uint8 indices");
+  OSSA_ASSERT(mesh.floor_entry() <= 256, "build_body: palette entries beyond uint8 indices");
 
   // The girth: the factor on muscle and fat that gives the body the mass its weight asks for.
   mesh.default_mass_kg = static_cast<float>(plan_mass(parts, 1.0f));
@@ -150,11 +158,26 @@ BodyMesh build_body(const Creature& c, const BodyOptions& options) {
                                        : static_cast<double>(mesh.default_mass_kg) * c.look.fatness;
   float lo = options.min_girth, hi = options.max_girth, girth = 1.0f;
   if (plan_mass(parts, lo) >= target) {
+    // Heavier than the weight even as lean as a body gets (a skeleton large for its weight,
+    // or a laterally slim animal: a chameleon): the silhouette stays at the least girth and
+    // the body is narrower across instead, every part's depth scaled (body_mass.h).
     girth = lo;
-    mesh.mass_matched = false;
+    const double at_least = plan_mass(parts, lo);
+    const float scale = at_least > 0.0 ? static_cast<float>(target / at_least) : 1.0f;
+    mesh.depth_scale = std::max(scale, options.min_depth_scale);
+    for (TubePlan& t : parts.tubes) t.depth *= mesh.depth_scale;
+    for (FlatPlan& f : parts.flats) f.depth *= mesh.depth_scale;
+    mesh.mass_matched = scale >= options.min_depth_scale;
   } else if (plan_mass(parts, hi) <= target) {
+    // Lighter than the weight even as stout as a silhouette gets (a skeleton small for its
+    // weight: a frog, an ichthyostega): wider across instead, every depth scaled up.
     girth = hi;
-    mesh.mass_matched = false;
+    const double at_most = plan_mass(parts, hi);
+    const float scale = at_most > 0.0 ? static_cast<float>(target / at_most) : 1.0f;
+    mesh.depth_scale = std::min(scale, options.max_depth_scale);
+    for (TubePlan& t : parts.tubes) t.depth *= mesh.depth_scale;
+    for (FlatPlan& f : parts.flats) f.depth *= mesh.depth_scale;
+    mesh.mass_matched = scale <= options.max_depth_scale;
   } else {
     for (int i = 0; i < 28 && hi - lo > 1e-4f; ++i) {
       girth = 0.5f * (lo + hi);
@@ -164,8 +187,8 @@ BodyMesh build_body(const Creature& c, const BodyOptions& options) {
   }
   mesh.girth = girth;
   for (TubePlan& t : parts.tubes) {
-    unfold_sections(t.sections, girth);
-    untangle_tube(t, girth);
+    unfold_sections(t.sections, tube_girth(t, girth));
+    untangle_tube(t, tube_girth(t, girth));
   }
 
   // Draw order: far, body, near; within a layer by order (the axial body 0), then as planned.
@@ -219,7 +242,7 @@ BodyMesh build_body(const Creature& c, const BodyOptions& options) {
       v.pattern_kind = static_cast<uint8_t>(look.pattern);
     };
     const auto fill_first = static_cast<uint32_t>(mesh.indices.size());
-    BodyPart part = e.tube ? emit_tube(parts.tubes[e.index], girth, mesh, paint) : emit_flat(parts.flats[e.index], mesh, paint);
+    BodyPart part = e.tube ? emit_tube(parts.tubes[e.index], tube_girth(parts.tubes[e.index], girth), mesh, paint) : emit_flat(parts.flats[e.index], mesh, paint);
     if (part.index_count == 0) {
       mesh.indices.resize(fill_first);
       continue;
@@ -237,6 +260,15 @@ BodyMesh build_body(const Creature& c, const BodyOptions& options) {
   }
   while (layer < kLayerCount) mesh.layer_begin[static_cast<size_t>(++layer)] = static_cast<uint32_t>(mesh.indices.size());
   body_mass(mesh);
+  // How far the flesh reaches past the box around the bones (rest pose).
+  glm::vec2 bones_lo(1e30f), bones_hi(-1e30f);
+  for (int b = 0; b < rig.bone_count; ++b) {
+    for (const glm::vec2 p : {rig.bone_start(b), rig.bone_end(b)}) bones_lo = glm::min(bones_lo, p), bones_hi = glm::max(bones_hi, p);
+  }
+  for (const BodyVertex& v : mesh.vertices) {
+    const glm::vec2 out = glm::max(bones_lo - v.position_ms, v.position_ms - bones_hi);
+    mesh.reach = std::max(mesh.reach, std::max(out.x, out.y));
+  }
   return mesh;
 }
 
@@ -255,11 +287,12 @@ glm::vec2 skin_body_vertex(const BodyVertex& v, std::span<const Mat2x3> palette)
   return p;
 }
 
-void body_palette(const BodyMesh& mesh, std::span<const Mat2x3> world, std::span<Mat2x3> palette) {
+void body_palette(const BodyMesh& mesh, std::span<const Mat2x3> world, std::span<Mat2x3> palette, const BodyFloor& floor) {
   OSSA_ASSERT(world.size() == mesh.inverse_bind.size() && palette.size() >= static_cast<size_t>(mesh.palette_size()),
-              "body_palette: one world matrix per bone, a palette entry per bone and mid joint");
+              "body_palette: one world matrix per bone, a palette entry per bone, mid joint and floor entry");
   for (size_t i = 0; i < world.size(); ++i) palette[i] = world[i] * mesh.inverse_bind[i];
-  mid_joint_palette(mesh.mid_joints, world, palette.first(static_cast<size_t>(mesh.palette_size())));
+  mid_joint_palette(mesh.mid_joints, world, palette.first(static_cast<size_t>(mesh.floor_entry())));
+  encode_floor(floor, palette.subspan(static_cast<size_t>(mesh.floor_entry()), static_cast<size_t>(kBodyFloorEntries)));
 }
 
 Box body_bounds(const BodyMesh& mesh) {

@@ -15,6 +15,9 @@
 //     area × thickness, thickness = depth × the outline's longest side (its bounding box).
 //   the eye: nothing.
 //   density 1000 kg/m³.
+//   A body too heavy for its weight even at the least girth (BodyOptions::min_girth), or too
+//   light at the most, has every depth scaled by BodyMesh::depth_scale: slimmer or wider
+//   across, its side view kept plausible.
 //
 // `body_mass()` fills BodyPart::mass_kg, BodyMesh::mass_kg and area_m2; the builder calls it,
 // and a test recomputes it from the vertices alone.

@@ -19,6 +19,9 @@
 // muscle sits (thighs, shoulders, belly); the girths then scale so that the body's mass
 // (body_mass.h) matches Creature::body_mass_kg, the genome's weight at the creature's size.
 //
+// The flesh rests on the floor (body_floor.h): a vertex that would lie below a box top under
+// the creature is lifted onto it, in the shader and in floor_point() alike.
+//
 // Skinning: every vertex follows up to two palette entries — spine vertices blend the two
 // vertebrae of the nearest joint, limb vertices blend through the limb joints' mid-joint
 // frames (skeleton/mid_joint.h) as the bone sprites do, appendages follow their bone. The
@@ -35,6 +38,7 @@
 
 #include <glm/vec2.hpp>
 
+#include "ossa/body/body_floor.h"
 #include "ossa/gen/creature.h"
 #include "ossa/gen/look.h"
 #include "ossa/io/result.h"
@@ -104,8 +108,11 @@ struct BodyOptions {
   float outline_width = 0.006f;        // stroke width as a fraction of the back length
   bool outline = true;                 // stroke each part's outline
   // The girth factor's range when matching the body's mass to Creature::body_mass_kg: 1 is
-  // the default anatomy; outside this range the mass is left unmatched (and reported).
-  float min_girth = 0.25f, max_girth = 3.5f;
+  // the default anatomy. A body still too heavy at min_girth is made narrower across instead
+  // (every part's depth scaled, down to min_depth_scale), one too light at max_girth wider
+  // (up to max_depth_scale); beyond these the mass is left unmatched (mass_matched false).
+  float min_girth = 0.6f, max_girth = 2.0f;
+  float min_depth_scale = 0.15f, max_depth_scale = 2.5f;
 };
 
 struct BodyMesh {
@@ -116,12 +123,17 @@ struct BodyMesh {
   std::vector<MidJoint> mid_joints;       // palette entries after the bones
   std::vector<BodyPart> parts;            // in draw order
   float girth = 1.0f;                     // the factor the muscle and belly widths were scaled by
+  float depth_scale = 1.0f;               // every part's depth scaled: < 1 slimmer across, > 1 wider
   float default_mass_kg = 0.0f;           // the body's mass at girth 1
   float mass_kg = 0.0f;                   // the built body's mass (body_mass.h)
   float area_m2 = 0.0f;                   // side-view area: every part's fill, overlaps counted
   bool mass_matched = true;               // false when the girth hit its range
+  float reach = 0.0f;                     // metres the flesh reaches past the bones' box
+                                          // (rest pose): body_floor()'s reach
 
-  int palette_size() const { return static_cast<int>(inverse_bind.size() + mid_joints.size()); }
+  // Palette entries: the bones, the mid joints, then the floor (body_floor.h).
+  int floor_entry() const { return static_cast<int>(inverse_bind.size() + mid_joints.size()); }
+  int palette_size() const { return floor_entry() + kBodyFloorEntries; }
   int triangle_count() const { return static_cast<int>(indices.size() / 3); }
 };
 
@@ -131,10 +143,13 @@ struct BodyMesh {
 BodyMesh build_body(const Creature& creature, const BodyOptions& options = {});
 Result<BodyMesh> try_build_body(const Creature& creature, const BodyOptions& options = {});
 
-// A vertex skinned by `palette` (one entry per bone, then per mid joint), as the shader does.
+// A vertex skinned by `palette` (one entry per bone, then per mid joint), as the shader does
+// (without the floor: floor_point() after it, as the shader does).
 glm::vec2 skin_body_vertex(const BodyVertex& v, std::span<const Mat2x3> palette);
-// The palette of a pose: world · inverse_bind per bone, then the mid joints.
-void body_palette(const BodyMesh& mesh, std::span<const Mat2x3> world, std::span<Mat2x3> palette);
+// The palette of a pose: world · inverse_bind per bone, then the mid joints, then `floor`
+// (none: flesh may go anywhere).
+void body_palette(const BodyMesh& mesh, std::span<const Mat2x3> world, std::span<Mat2x3> palette,
+                  const BodyFloor& floor = {});
 // The model-space box around every vertex (rest pose). Empty mesh: a zero box at the origin.
 Box body_bounds(const BodyMesh& mesh);
 

@@ -10,6 +10,7 @@
 // tube.cpp (sections → vertices, triangles, outline), body_build.cpp (the order, the girth,
 // strokes and layers).
 
+#include <algorithm>
 #include <array>
 #include <cstdint>
 #include <functional>
@@ -66,6 +67,9 @@ struct Section {
   float top_fixed = 0.0f, top_soft = 0.0f;       // metres along +dorsal
   float bottom_fixed = 0.0f, bottom_soft = 0.0f; // metres along -dorsal
   float top_cap = 1e30f, bottom_cap = 1e30f;     // the most each side may reach (ground, folds)
+  // The rest ground under a limb: outline points below it are lifted onto it (kept where they
+  // are across the limb), so a heel spreads along the ground rather than shrink to its bone.
+  float floor_y = -1e30f;
   Skin skin;
   float s = 0.0f;                                // arc length along its chain (limbs)
   glm::vec4 colour{-1.0f};                       // sRGBA of this section (negative: the part's)
@@ -96,6 +100,15 @@ struct TubePlan {
   // Section::colour, wins).
   glm::vec4 colour{-1.0f};
   float pattern = 1.0f;                // pattern strength on this part
+  // A leg's contact (the animator's: the foot's tip, or its heel for flat contact). Vertices
+  // within contact_reach of it (rest pose) blend toward a level frame there (palette entry
+  // contact_entry, skeleton/mid_joint.h), wholly within contact_inner: the flesh resting on
+  // the ground around a planted contact keeps its rest shape above it however the foot and
+  // shin turn over it. -1: none.
+  int contact_entry = -1;
+  glm::vec2 contact_point{0.0f};
+  float contact_inner = 0.0f, contact_reach = 0.0f;
+  float contact_height = 0.0f;         // > 0: only up to this height above the contact (a heel)
 };
 
 struct FlatPlan {
@@ -154,8 +167,14 @@ std::vector<glm::vec2> tube_outline(const TubePlan& tube, float girth);
 // direction `out` (unit, away from the tube).
 std::vector<glm::vec2> round_cap(glm::vec2 top, glm::vec2 bottom, glm::vec2 out, float reach, int segments);
 // Section top and bottom points at `girth`.
-inline glm::vec2 section_top(const Section& s, float girth) { return s.centre + s.top(girth) * s.dorsal; }
-inline glm::vec2 section_bottom(const Section& s, float girth) { return s.centre - s.bottom(girth) * s.dorsal; }
+inline glm::vec2 section_top(const Section& s, float girth) {
+  const glm::vec2 p = s.centre + s.top(girth) * s.dorsal;
+  return {p.x, std::max(p.y, std::min(s.floor_y, s.centre.y))};
+}
+inline glm::vec2 section_bottom(const Section& s, float girth) {
+  const glm::vec2 p = s.centre - s.bottom(girth) * s.dorsal;
+  return {p.x, std::max(p.y, std::min(s.floor_y, s.centre.y))};
+}
 
 // Paints a vertex whose position and skin are set: `v` is its fraction across a tube's
 // section (0 top … 1 bottom; negative for flat parts), `override` a part colour (negative:

@@ -64,6 +64,7 @@ LimbChain limb_chain(BodyRig& rig, const Limb& limb, int frames_per_joint, const
       mid.parent = parent;
       mid.child = child;
       mid.turn = static_cast<float>(f + 1) / static_cast<float>(frames_per_joint + 1);
+      mid.rest_half = mid_joint_half_turn(rig.rest[static_cast<size_t>(parent)], rig.rest[static_cast<size_t>(child)]);
       mid.inverse_bind = inverse(mid_joint_frame(rig.rest[static_cast<size_t>(parent)], rig.rest[static_cast<size_t>(child)], mid.turn));
       blend.frames.push_back(rig.bone_count + static_cast<int>(rig.mid_joints.size()));
       rig.mid_joints.push_back(mid);
@@ -123,6 +124,35 @@ std::vector<Section> sweep(const LimbChain& lc, const std::function<std::array<f
   return out;
 }
 
+// The inside of a bent knee or ankle: where the flesh of the two bones would overlap, each
+// section's inner side stops at the joint's bisector — a crease — so the outline folds there
+// cleanly instead of crossing itself (which untangle_tube could only cut away, heel and all).
+void crease(const LimbChain& lc, std::vector<Section>& sections) {
+  const std::vector<glm::vec2>& pts = lc.chain.points;
+  for (size_t j = 1; j + 1 < pts.size(); ++j) {
+    const glm::vec2 m = pts[j];
+    const glm::vec2 a = m - pts[j - 1], c = pts[j + 1] - m;
+    if (!(glm::length(a) > 1e-9f) || !(glm::length(c) > 1e-9f)) continue;
+    const glm::vec2 dp = glm::normalize(a), dc = glm::normalize(c);
+    if (glm::dot(dp, dc) > 0.5f) continue;  // bent by less than 60°
+    const float turn = dp.x * dc.y - dp.y * dc.x;
+    glm::vec2 b = dc - dp;  // into the joint's inside
+    b = glm::length(b) > 1e-6f ? glm::normalize(b) : glm::vec2(-dp.y, dp.x) * (turn >= 0.0f ? 1.0f : -1.0f);
+    const glm::vec2 nb(-b.y, b.x);
+    for (Section& sec : sections) {
+      // A chain turning left has its inside on the left: the bottom (dorsal is the right).
+      const bool bottom = turn >= 0.0f;
+      const glm::vec2 n = bottom ? -sec.dorsal : sec.dorsal;
+      const float denom = glm::dot(n, nb);
+      if (std::fabs(denom) < 1e-6f) continue;
+      const float t = glm::dot(m - sec.centre, nb) / denom;
+      if (t < 0.0f) continue;
+      float& cap = bottom ? sec.bottom_cap : sec.top_cap;
+      cap = std::min(cap, 0.96f * t);  // a hair short: the two sides never touch
+    }
+  }
+}
+
 float smooth01(float e0, float e1, float x) {
   const float t = std::clamp((x - e0) / (e1 - e0), 0.0f, 1.0f);
   return t * t * (3.0f - 2.0f * t);
@@ -131,6 +161,45 @@ float smooth01(float e0, float e1, float x) {
 glm::vec4 hoof_colour() { return {0.16f, 0.13f, 0.11f, 1.0f}; }
 glm::vec4 claw_colour() { return {0.25f, 0.21f, 0.17f, 1.0f}; }
 glm::vec4 scale_colour() { return {0.72f, 0.6f, 0.36f, 1.0f}; }
+
+// A leg's contact frame (TubePlan::contact_entry): a level frame at the point the animator
+// plants — the foot's tip, or its heel (the ankle) for flat contact — turned as the foot is at
+// rest. A hoof follows it whole; a paw's or bird's toes and a heel over about three radii.
+void plant_contact(BodyRig& rig, const Limb& limb, Foot foot, float r_ankle, float r_toe, TubePlan& tube) {
+  const Creature& c = *rig.creature;
+  if (rig.bone_count + static_cast<int>(rig.mid_joints.size()) >= 256) return;  // uint8 indices
+  const Skeleton& s = c.skeleton;
+  const int bone = limb.bones[2];
+  const float Ll = s.length(limb.bones[1]), Lh = s.length(bone);
+  const bool heel = c.contact == ContactMode::kFlat;
+  MidJoint j;
+  j.level = true;
+  j.parent = j.child = bone;
+  j.point_ls = heel ? glm::vec2(0.0f) : glm::vec2(Lh, 0.0f);
+  const Mat2x3& rest = rig.rest[static_cast<size_t>(bone)];
+  const glm::vec2 x(rest.m[0], rest.m[1]);
+  j.rest_x = glm::length(x) > 1e-9f ? glm::normalize(x) : glm::vec2(1.0f, 0.0f);
+  Mat2x3 bind = rest;
+  const glm::vec2 at = rest.apply(j.point_ls);
+  bind.m[4] = at.x;
+  bind.m[5] = at.y;
+  j.inverse_bind = inverse(bind);
+  tube.contact_entry = rig.bone_count + static_cast<int>(rig.mid_joints.size());
+  rig.mid_joints.push_back(j);
+  tube.contact_point = at;
+  if (heel) {
+    tube.contact_inner = 1.2f * r_ankle;
+    tube.contact_reach = std::min(3.0f * r_ankle, std::max(0.6f * Ll, tube.contact_inner));
+    tube.contact_height = r_ankle;
+  } else if (foot == Foot::kHoof) {
+    tube.contact_inner = 0.3f * Lh;
+    tube.contact_reach = 0.45f * Lh;
+  } else {
+    const float r = (foot == Foot::kPaw ? 1.3f : 1.0f) * r_toe;
+    tube.contact_inner = std::min(1.5f * r, 0.4f * Lh);
+    tube.contact_reach = std::min(3.5f * r, 0.6f * Lh);
+  }
+}
 
 void plan_leg_or_arm(BodyRig& rig, const Limb& limb, int frames, BodyParts& plan) {
   const Creature& c = *rig.creature;
@@ -189,16 +258,17 @@ void plan_leg_or_arm(BodyRig& rig, const Limb& limb, int frames, BodyParts& plan
   tube.limb = static_cast<int>(&limb - c.limbs.data());
   tube.depth = 0.75f;
   tube.sections = sweep(lc, radius, 8);
+  crease(lc, tube.sections);
   tube.start_cap = Cap::kRound;
   tube.end_cap = foot == Foot::kFlat || foot == Foot::kHand ? Cap::kRound : Cap::kPoint;
   tube.end_cap_length = foot == Foot::kFlat ? 0.8f : 0.55f;
   tube.fade_start = true;
-  // The rest pose stays above the ground: a flat foot's sole lies on its bone.
-  for (Section& sec : tube.sections) {
-    const float room = std::max(sec.centre.y, 0.0f);
-    if (sec.dorsal.y > 0.05f) sec.bottom_cap = std::min(sec.bottom_cap, room / sec.dorsal.y);
-    if (sec.dorsal.y < -0.05f) sec.top_cap = std::min(sec.top_cap, room / -sec.dorsal.y);
-  }
+  // The rest pose stays above the ground — for a leg, the level of its contact, where the
+  // animator plants it: a flat foot's sole lies on its bone.
+  const float ground = limb.kind != LimbKind::kLeg ? 0.0f
+                       : c.contact == ContactMode::kFlat ? rig.bone_start(limb.bones[2]).y
+                                                         : rig.bone_end(limb.bones[2]).y;
+  for (Section& sec : tube.sections) sec.floor_y = ground;
   // A pointed end narrows to the contact at 30° or more either side: the last section sits
   // back from the tip by the radius / tan 30°... at most a third of the foot.
   if (tube.end_cap == Cap::kPoint && tube.sections.size() >= 3) {
@@ -221,14 +291,9 @@ void plan_leg_or_arm(BodyRig& rig, const Limb& limb, int frames, BodyParts& plan
     last.top_fixed = last.bottom_fixed = last.top_soft = last.bottom_soft = 0.0f;
     tube.sections.push_back(before);
     tube.sections.push_back(last);
-    // The rest pose above the ground: caps again for the new sections.
-    for (size_t i = tube.sections.size() - 2; i < tube.sections.size(); ++i) {
-      Section& sec = tube.sections[i];
-      const float room = std::max(sec.centre.y, 0.0f);
-      if (sec.dorsal.y > 0.05f) sec.bottom_cap = std::min(sec.bottom_cap, room / sec.dorsal.y);
-      if (sec.dorsal.y < -0.05f) sec.top_cap = std::min(sec.top_cap, room / -sec.dorsal.y);
-    }
+    // (Both keep the ground: Section::floor_y.)
   }
+  if (limb.kind == LimbKind::kLeg && c.contact != ContactMode::kFlat) plant_contact(rig, limb, foot, r_ankle, r_toe, tube);
   // Hooves and claws in horn colour, a bird's scaly feet too (by the foot's length from the
   // ankle: u 0 at the ankle, 1 at the tip).
   for (Section& sec : tube.sections) {
@@ -367,10 +432,12 @@ void plan_limbs(BodyRig& rig, BodyParts& plan) {
   const Creature& c = *rig.creature;
   // Three mid-joint frames per knee and ankle while a creature's palette holds them (uint8
   // indices), else one, else none.
-  int joints = 0;
+  // (Plus a contact frame per leg where there is room.)
+  int joints = 0, legs = 0;
   for (const Limb& l : c.limbs) joints += l.kind == LimbKind::kLeg || l.kind == LimbKind::kArm ? 2 : 0;
+  for (const Limb& l : c.limbs) legs += l.kind == LimbKind::kLeg;
   int frames = 3;
-  while (frames > 0 && rig.bone_count + frames * joints > 256) frames -= 2;
+  while (frames > 0 && rig.bone_count + frames * joints + legs > 256) frames -= 2;
   for (const Limb& limb : c.limbs) {
     switch (limb.kind) {
       case LimbKind::kLeg:

@@ -29,6 +29,12 @@ float signed_area(std::span<const glm::vec2> p) {
   return static_cast<float>(0.5 * a);
 }
 
+float smooth_step(float e0, float e1, float x) {
+  if (!(e1 > e0)) return x < e0 ? 0.0f : 1.0f;
+  const float t = std::clamp((x - e0) / (e1 - e0), 0.0f, 1.0f);
+  return t * t * (3.0f - 2.0f * t);
+}
+
 glm::vec2 end_direction(const TubePlan& t, bool at_end) {
   const size_t n = t.sections.size();
   const glm::vec2 d = at_end ? t.sections[n - 1].centre - t.sections[n - 2].centre : t.sections[0].centre - t.sections[1].centre;
@@ -220,6 +226,17 @@ BodyPart emit_tube(const TubePlan& t, float girth, BodyMesh& mesh, const Painter
     bv.bones = {skin.index[0], skin.index[1], 0, 0};
     bv.weights = {skin.weight[0], skin.weight[1], 0.0f, 0.0f};
     if (skin.index[0] == skin.index[1]) bv.weights = {1.0f, 0.0f, 0.0f, 0.0f};
+    if (t.contact_entry >= 0) {
+      const float d = glm::length(p - t.contact_point);
+      float w = 1.0f - smooth_step(t.contact_inner, t.contact_reach, d);
+      // A heel anchors only its sole: what lies lower than contact_height above the contact.
+      if (t.contact_height > 0.0f) w *= 1.0f - smooth_step(0.5f * t.contact_height, t.contact_height, p.y - t.contact_point.y);
+      if (w > 0.0f) {
+        for (float& x : bv.weights) x *= 1.0f - w;
+        bv.bones[2] = static_cast<uint8_t>(t.contact_entry);
+        bv.weights[2] = w;
+      }
+    }
     paint(bv, v, over, t.pattern);
     mesh.vertices.push_back(bv);
     return static_cast<uint32_t>(mesh.vertices.size() - 1);

@@ -120,7 +120,9 @@ void CreatureBatch::set_world(int instance, std::span<const Mat2x3> world) {
   const bool ok = job.run();
   OSSA_ASSERT(ok, "set_world: palette job failed");
   (void)ok;
-  if (!c.mid_joints.empty()) mid_joint_palette(c.mid_joints, world, palette(instance));
+  if (!c.mid_joints.empty()) {
+    mid_joint_palette(c.mid_joints, world, palette(instance).first(static_cast<size_t>(c.bone_count) + c.mid_joints.size()));
+  }
 }
 
 void CreatureBatch::set_pose(int instance, const Skeleton& skeleton,

@@ -63,6 +63,7 @@ struct BodyBatchVertex {
   std::array<uint8_t, 4> pattern{};
   uint32_t kind = 0;
   uint32_t palette_base = 0;
+  uint32_t floor_base = 0;  // its creature's floor entries (body_floor.h) in the palette
   static std::span<const VertexAttrib> layout();
 };
 
@@ -106,6 +107,9 @@ class CreatureBatch {
   // palette(instance)[i] = world[i] · inverse_bind[i] (PaletteJob), then the mid joints from
   // their two bones (mid_joint_palette); world has one matrix per bone: bone frame → world.
   void set_world(int instance, std::span<const Mat2x3> world);
+  // A body's floor (body/body_floor.h: the box tops its flesh rests on), into its palette;
+  // a body starts without one. Ignored for sprite instances.
+  void set_floor(int instance, const BodyFloor& floor);
   // Convenience: the creature's pose through forward kinematics placed by model_to_world.
   void set_pose(int instance, const Skeleton& skeleton, std::span<const BoneLocal> locals,
                 const Mat2x3& model_to_world);
@@ -143,7 +147,7 @@ class CreatureBatch {
     uint32_t vertex_base = 0, vertex_count = 0;
     uint32_t palette_base = 0;
     int bone_count = 0;
-    int palette_count = 0;                  // bones + mid joints
+    int palette_count = 0;                  // bones + mid joints (+ a body's floor)
     std::array<uint32_t, 4> layer_begin{};  // into mesh_indices_ below (creature-local)
     uint32_t index_base = 0;                // where its indices start in mesh_indices_
     std::vector<Mat2x3> inverse_bind;

@@ -12,7 +12,7 @@
 namespace ossa {
 
 std::span<const VertexAttrib> BodyBatchVertex::layout() {
-  static const std::array<VertexAttrib, 8> kLayout{{
+  static const std::array<VertexAttrib, 9> kLayout{{
       {0, 2, GL_FLOAT, false, false, offsetof(BodyBatchVertex, position_ms)},
       {1, 2, GL_FLOAT, false, false, offsetof(BodyBatchVertex, coat)},
       {2, 4, GL_UNSIGNED_BYTE, false, true, offsetof(BodyBatchVertex, bones)},
@@ -21,6 +21,7 @@ std::span<const VertexAttrib> BodyBatchVertex::layout() {
       {5, 4, GL_UNSIGNED_BYTE, true, false, offsetof(BodyBatchVertex, pattern)},
       {6, 1, GL_UNSIGNED_INT, false, true, offsetof(BodyBatchVertex, kind)},
       {7, 1, GL_UNSIGNED_INT, false, true, offsetof(BodyBatchVertex, palette_base)},
+      {8, 1, GL_UNSIGNED_INT, false, true, offsetof(BodyBatchVertex, floor_base)},
   }};
   return kLayout;
 }
@@ -50,6 +51,7 @@ int CreatureBatch::add_body(const BodyMesh& mesh, const Skeleton& skeleton) {
     b.pattern = v.pattern;
     b.kind = v.pattern_kind;
     b.palette_base = c.palette_base;
+    b.floor_base = c.palette_base + static_cast<uint32_t>(mesh.floor_entry());
     body_vertices_.push_back(b);
   }
   body_mesh_indices_.insert(body_mesh_indices_.end(), mesh.indices.begin(), mesh.indices.end());
@@ -64,7 +66,16 @@ int CreatureBatch::add_body(const BodyMesh& mesh, const Skeleton& skeleton) {
   palette_.resize(palette_.size() + static_cast<size_t>(c.palette_count), Mat2x3::identity());
   creatures_.push_back(std::move(c));
   geometry_dirty_ = true;
-  return static_cast<int>(creatures_.size()) - 1;
+  const int instance = static_cast<int>(creatures_.size()) - 1;
+  set_floor(instance, BodyFloor{});
+  return instance;
+}
+
+void CreatureBatch::set_floor(int instance, const BodyFloor& floor) {
+  const Instance& c = creatures_[static_cast<size_t>(instance)];
+  if (!c.body) return;
+  const size_t first = static_cast<size_t>(c.bone_count) + c.mid_joints.size();
+  encode_floor(floor, palette(instance).subspan(first, static_cast<size_t>(kBodyFloorEntries)));
 }
 
 void CreatureBatch::rebuild_body_geometry() {

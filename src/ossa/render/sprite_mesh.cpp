@@ -260,6 +260,7 @@ SpriteMesh build_sprite_mesh(const Creature& creature, const SpriteSet& sprites,
       mid.turn = static_cast<float>(f + 1) / static_cast<float>(j.frames + 1);
       const Mat2x3 bind =
           mid_joint_frame(model[static_cast<size_t>(j.parent)], model[static_cast<size_t>(j.child)], mid.turn);
+      mid.rest_half = mid_joint_half_turn(model[static_cast<size_t>(j.parent)], model[static_cast<size_t>(j.child)]);
       mid.inverse_bind = inverse(bind);
       mesh.mid_joints.push_back(mid);
     }

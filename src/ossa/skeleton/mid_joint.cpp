@@ -21,9 +21,11 @@ glm::vec2 unit_sqrt(glm::vec2 z) {
 
 }  // namespace
 
-Mat2x3 mid_joint_frame(const Mat2x3& parent, const Mat2x3& child, float turn) {
-  // The child's turn relative to the parent: L_p⁻¹ L_c is a rotation (any common scale or
-  // mirror cancels), the unit complex z; its quarters are square roots, no trigonometry.
+namespace {
+
+// The child's turn relative to the parent: L_p⁻¹ L_c is a rotation (any common scale or
+// mirror cancels), the unit complex z.
+glm::vec2 relative_turn(const Mat2x3& parent, const Mat2x3& child) {
   const float a = parent.m[0], b = parent.m[1], c = parent.m[2], d = parent.m[3];
   const float det = a * d - b * c;
   glm::vec2 z(1.0f, 0.0f);
@@ -31,7 +33,19 @@ Mat2x3 mid_joint_frame(const Mat2x3& parent, const Mat2x3& child, float turn) {
     z = glm::vec2(d * child.m[0] - c * child.m[1], -b * child.m[0] + a * child.m[1]) / det;
     z /= std::max(glm::length(z), 1e-20f);
   }
-  const glm::vec2 half = unit_sqrt(z);
+  return z;
+}
+
+}  // namespace
+
+glm::vec2 mid_joint_half_turn(const Mat2x3& parent, const Mat2x3& child) { return unit_sqrt(relative_turn(parent, child)); }
+
+Mat2x3 mid_joint_frame(const Mat2x3& parent, const Mat2x3& child, float turn, glm::vec2 near_half) {
+  // Its quarters are square roots, no trigonometry. The half turn is the one nearer
+  // `near_half` (the bind pose's): a joint folded past a half turn from there keeps turning
+  // the same way instead of flipping to the shorter way round.
+  glm::vec2 half = unit_sqrt(relative_turn(parent, child));
+  if (glm::dot(half, near_half) < 0.0f) half = -half;
   glm::vec2 r = half;
   if (turn < 0.375f) {
     r = unit_sqrt(half);  // a quarter
@@ -71,7 +85,7 @@ void mid_joint_palette(std::span<const MidJoint> mid_joints, std::span<const Mat
   for (size_t i = 0; i < mid_joints.size(); ++i) {
     const MidJoint& j = mid_joints[i];
     const Mat2x3 frame = j.level ? level_frame(j, world[static_cast<size_t>(j.child)])
-                                 : mid_joint_frame(world[static_cast<size_t>(j.parent)], world[static_cast<size_t>(j.child)], j.turn);
+                                 : mid_joint_frame(world[static_cast<size_t>(j.parent)], world[static_cast<size_t>(j.child)], j.turn, j.rest_half);
     palette[bones + i] = frame * j.inverse_bind;
   }
 }

@@ -23,6 +23,9 @@ struct MidJoint {
   int parent = 0, child = 0;  // bones
   float turn = 0.5f;          // 0.25, 0.5 or 0.75
   Mat2x3 inverse_bind;        // model space → the mid frame of the bind pose
+  // Half the joint's turn in the bind pose (mid_joint_half_turn): the frames turn from there
+  // the way the joint does, even past a half turn (a foot folded up under its shin).
+  glm::vec2 rest_half{1.0f, 0.0f};
   // A level frame instead (a foot's toes, hoof or claws, which stay flat on the ground while
   // the foot bone turns over them): at `point_ls` of bone `child` (its contact point, the
   // bone's end), turned as that bone is in the rest pose, `rest_x` (its unit x axis in model
@@ -41,7 +44,11 @@ Mat2x3 level_frame(const MidJoint& j, const Mat2x3& child);
 // rounded to these) of the child's turn relative to the parent (the shorter way). Any common
 // scale or mirror of the two is kept: the frames of a creature facing left give the mirrored
 // mid frame.
-Mat2x3 mid_joint_frame(const Mat2x3& parent, const Mat2x3& child, float turn = 0.5f);
+// `near_half`: of the two half turns, the one nearer this (the bind pose's, MidJoint::rest_half;
+// the default picks the shorter way).
+Mat2x3 mid_joint_frame(const Mat2x3& parent, const Mat2x3& child, float turn = 0.5f, glm::vec2 near_half = {1.0f, 0.0f});
+// Half the child's turn relative to the parent, the shorter way, as a unit complex number.
+glm::vec2 mid_joint_half_turn(const Mat2x3& parent, const Mat2x3& child);
 // palette[bones + i] = mid_joint_frame(world[parent], world[child], turn) · inverse_bind (or
 // level_frame(j, world[child]) · inverse_bind) for every mid joint; `palette` holds
 // bone_count + mid_joints.size() entries, its bones' already set.
