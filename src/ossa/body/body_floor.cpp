@@ -32,8 +32,8 @@ BodyFloor body_floor(const Level& level, const Skeleton& skeleton, std::span<con
   for (const int h : hits) {
     const Box& box = level.box(h);
     // The highest bone over the box, or past the bones' ends the nearest one: a floor has it
-    // above its top (a bone sunk into it — a legless creature's crawl wave — still counts as
-    // over it); a ceiling or a wall higher than the creature has not.
+    // above its top, or sunk into it by less than half the flesh's reach (a legless
+    // creature's crawl wave); a ceiling or a wall higher than the creature has not.
     float ref = -1e30f, nearest = 1e30f, nearest_y = 0.0f;
     for (const glm::vec2 p : samples) {
       if (p.x >= box.min_ws.x && p.x <= box.max_ws.x) ref = std::max(ref, p.y);
@@ -41,7 +41,7 @@ BodyFloor body_floor(const Level& level, const Skeleton& skeleton, std::span<con
       if (dx < nearest) nearest = dx, nearest_y = p.y;
     }
     if (ref < -1e29f) ref = nearest_y;
-    if (box.max_ws.y > ref + 0.001f) continue;
+    if (box.max_ws.y > ref + std::max(0.001f, 0.5f * reach)) continue;
     tops.push_back({std::max(box.min_ws.x, x0), std::min(box.max_ws.x, x1), box.max_ws.y});
   }
   std::sort(tops.begin(), tops.end(), [](const glm::vec3& a, const glm::vec3& b) { return a.x < b.x || (a.x == b.x && a.z > b.z); });

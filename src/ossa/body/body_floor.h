@@ -35,7 +35,7 @@ struct BodyFloor {
 // The floor under a creature posed by `world` (its bones' frames, bone → world): the tops of
 // the boxes of `level` within `reach` metres (the flesh around its bones) of its bones' x-span
 // that lie no higher than the highest bone over them (or, past the bones' ends, the nearest
-// bone) plus 1 mm. Neighbouring tops of one height merge; when more than kBodyFloorSegments
+// bone) plus half of `reach` (bones sunk into the ground) or 1 mm. Neighbouring tops of one height merge; when more than kBodyFloorSegments
 // remain, the widest within the bones' x-span are kept.
 BodyFloor body_floor(const Level& level, const Skeleton& skeleton, std::span<const Mat2x3> world, float reach);
 
