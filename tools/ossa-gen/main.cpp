@@ -59,7 +59,8 @@ variations:
 outputs (with variations, F-1.ext .. F-K.ext):
   --out F.creature.json save the genome
   --svg F.svg           side view of the skeleton
-  --gltf F.gltf         glTF 2.0 (node hierarchy, skinned sprite mesh) via Assimp
+  --gltf F.gltf         glTF 2.0 via Assimp: the node hierarchy and, by --look, the skinned
+                        body (vertex colours), the bone sprite mesh, or both
   --obj F.obj           box proxies, one box per bone
   --summary             JSON description of the creature(s) on stdout (the default output)
   --count N             with --random --summary: N creatures from consecutive seeds, print
@@ -69,8 +70,8 @@ model:
   --sheet F.svg|F.png   all examples (seed 1 each) in a grid with their names: an SVG, or a
                         PNG drawn by the game's renderer offscreen (no display needed)
   --sheet-random N      with --sheet: N random creatures (seeds 1..N) after the examples
-  --look L              how --sheet and --svg show creatures: body (default), xray (the body
-                        translucent over the bones) or bones
+  --look L              how --sheet, --svg and --gltf show creatures: body (default), xray
+                        (the body translucent over the bones) or bones
   --dataset F           examples file (default: $OSSA_SOURCE_DIR/assets/creatures/examples.json)
   --help                this text
 )";
@@ -416,6 +417,7 @@ int run(const Args& a) {
     if (a.gltf) {
       GltfOptions o;
       o.atlas_path = atlas;
+      o.look = a.look;
       if (Status st = export_gltf(c, numbered(*a.gltf, k + 1, total), o); !st) {
         return fail(st.message());
       }
