@@ -210,6 +210,7 @@ void CreatureBatch::upload_palettes() {
   glBindBuffer(GL_TEXTURE_BUFFER, palette_buffer_);
   glBufferSubData(GL_TEXTURE_BUFFER, 0, static_cast<GLsizeiptr>(palette_.size() * sizeof(Mat2x3)),
                   palette_.data());
+  ++palette_uploads_;
   glBindBuffer(GL_TEXTURE_BUFFER, 0);
 }
 

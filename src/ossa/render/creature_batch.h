@@ -116,6 +116,8 @@ class CreatureBatch {
 
   // ONE glBufferSubData of every creature's palette into the texture buffer.
   void upload_palettes();
+  // How many uploads so far (tests and benchmarks: one per frame, sprites and bodies alike).
+  int palette_uploads() const { return palette_uploads_; }
 
   // Batched draw: binds the palette and atlas, one glDrawElements per non-empty layer.
   // The skinned program must be in use with u_view_proj set. Returns the draw calls issued.
@@ -186,6 +188,7 @@ class CreatureBatch {
   VertexArray<BodyBatchVertex> body_va_;
   VertexArray<BoneLineVertex> bone_va_;
   unsigned palette_buffer_ = 0, palette_texture_ = 0;
+  int palette_uploads_ = 0;
   size_t palette_capacity_ = 0;   // matrices the GPU buffer holds
 };
 
