@@ -313,6 +313,10 @@ int run(const Args& a) {
     if (show_body) {
       const int id = batch.add_body(*flesh, creature.skeleton);
       batch.set_pose(id, creature.skeleton, creature.rest_pose.locals, place.to_mat2x3());
+      // Its flesh rests on the ground as in the game (body_floor.h).
+      std::vector<Mat2x3> world = model_matrices(creature.skeleton, creature.rest_pose.locals);
+      for (Mat2x3& m : world) m = place.to_mat2x3() * m;
+      batch.set_floor(id, level ? body_floor(*level, creature.skeleton, world, flesh->reach) : flat_floor(ground));
     }
   }
   batch.upload_palettes();

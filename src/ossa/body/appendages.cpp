@@ -80,7 +80,7 @@ FlatPlan flat(BodyPartKind kind, std::vector<glm::vec2> outline, const Skin& ski
   return f;
 }
 
-// The axial body's back line at girth 1 between arc lengths [s0, s1] of its sections:
+// The axial body's back line at `girth` between arc lengths [s0, s1] of its sections:
 // (section index, top point, skin).
 struct BackPoint {
   glm::vec2 top, dorsal;
@@ -89,7 +89,7 @@ struct BackPoint {
   float s;
 };
 
-std::vector<BackPoint> back_line(const BodyRig& rig, const TubePlan& axial, float s0, float s1) {
+std::vector<BackPoint> back_line(const BodyRig& rig, const TubePlan& axial, float s0, float s1, float girth) {
   std::vector<BackPoint> out;
   // Section arc lengths: distances along the centre line from the snout.
   float s = 0.0f;
@@ -97,7 +97,7 @@ std::vector<BackPoint> back_line(const BodyRig& rig, const TubePlan& axial, floa
     if (i > 0) s += glm::length(axial.sections[i].centre - axial.sections[i - 1].centre);
     if (s < s0 || s > s1) continue;
     const Section& sec = axial.sections[i];
-    out.push_back({section_top(sec, 1.0f), sec.dorsal, sec.top(1.0f) + sec.bottom(1.0f), sec.skin, s});
+    out.push_back({section_top(sec, girth), sec.dorsal, sec.top(girth) + sec.bottom(girth), sec.skin, s});
   }
   (void)rig;
   return out;
@@ -105,7 +105,7 @@ std::vector<BackPoint> back_line(const BodyRig& rig, const TubePlan& axial, floa
 
 }  // namespace
 
-void plan_appendages(const BodyRig& rig, BodyParts& plan) {
+void plan_appendages(const BodyRig& rig, BodyParts& plan, float girth) {
   const Creature& c = *rig.creature;
   const Look& look = c.look;
   const float B = rig.back_length;
@@ -263,7 +263,7 @@ void plan_appendages(const BodyRig& rig, BodyParts& plan) {
         break;
       }
       case AppendageKind::kMane: {
-        const std::vector<BackPoint> line = back_line(rig, *axial, rig.snout_s, rig.shoulder_s + 0.12f * B);
+        const std::vector<BackPoint> line = back_line(rig, *axial, rig.snout_s, rig.shoulder_s + 0.12f * B, girth);
         if (line.size() < 2) break;
         std::vector<glm::vec2> inner, outer;
         std::vector<Skin> skins;
@@ -293,7 +293,7 @@ void plan_appendages(const BodyRig& rig, BodyParts& plan) {
         const bool sail = a.kind == AppendageKind::kSail;
         const float back_len = rig.hip_s - rig.shoulder_s;
         const float s0 = rig.shoulder_s + (sail ? 0.08f : 0.35f) * back_len, s1 = rig.shoulder_s + (sail ? 0.92f : 0.65f) * back_len;
-        const std::vector<BackPoint> line = back_line(rig, *axial, s0, s1);
+        const std::vector<BackPoint> line = back_line(rig, *axial, s0, s1, girth);
         if (line.size() < 2) break;
         const float height = k * (sail ? 0.45f : 0.16f) * B;
         std::vector<glm::vec2> pts;
@@ -326,7 +326,7 @@ void plan_appendages(const BodyRig& rig, BodyParts& plan) {
       case AppendageKind::kPlates: {
         const float s0 = rig.shoulder_s + 0.05f * (rig.hip_s - rig.shoulder_s);
         const float s1 = rig.hip_s + 0.6f * (rig.tail_s - rig.hip_s);
-        const std::vector<BackPoint> line = back_line(rig, *axial, s0, s1);
+        const std::vector<BackPoint> line = back_line(rig, *axial, s0, s1, girth);
         const int plates = 11;
         if (line.size() < 2) break;
         for (int i = 0; i < plates; ++i) {
@@ -362,7 +362,7 @@ void plan_appendages(const BodyRig& rig, BodyParts& plan) {
         // line, from a little before the shoulder to a little behind the hip.
         const float back_len = rig.hip_s - rig.shoulder_s;
         const float s0 = rig.shoulder_s - 0.1f * back_len, s1 = rig.hip_s + 0.1f * back_len;
-        const std::vector<BackPoint> line = back_line(rig, *axial, s0, s1);
+        const std::vector<BackPoint> line = back_line(rig, *axial, s0, s1, girth);
         if (line.size() < 3) break;
         TubePlan t;
         t.kind = BodyPartKind::kShell;

@@ -116,7 +116,10 @@ void plan_axial(const BodyRig& rig, BodyParts& plan) {
   // Legless bodies: swimmers (with fins) are deep-bodied, a snake's body is a slim tube; their
   // generated ribs (one generic length) say nothing about it.
   const bool swimmer = !legs && c.count(LimbKind::kFin) > 0;
-  const float min_chest = legs ? 0.3f * B : swimmer ? 0.3f * B : 0.05f * B;
+  // A legged body whose girdles stand low (crocodiles, lizards, salamanders, tortoises) is
+  // low-slung: a shallower chest, and wider than deep (below).
+  const bool low_slung = legs && girdle_height < 0.4f * B;
+  const float min_chest = legs ? (low_slung ? 0.18f : 0.3f) * B : swimmer ? 0.3f * B : 0.05f * B;
   float chest = std::max(max_rib > 0.0f ? max_rib : (legs ? std::clamp(0.45f * shoulder_height, 0.12f * B, 0.4f * B) : 0.08f * B), min_chest);
   if (!legs) {
     chest = min_chest;
@@ -184,9 +187,12 @@ void plan_axial(const BodyRig& rig, BodyParts& plan) {
       float depth = s <= last_rib_s ? rib_depth(s) : 0.92f * rib_depth(last_rib_s);
       const float rise = smooth01(flank_from, rig.hip_s, s);
       depth = depth + (std::max(hip_depth, 0.35f * depth) - depth) * rise;
-      const float front = smooth01(rig.shoulder_s, rig.shoulder_s + 0.15f * back_len, s);
+      // Without a neck to grow into (fish, whales, many reptiles) the trunk rises from the
+      // head's height over a longer stretch, as a fish's body swells behind its gills.
+      const float short_neck = 1.0f - smooth01(0.0f, 0.15f * B, neck_len);
+      const float front = smooth01(rig.shoulder_s, rig.shoulder_s + (0.15f + 0.3f * short_neck) * back_len, s);
       const Profile here{top, top_soft, depth * 0.12f, 0.88f * depth + 0.035f * B * (1.0f - 0.6f * rise)};
-      return mix(trunk_front, here, front);
+      return mix(mix(trunk_front, head_back, short_neck), here, front);
     }
     // Tail: tapering with the vertebrae; the last sections round off to the tip.
     const float u = tail_len > 0.0f ? std::clamp((s - rig.hip_s) / tail_len, 0.0f, 1.0f) : 1.0f;
@@ -287,14 +293,16 @@ void plan_axial(const BodyRig& rig, BodyParts& plan) {
   }
   // A legged body whose belly the ground's clearance caps is low-slung (crocodiles,
   // salamanders, tortoises, frogs): wider than deep, its cross-sections 1.3 times as wide as
-  // high (body_mass.h); a fish is flattened from side to side (0.55); whales (0.9) and snakes
-  // (1) are round; birds 0.53 (below); others 0.8.
+  // high (body_mass.h), 1.5 when its girdles stand lower than 0.4 back lengths; a fish is
+  // flattened from side to side (0.55); whales (0.9) and snakes (1) are round; birds 0.53
+  // (below); others 0.8.
   float wanted = 0.0f, kept = 0.0f;
   for (const Section& sec : tube.sections) {
     wanted += sec.bottom_fixed + sec.bottom_soft;
     kept += sec.bottom(1.0f);
   }
   if (legs && wanted > 0.0f && kept < 0.7f * wanted) tube.depth = 1.3f;
+  if (low_slung) tube.depth = 1.5f;
   // A bird's feathered outline is deeper than its body is wide, and a bird is lighter than
   // water (air sacs, hollow bones): 0.75 wide × 0.7 dense.
   if (c.skull_variant == 1 && c.count(LimbKind::kWing) > 0) tube.depth = 0.53f;

@@ -148,6 +148,7 @@ BodyMesh build_body(const Creature& c, const BodyOptions& options) {
   BodyParts parts;
   plan_axial(rig, parts);
   plan_limbs(rig, parts);
+  const size_t tubes_before = parts.tubes.size(), flats_before = parts.flats.size();
   plan_appendages(rig, parts);
   mesh.mid_joints = rig.mid_joints;
   OSSA_ASSERT(mesh.floor_entry() <= 256, "build_body: palette entries beyond uint8 indices");
@@ -186,6 +187,12 @@ BodyMesh build_body(const Creature& c, const BodyOptions& options) {
     girth = 0.5f * (lo + hi);
   }
   mesh.girth = girth;
+  // The appendages again on the back line as it now lies (planned at girth 1 for the solve).
+  parts.tubes.resize(tubes_before);
+  parts.flats.resize(flats_before);
+  plan_appendages(rig, parts, girth);
+  for (size_t i = tubes_before; i < parts.tubes.size(); ++i) parts.tubes[i].depth *= mesh.depth_scale;
+  for (size_t i = flats_before; i < parts.flats.size(); ++i) parts.flats[i].depth *= mesh.depth_scale;
   for (TubePlan& t : parts.tubes) {
     unfold_sections(t.sections, tube_girth(t, girth));
     untangle_tube(t, tube_girth(t, girth));

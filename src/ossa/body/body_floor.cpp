@@ -64,6 +64,13 @@ BodyFloor body_floor(const Level& level, const Skeleton& skeleton, std::span<con
   return floor;
 }
 
+BodyFloor flat_floor(float top) {
+  BodyFloor floor;
+  floor.count = 1;
+  floor.segments[0] = {-1e30f, 1e30f, top};
+  return floor;
+}
+
 glm::vec2 floor_point(glm::vec2 p, const BodyFloor& floor) {
   for (int k = 0; k < kBodyFloorSegments; ++k) {
     const glm::vec3& s = floor.segments[static_cast<size_t>(k)];

@@ -39,6 +39,10 @@ struct BodyFloor {
 // remain, the widest within the bones' x-span are kept.
 BodyFloor body_floor(const Level& level, const Skeleton& skeleton, std::span<const Mat2x3> world, float reach);
 
+// A level ground at `top` under everything (pictures of a creature standing on a plain
+// ground line: ossa-render without a level, creature images, contact sheets).
+BodyFloor flat_floor(float top);
+
 // `p` (world) lifted onto the highest floor top under it when it lies below that top.
 glm::vec2 floor_point(glm::vec2 p, const BodyFloor& floor);
 

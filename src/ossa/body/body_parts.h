@@ -154,7 +154,9 @@ BodyRig make_rig(const Creature& creature);
 // Part builders (append to plan).
 void plan_axial(const BodyRig& rig, BodyParts& plan);
 void plan_limbs(BodyRig& rig, BodyParts& plan);
-void plan_appendages(const BodyRig& rig, BodyParts& plan);
+// Appendages on the back (mane, sail, dorsal fin, plates, shell) sit on the axial body's back
+// line at `girth` (build_body plans them again once the girth is known).
+void plan_appendages(const BodyRig& rig, BodyParts& plan, float girth = 1.0f);
 
 // The dorsal unit normal of a tangent: the tangent turned a quarter clockwise (a chain running
 // tailward, -x, has +y dorsal).

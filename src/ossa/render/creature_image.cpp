@@ -77,7 +77,11 @@ Result<Image> render_creature_image(Renderer& renderer, const Atlas& atlas, cons
     CreatureBatch batch;
     const auto& locals = have_rest ? creature.rest_pose.locals : skeleton.rest_locals();
     if (sprites) batch.set_pose(batch.add(*mesh, skeleton), skeleton, locals, Mat2x3::identity());
-    if (body) batch.set_pose(batch.add_body(*body, skeleton), skeleton, locals, Mat2x3::identity());
+    if (body) {
+      const int id = batch.add_body(*body, skeleton);
+      batch.set_pose(id, skeleton, locals, Mat2x3::identity());
+      if (options.ground) batch.set_floor(id, flat_floor(0.0f));  // the flesh rests on the ground line
+    }
     batch.upload_palettes();
     renderer.begin_frame(*target, glm::vec4(0.0f));  // transparent black: see composite_over
     const float aspect = static_cast<float>(options.width) / static_cast<float>(options.height);
