@@ -148,51 +148,54 @@ BodyMesh build_body(const Creature& c, const BodyOptions& options) {
   BodyParts parts;
   plan_axial(rig, parts);
   plan_limbs(rig, parts);
-  const size_t tubes_before = parts.tubes.size(), flats_before = parts.flats.size();
-  plan_appendages(rig, parts);
   mesh.mid_joints = rig.mid_joints;
   OSSA_ASSERT(mesh.floor_entry() <= 256, "build_body: palette entries beyond uint8 indices");
+  const BodyParts base = parts;  // before the appendages, which sit on the back line
 
   // The girth: the factor on muscle and fat that gives the body the mass its weight asks for.
+  // Appendages on the back move with it, so it is solved twice: with them planned at girth 1,
+  // then planned where that girth puts the back line.
+  plan_appendages(rig, parts);
   mesh.default_mass_kg = static_cast<float>(plan_mass(parts, 1.0f));
   const double target = c.body_mass_kg ? static_cast<double>(*c.body_mass_kg)
                                        : static_cast<double>(mesh.default_mass_kg) * c.look.fatness;
-  float lo = options.min_girth, hi = options.max_girth, girth = 1.0f;
-  if (plan_mass(parts, lo) >= target) {
-    // Heavier than the weight even as lean as a body gets (a skeleton large for its weight,
-    // or a laterally slim animal: a chameleon): the silhouette stays at the least girth and
-    // the body is narrower across instead, every part's depth scaled (body_mass.h).
-    girth = lo;
-    const double at_least = plan_mass(parts, lo);
-    const float scale = at_least > 0.0 ? static_cast<float>(target / at_least) : 1.0f;
-    mesh.depth_scale = std::max(scale, options.min_depth_scale);
-    for (TubePlan& t : parts.tubes) t.depth *= mesh.depth_scale;
-    for (FlatPlan& f : parts.flats) f.depth *= mesh.depth_scale;
-    mesh.mass_matched = scale >= options.min_depth_scale;
-  } else if (plan_mass(parts, hi) <= target) {
-    // Lighter than the weight even as stout as a silhouette gets (a skeleton small for its
-    // weight: a frog, an ichthyostega): wider across instead, every depth scaled up.
-    girth = hi;
-    const double at_most = plan_mass(parts, hi);
-    const float scale = at_most > 0.0 ? static_cast<float>(target / at_most) : 1.0f;
-    mesh.depth_scale = std::min(scale, options.max_depth_scale);
-    for (TubePlan& t : parts.tubes) t.depth *= mesh.depth_scale;
-    for (FlatPlan& f : parts.flats) f.depth *= mesh.depth_scale;
-    mesh.mass_matched = scale <= options.max_depth_scale;
-  } else {
-    for (int i = 0; i < 28 && hi - lo > 1e-4f; ++i) {
-      girth = 0.5f * (lo + hi);
-      (plan_mass(parts, girth) < target ? lo : hi) = girth;
+  float girth = 1.0f;
+  for (int round = 0; round < 2; ++round) {
+    if (round > 0) {
+      parts = base;
+      plan_appendages(rig, parts, girth);
     }
-    girth = 0.5f * (lo + hi);
+    float lo = options.min_girth, hi = options.max_girth;
+    mesh.depth_scale = 1.0f;
+    mesh.mass_matched = true;
+    if (plan_mass(parts, lo) >= target) {
+      // Heavier than the weight even as lean as a body gets (a skeleton large for its weight,
+      // or a laterally slim animal: a chameleon): the silhouette stays at the least girth and
+      // the body is narrower across instead, every part's depth scaled (body_mass.h).
+      girth = lo;
+      const double at_least = plan_mass(parts, lo);
+      const float scale = at_least > 0.0 ? static_cast<float>(target / at_least) : 1.0f;
+      mesh.depth_scale = std::max(scale, options.min_depth_scale);
+      mesh.mass_matched = scale >= options.min_depth_scale;
+    } else if (plan_mass(parts, hi) <= target) {
+      // Lighter than the weight even as stout as a silhouette gets (a skeleton small for its
+      // weight: a frog, an ichthyostega): wider across instead, every depth scaled up.
+      girth = hi;
+      const double at_most = plan_mass(parts, hi);
+      const float scale = at_most > 0.0 ? static_cast<float>(target / at_most) : 1.0f;
+      mesh.depth_scale = std::min(scale, options.max_depth_scale);
+      mesh.mass_matched = scale <= options.max_depth_scale;
+    } else {
+      for (int i = 0; i < 28 && hi - lo > 1e-4f; ++i) {
+        girth = 0.5f * (lo + hi);
+        (plan_mass(parts, girth) < target ? lo : hi) = girth;
+      }
+      girth = 0.5f * (lo + hi);
+    }
   }
+  for (TubePlan& t : parts.tubes) t.depth *= mesh.depth_scale;
+  for (FlatPlan& f : parts.flats) f.depth *= mesh.depth_scale;
   mesh.girth = girth;
-  // The appendages again on the back line as it now lies (planned at girth 1 for the solve).
-  parts.tubes.resize(tubes_before);
-  parts.flats.resize(flats_before);
-  plan_appendages(rig, parts, girth);
-  for (size_t i = tubes_before; i < parts.tubes.size(); ++i) parts.tubes[i].depth *= mesh.depth_scale;
-  for (size_t i = flats_before; i < parts.flats.size(); ++i) parts.flats[i].depth *= mesh.depth_scale;
   for (TubePlan& t : parts.tubes) {
     unfold_sections(t.sections, tube_girth(t, girth));
     untangle_tube(t, tube_girth(t, girth));
