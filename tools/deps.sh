@@ -11,7 +11,7 @@ OSSA_PACKAGES=(
   catch2 libbenchmark-dev
   libsdl2-dev libsdl2-image-dev libepoxy-dev libassimp-dev libimgui-dev libstb-dev libgif-dev
   xvfb xdotool librsvg2-bin
-  clang-14 libfuzzer-14-dev
+  clang-14 libfuzzer-14-dev ccache
 )
 
 ossa_install_deps() {
@@ -34,10 +34,21 @@ ossa_install_deps() {
   $sudo apt-get install -y -qq --no-install-recommends "${missing[@]}"
 }
 
+# Compiler caching (ccache, when installed): an unchanged tree rebuilds in seconds, also in
+# another clone of it (paths below the tree are hashed relative to it) and after `rm -rf build`.
+# OSSA_CCACHE=0 turns it off.
+ossa_launcher=(-DCMAKE_CXX_COMPILER_LAUNCHER= -DCMAKE_C_COMPILER_LAUNCHER=)
+if [ "${OSSA_CCACHE:-1}" != "0" ] && command -v ccache >/dev/null; then
+  ossa_launcher=(-DCMAKE_CXX_COMPILER_LAUNCHER=ccache -DCMAKE_C_COMPILER_LAUNCHER=ccache)
+  export CCACHE_BASEDIR="$OSSA_ROOT"
+  export CCACHE_SLOPPINESS="${CCACHE_SLOPPINESS:-pch_defines,time_macros,include_file_mtime,include_file_ctime}"
+  export CCACHE_NOHASHDIR=1
+fi
+
 # ossa_build DIR BUILD_TYPE [extra cmake args...]
 ossa_build() {
   local dir="$1" type="$2"
   shift 2
-  cmake -S "$OSSA_ROOT" -B "$dir" -G Ninja -DCMAKE_BUILD_TYPE="$type" "$@" >/dev/null
+  cmake -S "$OSSA_ROOT" -B "$dir" -G Ninja -DCMAKE_BUILD_TYPE="$type" "${ossa_launcher[@]}" "$@" >/dev/null
   cmake --build "$dir" -j "$OSSA_JOBS"
 }

@@ -78,7 +78,7 @@ std::string Game::creature_name() const {
 }
 
 bool Game::replay_finished() const {
-  return impl_->playback && impl_->playback_tick >= impl_->playback->ticks.size();
+  return impl_->playback && impl_->playback_cursor.done();
 }
 
 // ---- [SECTION] init -------------------------------------------------------------------------
@@ -94,6 +94,18 @@ Status Game::init(const GameOptions& o) {
   const int sources = (o.creature_file.empty() ? 0 : 1) + (o.example.empty() ? 0 : 1) + (o.seed ? 1 : 0) +
                       (o.character.empty() ? 0 : 1);
   if (sources > 1) return Error{"give only one of --creature, --example, --seed, --character"};
+  // No output may be one of the inputs (io/file.h).
+  {
+    std::vector<std::string> inputs;
+    for (const std::string* in : {&o.level, &o.replay, &o.creature_file, &o.character}) {
+      if (!in->empty()) inputs.push_back(resolve_data_path(*in));
+    }
+    for (const auto& [flag, path] : {std::pair{"--record", &o.record}, std::pair{"--state", &o.state},
+                                     std::pair{"--png", &o.png}, std::pair{"--gif", &o.gif}}) {
+      if (path->empty()) continue;
+      if (Status st = check_output_path(flag, *path, inputs); !st) return st;
+    }
+  }
 
   // Replay first: it fixes the creature, the spawn and the tick rate.
   int tick_hz = o.tick_hz;
@@ -103,6 +115,7 @@ Status Game::init(const GameOptions& o) {
     auto r = load_replay(o.replay);
     if (!r.ok()) return r.error();
     m.playback = std::move(r.value());
+    m.playback_cursor = ReplayCursor(&*m.playback);
     tick_hz = m.playback->tick_hz;
     if (level_path.empty() && !m.playback->level.empty()) level_path = m.playback->level;
   }
@@ -311,8 +324,8 @@ bool Game::frame(double dt_seconds) {
   int steps = 0;
   while (m.accumulator >= tick && steps < options_.max_steps_per_frame) {
     Controls c;
-    if (m.playback && m.playback_tick < m.playback->ticks.size()) {
-      c = m.playback->ticks[m.playback_tick++];
+    if (m.playback && !m.playback_cursor.done()) {
+      c = m.playback_cursor.next();
       m.input_name = "replay";
     } else if (m.playback && options_.headless && options_.frames == 0) {
       break;  // a headless playback ends with its replay
@@ -328,7 +341,7 @@ bool Game::frame(double dt_seconds) {
     m.snapshot_all(*world_, false);
     world_->step(c);
     m.after_step(*world_);
-    if (m.recording) m.record.ticks.push_back(c);
+    if (m.recording) m.record.push(c);
     last_controls_ = c;
     m.accumulator -= tick;
     ++steps;

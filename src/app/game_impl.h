@@ -72,7 +72,7 @@ struct Game::Impl {
 
   // Input sources.
   std::optional<Replay> playback;
-  size_t playback_tick = 0;
+  ReplayCursor playback_cursor;  // over *playback
   std::vector<ScriptSegment> demo;
   std::string input_name = "keyboard";
 

@@ -12,6 +12,8 @@
 
 #include "app/game_impl.h"
 #include "ossa/gen/skeleton_builder.h"
+#include "ossa/io/data_dir.h"
+#include "ossa/level/level_load.h"
 #include "ossa/render/background.h"
 #include "ossa/render/debug_draw.h"
 #include "ossa/render/gl.h"
@@ -266,24 +268,23 @@ void Game::Impl::render(Game& game, float alpha) {
   add_background(scene, r.camera, style);
   r.draw_debug(scene);
   if (level.background && !level.background->image.empty()) {
-    // The level's image behind the hills' place, tiled horizontally and scrolled by its
-    // parallax: a tile's world x is camera.x·(1 − parallax) + k·tile width.
-    auto it = images.find(level.background->image);
+    // The level's image behind the hills' place, repeated and scrolled by its parallax in one
+    // draw (background.h).
+    const std::string key = level_path + "\n" + level.background->image;
+    auto it = images.find(key);
     if (it == images.end()) {
-      it = images.emplace(level.background->image,
-                          Texture::load(resolve_data_path("assets/" + level.background->image))).first;
-    }
-    if (it->second.is_valid()) {
-      const Box view = r.camera.visible_box();
-      const float tile_h = view.height();
-      const float tile_w = tile_h * static_cast<float>(it->second.width()) / std::max(1, it->second.height());
-      const float origin = camera_ws.x * (1.0f - level.background->parallax);
-      const float k0 = std::floor((view.min_ws.x - origin) / tile_w);
-      for (float k = k0; origin + k * tile_w < view.max_ws.x; k += 1.0f) {
-        const float x = origin + k * tile_w;
-        r.draw_textured_box(it->second, {{x, view.min_ws.y}, {x + tile_w, view.max_ws.y}});
+      // Relative to the level's folder (level_load.h resolve_level_resource), else assets/.
+      Result<std::string> file = resolve_level_resource(resolve_data_path(level_path), "background.image",
+                                                        level.background->image, data_path("assets"));
+      Texture texture;
+      if (file) {
+        texture = Texture::load(*file, Texture::Wrap::kRepeat);
+      } else {
+        render_log(file.message() + " (no background image)");
       }
+      it = images.emplace(key, std::move(texture)).first;
     }
+    draw_background_image(r, it->second, level.background->parallax);
   }
   DebugDraw ground;
   add_level_scenery(ground, level, r.camera.visible_box());

@@ -3,6 +3,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <exception>
+#include <filesystem>
 #include <fstream>
 #include <string>
 #include <vector>
@@ -48,7 +49,8 @@ int main(int argc, char** argv) {
     paths.rig_file = ossa::resolve_data_path(o.character.empty() ? "assets/characters/humanoid.rig.json" : o.character);
     paths.characters = ossa::shipped_characters();
     // Tuning saved from the tuning panel is loaded again at start.
-    if (std::ifstream(paths.tuning_file).good()) {
+    std::error_code tuning_missing;  // (exists, not an open: a pipe would block here)
+    if (std::filesystem::exists(paths.tuning_file, tuning_missing)) {
       if (auto params = ossa::load_params(paths.tuning_file); params.ok()) {
         game.world().set_params(*params);
       } else {

@@ -18,7 +18,7 @@ TEST_CASE("body placement keeps every stance leg within reach and the girdles ab
   // body placed from them at once: on flat ground no stance leg over-extends (its anchor lies
   // within its reach of the girdle joint); on stairs, where a girdle over a higher step may
   // have to rise past what a foot on a lower one reaches, such a foot is told to lift
-  // (TickHandoff::lift_now) and there are few of them. Every girdle stays above the ground.
+  // (TickHandoff::release_next) and there are few of them. Every girdle stays above the ground.
   Rng rng(7);
   for (const bool on_stairs : {false, true}) {
     const Level level = on_stairs ? scenes::stairs_level(8, 0.12f, 0.35f) : scenes::flat_level(40.0f);
@@ -42,10 +42,10 @@ TEST_CASE("body placement keeps every stance leg within reach and the girdles ab
         }
         anim::BodyState state;
         anim::TickHandoff handoff;
-        handoff.lift_now.assign(rig.legs.size(), 0);
+        handoff.resize(rig.legs.size());
         anim::PlacementInputs in;
         in.dt = 0.0f;  // placed at once
-        anim::place_body(s.ctx, in, feet, s.body, state, handoff);
+        anim::place_body(s.ctx, in, feet, handoff, s.body, state);
         for (size_t i = 0; i < rig.legs.size(); ++i) {
           const glm::vec2 joint = s.body.to_fs(s.body.girdle_ws(rig, rig.legs[i].girdle));
           float r;
@@ -55,9 +55,9 @@ TEST_CASE("body placement keeps every stance leg within reach and the girdles ab
                       << glm::length(anchor - joint) - r);
           const bool in_reach = glm::length(anchor - joint) <= r * 1.0001f;
           if (!on_stairs) CHECK(in_reach);
-          if (!in_reach) CHECK(handoff.lift_now[i]);
+          if (!in_reach) CHECK(handoff.release_next[i]);
           ++legs;
-          released += handoff.lift_now[i] ? 1 : 0;
+          released += handoff.release_next[i] ? 1 : 0;
         }
         for (size_t g = 0; g < rig.girdles.size(); ++g) {
           const glm::vec2 joint = s.body.girdle_ws(rig, static_cast<int>(g));
@@ -88,9 +88,9 @@ TEST_CASE("body placement pitches the body up a slope and keeps it level on flat
     }
     anim::BodyState state;
     anim::TickHandoff handoff;
-    handoff.lift_now.assign(rig.legs.size(), 0);
+    handoff.resize(rig.legs.size());
     anim::PlacementInputs in;
-    anim::place_body(s.ctx, in, feet, s.body, state, handoff);
+    anim::place_body(s.ctx, in, feet, handoff, s.body, state);
     const float ground_pitch = std::atan(rise / 0.05f);
     CHECK(s.body.pitch == Approx(ground_pitch).margin(0.05));
   }

@@ -104,18 +104,19 @@ TEST_CASE("gait clock: a foot lifts when its phase crosses the duty factor", "[a
   anim::FootSet feet;
   feet.feet.resize(rig->legs.size());
   feet.foot_of_leg = {0, 1};
-  for (size_t i = 0; i < rig->legs.size(); ++i) feet.feet[i].offset = gait.target_offset[i];
+  anim::reset_offsets(*rig, feet, gait);
+  for (size_t i = 0; i < rig->legs.size(); ++i) gait.foot_offset[i] = gait.target_offset[i];
   anim::start_clock(gait, feet, 0);
   // The lead leg lifts on the first tick; the other one half a cycle later.
-  CHECK(anim::advance_leg_phase(gait, feet.feet[0], gait.target_offset[0], true, 1.0f, 1.0f / 120.0f).lift_due);
-  CHECK_FALSE(anim::advance_leg_phase(gait, feet.feet[1], gait.target_offset[1], true, 1.0f, 1.0f / 120.0f).lift_due);
+  CHECK(anim::advance_leg_phase(gait, 0, true, gait.target_offset[0], true, 1.0f, 1.0f / 120.0f).lift_due);
+  CHECK_FALSE(anim::advance_leg_phase(gait, 1, true, gait.target_offset[1], true, 1.0f, 1.0f / 120.0f).lift_due);
   int ticks = 0;
   bool lifted = false;
   while (!lifted && ticks < 1000) {
     gait.phase = anim::frac(gait.phase + gait.frequency / 120.0f);
-    const anim::LegPhase p = anim::advance_leg_phase(gait, feet.feet[1], gait.target_offset[1], false, 1.0f, 1.0f / 120.0f);
+    const anim::LegPhase p = anim::advance_leg_phase(gait, 1, true, gait.target_offset[1], false, 1.0f, 1.0f / 120.0f);
     lifted = p.lift_due;
-    feet.feet[1].phase_prev = p.phase;
+    anim::end_leg_phase(gait, 1, p);
     ++ticks;
   }
   CHECK(lifted);

@@ -38,7 +38,7 @@ TEST_CASE("creature panel: the look is one undo step, clamped, and reaches the c
   CHECK(m.genome().look.pattern == CoatPattern::kStripes);
 }
 
-TEST_CASE("creature panel: a colour or slider drag is one step; a random look follows the seed", "[editor]") {
+TEST_CASE("creature panel: a colour or slider drag is one step, and a random look follows the seed", "[editor]") {
   UndoStack undo;
   CreaturePanelModel m(scenes::generator(), undo, "pig");
   const Look before = m.genome().look;

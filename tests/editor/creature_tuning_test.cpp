@@ -135,10 +135,10 @@ TEST_CASE("creature panel: genome save/load, SVG export, variation and callbacks
   REQUIRE((applied == 1 && spawned == 1));
 }
 
-TEST_CASE("tuning: every field has a unit and a range holding its default; edits clamp and undo", "[editor]") {
+TEST_CASE("tuning: every field has a unit and a range holding its default, edits clamp and undo", "[editor]") {
   const AnimatorParams defaults;
   const auto fields = tuning_fields();
-  REQUIRE(fields.size() == 21);
+  REQUIRE(fields.size() == 26);  // every float of AnimatorParams (gait_override has a control of its own)
   for (const TuningField& f : fields) {
     INFO(f.name);
     REQUIRE(std::string(f.unit).size() > 0);
@@ -292,6 +292,25 @@ TEST_CASE("tuning: files round trip, bad values are reported, a failing save kee
   REQUIRE_FALSE(m.last_error().empty());
   REQUIRE(read_file(path).value() == text);
   REQUIRE(m.dirty());
+}
+
+
+TEST_CASE("tuning: the documented range ends load (float ends, not their doubles)", "[editor]") {
+  // stance_height's range is [0.7, 1.05]: a hand-written 1.05 was refused ("got 1.05") and
+  // the whole file ignored.
+  const Json doc = Json::parse(R"({"format": "ossa.tuning", "version": 1, "params": {"stance_height": 1.05}})");
+  Result<AnimatorParams> p = params_from_json(doc, "t.json");
+  INFO((p.ok() ? std::string() : p.message()));
+  REQUIRE(p.ok());
+  CHECK(p->stance_height == 1.05f);
+  for (const TuningField& f : tuning_fields()) {
+    for (const float end : {f.min, f.max}) {
+      Json d = Json::parse(R"({"format": "ossa.tuning", "version": 1, "params": {}})");
+      d["params"][f.name] = json_float(end);
+      INFO(f.name << " = " << end);
+      CHECK(params_from_json(d, "t.json").ok());
+    }
+  }
 }
 
 }  // namespace

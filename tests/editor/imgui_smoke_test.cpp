@@ -222,7 +222,7 @@ TEST_CASE("imgui smoke: every window draws, with screenshots on request", "[edit
   REQUIRE(ImGui::IsPopupOpen("", ImGuiPopupFlags_AnyPopupId | ImGuiPopupFlags_AnyPopupLevel));
 }
 
-TEST_CASE("imgui smoke: the rig window shows the character walking; edits undo; apply makes the player it", "[editor][imgui]") {
+TEST_CASE("imgui smoke: the rig window shows the character walking, edits undo, apply makes the player it", "[editor][imgui]") {
   Scene s;
   s.suite->show_level = false;
   s.suite->show_splines = false;

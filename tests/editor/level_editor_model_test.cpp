@@ -200,6 +200,14 @@ TEST_CASE("level editor: hot reload picks up outside changes, keeps state on par
   REQUIRE_FALSE(f.m.poll_file());
   REQUIRE(f.level == other);
   REQUIRE(f.m.last_error().find("reload failed") != std::string::npos);
+  // A file nested 300 000 deep replacing the level (it crashed the game, losing the editor's
+  // work): refused like any broken file.
+  REQUIRE(write_file_atomic(path, "{\"format\": \"ossa.level\", \"name\": " + std::string(300000, '[') +
+                                      std::string(300000, ']') + "}").ok());
+  fs::last_write_time(path, fs::last_write_time(path) + std::chrono::seconds(5));
+  REQUIRE_FALSE(f.m.poll_file());
+  REQUIRE(f.level == other);
+  REQUIRE(f.m.last_error().find("nested more than 256") != std::string::npos);
   // Unsaved edits are never overwritten by a reload.
   f.m.add_box({40.0f, 3.0f}, {1.0f, 1.0f});
   REQUIRE(save_level(path, other).ok());

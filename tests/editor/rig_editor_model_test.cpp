@@ -46,7 +46,7 @@ TEST_CASE("the rig model opens a mapping with its mesh: bone tree, parts and the
   CHECK(m.character());  // the open document stays
 }
 
-TEST_CASE("a leg is three clicks; a mapping that cannot build says why; undo and redo", "[editor][rig]") {
+TEST_CASE("a leg is three clicks, a mapping that cannot build says why, undo and redo", "[editor][rig]") {
   UndoStack undo;
   RigEditorModel m(undo);
   REQUIRE(m.open_mapping(humanoid()).ok());
@@ -101,7 +101,7 @@ TEST_CASE("a leg is three clicks; a mapping that cannot build says why; undo and
   CHECK(m.mapping().legs[0].contact->x == 0.15f);
 }
 
-TEST_CASE("the rig model saves atomically; the saved mapping loads back and builds", "[editor][rig]") {
+TEST_CASE("the rig model saves atomically, the saved mapping loads back and builds", "[editor][rig]") {
   UndoStack undo;
   RigEditorModel m(undo);
   REQUIRE(m.open_mapping(humanoid()).ok());

@@ -112,7 +112,7 @@ TEST_CASE("spline editor: added and removed keys stay matched in walk and run", 
   REQUIRE(same(f.m.prototypes(), SplinePrototypes::defaults()));
 }
 
-TEST_CASE("spline editor: numeric edits are validated; preview blends walk and run", "[editor]") {
+TEST_CASE("spline editor: numeric edits are validated, preview blends walk and run", "[editor]") {
   Fixture f;
   f.m.pick(PrototypeId::kLegSwingY);
   const auto& w = f.m.pair().walk.keys;

@@ -12,9 +12,11 @@ function(run)
 endfunction()
 
 run(${CMAKE_COMMAND} --install ${OSSA_BUILD_DIR} --prefix ${prefix})
-set(extra "")
-if(OSSA_SANITIZE)
-  set(extra "-DCMAKE_CXX_FLAGS=-fsanitize=address,undefined" "-DCMAKE_EXE_LINKER_FLAGS=-fsanitize=address,undefined")
+# The consumer is built by the same compiler as ossa (a sanitizer runtime is the compiler's
+# own), with the same sanitizers.
+set(extra "-DCMAKE_CXX_COMPILER=${CXX_COMPILER}")
+if(OSSA_SANITIZE OR OSSA_FUZZ)
+  list(APPEND extra "-DCMAKE_CXX_FLAGS=-fsanitize=address,undefined" "-DCMAKE_EXE_LINKER_FLAGS=-fsanitize=address,undefined")
 endif()
 run(${CMAKE_COMMAND} -S ${EMBED_SOURCE_DIR} -B ${WORK_DIR}/build -DCMAKE_PREFIX_PATH=${prefix} -DCMAKE_BUILD_TYPE=Release ${extra})
 run(${CMAKE_COMMAND} --build ${WORK_DIR}/build)

@@ -14,6 +14,7 @@
 #include "ossa/gen/skeleton_builder.h"
 #include "ossa/level/level_io.h"
 #include "shared/level_scenes.h"
+#include "shared/sweep_sample.h"
 #include "shared/scenes.h"
 
 using namespace ossa;
@@ -40,20 +41,9 @@ bool step_until(Player& player, const Level& level, Controls controls, float sec
   return false;
 }
 
-// The example animals' names: all of them, every fourth under the sanitizers.
-std::vector<std::string> sampled_animals() {
-#if defined(__SANITIZE_ADDRESS__)
-  const int every = 4;
-#else
-  const int every = 1;
-#endif
-  std::vector<std::string> names;
-  int n = 0;
-  for (const Animal& animal : scenes::generator().dataset().animals) {
-    if (n++ % every == 0) names.push_back(animal.name);
-  }
-  return names;
-}
+// The example animals' names: all of them, the sweep's sample under the sanitizers
+// (sweep_sample.h; the keys are those of tests/shared/sanitizer_sample.txt).
+std::vector<std::string> sampled_animals(const char* key) { return test::sweep_animals(key); }
 
 // Example animal `name` placed at the level's spawn and driven by `script`.
 SimResult run_from_spawn(const std::string& name, const Level& level, const char* script) {
@@ -72,7 +62,7 @@ TEST_CASE("every example animal walks off each ledge of drops.json and lands cle
   const Level level = drops();
   const float edges[] = {6.0f, 12.0f, 18.0f, 26.0f};
   const float tops[] = {7.3f, 7.0f, 6.0f, 4.0f};
-  for (const std::string& name : sampled_animals()) {
+  for (const std::string& name : sampled_animals("game:ledges")) {
     const auto creature = example(name);
     for (int e = 0; e < 4; ++e) {
       Player player(creature, SplinePrototypes::defaults());
@@ -100,7 +90,7 @@ TEST_CASE("every example animal turns back at drops.json's 1 m ledge with its fe
   // back up to the feet still on it, a body below the ledge stops at its face (no knee in
   // it), and no stance foot slides or limb enters a box meanwhile.
   const Level level = drops();
-  for (const std::string& name : sampled_animals()) {
+  for (const std::string& name : sampled_animals("game:turn back")) {
     const SimResult r = run_from_spawn(name, level, "walk:0.5:6,stop:1,walk:-0.6:6");
     INFO(name << ": furthest x " << r.x_max_m << ", back to x " << r.x_reached);
     CHECK(r.probe.max_stance_slip_m <= 0.001f);
@@ -116,7 +106,7 @@ TEST_CASE("every example animal walks and runs across drops.json to the step tha
   // slides, and without a jump no animal whose legs climb less than 0.7 m gets onto the step.
   const Level level = drops();
   const float step = 0.7f;  // the step's height, from x 48 to 60
-  for (const std::string& name : sampled_animals()) {
+  for (const std::string& name : sampled_animals("game:to the step")) {
     // (Birds' crouched legs climb it: max_step_up of their reach.)
     const Animator climber(*example(name), SplinePrototypes::defaults());
     const bool climbs = climber.params().max_step_up * climber.rig().climb_height >= step - kGroundEpsilon;
@@ -216,7 +206,7 @@ TEST_CASE("a jump's apex matches the ballistic path and the designer's height", 
   }
 }
 
-TEST_CASE("a step too tall to climb stops a walk; a running jump lands on it", "[game][anim][locomotion]") {
+TEST_CASE("a step too tall to climb stops a walk, a running jump lands on it", "[game][anim][locomotion]") {
   // drops.json's step at x 48 stands 0.7 m: more than the horse climbs (it stops at it,
   // blocked, without entering it), less than its jump (a hip height, 0.81 m) lifts its feet.
   const Level level = drops();
@@ -286,7 +276,7 @@ TEST_CASE("every example animal with legs jumps its jump height from a standstil
   // ground (they stayed planted through the whole jump, and the body came down through the
   // floor). Legless animals have nothing to push off with and do not jump.
   const Level flat = scenes::flat_level(40.0f);
-  for (const std::string& name : sampled_animals()) {
+  for (const std::string& name : sampled_animals("game:jumps")) {
     Player player(example(name), SplinePrototypes::defaults());
     Animator& a = player.animator();
     if (a.leg_count() == 0) continue;

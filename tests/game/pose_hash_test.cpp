@@ -34,10 +34,10 @@ struct ExpectedHash {
 };
 
 constexpr ExpectedHash kExpected[] = {
-    {"default.json", 0x7777c0e3d7b34188ull},
-    {"rough.json", 0x36a50d9702c106ebull},
-    {"stairs.json", 0x4ffd3146128cec1aull},
-    {"slopes.json", 0xd897f567918f08afull},
+    {"default.json", 0xb3ebc3cd086f1ffaull},
+    {"rough.json", 0x78fcd3c2ab2d7be5ull},
+    {"stairs.json", 0x12e98e3b85808f2eull},
+    {"slopes.json", 0x9b0f23b47c3ade92ull},
     {"drops.json", 0xfc50bd3d138b68a9ull},
 };
 

@@ -195,3 +195,11 @@ TEST_CASE("raw vectors round-trip and every dimension has a name", "[gen]") {
   CHECK(from_vector(v).wings == 1);
   CHECK(from_vector(v).leg_pairs == 2);
 }
+
+TEST_CASE("a spine point nested 300 000 deep is refused, not a crash", "[gen]") {
+  // The message used to print the point with dump(), recursively: a stack overflow.
+  const std::string deep = std::string(300000, '[') + std::string(300000, ']');
+  const std::string message = error_of(replaced(file_with(kGiraffe), "[500,630]", deep));
+  CHECK_THAT(message, Catch::StartsWith("examples.json: animals[1].spine[2]"));
+  CHECK_THAT(message, Catch::Contains("nested more than 256 arrays or objects deep"));
+}

@@ -192,7 +192,7 @@ TEST_CASE("shader logs are rewritten to file:line for Mesa and NVIDIA forms", "[
         "d.vert:3:1: warning: x\nd.vert:4:2: error: y");
 }
 
-TEST_CASE("a failed reload keeps the old program; a fixed file reloads", "[render]") {
+TEST_CASE("a failed reload keeps the old program, a fixed file reloads", "[render]") {
   gl();
   const std::string vert = temp_path("reload.vert"), frag = Gl::shader_dir() + "/debug.frag";
   const std::string good = "#version 330 core\nlayout(location = 0) in vec2 a_position_ws;\n"

@@ -186,7 +186,7 @@ TEST_CASE("feet stand on their contact: no claw, hoof or toe below the ground at
   }
 }
 
-TEST_CASE("a sprite is as thick as its bone's width, not its length; long thin bones stay thin", "[render][sprites]") {
+TEST_CASE("a sprite is as thick as its bone's width, not its length: long thin bones stay thin", "[render][sprites]") {
   const SpriteSet sprites = default_sprite_set();
   for (const auto& [name, c] : creatures()) {
     SpriteMeshOptions rigid;

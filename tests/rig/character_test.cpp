@@ -6,6 +6,7 @@
 
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <memory>
 
@@ -220,5 +221,73 @@ TEST_CASE("a mapping that cannot work names the file, the field and the bone", "
     b.mapping.legs[1].lower = "foot.R";
     b.mapping.legs[1].upper = "shin.R";
     CHECK_THAT(error_of(b), Catch::Contains("legs[1].contact: foot \"toe.R\" moves no vertex and has no child bone"));
+  }
+}
+
+TEST_CASE("a contact point far from its foot is refused, a long foot reported", "[anim][rig]") {
+  // [1e6, -1e6] grew the animator's ground profile until bad_alloc.
+  {
+    Biped b = biped();
+    b.mapping.legs[0].contact = glm::vec2(1e6f, -1e6f);
+    CHECK_THAT(error_of(b), Catch::StartsWith("biped.rig.json: legs[0].contact: the contact point of foot \"foot.L\" lies "));
+    CHECK_THAT(error_of(b), Catch::Contains("m from its ankle, more than 2 times the leg's length (0.82 m): expected a point on the sole"));
+  }
+  {
+    Biped b = biped();  // a leg's length in front of the ankle: builds, with a note
+    b.mapping.legs[0].contact = glm::vec2(100.0f, 2.0f);
+    Result<Character> c = build_character(b.skeleton, b.mapping, "biped.rig.json");
+    REQUIRE(c.ok());
+    // (Beside the standing-pose note every straight-legged biped gets.)
+    const auto& w = c->warnings;
+    CHECK(std::count(w.begin(), w.end(),
+                     "legs[0]: the contact point of foot \"foot.L\" lies 1 m from its ankle, further than the leg is long (0.82 m)") == 1);
+    CHECK(std::count_if(w.begin(), w.end(), [](const std::string& t) { return t.find("contact point") != std::string::npos; }) == 1);
+  }
+}
+
+TEST_CASE("implausible sizes and leg counts are reported by the build", "[anim][rig]") {
+  {
+    Biped b = biped();  // centimetres read as metres: a 160 m biped
+    b.mapping.scale = 1.0f;
+    Result<Character> c = build_character(b.skeleton, b.mapping, "biped.rig.json");
+    REQUIRE(c.ok());
+    const auto& w = c->warnings;
+    for (const char* leg : {"legs[0]", "legs[1]"}) {
+      CHECK(std::count(w.begin(), w.end(), std::string(leg) + ": the leg is 82 m long (upper + lower), outside the 0.01 m to 20 m "
+                                                              "of walking animals: is \"scale\" right? (a mesh in centimetres needs 0.01)") == 1);
+    }
+  }
+  {
+    Biped b = biped();  // 35 pairs of legs under the hips
+    for (int i = 0; i < 68; ++i) {
+      const std::string n = std::to_string(i);
+      ImportedSkeleton& s = b.skeleton;
+      auto add = [&](const std::string& name, int parent, glm::vec2 head, glm::vec2 tail) {
+        ImportedBone bone;
+        bone.name = name;
+        bone.parent = parent;
+        bone.rest_ms = blender_frame(head, tail);
+        s.bones.push_back(bone);
+        return static_cast<int>(s.bones.size()) - 1;
+      };
+      const int thigh = add("thigh" + n, s.find("hips"), {0, 90}, {0, 48});
+      const int shin = add("shin" + n, thigh, {0, 48}, {0, 8});
+      add("foot" + n, shin, {0, 8}, {10, 2});
+      RigChain leg;
+      leg.side = i % 2 ? Side::kFar : Side::kNear;
+      leg.upper = "thigh" + n;
+      leg.lower = "shin" + n;
+      leg.end = "foot" + n;
+      leg.contact = glm::vec2(10.0f, 0.0f);
+      b.mapping.legs.push_back(leg);
+    }
+    Result<Character> c = build_character(b.skeleton, b.mapping, "biped.rig.json");
+    REQUIRE(c.ok());
+    bool warned = false;
+    for (const std::string& w : c->warnings) {
+      warned |= w == "legs: 35 leg pairs; the animator's gaits are made for 1 to 3 (bipeds, quadrupeds, six legs): more walk, "
+                     "but their feet slide on steps";
+    }
+    CHECK(warned);
   }
 }

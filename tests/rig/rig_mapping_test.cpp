@@ -9,6 +9,7 @@
 
 #include "ossa/rig/rig_mapping.h"
 #include "ossa/io/file.h"
+#include "ossa/math/rng.h"
 
 using namespace ossa;
 
@@ -102,5 +103,49 @@ TEST_CASE("a saved rig mapping loads back the same", "[anim][rig]") {
   const std::string text = read_file(path).value();
   CHECK(text.find("\"format\"") < text.find("\"version\""));
   CHECK(text.find("\"version\"") < text.find("\"legs\""));
+  std::filesystem::remove_all(dir);
+}
+
+TEST_CASE("random rig mappings at the ends of their ranges save and load back the same", "[anim][rig]") {
+  // Issue 33's round-trip rule for mappings: contact points up to ±1e6 mesh units, scale up to
+  // 1000, pairs up to 63, names of any UTF-8 text.
+  Rng rng(4242);
+  const auto dir = std::filesystem::temp_directory_path() / ("ossa_rig_random_" + std::to_string(::getpid()));
+  std::filesystem::create_directories(dir);
+  const std::string path = (dir / "r.rig.json").string();
+  const auto edge = [&](double lo, double hi) {
+    const double u = rng.uniform(0.0, 1.0);
+    return static_cast<float>(u < 0.25 ? lo : u < 0.5 ? hi : rng.uniform(lo, hi));
+  };
+  int bone = 0;
+  const auto name = [&] {
+    ++bone;
+    return "b\xc3\xa9" + std::to_string(bone) + (bone % 3 ? ".L" : " r");
+  };
+  for (int round = 0; round < 100; ++round) {
+    RigMapping m;
+    m.mesh = "m.gltf";
+    m.scale = rng.uniform(0.0, 1.0) < 0.3 ? 1000.0f : edge(1e-6, 1000.0);
+    m.root = name();
+    for (int i = 0, n = static_cast<int>(rng.uniform(0.0, 3.0)); i < n; ++i) m.spine.push_back(name());
+    if (rng.uniform(0.0, 1.0) < 0.5) m.head = name();
+    for (int i = 0, n = 1 + static_cast<int>(rng.uniform(0.0, 6.0)); i < n; ++i) {
+      RigChain leg;
+      leg.side = i % 2 ? Side::kFar : Side::kNear;
+      leg.upper = name();
+      leg.lower = name();
+      leg.end = name();
+      if (rng.uniform(0.0, 1.0) < 0.7) leg.contact = glm::vec2(edge(-1e6, 1e6), edge(-1e6, 1e6));
+      if (rng.uniform(0.0, 1.0) < 0.5) leg.pair = static_cast<int>(edge(0.0, 63.0));
+      leg.knee = rng.uniform(0.0, 1.0) < 0.5 ? 1 : -1;
+      m.legs.push_back(leg);
+    }
+    INFO("round " << round);
+    REQUIRE(save_rig_mapping(path, m).ok());
+    const Result<RigMapping> back = load_rig_mapping(path);
+    INFO((back.ok() ? std::string() : back.message()));
+    REQUIRE(back.ok());
+    CHECK(rig_mapping_to_json(*back) == rig_mapping_to_json(m));
+  }
   std::filesystem::remove_all(dir);
 }

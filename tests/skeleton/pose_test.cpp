@@ -69,7 +69,7 @@ TEST_CASE("world matrices place and mirror the creature", "[skeleton][fk]") {
   CHECK_FALSE(job.run());
 }
 
-TEST_CASE("palette of the bind pose is the identity; inverse undoes a matrix", "[skeleton][palette]") {
+TEST_CASE("palette of the bind pose is the identity, inverse undoes a matrix", "[skeleton][palette]") {
   Rng rng(7);
   Skeleton s = scenes::chain_skeleton(12, 0.3f, 0.1f);
   Pose pose = Pose::rest(s);

@@ -5,12 +5,26 @@
 #   render: ossa-render draws the creature standing on the level's ground to a PNG.
 # Registered with CTest (tools/CMakeLists.txt) once per tool and shipped level, and run under
 # ASan+UBSan by tools/test: whatever the loaders accept must run without an error report.
+# There (OSSA_SAMPLE=1) it visits the sample of tests/shared/sanitizer_sample.txt for its key
+# (assets:LEVEL or render:LEVEL), which reaches every line and branch outcome the full sweep
+# reaches (tools/sanitizer-sample); with OSSA_SWEEP_ONLY=NAME, that one animal alone.
 set -u
 tool="$1" bin="$2" level="$3"
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/../.." && pwd)"
 out="${OSSA_ASSET_OUT:-$(mktemp -d)}"
 mkdir -p "$out"
 failed=0 count=0
+all_names() { grep -o '"name": "[^"]*"' "$root/assets/creatures/examples.json" | sed 's/"name": "\(.*\)"/\1/'; }
+key="$([ "$tool" = sim ] && echo assets || echo "$tool"):$(basename "$level")"
+sample_names() { sed -n "s/^$key animal //p" "$root/tests/shared/sanitizer_sample.txt"; }
+if [ -n "${OSSA_SWEEP_ONLY:-}" ]; then
+  names=$(all_names | grep -x -F -e "$OSSA_SWEEP_ONLY" || true)
+elif [ "${OSSA_SAMPLE:-0}" = "1" ]; then
+  names=$(all_names | grep -x -F -f <(sample_names) || true)
+else
+  names=$(all_names)
+fi
+expected=$(grep -c . <<<"$names")
 while IFS= read -r name; do
   count=$((count + 1))
   case "$tool" in
@@ -27,6 +41,6 @@ while IFS= read -r name; do
       fi ;;
     *) echo "unknown tool $tool"; exit 2 ;;
   esac
-done < <(grep -o '"name": "[^"]*"' "$root/assets/creatures/examples.json" | sed 's/"name": "\(.*\)"/\1/')
+done <<<"$names"
 echo "$tool: $count examples on $(basename "$level"), $failed failed"
-[ "$count" -eq 44 ] && [ "$failed" -eq 0 ]
+[ "$count" -gt 0 ] && [ "$count" -eq "$expected" ] && { [ -n "${OSSA_SWEEP_ONLY:-}" ] || [ "${OSSA_SAMPLE:-0}" = "1" ] || [ "$count" -eq 44 ]; } && [ "$failed" -eq 0 ]

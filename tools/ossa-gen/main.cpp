@@ -297,6 +297,19 @@ int fail(const std::string& message) {
 int run(const Args& a) {
   const std::string dataset_path =
       a.dataset ? *a.dataset : data_path("assets/creatures/examples.json");
+  // No output may be one of the inputs (io/file.h): checked for every file name written.
+  std::vector<std::string> inputs = {dataset_path};
+  if (a.in) inputs.push_back(*a.in);
+  const auto output = [&](const char* flag, const std::string& path) -> std::optional<int> {
+    if (Status st = check_output_path(flag, path, inputs); !st) return fail(st.message());
+    return std::nullopt;
+  };
+  for (const auto& [flag, path] : {std::pair{"--out", &a.out}, std::pair{"--svg", &a.svg}, std::pair{"--gltf", &a.gltf},
+                                   std::pair{"--obj", &a.obj}, std::pair{"--sheet", &a.sheet}}) {
+    if (*path) {
+      if (auto code = output(flag, **path)) return *code;
+    }
+  }
   std::optional<Generator> generator;
   if (a.example || a.random || a.stats || a.sheet || a.variations) {
     Result<Generator> g = Generator::load(dataset_path);
@@ -304,7 +317,7 @@ int run(const Args& a) {
     generator.emplace(std::move(*g));
   }
 
-  if (a.stats) std::cout << model_stats(*generator).dump(2) << "\n";
+  if (a.stats) std::cout << json_text(model_stats(*generator), 2) << "\n";
 
   if (a.sheet) {
     std::vector<std::pair<std::string, Creature>> sheet;
@@ -364,7 +377,7 @@ int run(const Args& a) {
     j["limb_layouts"] = layouts;
     j["seconds"] = seconds;
     j["per_second"] = seconds > 0.0 ? static_cast<double>(*a.count) / seconds : 0.0;
-    std::cout << j.dump(2) << "\n";
+    std::cout << json_text(j, 2) << "\n";
     return 0;
   }
 
@@ -399,6 +412,12 @@ int run(const Args& a) {
     Result<Creature> built = build_creature(genome);
     if (!built) return fail((a.in ? *a.in + ": " : std::string()) + built.message());
     const Creature& c = *built;
+    for (const auto& [flag, path] : {std::pair{"--out", &a.out}, std::pair{"--svg", &a.svg}, std::pair{"--gltf", &a.gltf},
+                                     std::pair{"--obj", &a.obj}}) {
+      if (*path) {
+        if (auto code = output(flag, numbered(**path, k + 1, total))) return *code;
+      }
+    }
     if (a.out) {
       if (Status st = save_genome(numbered(*a.out, k + 1, total), genome); !st) return fail(st.message());
     }
@@ -426,7 +445,7 @@ int run(const Args& a) {
   }
   const bool file_outputs = a.out || a.svg || a.obj || a.gltf;
   if (a.summary || !file_outputs) {
-    std::cout << (total == 1 ? summaries[0] : summaries).dump(2) << "\n";
+    std::cout << json_text(total == 1 ? summaries[0] : summaries, 2) << "\n";
   }
   return 0;
 }

@@ -13,6 +13,7 @@
 #include <string>
 #include <vector>
 
+#include "ossa/io/file.h"
 #include "ossa/io/json.h"
 #include "ossa/level/level_io.h"
 #include "ossa/level/level_load.h"
@@ -29,7 +30,8 @@ const char* kUsage = R"(usage: ossa-level info FILE [--pixels-per-metre P]
                        (a map property wins, then one tile = 0.5 m, then this; default 32)
 info prints JSON: format, boxes, merged_from_cells (solid cells -> boxes_from_cells), bounds,
 spawn, pixels_per_metre and where it came from, warnings (e.g. a spawn with no ground below).
-convert writes OUT as an ossa level (temporary file, fsync, rename).
+convert writes OUT as an ossa level (temporary file, fsync, rename); OUT may not be one of the
+files read (the map, its tilesets, an LDtk project's level files).
 )";
 
 [[noreturn]] void fail(const std::string& message) {
@@ -88,8 +90,13 @@ int main(int argc, char** argv) {
     out["spawn"] = {{"x", shortest_decimal(level->spawn_ws.x)}, {"y", shortest_decimal(level->spawn_ws.y)}};
     std::vector<std::string> warnings = report.warnings;
     for (std::string& w : level_warnings(*level)) warnings.push_back(std::move(w));
+    // A background image must be in the level's folder (level_load.h resolve_level_resource).
+    if (level->background && !level->background->image.empty()) {
+      Result<std::string> image = resolve_level_resource(positional[1], "background.image", level->background->image);
+      if (!image) warnings.push_back(image.message() + " (not drawn)");
+    }
     out["warnings"] = warnings;
-    std::printf("%s\n", out.dump(2).c_str());
+    std::printf("%s\n", json_text(out, 2).c_str());
     return 0;
   }
   if (command == "convert") {
@@ -97,6 +104,8 @@ int main(int argc, char** argv) {
     LevelLoadReport report;
     Result<Level> level = load_level(positional[1], options, &report);
     if (!level) fail(level.message());
+    // Never over one of the files just read: the map, its tilesets, an LDtk project's levels.
+    if (Status st = check_output_path("convert: OUT", positional[2], report.files); !st) fail(st.message());
     Status s = save_level(positional[2], *level);
     if (!s) fail(s.message());
     std::printf("wrote %s: %d boxes (%lld solid cells merged into %lld boxes)\n", positional[2].c_str(), level->size(),

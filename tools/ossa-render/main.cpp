@@ -17,6 +17,7 @@
 #include "ossa/gen/genome.h"
 #include "ossa/gen/skeleton_builder.h"
 #include "ossa/io/data_dir.h"
+#include "ossa/io/file.h"
 #include "ossa/io/parse_arg.h"
 #include "ossa/level/level_io.h"
 #include "ossa/platform/window.h"
@@ -146,6 +147,13 @@ Args parse_args(int argc, char** argv) {
   if (sources == 0) fail("nothing to render: give --example NAME, --random, --creature F, --mesh F or --character F");
   if (sources > 1) fail("give only one of --example, --random, --creature, --mesh, --character");
   if (!a.png && !a.stats) fail("nothing to do: give --png OUT and/or --stats");
+  if (a.png) {  // no output may be one of the inputs (io/file.h)
+    std::vector<std::string> inputs;
+    for (const auto* in : {&a.creature, &a.mesh, &a.character, &a.level}) {
+      if (*in) inputs.push_back(**in);
+    }
+    if (Status st = check_output_path("--png", *a.png, inputs); !st) fail(st.message());
+  }
   return a;
 }
 
@@ -270,42 +278,38 @@ int run(const Args& a) {
                       : Texture::from_image(Image{rig->texture_width, rig->texture_height, rig->texture_rgba});
   }
   const Texture& texture = rig ? rig_texture : atlas.texture;
-  CreatureBatch batch;
+  // Where each creature stands: the highest ground under its body, searching from well above
+  // the spawn.
+  std::vector<glm::vec2> feet(static_cast<size_t>(a.count));
   Box view{{1e9f, 1e9f}, {-1e9f, -1e9f}};
-  std::vector<float> grounds;
   for (int i = 0; i < a.count; ++i) {
     const float x = start.x + spacing * static_cast<float>(i);
     float ground = start.y;
     if (level) {
-      // The highest ground under the body, searching from well above the spawn.
-      if (auto hit = level->ground_height_below(x + body.min_ws.x, x + body.max_ws.x,
-                                                start.y + 2.0f, 100.0f)) {
+      if (auto hit = level->ground_height_below(x + body.min_ws.x, x + body.max_ws.x, start.y + 2.0f, 100.0f)) {
         ground = hit->height_ws;
       }
     }
-    grounds.push_back(ground);
+    feet[static_cast<size_t>(i)] = {x, ground};
     view = view.united(body.translated({x, ground}));
   }
+  Camera2D& camera = renderer->camera;
+  camera.fit(view, static_cast<float>(a.width) / static_cast<float>(a.height), 0.08f);
   // The camera fits the whole row, so a row too long for the picture would draw creatures
-  // narrower than a pixel: nothing visible. Refuse it (before building the batch) and say
-  // what fits.
-  {
-    Camera2D probe;
-    probe.fit(view, static_cast<float>(a.width) / static_cast<float>(a.height), 0.08f);
-    const float creature_px = static_cast<float>(a.width) * body.width() / (2.0f * probe.half_height * probe.aspect);
-    if (creature_px < kMinCreaturePixels) {
-      const int fits = std::max(1, static_cast<int>(static_cast<float>(a.count) * creature_px / kMinCreaturePixels));
-      fail("--count " + std::to_string(a.count) + ": side by side in a " + std::to_string(a.width) +
-           " px wide picture each creature would be " + std::to_string(creature_px) + " px wide (under " +
-           std::to_string(static_cast<int>(kMinCreaturePixels)) + " px: nothing would show); use --count " +
-           std::to_string(fits) + " or less, or a larger --width");
-    }
+  // narrower than a pixel: nothing visible. Refuse it and say what fits (before building it).
+  const float creature_px = static_cast<float>(a.width) * body.width() / (2.0f * camera.half_height * camera.aspect);
+  if (creature_px < kMinCreaturePixels) {
+    const int fits = std::max(1, static_cast<int>(static_cast<float>(a.count) * creature_px / kMinCreaturePixels));
+    fail("--count " + std::to_string(a.count) + ": side by side in a " + std::to_string(a.width) +
+         " px wide picture each creature would be " + std::to_string(creature_px) + " px wide (under " +
+         std::to_string(static_cast<int>(kMinCreaturePixels)) + " px: nothing would show); use --count " +
+         std::to_string(fits) + " or less, or a larger --width");
   }
-  for (int i = 0; i < a.count; ++i) {
-    const float x = start.x + spacing * static_cast<float>(i);
-    const float ground = grounds[static_cast<size_t>(i)];
+  // The creatures: their sprites and/or bodies, as the look shows them.
+  CreatureBatch batch;
+  for (const glm::vec2& at : feet) {
     Transform2D place;
-    place.translation = {x, ground + lift};
+    place.translation = {at.x, at.y + lift};
     if (show_sprites) {
       const int id = batch.add(mesh, creature.skeleton);
       batch.set_pose(id, creature.skeleton, creature.rest_pose.locals, place.to_mat2x3());
@@ -316,7 +320,7 @@ int run(const Args& a) {
       // Its flesh rests on the ground as in the game (body_floor.h).
       std::vector<Mat2x3> world = model_matrices(creature.skeleton, creature.rest_pose.locals);
       for (Mat2x3& m : world) m = place.to_mat2x3() * m;
-      batch.set_floor(id, level ? body_floor(*level, creature.skeleton, world, flesh->reach) : flat_floor(ground));
+      batch.set_floor(id, level ? body_floor(*level, creature.skeleton, world, flesh->reach) : flat_floor(at.y));
     }
   }
   batch.upload_palettes();
@@ -324,8 +328,6 @@ int run(const Args& a) {
   // The ground: the level's colliders, or a plain strip under the creatures.
   DebugDraw debug;
   const glm::vec4 ground_fill{0.42f, 0.36f, 0.27f, 1.0f}, ground_edge{0.25f, 0.20f, 0.14f, 1.0f};
-  Camera2D& camera = renderer->camera;
-  camera.fit(view, static_cast<float>(a.width) / static_cast<float>(a.height), 0.08f);
   // Keep the ground near the bottom edge (a long row would otherwise float mid-frame).
   camera.center_ws.y = view.min_ws.y - 0.2f * camera.half_height + camera.half_height;
   const Box visible = camera.visible_box();

@@ -45,19 +45,25 @@ MESH is a glTF 2.0 (.gltf, .glb), FBX or DAE file with a skinned mesh.
   std::exit(code);
 }
 
-int guess(const std::string& mesh_path, const std::string& out) {
+int guess(const std::string& mesh_path, const std::string& out, bool out_given) {
   Result<RiggedMesh> mesh = load_rigged_mesh(mesh_path);
   if (!mesh) fail(mesh.message());
+  // Never over the mesh or a file it names (io/file.h).
+  if (out_given) {
+    std::vector<std::string> inputs = mesh->files;
+    inputs.push_back(mesh_path);
+    if (Status s = check_output_path("--out", out, inputs); !s) fail(s.message());
+  }
   namespace fs = std::filesystem;
   std::string mesh_field = fs::path(mesh_path).filename().string();
-  if (!out.empty()) {
+  if (out_given && !out.empty()) {
     const fs::path base = fs::absolute(fs::path(out)).parent_path();
     mesh_field = fs::absolute(fs::path(mesh_path)).lexically_relative(base).generic_string();
   }
   const RigGuess g = guess_rig_mapping(imported_skeleton(*mesh), mesh_field);
   for (const std::string& note : g.notes) std::fprintf(stderr, "ossa-rig: note: %s\n", note.c_str());
   const Json doc = rig_mapping_to_json(g.mapping);
-  if (out.empty()) {
+  if (!out_given) {
     std::fputs(json_file_text(doc).c_str(), stdout);
   } else {
     if (Status s = write_json_atomic(out, doc); !s) fail(s.message());
@@ -143,7 +149,7 @@ int check(const std::string& rig_path) {
               {"run_speed_m_s", json_float(a.run_speed())},
               {"standing", {{"lowest_foot_m", json_float(low)}, {"highest_foot_m", json_float(high)}}},
               {"problems", problems}};
-  std::printf("%s\n", out.dump(2).c_str());
+  std::printf("%s\n", json_text(out, 2).c_str());
   return 0;
 }
 
@@ -159,10 +165,12 @@ int main(int argc, char** argv) {
     }
     if (args[0] == "guess") {
       std::string mesh, out;
+      bool out_given = false;
       for (size_t i = 1; i < args.size(); ++i) {
         if (args[i] == "--out") {
           if (i + 1 >= args.size()) fail("--out: missing value", 2);
           out = args[++i];
+          out_given = true;
         } else if (!args[i].empty() && args[i][0] == '-') {
           fail("unknown option " + args[i] + " (see --help)", 2);
         } else if (mesh.empty()) {
@@ -172,7 +180,7 @@ int main(int argc, char** argv) {
         }
       }
       if (mesh.empty()) fail("guess: missing MESH", 2);
-      return guess(mesh, out);
+      return guess(mesh, out, out_given);
     }
     if (args[0] == "check") {
       if (args.size() != 2 || args[1].empty() || args[1][0] == '-') fail("check takes one rig mapping (F.rig.json)", 2);

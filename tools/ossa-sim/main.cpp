@@ -11,6 +11,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <filesystem>
 #include <fstream>
 #include <map>
 #include <memory>
@@ -58,6 +59,10 @@ const char* kUsage = R"(usage: ossa-sim (--example NAME | --creature F.creature.
   --svg-window FROM:TO[:EVERY]  the strobe's poses from FROM to TO seconds, one every EVERY
                    seconds (default 0.4): a close look at a moment
 )";
+
+// Output bounds (see main): at most this many trace rows (ticks) and SVG poses.
+constexpr long long kMaxTraceTicks = 1000000;
+constexpr long long kMaxSvgPoses = 2000;
 
 [[noreturn]] void fail(const std::string& message) {
   std::fprintf(stderr, "ossa-sim: %s\n", message.c_str());
@@ -214,13 +219,28 @@ int main(int argc, char** argv) {
   const std::string level_path = args.level ? *args.level : data_path("levels/default.json");
   LevelLoadOptions level_options;
   level_options.pixels_per_metre = args.pixels_per_metre;
-  Result<Level> level = load_level(level_path, level_options);
+  LevelLoadReport level_report;
+  Result<Level> level = load_level(level_path, level_options, &level_report);
   if (!level) fail(level.message());
+  // No output may be one of the inputs (io/file.h).
+  {
+    std::vector<std::string> inputs = level_report.files;
+    for (const auto* in : {&args.creature, &args.character, &args.prototypes}) {
+      if (*in) inputs.push_back(**in);
+    }
+    if (args.trace) {
+      if (Status st = check_output_path("--trace", *args.trace, inputs); !st) fail(st.message());
+    }
+    if (args.svg) {
+      if (Status st = check_output_path("--svg", *args.svg, inputs); !st) fail(st.message());
+    }
+  }
   for (const std::string& w : level_warnings(*level)) std::fprintf(stderr, "warning: %s: %s\n", level_path.c_str(), w.c_str());
 
   SplinePrototypes prototypes = SplinePrototypes::defaults();
   const std::string proto_path = args.prototypes ? *args.prototypes : data_path("assets/animation/prototypes.json");
-  if (args.prototypes || std::ifstream(proto_path).good()) {
+  std::error_code exists_error;
+  if (args.prototypes || std::filesystem::exists(proto_path, exists_error)) {
     Result<SplinePrototypes> p = load_prototypes(proto_path);
     if (!p) fail(p.message());
     prototypes = *p;
@@ -273,6 +293,30 @@ int main(int argc, char** argv) {
     extra.back()->animator().reset(spawn, *level);
   }
 
+  // Outputs stay bounded: a trace row per tick and an SVG pose per strobe step are counted
+  // before the run, and a run that would write more is refused with what to change.
+  {
+    const long long ticks = script_ticks(*script, args.hz);
+    if (args.trace && ticks > kMaxTraceTicks) {
+      fail("--trace: the script runs " + std::to_string(ticks) + " ticks at " + std::to_string(args.hz) +
+           " Hz; a trace holds at most " + std::to_string(kMaxTraceTicks) + " (one row per tick, about 100 bytes per leg); "
+           "shorten the script or lower --hz");
+    }
+    if (args.svg) {
+      const double seconds = static_cast<double>(ticks) / args.hz;
+      const double window = std::max(0.0, std::min<double>(args.svg_to, seconds) - args.svg_from);
+      const double every = static_cast<double>(std::max(1LL, std::llround(static_cast<double>(args.svg_every) * args.hz))) / args.hz;
+      const long long poses = static_cast<long long>(window / every) + 1;
+      if (poses > kMaxSvgPoses) {
+        char what[256];
+        std::snprintf(what, sizeof what,
+                      "--svg: %lld poses (%g s, one every %g s); an SVG holds at most %lld: narrow --svg-window FROM:TO "
+                      "or draw fewer with :EVERY",
+                      poses, window, every, kMaxSvgPoses);
+        fail(what);
+      }
+    }
+  }
   std::ofstream trace;
   if (args.trace) {
     trace.open(*args.trace);
@@ -283,24 +327,20 @@ int main(int argc, char** argv) {
     }
     trace << "\n";
   }
-  int total_ticks = 0;
-  for (const ScriptSegment& s : *script) total_ticks += s.ticks(args.hz);
-  const int shot_every = std::max(1, static_cast<int>(std::lround(args.svg_every * static_cast<float>(args.hz))));
+  const long long total_ticks = script_ticks(*script, args.hz);
+  const long long shot_every = std::max(1LL, std::llround(static_cast<double>(args.svg_every) * args.hz));
   std::vector<Snapshot> shots;
   double extra_seconds = 0.0;
   const float dt = 1.0f / static_cast<float>(args.hz);
-  // Controls of the extra creatures follow the player's script tick by tick.
-  std::vector<Controls> per_tick;
-  Controls previous;
-  for (const ScriptSegment& s : *script) {
-    previous = s.controls(previous);
-    per_tick.insert(per_tick.end(), static_cast<size_t>(s.ticks(args.hz)), previous);
-  }
+  // Controls of the extra creatures follow the player's script tick by tick, computed as they
+  // go (a long script is not stored tick by tick).
+  ScriptCursor extra_controls(*script, args.hz);
   const SimResult result = run_script(player, *level, *script, args.hz, [&](long long tick) {
     const Animator& a = player.animator();
     if (!extra.empty()) {
+      const Controls c = extra_controls.next();
       const auto start = std::chrono::steady_clock::now();
-      for (auto& e : extra) e->step(dt, per_tick[static_cast<size_t>(tick)], *level);
+      for (auto& e : extra) e->step(dt, c, *level);
       extra_seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     }
     if (trace.is_open()) {
@@ -319,7 +359,7 @@ int main(int argc, char** argv) {
   const std::vector<SegmentMetrics>& segments = result.segments;
   const Animator& a = player.animator();
   const double update_seconds = result.update_seconds + extra_seconds;
-  const long long updates = static_cast<long long>(total_ticks) * args.count;
+  const long long updates = total_ticks * args.count;
   if (args.svg) {
     if (Status s = write_file_atomic(*args.svg, strobe_svg(player.skeleton(), *level, shots)); !s) fail(s.message());
   }
@@ -363,7 +403,7 @@ int main(int argc, char** argv) {
       out["count"] = args.count;
       out["update_us_per_creature"] = 1e6 * update_seconds / static_cast<double>(updates);
     }
-    std::printf("%s\n", out.dump(2).c_str());
+    std::printf("%s\n", json_text(out, 2).c_str());
   }
   return 0;
 }

@@ -21,6 +21,7 @@
 #include <limits>
 #include <map>
 #include <optional>
+#include <sstream>
 #include <string>
 #include <thread>
 #include <vector>
@@ -131,6 +132,11 @@ Setup load_setup(const Args& args) {
     std::sort(paths.begin(), paths.end());
     if (paths.empty()) fail(data_path("levels") + ": no level files");
   }
+  if (args.json) {  // no output may be one of the inputs (io/file.h)
+    std::vector<std::string> inputs = paths;
+    if (args.known_failures) inputs.push_back(*args.known_failures);
+    if (Status st = check_output_path("--json", *args.json, inputs); !st) fail(st.message());
+  }
   for (const std::string& path : paths) {
     Result<Level> level = load_level(path);
     if (!level) fail(level.message());
@@ -139,7 +145,8 @@ Setup load_setup(const Args& args) {
     s.level_names.push_back(std::filesystem::path(path).filename().string());
   }
   const std::string proto_path = data_path("assets/animation/prototypes.json");
-  if (std::ifstream(proto_path).good()) {
+  std::error_code exists_error;
+  if (std::filesystem::exists(proto_path, exists_error)) {
     Result<SplinePrototypes> p = load_prototypes(proto_path);
     if (!p) fail(p.message());
     s.prototypes = *p;
@@ -218,7 +225,7 @@ void write_json(const std::string& path, const char* kind, const std::vector<Run
   OJson list = OJson::array();
   for (const RunRecord& r : runs) list.push_back(record_json(r));
   doc["runs"] = std::move(list);
-  if (Status s = write_file_atomic(path, doc.dump(1) + "\n"); !s) fail(s.message());
+  if (Status s = write_file_atomic(path, doc.dump(1, ' ', false, OJson::error_handler_t::replace) + "\n"); !s) fail(s.message());
 }
 
 // [SECTION] the sweep -----------------------------------------------------------------------
@@ -474,9 +481,10 @@ int slopes_check(const Args& args, const Setup& setup) {
   if (!args.known_failures) return failed == 0 ? 0 : 1;
   // A regression guard while some animals still fail: the listed ones may fail, no other may;
   // a listed one that now passes is named so the list can shrink.
-  std::ifstream in(*args.known_failures);
-  if (!in) fail(*args.known_failures + ": cannot read the list of known failures");
+  Result<std::string> list = read_file(*args.known_failures);  // the input rule (io/file.h)
+  if (!list) fail("--known-failures: " + list.message());
   std::vector<std::string> known;
+  std::istringstream in(*list);
   for (std::string line; std::getline(in, line);) {
     if (!line.empty() && line[0] != '#') known.push_back(line);
   }

@@ -46,6 +46,18 @@ inline glm::vec2 rotate(glm::vec2 v, float a) {
   return {c * v.x - s * v.y, s * v.x + c * v.y};
 }
 inline float bone_angle(const Mat2x3& m) { return std::atan2(m.m[1], m.m[0]); }
+// How far across a circle of radius r reaches at an offset h from its centre: a leg of reach r
+// whose foot lies h below its joint reaches this far forward or back (0 beyond the circle).
+inline float reach_across(float r, float h) { return std::sqrt(std::max(r * r - h * h, 0.0f)); }
+// Bisection over [lo, hi] in n halvings: each middle m goes to lo when low_side(m) (the side
+// that still fails), else to hi. The caller reads lo and hi after.
+template <class LowSide>
+inline void bisect(float& lo, float& hi, int n, LowSide&& low_side) {
+  for (int k = 0; k < n; ++k) {
+    const float mid = 0.5f * (lo + hi);
+    (low_side(mid) ? lo : hi) = mid;
+  }
+}
 // The swing's clearance bump over its progress s in [0, 1]: 0 at both ends, 1 mid-swing.
 inline float bump(float s) { return std::pow(std::max(0.0f, std::sin(kPi * s)), 0.7f); }
 

@@ -324,6 +324,7 @@ std::shared_ptr<const AnimRig> build_anim_rig(const Skeleton& skeleton, const Po
     x_max = std::max(x_max, p.x);
   }
   rig->body_half_length = std::max(0.5f * (x_max - x_min), 0.05f);
+  rig->scale = RigScale::of(2.0f * rig->body_half_length);
   for (int b = 0; b < sk.bone_count(); ++b) {  // the extent from the root counts bone ends too
     const float e = bone_end(rig->model_rest[b], sk.length(b)).x;
     x_min = std::min(x_min, e);

@@ -19,6 +19,7 @@
 
 #include <glm/vec2.hpp>
 
+#include "ossa/anim/rig_scale.h"
 #include "ossa/gen/creature.h"
 #include "ossa/skeleton/pose.h"
 #include "ossa/skeleton/skeleton.h"
@@ -87,6 +88,7 @@ struct AnimRig {
   std::vector<RigLimb> outline_arms, outline_fins, outline_wings;
 
   float hip_height = 1.0f;          // h of the Froude number: mean girdle rest height, metres
+  RigScale scale;                   // the stages' lengths in this creature's size (rig_scale.h)
   // The least step_height of any girdle: a step up more than max_step_up of it is a wall (the
   // other girdles could not follow).
   float climb_height = 0.0f;

@@ -2,11 +2,13 @@
 // The values the animator's stages pass each other (DESIGN.md §7):
 //   AnimContext  what every stage reads and none writes during a tick (rig, params, level,
 //                ground profile);
-//   BodyFrame    where the body is: root position, facing, pitch and lean (written by body
-//                motion, turning and body placement; read by everyone after them);
-//   FootState    one per foot, lasting between ticks (written by the gait clock's lift-off,
-//                the swing and turning);
-//   TickHandoff  what one stage tells a later one on this tick or the next, as named fields.
+//   BodyFrame    where the body is: root position, facing, pitch and lean. Written only by
+//                body placement's functions (body_placement.h); read by every stage;
+//   FootState    one per foot, lasting between ticks. Written only by the step stage (step.h,
+//                foothold.h, swing.h, turn.h) through its named transitions; read by others;
+//   TickHandoff  what one stage tells a later one on this tick (or, where a field says so,
+//                the next), as named fields with their writer and readers.
+// animator.h lists every piece of state that lasts between ticks with its owning stage.
 //
 // Spaces (one suffix, one meaning; see also animator.h):
 //   _ws  world: metres, +x right, +y up;
@@ -15,7 +17,9 @@
 //        creature faces +x (x_fs = (x_ws - root x) · facing, y_fs = y_ws). The IK and the pose
 //        work here: knees bend the right way whichever way the creature faces.
 
+#include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <vector>
 
 #include <glm/common.hpp>
@@ -88,7 +92,12 @@ struct GirdleJointFs {
   }
 };
 
-struct FootState {                  // per foot: moves between legs when the creature turns
+// One foot, lasting between ticks. Written only by the step stage's transitions (step.h);
+// their invariants, checked by foot_consistent():
+//   air (hanging, no landing)  ⇒ state == kSwing, not easing, hover == 0;
+//   hang_beyond is a number    ⇒ air (a foot stepping off a ledge);
+//   easing                     ⇒ state == kSwing.
+struct FootState {
   LegState state = LegState::kStance;
   glm::vec2 pos_ws{0.0f};           // contact point target
   glm::vec2 from_ws{0.0f}, to_ws{0.0f};
@@ -98,13 +107,11 @@ struct FootState {                  // per foot: moves between legs when the cre
   float progress = 0.0f;            // swing progress s in [0, 1]
   float rate = 0.0f;                // ds per unit of phase (or per second when easing)
   bool easing = false;              // a stop: progress runs on time, not on phase
-  float offset = 0.0f;              // phase offset (eases toward the owning leg's target)
-  float phase_prev = 0.0f;
   float hover = 0.0f;               // seconds spent waiting above the landing point
   // Hanging in the air with no landing (stepping off a drop, falling, after pushing off): the
-  // foot follows its girdle (locomotion.h air_target) and is planted where it meets the
-  // ground. air_offset, from the air target, eases to nothing, so the foot does not jump
-  // when it leaves the ground.
+  // foot follows its girdle (step.h air_target) and is planted where it meets the ground.
+  // air_offset, from the air target, eases to nothing, so the foot does not jump when it
+  // leaves the ground.
   bool air = false;
   glm::vec2 air_offset{0.0f};       // metres (_ws)
   float hang_beyond = NAN;          // stepping off: the world x the hanging foot reaches past
@@ -113,9 +120,12 @@ struct FootState {                  // per foot: moves between legs when the cre
   // Stepped down off a ledge this high, more than a step up (_ws; NaN: none): while a foot still
   // stands on it, this one may step back up to it (foothold.h step_limits).
   float ledge_y = NAN;
-  Clearance stance_clear;           // around pos_ws while in stance
-  Clearance stance_reach_clear;     // within a leg's reach of pos_ws while in stance
-  Clearance swing_clear;            // around the path of the current swing
+  // What may rise near the foot (level_probe.h), cached for the level revision the feet last
+  // saw (StepState::level_revision): around pos_ws in stance, within a leg's reach of it in
+  // stance, and around the path of the current swing.
+  Clearance stance_clear;
+  Clearance stance_reach_clear;
+  Clearance swing_clear;
 };
 
 // The feet and which leg stands on which (turning round hands feet between leg pairs).
@@ -126,17 +136,59 @@ struct FootSet {
   const FootState& of_leg(int leg) const { return feet[foot_of_leg[leg]]; }
 };
 
-// Hand-offs between stages, cleared where stated.
+// A foot's place in the gait cycle on this tick (gait_clock.h advance_leg_phase).
+struct LegPhase {
+  float phase = 0.0f;     // the foot's local phase, cycles in [0, 1)
+  bool lift_due = false;  // a standing foot's phase crossed the duty factor: it lifts
+};
+
+// What a stage tells a later one, on this tick unless a field says otherwise. Animator::update
+// clears the per-tick fields at its start (begin_tick); each field names its writer and
+// readers.
 struct TickHandoff {
-  // Per foot: standing behind and below its girdle, it held the body back or down (set by
-  // body motion and body placement), so the gait clock lifts it at the next chance. Body
-  // placement clears it at its start, so body motion's marks of this tick and placement's
-  // of the last tick reach the lift decision.
+  // Per leg, while the gait clock runs: its foot's phase and whether its lift-off is due.
+  // Writer: the gait clock (tick_clock). Reader: the step stage.
+  std::vector<LegPhase> leg_phase;
+  // Per foot: standing behind and below its girdle on stairs, its leg would cut a step, so it
+  // lifts at its next chance. Writer: body motion (limit_by_legs). Reader: the step stage's
+  // lift decision, later on this tick.
   std::vector<uint8_t> lift_now;
-  // Why the creature stopped on this tick, if it did (body motion: a wall; the foothold
-  // planner: no foothold ahead; the swing: the way to the landing walled off); -1: none.
-  int blocked_leg = -1;
-  bool blocked = false;
+  // Per foot: a stance leg the body placement stretched past its reach (clamps 1 and 6) lifts
+  // at its next chance instead of sliding. Lasts to the next tick: written wholly by body
+  // placement (cleared at its start, on every call); read by the step stage's lift decision
+  // and its re-step of a standing creature on the next tick.
+  std::vector<uint8_t> release_next;
+  // Per foot: waiting above its landing for the body to come down to it (the swing's hover).
+  // Writer: the step stage (end of its tick). Reader: body placement (girdle heights).
+  std::vector<uint8_t> waiting;
+  // The creature turned round on this tick. Writer: the orchestrator's turn decision.
+  // Readers: body placement (takes its new height and pitch at once; swinging feet count).
+  bool turned = false;
+  // A wall or a ledge the body cannot pass stopped it. Writer: body motion. Reader: the block
+  // (body_motion.h MotionState), at once.
+  bool wall_ahead = false;
+  // The leg whose lift-off found no foothold and no drop (a wall too tall, the way walled
+  // off), or -1. Writer: the step stage. Reader: the block, after the step stage.
+  int no_foothold_leg = -1;
+  // The crouch before a jump is over: take off at the end of the tick. Writer: locomotion
+  // (advance_crouch, before body placement). Reader: locomotion's take-off, after it.
+  bool crouch_done = false;
+  // Feet that met the ground while airborne on this tick. Writer: the step stage's air feet.
+  // Reader: locomotion's touch-down test.
+  int planted = 0;
+
+  void resize(size_t feet) {
+    lift_now.assign(feet, 0);
+    release_next.assign(feet, 0);
+    waiting.assign(feet, 0);
+  }
+  void begin_tick() {
+    std::fill(lift_now.begin(), lift_now.end(), 0);
+    std::fill(waiting.begin(), waiting.end(), 0);
+    turned = wall_ahead = crouch_done = false;
+    no_foothold_leg = -1;
+    planted = 0;
+  }
 };
 
 }  // namespace anim

@@ -1,27 +1,37 @@
 #pragma once
 // Animator — procedural walking and running for any creature on a box level ([T 4.4]
 // generalised to any number of limbs, DESIGN.md §7): a pipeline of stages over an immutable
-// AnimRig. animator.cpp only orders the stages and keeps what lasts between ticks; each stage
-// is a file pair of its own:
+// AnimRig. Each stage is a file pair of its own; animator.cpp runs them in the order of its
+// numbered stage list (Animator::update) and keeps the state between ticks, one owner each:
 //
-//   ground_profile    the level's top surface around the creature as a 1D height profile
-//   gait_clock        phase, gait blend by Froude, duty factor, stride, per-leg offsets
-//   turn              a command against the facing mirrors the creature in place
-//   locomotion        grounded → airborne → landing; the jump's crouch and take-off
-//   body_motion       how far the body moves: the wall sweep, then the legs' reach
-//   foothold          where a lifting foot lands (lift-off, stop, turn and reset alike)
-//   swing             the blended prototype mapped onto the plan, raised until it clears
-//   body_placement    girdle heights, pitch and lean; named clamps in a documented order
-//   leg_ik            two-bone IK over all legs, foot roll
-//   limb_clearance    arms, fins, wings and the tail kept out of the level
-//   secondary_motion  bob, tail spring, crawl wave, arm swing, fin beat
-//   animator_pose     the pose and forward kinematics (stage 9), the lazily computed outputs
+//   member        state                    owner (its stages)             read by
+//   ground_       GroundProfile            ground profile (1), keyed on   every stage after it
+//                                            the level's revision
+//   step_         StepState: the feet,     the step stage (2, 4, 8, A3):  gait clock, body motion,
+//                   touch-downs, the level   step.h, turn.h, swing.h,       body placement,
+//                   revision they saw        foothold.h                     locomotion, pose
+//   loco_         LocomotionState: mode,   locomotion (3, 9, 11, A1,      the orchestrator (which
+//                   crouch, air path,        A4, A5): locomotion.h          branch), body placement
+//                   landing, counts                                         (crouch, landing)
+//   motion_       MotionState: speed,      body motion (5, 7, 8):         gait clock, step stage,
+//                   block                    body_motion.h                  body placement, pose
+//   gait_         GaitState: phase,        gait clock (6, 8):             step stage, body
+//                   blends, stride, foot     gait_clock.h                   placement (bob), pose
+//                   offsets, idle & crawl
+//   body_,        BodyFrame, BodyState     body placement (4, 7, 10, 12,  every stage
+//   body_state_                              A2, A4): body_placement.h
+//   pose_         PoseState: pose, tail    the pose stage (12):           the outputs below
+//                   spring, matrices         pose_stage.h
+//   handoff_      TickHandoff              per tick; each field names its writer and readers
+//                                            (anim_state.h)
+//   decay_        Decay                    the orchestrator: smoothing factors cached per
+//                                            (dt, ism), derived state
 //
 // Spaces — one suffix, one meaning:
 //   _ws  world: metres, +x right, +y up.
 //   _ms  model: the creature's rest frame (DESIGN.md §3), y = 0 on the rest ground, facing +x.
 //   _fs  facing: world height, x from the root along the facing direction (the creature faces
-//        +x). model_matrices() are in this space: world = model_to_world() · facing.
+//        +x). facing_matrices() are in this space: world = facing_to_world() · facing.
 //   _ls  local to the parent bone.
 //
 // Everything is deterministic: the same inputs give bit-identical poses.
@@ -35,12 +45,14 @@
 #include "ossa/anim/anim_rig.h"
 #include "ossa/anim/anim_state.h"
 #include "ossa/anim/animator_params.h"
+#include "ossa/anim/body_motion.h"
 #include "ossa/anim/body_placement.h"
 #include "ossa/anim/gait_clock.h"
 #include "ossa/anim/ground_profile.h"
 #include "ossa/anim/locomotion.h"
-#include "ossa/anim/secondary_motion.h"
+#include "ossa/anim/pose_stage.h"
 #include "ossa/anim/spline_prototypes.h"
+#include "ossa/anim/step.h"
 #include "ossa/gen/creature.h"
 #include "ossa/level/level.h"
 #include "ossa/skeleton/pose.h"
@@ -93,22 +105,25 @@ class Animator {
   const std::shared_ptr<const AnimRig>& shared_rig() const { return rig_; }
   // The joint values of the current pose (the legs' angles are worked out on first use after
   // an update: the matrices below do not need them).
-  const Pose& pose() const;
+  const Pose& pose() const { return anim::pose_angles(*rig_, pose_); }
   // Facing space → world: a mirror of x by the facing and the root's world x.
-  Mat2x3 model_to_world() const;
+  Mat2x3 facing_to_world() const { return anim::facing_to_world(body_); }
   // Facing-space (_fs) matrices of the current pose. update() computes the bones it needs
   // (spine to the girdles, limbs); the rest (ribs, neck, skull, tail...) on first use after an
   // update, so headless simulation and ticks between rendered frames do not pay for them.
-  const std::vector<Mat2x3>& model_matrices() const;
-  // World matrices of the current pose: model_to_world() · facing-space, computed on first
+  const std::vector<Mat2x3>& facing_matrices() const { return anim::facing_matrices(*rig_, pose_); }
+  // World matrices of the current pose: facing_to_world() · facing-space, computed on first
   // use after an update (renderers that fold the placement into their palette never pay).
-  const std::vector<Mat2x3>& world_matrices() const;
+  const std::vector<Mat2x3>& world_matrices() const { return anim::world_matrices(*rig_, body_, pose_); }
   // The ground profile of the last tick (stage 1).
   const GroundProfile& ground_profile() const { return ground_; }
+  // What the stages told each other on the last tick (anim_state.h TickHandoff): for tools and
+  // tests that follow the pipeline.
+  const anim::TickHandoff& last_tick() const { return handoff_; }
 
   // ---- State ------------------------------------------------------------------------------
   float x() const { return body_.x_ws; }               // world x of the root
-  float velocity() const { return body_.facing * speed_; } // m/s, signed
+  float velocity() const { return body_.facing * motion_.speed; } // m/s, signed
   int facing() const { return body_.facing; }
   Gait gait() const { return gait_.gait; }
   float froude() const { return gait_.froude; }
@@ -116,8 +131,8 @@ class Animator {
   float duty_factor() const { return gait_.duty; }
   float cycle_frequency() const { return gait_.frequency; } // cycles per second
   float run_factor() const { return gait_.run_factor; }     // walk→run blend in [0, 1]
-  bool blocked() const { return block_.blocked; }
-  int steps() const { return steps_; }                 // touch-downs so far
+  bool blocked() const { return motion_.block.blocked; }
+  int steps() const { return step_.steps; }            // touch-downs so far
   float hip_height() const { return rig_->hip_height; } // h of the Froude number, metres
   // The walk's reference speed (Froude 0.5) and the full run's (Froude 2.5: a gallop for two
   // or more leg pairs), m/s, and where the gaits change.
@@ -136,47 +151,32 @@ class Animator {
 
   int leg_count() const { return static_cast<int>(rig_->legs.size()); }
   // [T] leg_state: stance or swing of leg i.
-  LegState leg_state(int leg) const { return feet_.of_leg(leg).state; }
+  LegState leg_state(int leg) const { return step_.feet.of_leg(leg).state; }
   // The creature's limb that leg i is (has_creature() only).
   const Limb& leg_limb(int leg) const;
   // Where leg i's contact point (tip, or heel for flat contact) is meant to be, world space.
-  glm::vec2 foot_target_ws(int leg) const { return feet_.of_leg(leg).pos_ws; }
+  glm::vec2 foot_target_ws(int leg) const { return step_.feet.of_leg(leg).pos_ws; }
   // The contact point the pose actually reaches (from the matrices).
   glm::vec2 foot_ws(int leg) const;
   // Progress of leg i's swing in [0, 1] (0 while in stance).
   float swing_progress(int leg) const {
-    const anim::FootState& f = feet_.of_leg(leg);
+    const anim::FootState& f = step_.feet.of_leg(leg);
     return f.state == LegState::kSwing ? f.progress : 0.0f;
   }
   // True while the leg sets down after a stop (a short eased swing, not a step).
-  bool easing(int leg) const { return feet_.of_leg(leg).easing; }
+  bool easing(int leg) const { return step_.feet.of_leg(leg).easing; }
 
  private:
-  struct BlockState {                // the creature stopped at a wall or a step too tall
-    bool blocked = false;
-    int dir = 0;                     // the facing it stopped in
-    int leg = 0;                     // the leg that found no foothold
-    float retry = 0.0f;              // seconds until the way ahead is tested again
-  };
   struct Decay {                     // exp(-rate·dt) of each smoothed quantity, per (dt, ism)
     float dt = -1.0f, ism = -1.0f;
     float lean = 0.0f, run = 0.0f, gait = 0.0f, pitch = 0.0f, root = 0.0f;
   };
 
   anim::AnimContext context(const Level& level) { return {*rig_, params_, level, ground_, hits_}; }
-  void refresh_ground(const Level& level);
-  void block(int leg);
-  bool way_ahead_open(const Level& level, float speed);
-  void step_legs(float dt, float ism, const Level& level);
-  void advance_swings(float dt, const Level& level);
-  anim::PlacementInputs placement_inputs(float dt, bool turned) const;
-  void place_body(float dt, bool turned, const Level& level);
-  void fly(float dt, const Level& level);
-  void end_landing(const Level& level);
+  anim::PlacementInputs placement_inputs(float dt) const;
+  void place_body(const anim::AnimContext& ctx, float dt);
+  void finish_tick(const anim::AnimContext& ctx, float dt);
   void respawn(const Level& level);
-  bool below_kill_height(const Level& level) const;
-  void build_pose(float dt, const Level& level);
-  void body_fk();
 
   const Creature* creature_ = nullptr;
   std::shared_ptr<const AnimRig> rig_;
@@ -184,31 +184,17 @@ class Animator {
   SplinePrototypes spline_prototypes_;
   AnimatorParams params_;
 
-  // State kept between ticks.
+  // State kept between ticks, one owner each (the table at the top of this file).
+  GroundProfile ground_;
+  anim::StepState step_;
+  anim::LocomotionState loco_;
+  anim::MotionState motion_;
+  anim::GaitState gait_;
   anim::BodyFrame body_;
   anim::BodyState body_state_;
-  anim::GaitState gait_;
-  anim::FootSet feet_;
+  anim::PoseState pose_;
   anim::TickHandoff handoff_;
-  anim::TailSpring tail_;
-  BlockState block_;
-  anim::LocomotionState loco_;
-  std::uint64_t level_revision_ = 0; // the level's revision the feet last stood on
-  GroundProfile ground_;
   Decay decay_;
-  float speed_ = 0.0f;               // m/s along the facing
-  float idle_time_ = 0.0f;           // seconds
-  float crawl_phase_ = 0.0f;         // cycles
-  int steps_ = 0;
-
-  // Pose buffers.
-  mutable Pose pose_;
-  std::vector<std::array<glm::vec2, 3>> leg_dirs_;  // per leg: upper, lower, foot directions (_fs)
-  mutable bool leg_angles_dirty_ = false;
-  mutable std::vector<Mat2x3> model_;  // facing space
-  mutable std::vector<Mat2x3> world_;
-  mutable bool world_dirty_ = true;
-  mutable bool model_dirty_ = true;    // bones outside rig().tick_bone are stale
 
   // Scratch.
   std::vector<int> hits_;

@@ -3,10 +3,11 @@
 #include <algorithm>
 #include <cmath>
 
+#include "ossa/anim/anim_math.h"
 #include "ossa/anim/animator_params.h"
 #include "ossa/anim/foothold.h"
 #include "ossa/anim/ground_profile.h"
-#include "ossa/anim/leg_ik.h"
+#include "ossa/anim/leg_geometry.h"
 
 namespace ossa::anim {
 
@@ -18,10 +19,8 @@ namespace {
 constexpr float kStepReach = 0.8f;
 constexpr float kLegLineMarginOfHip = 0.08f;
 // The wall sweep ignores the lowest part of the body this many hip heights high (the legs'
-// business), and meets walls this far early: 3 cm plus this many hip heights.
+// business); it meets walls RigScale::wall_margin early.
 constexpr float kSweepFloorOfHip = 0.3f;
-constexpr float kWallMarginOfHip = 0.02f;
-constexpr float kWallMargin = 0.03f;
 
 // A box holding body_boxes(false, ·)'s single box, from the root and the hull's extent (no
 // hull points), and *top_y the height of one of its points; false if fins or arms take part.
@@ -178,7 +177,7 @@ BodyMotionResult sweep_body(const AnimContext& ctx, const BodyFrame& body, const
   float slope = 0.0f;  // tan(pitch); set, with `reading`, once a part is swept (below)
   // The margin lies ahead only: behind, the body moves away from what it is near (a tail
   // still beside the ledge it came down from).
-  const float m = kWallMargin + kWallMarginOfHip * hip;
+  const float m = rig.scale.wall_margin;
   const glm::vec2 margin_lo(dx < 0.0f ? m : 0.0f, 0.0f), margin_hi(dx > 0.0f ? m : 0.0f, 0.0f);
   // A part's box as swept: from kSweepFloorOfHip above its bottom or a step above the ground
   // line under it (whichever is higher, at most its top). Ground the legs climb without a
@@ -272,12 +271,12 @@ float limit_by_legs(const AnimContext& ctx, const BodyFrame& body, const FootSet
     // Near steps a foot behind keeps the joint within kStepReach of the leg's reach: a leg
     // stretched back across a flight of stairs would cut the edges between.
     // How far forward the joint may go with this foot still in reach (facing x).
-    const float level_reach = std::sqrt(std::max(r * r - h * h, 0.0f));
+    const float level_reach = reach_across(r, h);
     const bool near_steps =
         anchor.x < joint.x && !(stance ? f.stance_reach_clear : f.swing_clear).clear_above(anchor.y + 0.1f * rig.hip_height) &&
         !on_slope(ctx, body, info, anchor, {anchor.x + level_reach, joint.y});
     float joint_reach = level_reach;  // (the step reach only near steps)
-    if (near_steps) joint_reach = std::max(std::sqrt(std::max(kStepReach * kStepReach * r * r - h * h, 0.0f)), 0.5f * level_reach);
+    if (near_steps) joint_reach = std::max(reach_across(kStepReach * r, h), 0.5f * level_reach);
     const float ahead = anchor.x + joint_reach - joint.x;
     dx = facing * std::min(std::fabs(dx), std::max(ahead, 0.0f));
     // Nor does the body leave a swinging foot behind further than its leg reaches (a foot
@@ -285,7 +284,7 @@ float limit_by_legs(const AnimContext& ctx, const BodyFrame& body, const FootSet
     const glm::vec2 now = body.to_fs(f.pos_ws);
     if (!stance && now.x < joint.x) {
       const float R = info.contact_reach, hn = joint.y - now.y;
-      const float lead = now.x + std::sqrt(std::max(R * R - hn * hn, 0.0f)) - joint.x;
+      const float lead = now.x + reach_across(R, hn) - joint.x;
       dx = facing * std::min(std::fabs(dx), std::max(lead, 0.0f));
     }
     // A foot left below and behind on stairs whose leg would cut the edge of a step above it
@@ -305,7 +304,7 @@ float limit_by_ledges(const AnimContext& ctx, const BodyFrame& body, const FootS
   const GroundProfile& ground = ctx.ground;
   if (dx == 0.0f || ground.empty() || rig.girdles.empty()) return dx;
   const float up = ctx.params.max_step_up * rig.climb_height;
-  const float margin = kWallMargin + kWallMarginOfHip * rig.hip_height;
+  const float margin = rig.scale.wall_margin;
   float move = std::fabs(dx);
   for (size_t g = 0; g < rig.girdles.size(); ++g) {
     const RigGirdle& girdle = rig.girdles[g];
@@ -354,6 +353,60 @@ float limit_by_ledges(const AnimContext& ctx, const BodyFrame& body, const FootS
     }
   }
   return body.facing * move;
+}
+
+namespace {
+
+// A blocked creature tests the way ahead again this often, seconds.
+constexpr float kBlockedRetrySeconds = 0.5f;
+// Below this (m/s, and of the stick) the creature stands.
+constexpr float kStandingSpeed = 1e-4f;
+
+void block(int leg, int facing, MotionState& motion) {
+  MotionState::Block& b = motion.block;
+  b.blocked = true;
+  if (leg >= 0) b.leg = leg;
+  b.dir = facing;
+  b.retry = kBlockedRetrySeconds;
+}
+
+}  // namespace
+
+void command_speed(const FootholdInputs& in, float desired_velocity, float dt, bool landing, MotionState& motion) {
+  MotionState::Block& b = motion.block;
+  const int want = desired_velocity > kStandingSpeed ? 1 : desired_velocity < -kStandingSpeed ? -1 : 0;
+  float target = std::fabs(desired_velocity);
+  if (b.blocked) {
+    if (want != b.dir) {
+      b.blocked = false;
+    } else {
+      target = 0.0f;
+      b.retry -= dt;
+      if (b.retry <= 0.0f && !in.ctx.rig.legs.empty()) {
+        b.retry = kBlockedRetrySeconds;
+        glm::vec2 landing_at;
+        if (find_landing(in, b.leg, step_from(in.feet->of_leg(b.leg)), landing_x(in, b.leg, std::fabs(desired_velocity)), &landing_at)) {
+          b.blocked = false;
+        }
+      }
+    }
+  }
+  motion.speed = target <= kStandingSpeed || landing ? 0.0f : target;
+}
+
+float allowed_move(const AnimContext& ctx, const BodyFrame& body, const std::vector<Mat2x3>& model_fs, const FootSet& feet,
+                   float stride, float dx, std::vector<Box>& boxes, TickHandoff& handoff) {
+  const BodyMotionResult swept = sweep_body(ctx, body, model_fs, dx, boxes);
+  if (swept.hit_wall) handoff.wall_ahead = true;
+  dx = limit_by_legs(ctx, body, feet, swept.dx, handoff);
+  const float ledge = limit_by_ledges(ctx, body, feet, stride, dx);  // a face it cannot climb
+  if (ledge == 0.0f && dx != 0.0f) handoff.wall_ahead = true;
+  return ledge;
+}
+
+void update_block(const TickHandoff& handoff, int facing, MotionState& motion) {
+  if (handoff.wall_ahead) block(-1, facing, motion);
+  if (handoff.no_foothold_leg >= 0) block(handoff.no_foothold_leg, facing, motion);
 }
 
 }  // namespace ossa::anim

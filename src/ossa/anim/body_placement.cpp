@@ -1,129 +1,27 @@
 #include "ossa/anim/body_placement.h"
 
 // [SECTION] targets: girdle heights, pitch
-// [SECTION] clamps, in their order
 // [SECTION] place_body
+// [SECTION] the body's other transitions
+// (The clamps are in body_clamps.cpp.)
 
 #include <algorithm>
 #include <cmath>
 
 #include "ossa/anim/anim_math.h"
 #include "ossa/anim/animator_params.h"
+#include "ossa/anim/body_placement_internal.h"
 #include "ossa/anim/foothold.h"
-#include "ossa/anim/leg_ik.h"
-#include "ossa/math/two_bone_ik.h"
+#include "ossa/anim/leg_geometry.h"
 
 namespace ossa::anim {
 
+using namespace placement;
+
 namespace {
-
-constexpr float kMaxPitch = 0.9f;       // the body turns no steeper than this (radians)
-constexpr float kMaxPitchStep = 0.03f;  // nor by more than this in one tick to keep a foot in reach
-constexpr float kMaxPitchOff = 0.25f;   // nor further than this from the pitch of the ground
-constexpr float kMaxTargetPitch = 0.7f; // the pitch target between two girdles, radians
-// A girdle over a higher step rises with it halfway; the ground is looked for over this
-// fraction of its rest height either side.
-constexpr float kGirdleGroundHalfOfRest = 0.2f;
-// A stance leg's girdle never comes down below this fraction of its rest height above the foot.
-constexpr float kLowestGirdleOfRest = 0.6f;
-// A foot behind and below dragging the body down by more than this fraction of its girdle's
-// rest height lifts on the next tick.
-constexpr float kDragLiftOfRest = 0.05f;
-// A girdle keeps this fraction of its rest height above the highest ground under it, looked
-// for over kGirdleKeepOutHalfOfRest either side.
-constexpr float kGirdleKeepOutOfRest = 0.12f;
-constexpr float kGirdleKeepOutHalfOfRest = 0.1f;
-// Beyond that window the ground's claim fades by this many rest heights below its top.
-constexpr float kKeepOutFadeOfRest = 0.25f;
-// A shoulder keeps this many hip heights above the ground under it.
-constexpr float kShoulderKeepOutOfHip = 0.1f;
-// A knee keeps this fraction of its leg's reach above the ground within kKneeHalfWidth (m).
-constexpr float kKneeMarginOfReach = 0.02f;
-constexpr float kKneeHalfWidth = 0.001f;
-// A single girdle's body looks this many seconds ahead for ground rising under its shoulder.
-constexpr float kShoulderLookAhead = 0.25f;
-// A foot hanging over a drop draws its girdle down to ground this many contact reaches below it.
-constexpr float kHangGroundOfReach = 1.5f, kHangDipOfRest = 0.35f;
-// A legless body follows the ground under it and this many seconds of travel ahead.
-constexpr float kLeglessLookAhead = 0.2f;
-// One tick raises no girdle by more than this many hip heights to clear a knee, in at most
-// kKneePasses passes.
-constexpr float kMaxKneeRaiseOfHip = 0.5f;
-constexpr int kKneePasses = 6;
-// A swinging knee's raise that would take a stance foot out of reach is halved up to this many
-// times (then dropped: the swing tucks the leg instead).
-// Clamp 1 vouches for a stance foot's reach (so clamp 6 need not test it) only this far inside
-// it, metres.
-constexpr float kReachCheckSlack = 1e-4f;
-// Ground this many climbable steps above the ground under a girdle is a wall to its keep-out.
-constexpr float kKeepOutStepsOfClimb = 1.5f;
-constexpr int kSwingRaiseHalvings = 5;
-// ... while it leaves no stance foot further than this (metres; under the slip tolerance) beyond
-// its reach than it was.
-constexpr float kSwingRaiseSlack = 5e-4f;
-
-struct Placement {
-  const AnimContext& ctx;
-  const PlacementInputs& in;
-  const FootSet& feet;
-  BodyFrame& body;
-  BodyState& state;
-  TickHandoff& handoff;
-  // Clamp 1 left every stance foot within its leg's reach, the body as it was then: clamp 6
-  // has nothing to release while the later clamps do not move the body.
-  bool reach_checked = false;
-  float checked_root = 0.0f, checked_pitch = 0.0f;
-};
 
 // [SECTION] targets: girdle heights, pitch ----------------------------------------------------
 
-// Moves girdle g's joint up by dy, turning the body about the girdle at the other end.
-void move_girdle(Placement& p, int g, float dy) {
-  const AnimRig& rig = p.ctx.rig;
-  BodyFrame& body = p.body;
-  const int n = static_cast<int>(rig.girdles.size());
-  if (n < 2 || (g != 0 && g != n - 1)) {
-    body.root_y_ws += dy;
-    return;
-  }
-  // Turn the body about the girdle at the other end (o), which stays put; whatever a turn
-  // within the pitch limits (per tick and overall) cannot give, the whole body moves.
-  const glm::vec2 root_rest(0.0f, rig.root_rest_y);
-  const glm::vec2 o = rig.girdles[g == 0 ? n - 1 : 0].joint_ms - root_rest;
-  const glm::vec2 v = rig.girdles[g].joint_ms - root_rest - o;
-  const float len = std::sqrt(v.x * v.x + v.y * v.y);
-  const glm::vec2 v_before = body.rotate_body(v), o_before = body.rotate_body(o);
-  if (len > 1e-4f) {
-    const float phi = fast_atan2(v.y, v.x), a = body.pitch + body.lean;
-    const float s = std::asin(std::clamp((v_before.y + dy) / len, -0.95f, 0.95f));
-    const float turned = (std::cos(a + phi) >= 0.0f ? s : kPi - s) - phi;
-    const float step = std::clamp(wrap_angle(turned - a), -kMaxPitchStep, kMaxPitchStep);
-    body.pitch = std::clamp(body.pitch + step, std::max(p.state.pitch_target - kMaxPitchOff, -kMaxPitch),
-                            std::min(p.state.pitch_target + kMaxPitchOff, kMaxPitch));
-  }
-  const float moved = body.rotate_body(v).y - v_before.y;
-  body.root_y_ws += o_before.y - body.rotate_body(o).y + (dy - moved);
-}
-
-// The least height of a girdle joint at joint_ws (rest height `rest`) out of the ground:
-// kGirdleKeepOutOfRest of its rest height above the highest ground within
-// kGirdleKeepOutHalfOfRest of it either side, the ground as far again beyond counting less and
-// less (keep_out_height), so that a bump's edge coming into reach as the body moves or turns
-// does not pop the body up by its height. Ground is looked for from half a rest height (plus
-// `extra`) above the joint; -1e30 where there is none.
-// The highest ground a girdle's keep-out counts: ground more than kKeepOutStepsOfClimb
-// climbable steps above the ground the girdle stands over is a wall (the wall sweep stops the
-// body at it), not ground to lift the body over: a creature turned round below a ledge would
-// otherwise be lifted by the ledge's height as its shoulders near the face.
-float girdle_keep_out_top(const AnimContext& ctx, glm::vec2 joint_ws, float rest, float extra) {
-  const float step = ctx.params.max_step_up * ctx.rig.climb_height;
-  return std::min(joint_ws.y + 0.5f * rest, joint_ws.y - rest * ctx.params.stance_height + kKeepOutStepsOfClimb * step) + extra;
-}
-
-float girdle_keep_out(const AnimContext& ctx, glm::vec2 joint_ws, float rest, float extra) {
-  return keep_out_height(ctx.level, joint_ws.x, kGirdleKeepOutHalfOfRest * rest, kGirdleKeepOutOfRest * rest,
-                         kKeepOutFadeOfRest * rest, girdle_keep_out_top(ctx, joint_ws, rest, extra), 100.0f, ctx.hits);
-}
 
 // Each girdle's target height: the mean ground under its feet (a swinging foot counts where
 // it is between lift-off and landing), raised halfway to a higher step under the girdle, plus
@@ -142,7 +40,8 @@ void girdle_heights(Placement& p, std::vector<float>& height) {
         // girdle down to it and a little lower, so the foot reaches it (a drop the legs can
         // step down); else it holds nothing up.
         const float r = rig.legs[leg].contact_reach;
-        if (auto below = ground_below(p.ctx.level, f.pos_ws.x - 0.01f, f.pos_ws.x + 0.01f, std::min(f.pos_ws.y, f.floor), kHangGroundOfReach * r)) {
+        const float span = 0.5f * rig.scale.ground_span;
+        if (auto below = ground_below(p.ctx.level, f.pos_ws.x - span, f.pos_ws.x + span, std::min(f.pos_ws.y, f.floor), kHangGroundOfReach * r)) {
           sum += below->height_ws - kHangDipOfRest * girdle.rest_height;
           ++count;
         }
@@ -173,11 +72,11 @@ void girdle_heights(Placement& p, std::vector<float>& height) {
     for (int leg : girdle.legs) {
       const FootState& f = p.feet.of_leg(leg);
       if (f.state == LegState::kStance) floor = std::max(floor, f.pos_ws.y + kLowestGirdleOfRest * girdle.rest_height);
-      if (f.state != LegState::kSwing || f.hover <= 0.0f) continue;
+      if (!p.waiting[p.feet.foot_of_leg[leg]]) continue;
       const glm::vec2 foot = f.to_ws;
       const float r = kFootReach * rig.legs[leg].contact_reach;
       const float dx = std::min(std::fabs(foot.x - gx), 0.95f * r);
-      lowest = std::min(lowest, foot.y + std::sqrt(r * r - dx * dx));
+      lowest = std::min(lowest, foot.y + reach_across(r, dx));
     }
     height[g] = std::min(standing, std::max(lowest, floor));
   }
@@ -226,301 +125,14 @@ void body_target(Placement& p, const std::vector<float>& height, float* target_r
   *target_root = height.front() - rotate(d, *target_pitch + angle_extra).y;
 }
 
-// [SECTION] clamps, in their order ------------------------------------------------------------
-
-// 1. Never over-extend a leg on the ground: lower its girdle (hard clamp, no smoothing; again
-// when that moved it, as a rolling foot's reach depends on where the joint is). The end
-// girdles turn the body about each other, so a hind leg left on a lower step pitches the body
-// up instead of pulling the shoulders down into the steps ahead. Returns how far each girdle
-// may still rise with its feet in reach (room).
-void keep_stance_legs_in_reach(Placement& p, std::vector<float>& need, std::vector<float>& room) {
-  const AnimRig& rig = p.ctx.rig;
-  const size_t n_groups = rig.girdles.size();
-  for (int pass = 0; pass < 3; ++pass) {
-    bool beyond = false;  // a stance foot out of reach even level with the joint
-    for (size_t g = 0; g < n_groups; ++g) {  // (one loop: no call to memset for two floats)
-      need[g] = 0.0f;
-      room[g] = 1e30f;
-    }
-    GirdleJointFs joints;
-    for (size_t i = 0; i < rig.legs.size(); ++i) {
-      const RigLeg& info = rig.legs[i];
-      const FootState& f = p.feet.of_leg(static_cast<int>(i));
-      // On the turn tick, swinging feet (taken over by other legs) must stay in reach too.
-      if (f.state != LegState::kStance && !(p.in.turning && !f.easing)) continue;
-      const glm::vec2 joint = joints.of(rig, p.body, info.girdle);
-      float r;
-      const glm::vec2 anchor = leg_anchor(p.ctx, p.body, static_cast<int>(i), p.body.to_fs(f.pos_ws), joint,
-                                          f.state == LegState::kStance ? f.stance_clear : f.swing_clear, &r);
-      const float dx = std::fabs(anchor.x - joint.x);
-      if (dx >= r) {
-        beyond = beyond || f.state == LegState::kStance;
-        continue;
-      }
-      const float allowed = anchor.y + std::sqrt(r * r - dx * dx);
-      // (A joint further below the foot than the leg reaches is out of reach too; a foot within
-      // kReachCheckSlack of its reach is left to clamp 6's own test, whose rounding differs.)
-      beyond = beyond || (f.state == LegState::kStance &&
-                          (2.0f * anchor.y - allowed > joint.y - kReachCheckSlack || joint.y > allowed - kReachCheckSlack));
-      need[info.girdle] = std::max(need[info.girdle], joint.y - allowed);
-      room[info.girdle] = std::min(room[info.girdle], allowed - joint.y);
-      // A foot left behind and below (stairs) that drags the body down lifts on the next tick
-      // rather than fold the other legs into the step ahead.
-      if (pass == 0 && f.state == LegState::kStance && anchor.x < joint.x &&
-          joint.y - allowed > kDragLiftOfRest * rig.girdles[info.girdle].rest_height) {
-        p.handoff.lift_now[p.feet.foot_of_leg[i]] = 1;
-      }
-    }
-    // Turning the body moves the other girdle's joint sideways a little: the last pass lowers
-    // the whole body, which keeps every joint's x.
-    float most = 0.0f;
-    for (float d : need) most = std::max(most, d);
-    if (most <= 0.0f) {
-      // Every stance foot within reach (need ≤ 0 is allowed ≥ joint.y: |anchor - joint| ≤ r).
-      p.reach_checked = !beyond;
-      p.checked_root = p.body.root_y_ws;
-      p.checked_pitch = p.body.pitch;
-      break;
-    }
-    for (size_t g = 0; g < n_groups; ++g) {
-      if (need[g] <= 0.0f) continue;
-      if (pass < 2) move_girdle(p, static_cast<int>(g), -need[g]);
-      room[g] += need[g];
-    }
-    if (pass == 2) p.body.root_y_ws -= most;
-  }
-}
-
-// 2. Nor fold a leg on the ground tighter than it can (short legs with long shins on a low
-// body, a hind foot stepped up a ledge under its joint): raise its girdle until each stance
-// ankle is at least the folded length away. The end girdles turn the body about each other,
-// as in 1, so that the other end's feet stay where they are.
-void keep_stance_legs_unfolded(Placement& p, std::vector<float>& fold_raise, std::vector<float>& room) {
-  const AnimRig& rig = p.ctx.rig;
-  bool any = false;  // fold_raise holds this tick's raises (filled at the first)
-  GirdleJointFs joints;
-  for (size_t i = 0; i < rig.legs.size(); ++i) {
-    const FootState& f = p.feet.of_leg(static_cast<int>(i));
-    if (f.state != LegState::kStance) continue;
-    const float fold = rig.legs[i].fold;
-    const glm::vec2 joint = joints.of(rig, p.body, rig.legs[i].girdle);
-    // The ankle lies within a foot's length of the contact point.
-    if (glm::length(p.body.to_fs(f.pos_ws) - joint) - rig.legs[i].foot_span >= fold) continue;
-    glm::vec2 dir;
-    const glm::vec2 ankle = leg_ankle(p.ctx, p.body, static_cast<int>(i), p.body.to_fs(f.pos_ws), joint, true, f.stance_clear, &dir, nullptr);
-    const float dx = std::fabs(ankle.x - joint.x);
-    if (dx < fold) {
-      if (!any) std::fill(fold_raise.begin(), fold_raise.end(), 0.0f);
-      any = true;
-      float& raise = fold_raise[rig.legs[i].girdle];
-      raise = std::max(raise, ankle.y + std::sqrt(fold * fold - dx * dx) - joint.y);
-    }
-  }
-  if (!any) return;
-  // The whole body rises when every girdle has the room; else the folded girdle alone.
-  float most = 0.0f, least_room = 1e30f;
-  for (size_t g = 0; g < fold_raise.size(); ++g) {
-    most = std::max(most, fold_raise[g]);
-    least_room = std::min(least_room, room[g]);
-  }
-  if (most <= 0.0f) return;
-  if (most <= least_room) {
-    p.body.root_y_ws += most;
-    for (float& r : room) r = std::max(r - most, 0.0f);
-    return;
-  }
-  for (size_t g = 0; g < fold_raise.size(); ++g) {
-    if (fold_raise[g] <= 0.0f) continue;
-    // What each girdle rises comes off its room.
-    for (size_t o = 0; o < room.size(); ++o) room[o] += p.body.girdle_ws(rig, static_cast<int>(o)).y;
-    move_girdle(p, static_cast<int>(g), fold_raise[g]);
-    for (size_t o = 0; o < room.size(); ++o) room[o] = std::max(room[o] - p.body.girdle_ws(rig, static_cast<int>(o)).y, 0.0f);
-  }
-}
-
-// How far leg i's stance foot is beyond its leg's reach (≤ 0: in reach; -1e30 for a leg not
-// on the ground).
-float stance_excess(const Placement& p, size_t i, GirdleJointFs& joints) {
-  const AnimRig& rig = p.ctx.rig;
-  const FootState& f = p.feet.of_leg(static_cast<int>(i));
-  if (f.state != LegState::kStance) return -1e30f;
-  const glm::vec2 joint = joints.of(rig, p.body, rig.legs[i].girdle);
-  float r;
-  const glm::vec2 anchor = leg_anchor(p.ctx, p.body, static_cast<int>(i), p.body.to_fs(f.pos_ws), joint, f.stance_clear, &r);
-  return glm::length(anchor - joint) - r;
-}
-
-// How far the stance foot furthest out of its leg's reach is beyond it (≤ 0: all in reach).
-float stance_reach_excess(const Placement& p) {
-  float most = -1e30f;
-  GirdleJointFs joints;
-  for (size_t i = 0; i < p.ctx.rig.legs.size(); ++i) most = std::max(most, stance_excess(p, i, joints));
-  return most;
-}
-
-// 3. Nor kneel: a leg folded so far that its knee would touch the ground (sprawling legs on a
-// low body, or lifted in a swing) raises its girdle until the knee clears the ground under
-// it. A swinging leg's knee raises it only as far as the legs on the ground allow (their feet
-// must not slide); past that the swing itself lifts and tucks the leg (leg IK). With the foot
-// in place a raised joint lifts the knee by less than itself: up to kKneePasses passes, as
-// long as some girdle moves.
-void keep_knees_off_ground(Placement& p, std::vector<float>& stance_up, std::vector<float>& swing_up, std::vector<float>& room) {
-  const AnimRig& rig = p.ctx.rig;
-  const Level& level = p.ctx.level;
-  for (int pass = 0; pass < kKneePasses; ++pass) {
-    std::fill(stance_up.begin(), stance_up.end(), 0.0f);
-    std::fill(swing_up.begin(), swing_up.end(), 0.0f);
-    GirdleJointFs joints;
-    for (size_t i = 0; i < rig.legs.size(); ++i) {
-      const FootState& f = p.feet.of_leg(static_cast<int>(i));
-      const bool stance = f.state == LegState::kStance;
-      const RigLeg& info = rig.legs[i];
-      const glm::vec2 joint = joints.of(rig, p.body, info.girdle);
-      const float margin = kKneeMarginOfReach * info.reach;
-      // The knee is no lower than a thigh below the joint nor a shin below the ankle: cheap
-      // tests before the IK (unless steps rise near the foot, or any ground above it: a shin
-      // lying low across the corner of the tread a foot stepped down from cuts it, however
-      // small the step).
-      const Clearance& near = stance ? f.stance_reach_clear : f.swing_clear;
-      const bool steps_near = !near.clear_above(f.pos_ws.y + margin);
-      const bool corner_near = stance && !steps_near && !near.clear_above(f.pos_ws.y);
-      if (!steps_near && !corner_near && joint.y - info.upper > f.pos_ws.y + margin) continue;
-      glm::vec2 dir;
-      const glm::vec2 ankle = leg_ankle(p.ctx, p.body, static_cast<int>(i), p.body.to_fs(f.pos_ws), joint, true,
-                                        stance ? f.stance_clear : f.swing_clear, &dir, nullptr);
-      if (!steps_near && !corner_near && ankle.y - info.lower > f.pos_ws.y + margin) continue;
-      const TwoBoneIkResult ik = solve_two_bone_ik_directions(joint, info.upper, info.lower, ankle, info.bend);
-      const glm::vec2 knee = p.body.to_ws(ik.middle);
-      float& up = stance ? stance_up[info.girdle] : swing_up[info.girdle];
-      // (The ground within kKneeHalfWidth of the knee, fading beyond: a knee beside a riser
-      // is not lifted by its height when a turn moves it a millimetre.)
-      if (const float ground = keep_out_height(level, knee.x, kKneeHalfWidth, margin, info.reach, knee.y + info.reach,
-                                               2.0f * info.reach, p.ctx.hits);
-          ground > -1e29f) {
-        up = std::max(up, ground - knee.y);
-      }
-      // On steps a thigh or shin may cross the edge of a step beside the knee (a swinging leg
-      // far back down a flight, say), as may a shin coming up to a foot on the edge of a ledge
-      // from a knee below it. A shin across a small tread's corner raises its girdle only as
-      // far as the stance legs reach (swing_up's limit), lest a foot slide.
-      if (steps_near || corner_near || knee.y < f.pos_ws.y + margin) {
-        const glm::vec2 hip = p.body.to_ws(joint), heel = p.body.to_ws(ik.end);
-        const float cross = std::max(raise_to_clear(hip, knee, level, p.ctx.hits), raise_to_clear(knee, heel, level, p.ctx.hits));
-        float& cross_up = corner_near && knee.y >= f.pos_ws.y + margin ? swing_up[info.girdle] : up;
-        cross_up = std::max(cross_up, cross);
-      }
-    }
-    bool moved = false;
-    for (size_t g = 0; g < rig.girdles.size(); ++g) {
-      const float up = std::min(std::max(stance_up[g], std::min(swing_up[g], room[g])), kMaxKneeRaiseOfHip * rig.hip_height);
-      if (up <= 0.0f) continue;
-      if (up > stance_up[g]) {
-        // A raised end girdle turns the body about the other one, whose joint moves sideways
-        // a little: a swinging knee's raise must not take a stance foot out of reach (halved
-        // until it does not; a stance knee's raise stands, and its foot lifts, clamp 6).
-        const BodyFrame before = p.body;
-        const float allowed = std::max(stance_reach_excess(p), 0.0f) + kSwingRaiseSlack;
-        float tried = up;
-        for (int k = 0; k < kSwingRaiseHalvings; ++k, tried *= 0.5f) {
-          move_girdle(p, static_cast<int>(g), tried);
-          if (stance_reach_excess(p) <= allowed) break;
-          p.body = before;
-        }
-        if (p.body.root_y_ws == before.root_y_ws && p.body.pitch == before.pitch) continue;
-        room[g] = std::max(room[g] - tried, 0.0f);
-        moved = true;
-        continue;
-      }
-      move_girdle(p, static_cast<int>(g), up);
-      room[g] = std::max(room[g] - up, 0.0f);
-      moved = true;
-    }
-    if (!moved) break;
-  }
-}
-
-// How far a shoulder at `shoulder` (world) must rise to keep kShoulderKeepOutOfHip above the
-// ground under it (looked for from half a standing height, plus `extra`, above it).
-float shoulder_need(const Placement& p, glm::vec2 shoulder, float extra) {
-  const float hip = p.ctx.rig.hip_height;
-  const float half = 0.05f * hip;
-  auto below = ground_below(p.ctx.level, shoulder.x - half, shoulder.x + half, shoulder.y + 0.5f * hip + extra, 100.0f);
-  return below ? below->height_ws + kShoulderKeepOutOfHip * hip - shoulder.y : 0.0f;
-}
-
-// 4. The shoulder far ahead of a single girdle meeting a step: the body turns up about the
-// girdle (the feet stay in reach) rather than rise (the pitch target follows more slowly).
-void pitch_for_front_shoulder(Placement& p) {
-  const AnimRig& rig = p.ctx.rig;
-  if (!(rig.front_shoulder.x > 0.0f)) return;
-  const glm::vec2 rel = rig.girdles.front().joint_ms - glm::vec2(0.0f, rig.root_rest_y);
-  for (int pass = 0; pass < 2; ++pass) {
-    const float need = shoulder_need(p, p.body.body_point_ws(rig, rig.girdles.front().joint_ms + rig.front_shoulder), 0.0f);
-    if (need <= 0.0f) break;
-    const float girdle_y = p.body.rotate_body(rel).y;
-    p.body.pitch = std::min(p.body.pitch + std::asin(std::min(need / rig.front_shoulder.x, 0.9f)), kMaxPitch);
-    p.body.root_y_ws += girdle_y - p.body.rotate_body(rel).y;
-  }
-}
-
-// 5. Whatever the legs ask, a girdle never sinks into the ground under it: it keeps an
-// eighth of its standing height above the highest ground there (a leg may stretch, the body
-// stays out). Ground the body came down past on this tick (`fell`) counts too (clamp 1 may
-// pull it down further than the queries look up). Shoulders carrying arms, wings or fins too,
-// and folded wings do not cut a step's corner (a wall, too high to rise over, is the wall
-// sweep's business).
-void keep_body_out_of_ground(Placement& p, float fell) {
-  const AnimRig& rig = p.ctx.rig;
-  float raise = 0.0f;
-  for (size_t g = 0; g < rig.girdles.size(); ++g) {
-    const glm::vec2 joint = p.body.girdle_ws(rig, static_cast<int>(g));
-    const float rest = rig.girdles[g].rest_height;
-    // Ground within the window (twice its half, where claims fade) no higher than the keep
-    // below the joint cannot raise it: the ground profile says so without a level query.
-    const float half = 2.0f * kGirdleKeepOutHalfOfRest * rest;
-    if (!p.ctx.ground.may_rise_above(joint.x - half, joint.x + half, joint.y - kGirdleKeepOutOfRest * rest,
-                                     girdle_keep_out_top(p.ctx, joint, rest, fell))) {
-      continue;
-    }
-    raise = std::max(raise, girdle_keep_out(p.ctx, joint, rest, fell) - joint.y);
-  }
-  auto keep_shoulder_out = [&](const RigLimb& limb) {
-    raise = std::max(raise, shoulder_need(p, p.body.body_point_ws(rig, bone_start(rig.model_rest[limb.bones[0]])), fell));
-  };
-  for (const RigLimb& a : rig.outline_arms) keep_shoulder_out(a);
-  for (const RigLimb& w : rig.outline_wings) keep_shoulder_out(w);
-  for (const RigLimb& w : rig.outline_wings) {
-    glm::vec2 a = p.body.body_point_ws(rig, bone_start(rig.model_rest[w.bones[0]]), raise);
-    for (int b : w.bones) {
-      const glm::vec2 e = p.body.body_point_ws(rig, bone_end(rig.model_rest[b], rig.skeleton.length(b)), raise);
-      const float need = raise_to_clear(a, e, p.ctx.level, p.ctx.hits);
-      if (need < 0.5f * rig.hip_height) raise += need;
-      a = e;
-    }
-  }
-  for (const RigLimb& f : rig.outline_fins) keep_shoulder_out(f);
-  p.body.root_y_ws += raise;
-}
-
-// 6. The raising clamps (2, 3, 5) may stretch a stance leg again past its reach (a girdle over
-// a higher step lifts the body while another girdle's feet stand lower): such a foot lifts at
-// the next chance instead of sliding (the gait clock reads the hand-off).
-void release_overstretched_feet(Placement& p) {
-  if (p.reach_checked && p.body.root_y_ws == p.checked_root && p.body.pitch == p.checked_pitch) return;
-  GirdleJointFs joints;
-  for (size_t i = 0; i < p.ctx.rig.legs.size(); ++i) {
-    if (stance_excess(p, i, joints) > 0.0f) p.handoff.lift_now[p.feet.foot_of_leg[i]] = 1;
-  }
-}
-
 }  // namespace
 
 // [SECTION] place_body --------------------------------------------------------------------------
 
-void place_body(const AnimContext& ctx, const PlacementInputs& in, const FootSet& feet, BodyFrame& body, BodyState& state,
-                TickHandoff& handoff) {
-  std::fill(handoff.lift_now.begin(), handoff.lift_now.end(), 0);
-  Placement p{ctx, in, feet, body, state, handoff};
+void place_body(const AnimContext& ctx, const PlacementInputs& in, const FootSet& feet, TickHandoff& handoff, BodyFrame& body,
+                BodyState& state) {
+  std::fill(handoff.release_next.begin(), handoff.release_next.end(), 0);
+  Placement p{ctx, in, feet, body, state, handoff.waiting, &handoff.release_next};
   const AnimRig& rig = ctx.rig;
   const float old_root = body.root_y_ws;
   float target_root = body.root_y_ws, target_pitch = 0.0f;
@@ -541,7 +153,7 @@ void place_body(const AnimContext& ctx, const PlacementInputs& in, const FootSet
     // step by the time it reaches it (the root height is smoothed).
     const float ahead = body.facing * in.speed * kLeglessLookAhead;
     auto hit = ground_below(ctx.level, rig.body_lo_ws(body.x_ws, body.facing) + std::min(ahead, 0.0f),
-                            rig.body_hi_ws(body.x_ws, body.facing) + std::max(ahead, 0.0f), body.root_y_ws + rig.hip_height, 100.0f);
+                            rig.body_hi_ws(body.x_ws, body.facing) + std::max(ahead, 0.0f), body.root_y_ws + rig.hip_height, ctx.rig.scale.search_depth);
     if (in.dt > 0.0f) state.body_lift *= std::exp(-in.dt);
     target_root = (hit ? hit->height_ws : body.root_y_ws - rig.root_rest_y) + rig.root_rest_y + state.body_lift;
   } else {
@@ -562,23 +174,107 @@ void place_body(const AnimContext& ctx, const PlacementInputs& in, const FootSet
   state.root_vy = in.dt > 0.0f ? (body.root_y_ws - old_root) / in.dt : 0.0f;
 }
 
-float standing_root(const AnimContext& ctx, const PlacementInputs& in, const FootSet& feet, const BodyFrame& body) {
+float standing_root(const AnimContext& ctx, const PlacementInputs& in, const FootSet& feet, const TickHandoff& handoff,
+                    const BodyFrame& body) {
   const AnimRig& rig = ctx.rig;
   if (rig.girdles.empty()) {
     auto hit = ground_below(ctx.level, rig.body_lo_ws(body.x_ws, body.facing), rig.body_hi_ws(body.x_ws, body.facing),
-                            body.root_y_ws + rig.hip_height, 100.0f);
+                            body.root_y_ws + rig.hip_height, ctx.rig.scale.search_depth);
     return (hit ? hit->height_ws : body.root_y_ws - rig.root_rest_y) + rig.root_rest_y;
   }
   BodyFrame frame = body;
   BodyState state;
-  TickHandoff handoff;
-  Placement p{ctx, in, feet, frame, state, handoff};
+  Placement p{ctx, in, feet, frame, state, handoff.waiting};
   thread_local std::vector<float> height;
   height.resize(rig.girdles.size());
   girdle_heights(p, height);
   float root = body.root_y_ws, pitch = 0.0f;
   body_target(p, height, &root, &pitch);
   return root;
+}
+
+
+// [SECTION] the body's other transitions ----------------------------------------------------------
+
+void reset_body(float x, float root_y, int facing, BodyFrame& body, BodyState& state) {
+  body.facing = facing < 0 ? -1 : 1;
+  body.x_ws = x;
+  body.lean = body.pitch = 0.0f;
+  body.root_y_ws = root_y;
+  state.root_vy = state.body_lift = 0.0f;
+}
+
+void mirror_body(const AnimRig& rig, BodyFrame& body) {
+  if (!rig.girdles.empty()) {
+    const float shift = rig.girdles.front().joint_ms.x + rig.girdles.back().joint_ms.x;
+    body.x_ws += body.facing * shift;
+  }
+  body.facing = -body.facing;
+  body.lean = 0.0f;
+}
+
+void lean_body(float lean, float keep, BodyFrame& body) { body.lean = approach(body.lean, lean, keep); }
+
+void move_body(float dx, BodyFrame& body) { body.x_ws += dx; }
+
+void fly_body(float root_y, float vy, float keep_level, BodyFrame& body, BodyState& state) {
+  body.root_y_ws = root_y;
+  body.pitch = approach(body.pitch, 0.0f, keep_level);
+  body.lean = approach(body.lean, 0.0f, keep_level);
+  state.root_vy = vy;
+}
+
+namespace {
+
+// Turns the body about its front girdle so that girdle `g` rises by dy.
+void tip_about_front(const AnimRig& rig, int g, float dy, BodyFrame& body) {
+  const glm::vec2 front = rig.girdles.front().joint_ms, joint = rig.girdles[g].joint_ms;
+  const float len = glm::length(joint - front);
+  if (len < 1e-4f) {
+    body.root_y_ws += dy;
+    return;
+  }
+  const glm::vec2 before = body.girdle_ws(rig, 0);
+  // Behind the front girdle (facing space), rising turns the nose down.
+  body.pitch -= std::asin(std::clamp(dy / len, -1.0f, 1.0f));
+  body.root_y_ws += before.y - body.girdle_ws(rig, 0).y;
+}
+
+}  // namespace
+
+bool rest_body_on_ground(const AnimContext& ctx, float floor, BodyFrame& body) {
+  const AnimRig& rig = ctx.rig;
+  if (rig.girdles.empty()) {
+    auto hit = ground_below(ctx.level, rig.body_lo_ws(body.x_ws, body.facing), rig.body_hi_ws(body.x_ws, body.facing),
+                            std::min(body.root_y_ws + 0.5f * rig.hip_height, floor), ctx.rig.scale.search_depth);
+    if (!hit || hit->height_ws + rig.root_rest_y <= body.root_y_ws) return false;
+    body.root_y_ws = hit->height_ws + rig.root_rest_y;
+    return true;
+  }
+  // Each girdle keeps out of the ground as clamp 5 keeps it (kGirdleKeepOutOfRest of its rest
+  // height above the ground within kGirdleKeepOutHalfOfRest of it).
+  bool landed = false;
+  for (int g = static_cast<int>(rig.girdles.size()) - 1; g >= 0; --g) {
+    const glm::vec2 joint = body.girdle_ws(rig, g);
+    const float rest = rig.girdles[g].rest_height;
+    const float half = kGirdleKeepOutHalfOfRest * rest;
+    auto hit = ground_below(ctx.level, joint.x - half, joint.x + half, joint.y + 0.5f * rest, ctx.rig.scale.search_depth);
+    if (!hit) continue;
+    const float need = hit->height_ws + kGirdleKeepOutOfRest * rest - joint.y;
+    if (need <= 0.0f) continue;
+    if (hit->height_ws >= floor && g > 0) {
+      tip_about_front(rig, g, need, body);
+    } else {
+      body.root_y_ws += need;
+      landed = true;
+    }
+  }
+  return landed;
+}
+
+void raise_body(float raise, BodyFrame& body, BodyState& state) {
+  body.root_y_ws += raise;
+  state.body_lift += raise;
 }
 
 }  // namespace ossa::anim

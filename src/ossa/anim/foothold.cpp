@@ -28,7 +28,7 @@ constexpr float kRiserGapOfRest = 0.25f;
 constexpr float kShinSlope = 1.0f;
 
 // The height of the box a foot needs above its contact point.
-float foot_height(const RigLeg& leg) { return std::max({0.02f, leg.ankle_rel_ms.y, 0.3f * leg.foot_length}); }
+float foot_height(const RigScale& scale, const RigLeg& leg) { return std::max({scale.foot_box, leg.ankle_rel_ms.y, 0.3f * leg.foot_length}); }
 
 // Would a foot landing at height y with its back edge at `back` have the shin cut a riser
 // behind it?
@@ -41,12 +41,12 @@ bool riser_behind(const FootholdInputs& in, const RigLeg& info, float rest_heigh
   if (!ground.covers(in.ctx.level, lo, hi, y, y + up)) {
     // Outside the profile (a level edited under a standing creature is re-sampled on the next
     // tick): no ground between a tread's height and a step above it.
-    return in.ctx.level.overlaps(Box{{lo, y + 0.02f}, {hi, y + up}});
+    return in.ctx.level.overlaps(Box{{lo, y + in.ctx.rig.scale.foot_box}, {hi, y + up}});
   }
   const float tol = std::max(info.ankle_rel_ms.y, kRiserOfRest * rest_height);
   // A real riser behind (a step, not a slope's tile): no ground between the tread's height and
   // a step above it, as the shin would cut its edge.
-  if (ground.largest_jump(lo, hi, reading) > reading.riser) return in.ctx.level.overlaps(Box{{lo, y + 0.02f}, {hi, y + up}});
+  if (ground.largest_jump(lo, hi, reading) > reading.riser) return in.ctx.level.overlaps(Box{{lo, y + in.ctx.rig.scale.foot_box}, {hi, y + up}});
   const float step = ground.step();
   for (int i = ground.column_of(lo), end = ground.column_of(hi); i <= end; ++i) {
     if (std::isnan(ground.column(i))) continue;
@@ -105,8 +105,9 @@ SlopeReading body_slope_reading(const AnimContext& ctx) {
 bool foot_fits(const FootholdInputs& in, int leg, glm::vec2 contact_ws) {
   const RigLeg& info = in.ctx.rig.legs[leg];
   const FootSpan span = foot_span_ws(info, in.body.facing);
-  const Box foot_box{{contact_ws.x + span.lo - 0.008f, contact_ws.y + 0.0005f},
-                     {contact_ws.x + span.hi + 0.008f, contact_ws.y + foot_height(info)}};
+  const RigScale& scale = in.ctx.rig.scale;
+  const Box foot_box{{contact_ws.x + span.lo - scale.fit_side, contact_ws.y + scale.fit_lift},
+                     {contact_ws.x + span.hi + scale.fit_side, contact_ws.y + foot_height(scale, info)}};
   return !in.ctx.level.overlaps(foot_box);
 }
 
@@ -119,18 +120,19 @@ bool reaches(const FootholdInputs& in, int leg, glm::vec2 p_ws, float reach_use)
 namespace {
 
 bool nearest_fit_within(const FootholdInputs& in, int leg, glm::vec2 near_ws, glm::vec2* spot, bool in_reach, float reach_use) {
-  // Centimetre by centimetre either way, up to half a leg's length, on ground within a step
-  // (one every leg pair could follow up, as in find_landing).
+  // Step by step (RigScale::search_step) either way, up to half a leg's length, on ground within
+  // a step (one every leg pair could follow up, as in find_landing).
   const AnimRig& rig = in.ctx.rig;
   const RigLeg& info = rig.legs[leg];
   const float up = in.ctx.params.max_step_up * rig.climb_height;
   const float down = in.ctx.params.max_step_down * rig.girdles[info.girdle].rest_height;
   // A flat foot stands on the highest ground under its sole.
   const float sole = rig.flat_contact ? in.body.facing * info.foot_length : 0.0f;
-  const float sole_lo = std::min(sole, 0.0f) - 0.005f, sole_hi = std::max(sole, 0.0f) + 0.005f;
-  const int n = std::max(1, static_cast<int>(0.5f * (info.reach + info.foot_length) / 0.01f));
+  const RigScale& scale = rig.scale;
+  const float sole_lo = std::min(sole, 0.0f) - scale.sole_side, sole_hi = std::max(sole, 0.0f) + scale.sole_side;
+  const int n = std::max(1, static_cast<int>(0.5f * (info.reach + info.foot_length) / scale.search_step));
   for (int k = 0; k <= 2 * n; ++k) {
-    const float x = near_ws.x + 0.01f * static_cast<float>(k % 2 == 0 ? k / 2 : -(k + 1) / 2);
+    const float x = near_ws.x + scale.search_step * static_cast<float>(k % 2 == 0 ? k / 2 : -(k + 1) / 2);
     auto hit = ground_below(in.ctx.level, x + sole_lo, x + sole_hi, near_ws.y + up, up + down);
     if (!hit) continue;
     const glm::vec2 p(x, hit->height_ws);
@@ -194,8 +196,9 @@ bool find_landing(const FootholdInputs& in, int leg, glm::vec2 foot_ws, float x_
   const int facing = in.body.facing;
   const auto [up, down, lowest, top] = step_limits(in, leg, foot_ws);
   const FootSpan span = foot_span_ws(info, facing);
-  const float span_lo = span.lo - 0.01f, span_hi = span.hi + 0.01f;
-  const float height = foot_height(info);
+  const RigScale& scale = rig.scale;
+  const float span_lo = span.lo - scale.landing_side, span_hi = span.hi + scale.landing_side;
+  const float height = foot_height(scale, info);
   const SlopeReading reading = girdle_slope_reading(in.ctx, info.girdle);
   const float stride = in.stride;
   const float stepx = std::max(kLandingStepOfStride * stride, 0.005f);
@@ -231,7 +234,7 @@ bool find_landing(const FootholdInputs& in, int leg, glm::vec2 foot_ws, float x_
       }
       if (!hit || hit->height_ws < floor_y) continue;
       const float y = hit->height_ws;
-      const Box foot_box{{x + span_lo + 0.002f, y + 0.002f}, {x + span_hi - 0.002f, y + height}};
+      const Box foot_box{{x + span_lo + scale.landing_inset, y + scale.landing_inset}, {x + span_hi - scale.landing_inset, y + height}};
       if (in.ctx.level.overlaps(foot_box)) continue;
       // Nothing between the foot and its landing rises more than a step above both: the foot
       // would have to be lifted over a wall (the swing could raise it, the leg could not).

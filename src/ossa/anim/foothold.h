@@ -1,5 +1,6 @@
 #pragma once
-// Foothold planner (DESIGN.md §7, stage 4): where a lifting foot lands. A landing is on ground
+// Foothold planner (DESIGN.md §7 "foothold planner"; part of the step stage, step.h): where a
+// lifting foot lands. A landing is on ground
 // the leg pairs can follow (no higher than max_step_up of the climb height, no deeper than
 // max_step_down of the girdle's standing height), the whole foot fits there, and the shin
 // coming down from above and behind clears the ground it steps down from (a riser, read from

@@ -81,7 +81,7 @@ void update_gait(const AnimRig& rig, const AnimatorParams& params, float speed, 
     gait.min_reach_x = 1e30f;
     for (const RigLeg& leg : rig.legs) {
       const float h = rig.girdles[leg.girdle].rest_height * params.stance_height;
-      gait.min_reach_x = std::min(gait.min_reach_x, std::sqrt(std::max(leg.contact_reach * leg.contact_reach - h * h, 0.0f)));
+      gait.min_reach_x = std::min(gait.min_reach_x, reach_across(leg.contact_reach, h));
     }
   }
   // The shortest reach limits most: x ↦ 1.8 x / duty is monotonic also in float arithmetic.
@@ -135,10 +135,48 @@ void update_target_offsets(const AnimRig& rig, GaitState& gait) {
   }
 }
 
-void start_clock(GaitState& gait, FootSet& feet, int lead) {
+void reset_offsets(const AnimRig& rig, const FootSet& feet, GaitState& gait) {
+  gait.foot_offset.assign(feet.feet.size(), 0.0f);
+  gait.foot_phase_prev.assign(feet.feet.size(), 0.0f);
+  for (size_t i = 0; i < rig.legs.size(); ++i) {
+    gait.foot_offset[feet.foot_of_leg[i]] = leg_phase_offset(rig, static_cast<int>(i), gait.trot_factor, gait.gallop_factor);
+  }
+}
+
+void start_clock(GaitState& gait, const FootSet& feet, int lead) {
   gait.moving = true;
-  gait.phase = frac(gait.duty - feet.of_leg(lead).offset);
-  for (FootState& f : feet.feet) f.phase_prev = frac(gait.phase + f.offset);
+  gait.phase = frac(gait.duty - gait.foot_offset[feet.foot_of_leg[lead]]);
+  for (size_t k = 0; k < gait.foot_offset.size(); ++k) gait.foot_phase_prev[k] = frac(gait.phase + gait.foot_offset[k]);
+}
+
+void tick_clock(const AnimRig& rig, const FootSet& feet, float speed, bool blocked, float dt, float ism, GaitState& gait,
+                std::vector<LegPhase>& leg_phase) {
+  if (!(speed > 0.0f && !blocked)) {
+    rest(gait, dt);
+    return;
+  }
+  const bool starting = !gait.moving;
+  if (starting) start_clock(gait, feet, 0);  // the lead leg lifts now; its first step is half a stride
+  gait.phase = frac(gait.phase + gait.frequency * dt);
+  update_target_offsets(rig, gait);
+  leg_phase.resize(rig.legs.size());
+  for (size_t i = 0; i < rig.legs.size(); ++i) {
+    const int foot = feet.foot_of_leg[i];
+    const bool stance = feet.feet[foot].state == LegState::kStance;
+    leg_phase[i] = advance_leg_phase(gait, foot, stance, gait.target_offset[i], starting, ism, dt);
+    end_leg_phase(gait, foot, leg_phase[i]);
+  }
+}
+
+void rest(GaitState& gait, float dt) {
+  gait.moving = false;
+  gait.idle_time += dt;
+}
+
+void tick_crawl(const AnimRig& rig, float speed, bool blocked, float dt, GaitState& gait) {
+  gait.crawl_phase = frac(gait.crawl_phase + speed * dt / std::max(rig.body_half_length, 0.05f));
+  gait.gait = !blocked && speed > 0.0f ? Gait::kCrawl : Gait::kIdle;
+  gait.idle_time += dt;
 }
 
 

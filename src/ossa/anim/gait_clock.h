@@ -1,5 +1,6 @@
 #pragma once
-// Gait clock (DESIGN.md §7, stage 2): one phase φ ∈ [0, 1) per creature advancing at f = v/λ,
+// Gait clock (DESIGN.md §7; stage 6 of Animator::update, and stage 8 where the clock ticks):
+// one phase φ ∈ [0, 1) per creature advancing at f = v/λ,
 // the gait blend by Froude number Fr = v²/(g·h), the duty factor β, the stride λ and each
 // leg's phase offset. Needs no level.
 //
@@ -22,6 +23,8 @@ const char* gait_name(Gait gait);
 
 namespace anim {
 
+// Owned by the gait clock (stage 6 of Animator::update): the clock's phase and blends, each
+// foot's phase offset, and the clocks of a standing or legless creature.
 struct GaitState {
   float phase = 0.0f;          // cycles, [0, 1)
   float frequency = 0.0f;      // cycles per second
@@ -33,6 +36,12 @@ struct GaitState {
   float gallop_factor = 0.0f;  // trot→gallop blend
   Gait gait = Gait::kIdle;
   bool moving = false;         // the clock runs (legs step)
+  // Per foot (FootSet::feet, not per leg: a foot keeps its offset when a turn hands it to
+  // another leg): its phase offset, easing towards its leg's target, and its local phase on
+  // the last tick, cycles.
+  std::vector<float> foot_offset, foot_phase_prev;
+  float idle_time = 0.0f;      // seconds the creature has stood (idle breathing)
+  float crawl_phase = 0.0f;    // cycles of a legless creature's travelling wave
 
   // Caches: the legs' target offsets at (offsets_trot, offsets_gallop), Fr^0.3 at
   // stride_froude, the shortest stance reach at reach_stance_height.
@@ -55,30 +64,47 @@ float leg_phase_offset(const AnimRig& rig, int leg, float trot_factor, float gal
 // gait.target_offset of every leg, when the gait blend moved.
 void update_target_offsets(const AnimRig& rig, GaitState& gait);
 
-// Starts the clock so that leg `lead`'s foot lifts now (its first step is half a stride).
-void start_clock(GaitState& gait, FootSet& feet, int lead);
+// Every foot's offset at the start of the blend given (a reset: feet in leg order).
+void reset_offsets(const AnimRig& rig, const FootSet& feet, GaitState& gait);
 
-// Advances leg `leg`'s foot by one tick of the running clock: its offset eases towards the
-// target (interpolation speed `ism`), and it returns the foot's local phase and whether the
-// phase crossed the duty factor (lift-off is due). `starting`: the clock started this tick.
-struct LegPhase {
-  float phase = 0.0f;
-  bool lift_due = false;
-};
+// Starts the clock so that leg `lead`'s foot lifts now (its first step is half a stride).
+void start_clock(GaitState& gait, const FootSet& feet, int lead);
+
+// A standing creature's clock: it stops, and the idle time runs on.
+void rest(GaitState& gait, float dt);
+// The clock stops (a landing: the legs start again from standing).
+inline void stop_clock(GaitState& gait) { gait.moving = false; }
+// Stage 8 for a legless creature: its travelling wave advances with the speed asked (one cycle
+// per half body; it runs on against a wall), its gait is a crawl unless it is blocked, and the
+// idle time runs.
+void tick_crawl(const AnimRig& rig, float speed, bool blocked, float dt, GaitState& gait);
+
+// Stage 8: the clock ticks. While the creature moves (speed > 0, m/s) and is not blocked: the
+// clock starts if it stood (the lead leg lifts now; GaitState::moving), the phase advances by
+// f·dt, and every foot's phase and lift-off go to leg_phase (per leg). Else it rests.
+void tick_clock(const AnimRig& rig, const FootSet& feet, float speed, bool blocked, float dt, float ism, GaitState& gait,
+                std::vector<LegPhase>& leg_phase);
+
+// Advances foot `foot`'s phase by one tick of the running clock: its offset eases towards its
+// leg's target (interpolation speed `ism`), and it returns the foot's local phase and whether
+// the phase crossed the duty factor while the foot stands (lift-off is due). `starting`: the
+// clock started this tick. end_leg_phase keeps the phase for the next tick's crossing test.
 // (Inline: once per leg and tick.)
-inline LegPhase advance_leg_phase(const GaitState& gait, FootState& f, float target_offset, bool starting, float ism, float dt) {
+inline LegPhase advance_leg_phase(GaitState& gait, int foot, bool stance, float target_offset, bool starting, float ism, float dt) {
   // Phase offsets ease towards their targets at this many cycles per second (× the
   // interpolation speed multiplier).
   constexpr float kOffsetEaseRate = 0.6f;
-  if (f.offset != target_offset) {
-    f.offset = circular_lerp(f.offset, target_offset,
-                             std::min(1.0f, kOffsetEaseRate * ism * dt / std::max(std::fabs(phase_diff(f.offset, target_offset)), 1e-6f)));
+  float& offset = gait.foot_offset[foot];
+  if (offset != target_offset) {
+    offset = circular_lerp(offset, target_offset,
+                           std::min(1.0f, kOffsetEaseRate * ism * dt / std::max(std::fabs(phase_diff(offset, target_offset)), 1e-6f)));
   }
   LegPhase out;
-  out.phase = frac(gait.phase + f.offset);
-  if (f.state == LegState::kStance) out.lift_due = starting ? out.phase >= gait.duty : crossed(f.phase_prev, out.phase, gait.duty);
+  out.phase = frac(gait.phase + offset);
+  if (stance) out.lift_due = starting ? out.phase >= gait.duty : crossed(gait.foot_phase_prev[foot], out.phase, gait.duty);
   return out;
 }
+inline void end_leg_phase(GaitState& gait, int foot, const LegPhase& p) { gait.foot_phase_prev[foot] = p.phase; }
 
 // Walk and run reference speeds, m/s: the walk at Froude 0.5, the full run at 2.5 (for two or
 // more leg pairs inside the gallop band, params.gallop_froude).

@@ -151,4 +151,39 @@ float GroundProfile::slope_top(float from_ws, float a_ws, float b_ws, const Slop
   return top;
 }
 
+namespace anim {
+
+namespace {
+
+// The ground profile: columns a tenth of the shortest foot-or-leg size wide (at least 5 mm,
+// at most 2 cm); its window reaches this many body lengths plus strides either side and
+// this many hip heights above and below the root.
+constexpr float kProfileStepOfFoot = 0.1f, kProfileSpanStrides = 2.0f;
+// ...of strides at least this many hip heights long (a walk's: a creature setting off needs
+// no wider window at once).
+constexpr float kProfileStrideOfHip = 2.5f, kProfileAboveOfHip = 1.0f, kProfileBelowOfHip = 4.0f;
+
+}  // namespace
+
+void refresh_ground_profile(const Level& level, const AnimRig& rig, const BodyFrame& body, float stride, GroundProfile& ground) {
+  // The root need not be the middle of the body: a whole body length either side.
+  const float reach = 2.0f * rig.body_half_length + rig.longest_contact_reach;
+  const float span = reach + kProfileSpanStrides * std::max(stride, kProfileStrideOfHip * rig.hip_height);
+  const float x0 = body.x_ws - span, x1 = body.x_ws + span;
+  // Above the root: a hip height, or as high as the steepest slope rises over the body and a
+  // leg's reach (a long, low body meets the hill ahead above its own height).
+  const float above = std::max(kProfileAboveOfHip * rig.hip_height, GroundProfile::kMaxSlope * reach);
+  const float lo = body.root_y_ws - 0.75f * kProfileBelowOfHip * rig.hip_height;
+  const float hi = body.root_y_ws + 0.5f * above;
+  if (ground.covers(level, x0, x1, lo, hi)) return;
+  float size = 1e30f;
+  for (const RigLeg& leg : rig.legs) size = std::min(size, std::max(leg.foot_length, 0.25f * leg.reach));
+  if (rig.legs.empty()) size = rig.hip_height;
+  const float step = std::clamp(kProfileStepOfFoot * size, 0.005f, 0.02f);
+  // Twice the window, so that it lasts for a while.
+  ground.build(level, x0 - span, x1 + span, body.root_y_ws + above, above + kProfileBelowOfHip * rig.hip_height, step);
+}
+
+}  // namespace anim
+
 }  // namespace ossa

@@ -1,5 +1,5 @@
 #pragma once
-// Ground profile (DESIGN.md §7, stage 1): the level's top surface around the creature, from
+// Ground profile (DESIGN.md §7; stage 1 of Animator::update): the level's top surface around the creature, from
 // behind its hind feet to beyond its next landings, sampled into a 1D height profile. Column
 // i covers [x0 + i·step, x0 + (i+1)·step] (closed) and holds the highest box top that touches
 // it between top - depth and top (exactly what Level::ground_height_below answers for that
@@ -15,6 +15,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "ossa/anim/anim_state.h"
 #include "ossa/level/level.h"
 
 namespace ossa {
@@ -112,5 +113,16 @@ class GroundProfile {
   std::uint64_t revision_ = 0;
   const Level* level_ = nullptr;
 };
+
+namespace anim {
+
+// Stage 1: keeps `ground` covering the creature at `body`: the body, a leg's reach and
+// kProfileSpanStrides strides (of `stride` metres, at least a walk's) either side, from a hip
+// height above the root to four below, in columns a tenth of the shortest foot or quarter leg
+// (5 mm to 2 cm). Rebuilt, twice that window wide, only when the creature nears its edge or
+// the level changed.
+void refresh_ground_profile(const Level& level, const AnimRig& rig, const BodyFrame& body, float stride, GroundProfile& ground);
+
+}  // namespace anim
 
 }  // namespace ossa

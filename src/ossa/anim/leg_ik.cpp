@@ -10,8 +10,6 @@ namespace ossa::anim {
 
 namespace {
 
-// A rolled foot that would sweep into a step turns back by bisection in this many halvings.
-constexpr int kRollBisections = 6;
 constexpr int kTuckBisections = 6;
 // A swinging leg's escape path: lifted to at most this many leg lengths below the joint,
 // tucked this far under it, drawn back a foot's length plus this much of the leg.
@@ -21,38 +19,6 @@ constexpr float kDrawBackOfLeg = 0.02f;
 
 
 }  // namespace
-
-// leg_ankle's rare part (leg_ik.h), out of line so that the common one stays small.
-[[gnu::noinline]] bool detail::limit_foot_roll(const AnimContext& ctx, const BodyFrame& body, int leg, glm::vec2 contact_fs,
-                                               glm::vec2* foot_dir) {
-  const RigLeg& info = ctx.rig.legs[leg];
-  const float F = info.foot_span;
-  auto clear = [&](glm::vec2 u) {
-    const glm::vec2 seg[2] = {body.to_ws(contact_fs - F * u), body.to_ws(contact_fs)};
-    return !polyline_hits_level(ctx.level, seg, 2, ctx.hits);
-  };
-  if (clear(*foot_dir)) return false;
-  const glm::vec2 rest = info.foot_dir_ms;
-  const float full = std::atan2(rest.x * foot_dir->y - rest.y * foot_dir->x, glm::dot(rest, *foot_dir));
-  float lo = 0.0f, hi = 1.0f;  // fractions of the roll: lo clears, hi does not
-  for (int k = 0; k < kRollBisections; ++k) {
-    const float mid = 0.5f * (lo + hi);
-    (clear(rotate(rest, mid * full)) ? lo : hi) = mid;
-  }
-  *foot_dir = lo > 0.0f ? rotate(rest, lo * full) : rest;
-  return true;
-}
-
-bool stance_leg_hits(const AnimContext& ctx, const BodyFrame& body, int leg, const FootState& f, glm::vec2 joint_fs) {
-  const RigLeg& info = ctx.rig.legs[leg];
-  const glm::vec2 contact = body.to_fs(f.pos_ws);
-  glm::vec2 dir;
-  const glm::vec2 ankle = leg_ankle(ctx, body, leg, contact, joint_fs, true, f.stance_clear, &dir, nullptr);
-  const TwoBoneIkResult ik = solve_two_bone_ik_directions(joint_fs, info.upper, info.lower, ankle, info.bend);
-  const glm::vec2 tip = ik.end + info.foot_length * dir;
-  const glm::vec2 p[4] = {body.to_ws(joint_fs), body.to_ws(ik.middle), body.to_ws(ik.end), body.to_ws(tip)};
-  return polyline_hits_level(ctx.level, p, info.foot_length > 0.0f ? 4 : 3, ctx.hits);
-}
 
 namespace {
 
@@ -84,7 +50,7 @@ bool LegIkJob::run() const {
       const float dx = contact.x - joint.x;
       const float len = glm::length(contact - joint);
       if (len > r && std::fabs(dx) < r && contact.y < joint.y) {
-        contact.y = joint.y - std::sqrt(r * r - dx * dx);
+        contact.y = joint.y - reach_across(r, dx);
       } else if (len > r) {  // out of reach to the side: towards it, as far as the leg reaches
         contact = joint + (contact - joint) * (r / len);
       }
@@ -97,14 +63,14 @@ bool LegIkJob::run() const {
       const float r = info.leg_reach;
       const float dx = ankle.x - joint.x;
       if (glm::length(ankle - joint) > r && std::fabs(dx) < r && ankle.y < joint.y) {
-        ankle.y = joint.y - std::sqrt(r * r - dx * dx);
+        ankle.y = joint.y - reach_across(r, dx);
       }
       // A foot lifted closer to the joint than the leg folds (short legs, high swings) moves
       // out sideways to where the folded leg reaches, not down through the ground.
       const float fold = info.fold;
       const glm::vec2 d = ankle - joint;
       if (glm::dot(d, d) < fold * fold && std::fabs(d.y) < fold) {
-        ankle.x = joint.x + (d.x >= 0.0f ? 1.0f : -1.0f) * std::sqrt(fold * fold - d.y * d.y);
+        ankle.x = joint.x + (d.x >= 0.0f ? 1.0f : -1.0f) * reach_across(fold, d.y);
       }
     }
     auto leg_ik = [&](glm::vec2 target) {  // directions only: the angles are for pose() (lazily)
@@ -150,10 +116,7 @@ bool LegIkJob::run() const {
           lo = t;
         }
         if (hi > 0.0f) {
-          for (int k = 0; k < kTuckBisections; ++k) {
-            const float mid = 0.5f * (lo + hi);
-            (leg_hits(candidate(mid)) ? lo : hi) = mid;
-          }
+          bisect(lo, hi, kTuckBisections, [&](float mid) { return leg_hits(candidate(mid)); });
           ik = candidate(hi);
           foot_dir = dir;
         }

@@ -16,9 +16,6 @@ constexpr float kMaxTailLift = 1.6f;   // radians at the tail's root, when curli
 constexpr size_t kMaxFinBones = 7;
 constexpr int kClearBisections = 6;
 constexpr int kFinBisections = 7;
-// An arm's hand keeps 1 cm plus this many hip heights above the ground.
-constexpr float kArmMargin = 0.01f;
-constexpr float kArmMarginOfHip = 0.02f;
 
 }  // namespace
 
@@ -57,8 +54,8 @@ void keep_arm_above_ground(const AnimContext& ctx, const BodyFrame& body, const 
       x1 = std::max(x1, xw);
       low = std::min(low, q.y);
     }
-    const auto ground = ground_below(ctx.level, x0, x1, p.shoulder.y, 100.0f);
-    const float margin = kArmMargin + kArmMarginOfHip * ctx.rig.hip_height;
+    const auto ground = ground_below(ctx.level, x0, x1, p.shoulder.y, ctx.rig.scale.search_depth);
+    const float margin = ctx.rig.scale.arm_margin;
     if (!ground || low >= ground->height_ws + margin) break;
     set_wrist(p, p.wrist + glm::vec2(0.0f, ground->height_ws + margin - low));
   }
@@ -84,11 +81,10 @@ void keep_arm_above_ground(const AnimContext& ctx, const BodyFrame& body, const 
         set_wrist(q, tuck);
         if (hits(current())) continue;
         float lo = 0.0f, hi = 1.0f;  // fractions of the way to the tuck: lo hits, hi clears
-        for (int k = 0; k < kClearBisections; ++k) {
-          const float mid = 0.5f * (lo + hi);
+        bisect(lo, hi, kClearBisections, [&](float mid) {
           set_wrist(q, glm::mix(q.wrist, tuck, mid));
-          (hits(current()) ? lo : hi) = mid;
-        }
+          return hits(current());
+        });
         set_wrist(q, glm::mix(q.wrist, tuck, hi));
         return;
       }
@@ -106,7 +102,8 @@ float body_out_of_ground(const AnimContext& ctx, const BodyFrame& body, const st
   auto keep_out = [&](glm::vec2 p_fs, float from_y_fs) {
     const glm::vec2 p = body.to_ws(p_fs);
     const float from = body.to_ws({p_fs.x, std::max(from_y_fs, p_fs.y)}).y;
-    if (auto below = ground_below(ctx.level, p.x - 0.02f, p.x + 0.02f, from + ctx.rig.hip_height, 100.0f)) {
+    const float span = ctx.rig.scale.ground_span;
+    if (auto below = ground_below(ctx.level, p.x - span, p.x + span, from + ctx.rig.hip_height, ctx.rig.scale.search_depth)) {
       raise = std::max(raise, below->height_ws - p.y);
     }
   };
@@ -153,10 +150,7 @@ void keep_tail_clear(const AnimContext& ctx, const BodyFrame& body, const std::v
   float most = kMaxTailCurl * up;
   if (hits(most) && !hits(-most)) most = -most;
   float lo = 0.0f, hi = 1.0f;  // fractions of the most: lo hits, hi clears (or is the last resort)
-  for (int k = 0; k < kClearBisections; ++k) {
-    const float mid = 0.5f * (lo + hi);
-    (hits(mid * most) ? lo : hi) = mid;
-  }
+  bisect(lo, hi, kClearBisections, [&](float mid) { return hits(mid * most); });
   float curl = hi * most, lift = 0.0f;
   if (hi == 1.0f && hits(most)) {
     // Curled as far as it goes and still in the step (a ledge's face right behind a body that
@@ -166,10 +160,7 @@ void keep_tail_clear(const AnimContext& ctx, const BodyFrame& body, const std::v
     if (!hits(0.0f, most_lift)) {
       curl = 0.0f;
       lo = 0.0f, hi = 1.0f;
-      for (int k = 0; k < kClearBisections; ++k) {
-        const float mid = 0.5f * (lo + hi);
-        (hits(0.0f, mid * most_lift) ? lo : hi) = mid;
-      }
+      bisect(lo, hi, kClearBisections, [&](float mid) { return hits(0.0f, mid * most_lift); });
       lift = hi * most_lift;
     } else {
       lift = most_lift;
@@ -216,10 +207,7 @@ void keep_fin_clear(const AnimContext& ctx, const BodyFrame& body, const RigLimb
   }
   if (turn == 0.0f) turn = 0.5f * kPi * up;  // nothing clears: the tip up, as before
   float lo = 0.0f, hi = 1.0f;  // fractions of the turn: lo hits, hi clears (or is the last resort)
-  for (int k = 0; k < kFinBisections; ++k) {
-    const float mid = 0.5f * (lo + hi);
-    (clears(mid * turn) ? hi : lo) = mid;
-  }
+  bisect(lo, hi, kFinBisections, [&](float mid) { return !clears(mid * turn); });
   pose.locals[fin.bones[0]].angle_ls = wrap_angle(base + hi * turn);
 }
 

@@ -1,5 +1,6 @@
 #pragma once
-// Limb clearance (DESIGN.md §7, stage 8): the limbs that do not stand keep out of the level —
+// Limb clearance (DESIGN.md §7 "limbs"; part of the pose stage, pose_stage.h, stage 12 of
+// Animator::update): the limbs that do not stand keep out of the level —
 // arms lift their wrists above the ground or fold (tucked under the shoulder, up in front,
 // up behind), fins and folded wings turn up at the root, a tail curls up out of a step, and a
 // legless body bent by its wave rises out of the ground.

@@ -1,7 +1,8 @@
 #pragma once
-// Locomotion mode (DESIGN.md §7, stage 3): grounded → airborne → landing → grounded, and the
-// jump's crouch and take-off.
-//   kGrounded  the gait clock, foothold planner, swing and body placement run (stages 2, 4–6);
+// Locomotion mode (DESIGN.md §7; stages 3, 9 and 11 of Animator::update, and A1, A4 and A5 in
+// the air):
+// grounded → airborne → landing → grounded, and the jump's crouch and take-off.
+//   kGrounded  the gait clock, the step stage and body placement run (stages 6–10);
 //   kCrouch    the same, the girdles lowered by the crouch before a jump;
 //   kAirborne  the root follows a ballistic path under gravity from where it left the ground,
 //              with the speed it had (a wall stops it horizontally, a ceiling vertically); the
@@ -11,8 +12,11 @@
 //              with the speed of the fall; feet are planted where they touch; then grounded,
 //              and body placement's smoothing brings the body back up.
 // A creature steps off a drop deeper than its legs reach: the foothold planner finds no ground
-// (foothold.h drop_ahead), the lifting foot hangs over the edge reaching down (FootState::air),
-// and once no foot is left on the ground the creature is airborne.
+// (foothold.h drop_ahead), the lifting foot hangs over the edge reaching down (step.h), and
+// once no foot is left on the ground the creature is airborne.
+// Owned here: LocomotionState (the mode, the crouch, the path in the air, the landing's
+// descent, the counts). The body moves through body placement's transitions, the feet through
+// the step stage's.
 //
 // Inputs: AnimContext, the body frame, the feet; world space (_ws), metres, seconds.
 
@@ -31,9 +35,6 @@ const char* locomotion_name(Locomotion mode);  // "grounded", "crouch", "airborn
 
 namespace anim {
 
-// A foot stepping off a ledge, or a fall, lands only on ground this far below the ledge left
-// (FootState::floor, LocomotionState::floor), metres.
-inline constexpr float kFloorBelowLedge = 0.01f;
 
 // Counted since the animator's reset (a respawn keeps them).
 struct LocomotionStats {
@@ -72,10 +73,24 @@ float jump_speed(const AnimRig& rig, const AnimatorParams& params);
 void begin_crouch(const AnimRig& rig, const AnimatorParams& params, LocomotionState& loco);
 bool advance_crouch(const AnimRig& rig, const AnimatorParams& params, float dt, LocomotionState& loco);
 
-// The root leaves the ground with `velocity` (world, m/s): a jump (feet on the ground push off
-// until their legs are stretched, a quadruped's front feet first, so the hind legs push last)
-// or a fall (every foot hangs).
-void take_off(const AnimContext& ctx, const BodyFrame& body, glm::vec2 velocity, bool jump, FootSet& feet,
+// Stage 3: the landing's descent runs on; the jump button, grounded, begins the crouch.
+void begin_tick(const AnimRig& rig, const AnimatorParams& params, bool jump, float dt, LocomotionState& loco);
+// Stage 9: the crouch deepens; true when it is over (TickHandoff::crouch_done).
+bool tick_crouch(const AnimRig& rig, const AnimatorParams& params, float dt, LocomotionState& loco);
+
+// Stage 11: what changes the mode at the end of a grounded tick: the crouch over (a jump), the
+// last foot or the legless body gone over a drop (a fall), the landing's descent over.
+enum class ModeChange : uint8_t { kNone, kJump, kFall, kLanded };
+ModeChange mode_change(const AnimContext& ctx, const BodyFrame& body, const FootSet& feet, bool was_landing, bool crouch_done,
+                       const LocomotionState& loco);
+// A creature standing on a floor at the kill height is below it once its legs give on landing:
+// where the feet would stand under the root is below the level's kill height.
+bool below_kill_height(const AnimRig& rig, const BodyFrame& body, const Level& level);
+
+// The root leaves the ground with `velocity` (world, m/s): a jump or a fall. Counts it and sets
+// loco.floor, the height a fall lands only below (the highest ledge a foot stepped off); the
+// step stage then lifts the feet (step.h leave_ground).
+void take_off(const AnimContext& ctx, const BodyFrame& body, glm::vec2 velocity, bool jump, const FootSet& feet,
               LocomotionState& loco);
 
 // Is no foot on the ground and none about to land (every foot hangs in the air)?
@@ -84,32 +99,31 @@ bool unsupported(const FootSet& feet);
 // below it, under the whole body)?
 bool legless_over_drop(const AnimContext& ctx, const BodyFrame& body);
 
-// Where leg `leg`'s foot hangs in the air: under its girdle, tucked (extension 0) or reaching
-// for the ground (1), a front leg ahead and a hind leg behind.
-glm::vec2 air_target(const AnimContext& ctx, const BodyFrame& body, int leg, float extension);
+// ---- In the air (stages A1, A4) ----------------------------------------------------------------
+// The path's time advances by dt; its horizontal step is swept against walls (`model_fs`, the
+// last pose's facing-space matrices, give the sweep its outline; `boxes` is scratch): a wall
+// stops the path horizontally. True with *dx (world metres) when the body moves along x.
+bool fly_along(const AnimContext& ctx, float dt, const BodyFrame& body, const std::vector<Mat2x3>& model_fs,
+               std::vector<Box>& boxes, LocomotionState& loco, float* dx);
+// The root's height on the path now (in closed form from its origin: the apex is the
+// ballistic one); a ceiling stops the rise. Sets loco.vy.
+float path_height(const AnimContext& ctx, const BodyFrame& body, const std::vector<Mat2x3>& model_fs, std::vector<Box>& boxes,
+                  LocomotionState& loco);
+// How far the legs reach for the ground, in [0, 1]: tucked while rising or high above it.
+float reach_extension(const AnimContext& ctx, const BodyFrame& body, const LocomotionState& loco);
+// Stage A4. No foot planted yet: may the body itself meet the ground (no foot stands, and it
+// falls)?
+// `floor` is the height below which it lands (the ledge a fall left).
+bool body_may_land(const LocomotionState& loco, const FootSet& feet, float* floor);
 
-// A foot starts hanging in the air from where it is (no jump: its offset eases away).
-void hang(const AnimContext& ctx, const BodyFrame& body, int leg, float extension, FootState& foot);
-
-// Feet hanging in the air follow their targets and are planted where they meet the top of a
-// box on the way down; reach_ground (on the ground: stepping off, landing): a foot reaches
-// down to ground its leg reaches below it; may_land false (the body still rising): a foot
-// meeting ground is carried along it, not planted. Returns how many were planted.
-int update_air_feet(const AnimContext& ctx, const BodyFrame& body, float extension, float dt, bool reach_ground,
-                    FootSet& feet, bool may_land = true);
-
-// One tick in the air: the body along its path (`model_fs`, the last pose's facing-space
-// matrices, give the wall sweep its outline; `boxes` is scratch), pitch and lean easing level
-// (keep_level: exp(-rate·dt)), the feet pushing off, hanging and reaching. True at touch-down
-// (a foot planted, or the body meeting the ground first): call begin_landing.
-bool airborne_tick(const AnimContext& ctx, float dt, float keep_level, const std::vector<Mat2x3>& model_fs,
-                   std::vector<Box>& boxes, BodyFrame& body, FootSet& feet, LocomotionState& loco);
-
-// Touch-down: the landing's descent from the root's height now to `standing_root` (body
+// Stage A5, touch-down: the landing's descent from the root's height now to `standing_root` (body
 // placement's, for the feet where they are) less the compression. Counts the fall.
 void begin_landing(const AnimContext& ctx, const BodyFrame& body, float standing_root, LocomotionState& loco);
 // The root's height during the landing's descent at loco.time; NaN once it is over.
 float landing_root(const LocomotionState& loco);
+// The landing's descent is over: grounded again (step.h set_down_after_landing sets the feet
+// that found no ground down).
+void finish_landing(LocomotionState& loco);
 
 }  // namespace anim
 }  // namespace ossa

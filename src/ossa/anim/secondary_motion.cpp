@@ -44,7 +44,7 @@ void swing_arm(const AnimRig& rig, const SplinePrototypes& prototypes, const Gai
                float motion, Pose& pose) {
   float p = gait.phase;
   for (size_t i = 0; i < rig.legs.size(); ++i) {
-    if (rig.legs[i].side == arm.side) p = frac(gait.phase + feet.of_leg(static_cast<int>(i)).offset);
+    if (rig.legs[i].side == arm.side) p = frac(gait.phase + gait.foot_offset[feet.foot_of_leg[i]]);
   }
   const float t = frac(p + 0.5f);
   for (int k = 0; k < 2; ++k) {

@@ -1,5 +1,6 @@
 #pragma once
-// Secondary motion (DESIGN.md §7, stage 8): what follows the body rather than carrying it —
+// Secondary motion (DESIGN.md §7 "limbs"; the pose stage, pose_stage.h, stage 12 of
+// Animator::update, and body placement's bob, stage 10): what follows the body rather than carrying it —
 // the pelvis bob (or idle breathing), the tail's damped spring, the travelling wave of legless
 // bodies, the arms swinging counter to their same-side leg and the fins' slow beat.
 //

@@ -5,14 +5,12 @@
 
 #include "ossa/anim/anim_math.h"
 #include "ossa/anim/animator_params.h"
-#include "ossa/anim/leg_ik.h"
+#include "ossa/anim/leg_geometry.h"
 
 namespace ossa::anim {
 
 namespace {
 
-// Clearance the raised path keeps above a box, metres.
-constexpr float kSwingClearance = 0.01f;
 // A path that would have to rise more than this many leg-plus-foot lengths meets a wall.
 constexpr float kMaxRaiseOfLeg = 2.0f;
 constexpr int kRaiseIterations = 8;
@@ -101,8 +99,11 @@ bool raise_for_clearance(const AnimContext& ctx, int facing, int leg, FootState&
     const glm::vec2 p = point_on_swing(f, s);
     const glm::vec2 q = p + glm::vec2(facing * ankle_rel.x, ankle_rel.y);
     const glm::vec2 r = p + glm::vec2(facing * tip_rel.x, tip_rel.y);
-    // A little narrower than find_landing's test, so a landing it found clears at its end.
-    return Box{glm::min(glm::min(p, q), r) - glm::vec2(0.006f, 0.0f), glm::max(glm::max(p, q), r) + glm::vec2(0.006f, 0.005f)};
+    // A little narrower than find_landing's test, so a landing it found clears at its end
+    // (rig_scale.h).
+    const RigScale& scale = ctx.rig.scale;
+    return Box{glm::min(glm::min(p, q), r) - glm::vec2(scale.swing_side, 0.0f),
+               glm::max(glm::max(p, q), r) + glm::vec2(scale.swing_side, scale.swing_top)};
   };
   foot[0] = foot_box(0.0f);
   std::vector<int>& hits = ctx.hits;
@@ -125,7 +126,7 @@ bool raise_for_clearance(const AnimContext& ctx, int facing, int leg, FootState&
       }
       for (; k < kSwingSamples; ++k) {
         if (!box.overlaps(foot[k])) continue;
-        const float depth = box.top() + kSwingClearance - foot[k].min_ws.y;
+        const float depth = box.top() + ctx.rig.scale.swing_clearance - foot[k].min_ws.y;
         need = std::max(need, depth / std::max(bump(static_cast<float>(k) / kSwingSamples), kMinBump));
       }
     }
@@ -176,7 +177,7 @@ void start_ease(const FootholdInputs& in, int leg, FootState& f, const glm::vec2
     const glm::vec2 joint = in.body.to_fs(in.body.girdle_ws(in.ctx.rig, info.girdle));
     const float reach = kFootReach * info.contact_reach;
     const float h = joint.y - landing.y;
-    const float reach_x = 0.9f * std::sqrt(std::max(reach * reach - h * h, 0.0f));
+    const float reach_x = 0.9f * reach_across(reach, h);
     const float dx = std::clamp(in.body.to_fs(landing).x - joint.x, -reach_x, reach_x);
     glm::vec2 spot;
     if (nearest_fit(in, leg, in.body.to_ws({joint.x + dx, landing.y}), &spot, true)) landing = spot;
@@ -268,7 +269,7 @@ bool advance_swing(const FootholdInputs& in, const SwingTick& tick, int leg, Foo
       if (nearest_fit(in, leg, below_joint, &spot) && reaches(in, leg, spot)) {
         const float R = info.contact_reach;
         const float dxj = body.to_fs(f.to_ws).x - joint.x;
-        f.pos_ws = body.to_ws({body.to_fs(f.to_ws).x, joint.y - std::sqrt(std::max(R * R - dxj * dxj, 0.0f))});
+        f.pos_ws = body.to_ws({body.to_fs(f.to_ws).x, joint.y - reach_across(R, dxj)});
         start_ease(in, leg, f, &spot);
         f.hover = 0.0f;
         return false;

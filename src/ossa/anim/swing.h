@@ -1,5 +1,6 @@
 #pragma once
-// Swing (DESIGN.md §7, stage 5): a lifted foot's path from where it lifted to its landing —
+// Swing (DESIGN.md §7 "swing"; part of the step stage, step.h, stages 2, 4, 8 and A3 of
+// Animator::update): a lifted foot's path from where it lifted to its landing —
 // the blended walk/run prototype [T 4.4.1] mapped onto the plan, raised until the whole foot
 // clears every box [T 5.1e] — and its progress tick by tick until touch-down.
 //

@@ -4,6 +4,8 @@
 #include <cmath>
 
 #include "ossa/anim/animator_params.h"
+#include "ossa/anim/foothold.h"
+#include "ossa/anim/step.h"
 #include "ossa/anim/swing.h"
 
 namespace ossa::anim {
@@ -18,24 +20,21 @@ constexpr float kTurnStepSeconds = 0.3f;
 
 }  // namespace
 
-void turn_round(const AnimContext& ctx, const SplinePrototypes& prototypes, float run_factor, float stride, float duty,
-                BodyFrame& body, FootSet& feet) {
+void turn_feet(const AnimContext& ctx, const SplinePrototypes& prototypes, const GaitState& gait, const BodyFrame& body,
+               FootSet& feet) {
   const AnimRig& rig = ctx.rig;
   const int n = static_cast<int>(rig.girdles.size());
-  // A foot hanging over a drop (locomotion.h) turns back with the creature: it steps under
-  // its girdle like any foot in the air (below).
+  // A foot hanging over a drop (step.h) turns back with the creature: it steps under its
+  // girdle like any foot in the air (below).
   std::vector<char> was_air(feet.feet.size(), 0);
   for (size_t k = 0; k < feet.feet.size(); ++k) {
     FootState& f = feet.feet[k];
     if (!f.air) continue;
     was_air[k] = 1;
-    f.air = false;
-    f.hang_beyond = NAN;
-    f.from_ws = f.to_ws = f.pos_ws;
+    unhang(f);
   }
   if (n > 0) {
     std::vector<int> old = feet.foot_of_leg;
-    const float shift = rig.girdles.front().joint_ms.x + rig.girdles.back().joint_ms.x;
     for (int g = 0; g < n; ++g) {
       const RigGirdle& mine = rig.girdles[g];
       const RigGirdle& other = rig.girdles[n - 1 - g];
@@ -49,11 +48,8 @@ void turn_round(const AnimContext& ctx, const SplinePrototypes& prototypes, floa
     bool ok = true;
     for (int f : feet.foot_of_leg) ok &= (seen[f]++ == 0);
     if (!ok) feet.foot_of_leg = old;
-    body.x_ws += body.facing * shift;
   }
-  body.facing = -body.facing;
-  body.lean = 0.0f;
-  const FootholdInputs in{ctx, body, stride, duty, &feet};
+  const FootholdInputs in = planner(ctx, body, gait, feet);
   // Girdles spaced unevenly along the body (three leg pairs) cannot all land on feet: a leg
   // whose foot (standing or in the air) is now out of reach lifts from the nearest foot on the
   // ground it reaches and steps under its girdle. A foot in the air heading out of reach (to
@@ -63,7 +59,7 @@ void turn_round(const AnimContext& ctx, const SplinePrototypes& prototypes, floa
     FootState& f = feet.of_leg(leg);
     const RigLeg& info = rig.legs[i];
     const float h = rig.girdles[info.girdle].rest_height * ctx.params.stance_height;
-    const float reach_x = kTurnReachUse * std::sqrt(std::max(info.contact_reach * info.contact_reach - h * h, 0.0f));
+    const float reach_x = kTurnReachUse * reach_across(info.contact_reach, h);
     const float joint_x = body.girdle_ws(rig, info.girdle).x;
     const bool foot_in_reach = std::fabs(f.pos_ws.x - joint_x) <= reach_x;
     if (!was_air[feet.foot_of_leg[i]] && foot_in_reach &&
@@ -80,7 +76,7 @@ void turn_round(const AnimContext& ctx, const SplinePrototypes& prototypes, floa
     }
     glm::vec2 landing;
     if (!find_landing(in, leg, f.pos_ws, joint_x, &landing)) landing = f.pos_ws;
-    begin_swing(ctx, body, leg, f, landing, step_shape(prototypes, run_factor, kTurnStepLiftOfLeg * info.reach, 1.0f / kTurnStepSeconds, true));
+    begin_swing(ctx, body, leg, f, landing, step_shape(prototypes, gait.run_factor, kTurnStepLiftOfLeg * info.reach, 1.0f / kTurnStepSeconds, true));
   }
   // Feet now point the other way: one that would reach into a step takes a quick step to the
   // nearest place it fits (already lifted on this tick).

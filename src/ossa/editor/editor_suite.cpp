@@ -42,10 +42,13 @@ EditorSuite::EditorSuite(World& world, const Generator* generator, EditorPaths p
       }
     };
     creature_->on_spawn_npc = [w](std::shared_ptr<const Creature> c) {
-      // Beside the player (ground search starts a metre above its feet), else at the spawn.
+      // A body length ahead of the player, on the ground its feet stand on (the reset searches
+      // for ground from above that height), else at the spawn.
       glm::vec2 at = w->level().spawn_ws;
-      if (const Player* p = w->player())
-        at = {p->animator().x() + 1.0f, p->animator().model_to_world().m[5] + 1.0f};
+      if (const Player* p = w->player()) {
+        const Animator& a = p->animator();
+        at = {a.x() + a.facing() * (a.rig().body_front - a.rig().body_back), a.root_y() - a.rig().root_rest_y};
+      }
       w->spawn_npc(std::move(c), at, 1000u + static_cast<uint64_t>(w->npc_count()));
     };
   }

@@ -9,7 +9,7 @@ namespace ossa {
 
 void Hud::add_frame_time(float seconds) {
   if (!std::isfinite(seconds) || seconds < 0.0f) return;
-  frame_ms_[next_] = seconds * 1000.0f;
+  frame_millis_[next_] = seconds * 1000.0f;
   next_ = (next_ + 1) % kHistory;
   count_ = std::min(count_ + 1, kHistory);
 }
@@ -17,7 +17,7 @@ void Hud::add_frame_time(float seconds) {
 float Hud::fps() const {
   if (count_ == 0) return 0.0f;
   float sum = 0.0f;
-  for (int i = 0; i < count_; ++i) sum += frame_ms_[i];
+  for (int i = 0; i < count_; ++i) sum += frame_millis_[i];
   return sum > 0.0f ? 1000.0f * static_cast<float>(count_) / sum : 0.0f;
 }
 
@@ -45,7 +45,7 @@ void Hud::draw(const HudInfo& info) {
     std::array<float, kHistory> ordered{};
     float peak = 1.0f;
     for (int i = 0; i < count_; ++i) {
-      ordered[i] = frame_ms_[(next_ - count_ + i + kHistory) % kHistory];
+      ordered[i] = frame_millis_[(next_ - count_ + i + kHistory) % kHistory];
       peak = std::max(peak, ordered[i]);
     }
     ImGui::PlotLines("##frametime", ordered.data(), count_, 0, "frame time (ms)", 0.0f,

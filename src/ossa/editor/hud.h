@@ -41,7 +41,7 @@ class Hud {
   bool visible = true;
 
  private:
-  std::array<float, kHistory> frame_ms_{};  // ring buffer, milliseconds
+  std::array<float, kHistory> frame_millis_{};  // ring buffer, milliseconds
   int next_ = 0;
   int count_ = 0;
 };

@@ -1,22 +1,58 @@
 #include "ossa/game/replay.h"
 
+#include <cmath>
+
 #include "ossa/io/file.h"
+#include "ossa/level/level_io.h"
 
 namespace ossa {
 
 namespace {
 constexpr const char* kFormat = "ossa.replay";
 constexpr int kVersion = 2;
-constexpr long long kMaxTicks = 480LL * 3600 * 24;  // a day at the highest tick rate
 }  // namespace
+
+void Replay::push(const Controls& c) {
+  if (!runs.empty() && runs.back().controls == c) {
+    ++runs.back().count;
+  } else {
+    runs.push_back({1, c});
+  }
+}
+
+long long Replay::tick_count() const {
+  long long n = 0;
+  for (const ReplayRun& r : runs) n += r.count;
+  return n;
+}
+
+bool ReplayCursor::done() const {
+  if (!replay_) return true;
+  size_t run = run_;
+  long long used = used_;
+  while (run < replay_->runs.size() && used >= replay_->runs[run].count) {
+    ++run;
+    used = 0;
+  }
+  return run >= replay_->runs.size();
+}
+
+Controls ReplayCursor::next() {
+  OSSA_ASSERT(!done(), "ReplayCursor::next after the last tick");
+  while (used_ >= replay_->runs[run_].count) {
+    ++run_;
+    used_ = 0;
+  }
+  ++used_;
+  ++played_;
+  return replay_->runs[run_].controls;
+}
 
 Json replay_to_json(const Replay& r) {
   Json runs = Json::array();
-  for (size_t i = 0; i < r.ticks.size();) {
-    size_t j = i + 1;
-    while (j < r.ticks.size() && r.ticks[j] == r.ticks[i]) ++j;
-    runs.push_back({j - i, r.ticks[i].move_x, r.ticks[i].run ? 1 : 0, r.ticks[i].jump ? 1 : 0});
-    i = j;
+  for (const ReplayRun& run : r.runs) {
+    if (run.count <= 0) continue;
+    runs.push_back({run.count, run.controls.move_x, run.controls.run ? 1 : 0, run.controls.jump ? 1 : 0});
   }
   Json doc{{"format", kFormat}, {"version", kVersion}, {"tick_hz", r.tick_hz}, {"level", r.level},
            {"spawn", {r.spawn_ws.x, r.spawn_ws.y}}, {"facing", r.facing}, {"ticks", runs}};
@@ -53,8 +89,10 @@ Result<Replay> replay_from_json(const Json& doc, std::string_view file) {
     if (spawn->size() != 2) {
       r.fail("spawn", "expected [x, y], got " + std::to_string(spawn->size()) + " numbers");
     } else {
-      out.spawn_ws = {static_cast<float>(r.as_number((*spawn)[0], "spawn[0]", -1e6, 1e6)),
-                      static_cast<float>(r.as_number((*spawn)[1], "spawn[1]", -1e6, 1e6))};
+      // Where a level's spawn may be (level_io.h): a spawn far out would walk where a float
+      // cannot keep a planted foot still.
+      out.spawn_ws = {static_cast<float>(r.as_number((*spawn)[0], "spawn[0]", -kMaxLevelCoordinate, kMaxLevelCoordinate)),
+                      static_cast<float>(r.as_number((*spawn)[1], "spawn[1]", -kMaxLevelCoordinate, kMaxLevelCoordinate))};
     }
   }
   out.facing = r.integer_or(doc, "", "facing", 1, -1, 1) < 0 ? -1 : 1;
@@ -68,18 +106,21 @@ Result<Replay> replay_from_json(const Json& doc, std::string_view file) {
                          ", got " + describe_json(run));
         break;
       }
-      const double count = r.as_number(run[0], json_path(path, 0), 1, static_cast<double>(kMaxTicks));
+      const double count = r.as_number(run[0], json_path(path, 0), 1, static_cast<double>(kMaxReplayTicks));
       const double move = r.as_number(run[1], json_path(path, 1), -1.0, 1.0);
       const double run_flag = r.as_number(run[2], json_path(path, 2), 0.0, 1.0);
       const double jump_flag = columns == 4 ? r.as_number(run[3], json_path(path, 3), 0.0, 1.0) : 0.0;
       if (r.failed()) break;
-      total += static_cast<long long>(count);
-      if (total > kMaxTicks) {
-        r.fail(path, "expected at most " + std::to_string(kMaxTicks) + " ticks in all");
+      if (count != std::floor(count)) {
+        r.fail(json_path(path, 0), "expected a whole number of ticks, got " + describe_json(run[0]));
         break;
       }
-      out.ticks.insert(out.ticks.end(), static_cast<size_t>(count),
-                       Controls{static_cast<float>(move), run_flag >= 0.5, jump_flag >= 0.5});
+      total += static_cast<long long>(count);
+      if (total > kMaxReplayTicks) {
+        r.fail(path, "expected at most " + std::to_string(kMaxReplayTicks) + " ticks in all");
+        break;
+      }
+      out.runs.push_back({static_cast<long long>(count), Controls{static_cast<float>(move), run_flag >= 0.5, jump_flag >= 0.5}});
     }
   }
   if (r.failed()) return r.error();

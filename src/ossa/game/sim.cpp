@@ -66,6 +66,24 @@ Result<std::vector<ScriptSegment>> parse_script(std::string_view text) {
   return out;
 }
 
+long long script_ticks(const std::vector<ScriptSegment>& script, int tick_hz) {
+  long long n = 0;
+  for (const ScriptSegment& s : script) n += s.ticks(tick_hz);
+  return n;
+}
+
+Controls ScriptCursor::next() {
+  while (left_ <= 0 && segment_ < script_->size()) {
+    if (left_ == 0) ++segment_;
+    if (segment_ >= script_->size()) break;
+    const ScriptSegment& s = (*script_)[segment_];
+    current_ = s.controls(current_);
+    left_ = s.ticks(tick_hz_);
+  }
+  if (left_ > 0) --left_;
+  return current_;
+}
+
 SimResult run_script(Entity& entity, const Level& level, const std::vector<ScriptSegment>& script, int tick_hz,
                      const std::function<void(long long)>& on_tick) {
   SimResult result;

@@ -36,8 +36,28 @@ struct ScriptSegment {
 };
 // Parses "mode:stick:seconds" segments separated by commas ("stop:seconds" for stops;
 // "jump" presses the jump button for one tick, "jump:seconds" holds it, both keeping the stick
-// and the run button of the segment before).
+// and the run button of the segment before). Seconds are in (0, 86400] per segment.
 Result<std::vector<ScriptSegment>> parse_script(std::string_view text);
+
+// The ticks a whole script lasts at tick_hz: 64-bit, as a long script passes 2^31 ticks
+// (86 400 s at 480 Hz is 41 472 000 ticks per segment).
+long long script_ticks(const std::vector<ScriptSegment>& script, int tick_hz);
+
+// The controls of a script tick by tick, computed as it goes: memory does not grow with the
+// script's length (a day of ticks is not stored up front).
+class ScriptCursor {
+ public:
+  ScriptCursor(const std::vector<ScriptSegment>& script, int tick_hz) : script_(&script), tick_hz_(tick_hz) {}
+  // The controls of the next tick; after the last tick, the last controls again.
+  Controls next();
+
+ private:
+  const std::vector<ScriptSegment>* script_;
+  int tick_hz_;
+  size_t segment_ = 0;
+  long long left_ = -1;  // ticks left in the current segment; -1: not started
+  Controls current_;
+};
 
 struct SegmentMetrics {
   std::string command;        // the segment's text

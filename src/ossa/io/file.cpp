@@ -1,6 +1,7 @@
 #include "ossa/io/file.h"
 
 #include <cerrno>
+#include <cstdio>
 #include <cstring>
 #include <fcntl.h>
 #include <sys/stat.h>
@@ -47,8 +48,18 @@ Result<std::string> read_file(const std::string& path, long long max_bytes) {
   };
   if (st.st_size > max_bytes) return too_large(st.st_size);
 
-  const int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC);
+  // Non-blocking, so that a file replaced by a pipe since the stat cannot hang the open; what
+  // was opened is checked again.
+  const int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC | O_NONBLOCK);
   if (fd < 0) return Error::at(path, "", "cannot open: " + errno_text(errno));
+  if (::fstat(fd, &st) != 0 || !S_ISREG(st.st_mode)) {
+    ::close(fd);
+    return Error::at(path, "", "is not a regular file (a device, pipe or socket), expected a file");
+  }
+  if (st.st_size > max_bytes) {
+    ::close(fd);
+    return too_large(st.st_size);
+  }
   // Read to the end rather than trusting st_size, but never past max_bytes: a file that grows
   // while we read stops at the limit.
   std::string data;
@@ -73,9 +84,69 @@ Result<std::string> read_file(const std::string& path, long long max_bytes) {
   return data;
 }
 
+namespace {
+
+// Where a save to `path` lands: `path` itself, or, when it is a symbolic link (a chain of
+// them), the file the link points at (which may not exist yet). Empty after a link loop.
+std::string link_target(const std::string& path) {
+  namespace fs = std::filesystem;
+  fs::path p(path);
+  for (int hops = 0; hops < 40; ++hops) {
+    struct stat st {};
+    if (::lstat(p.c_str(), &st) != 0 || !S_ISLNK(st.st_mode)) return p.string();
+    std::error_code ec;
+    const fs::path to = fs::read_symlink(p, ec);
+    if (ec) return p.string();
+    p = to.is_absolute() ? to : p.parent_path() / to;
+  }
+  return {};
+}
+
+std::string mode_text(mode_t mode) {
+  char buf[8];
+  std::snprintf(buf, sizeof buf, "%04o", static_cast<unsigned>(mode & 07777));
+  return buf;
+}
+
+}  // namespace
+
+bool same_file(const std::string& a, const std::string& b) {
+  struct stat sa {}, sb {};
+  if (::stat(a.c_str(), &sa) != 0 || ::stat(b.c_str(), &sb) != 0) return false;
+  return sa.st_dev == sb.st_dev && sa.st_ino == sb.st_ino;
+}
+
+Status check_output_path(std::string_view what, const std::string& output, const std::vector<std::string>& inputs) {
+  if (output.empty()) return Error::at(what, "", "expected a file name to write, got an empty string");
+  for (const std::string& input : inputs) {
+    if (!input.empty() && same_file(output, input)) {
+      const std::string also = input == output ? "" : " (\"" + output + "\" names the same file)";
+      return Error::at(what, "", "\"" + output + "\" is the input " + input + also +
+                                     ": refusing to write over it; give another output file");
+    }
+  }
+  return {};
+}
+
 Status write_file_atomic(const std::string& path, std::string_view data) {
   namespace fs = std::filesystem;
-  const fs::path target(path);
+  if (path.empty()) return Error{"expected a file name to write, got an empty string"};
+  // A link is written through: the temporary file goes next to its target and replaces that.
+  const std::string resolved = link_target(path);
+  if (resolved.empty()) return Error::at(path, "", "is a loop of symbolic links; not written");
+  struct stat existing {};
+  const bool exists = ::stat(resolved.c_str(), &existing) == 0;
+  if (exists && S_ISDIR(existing.st_mode)) return Error::at(path, "", "is a folder; not written");
+  if (exists && !S_ISREG(existing.st_mode)) {
+    return Error::at(path, "", "is not a regular file (a device, pipe or socket); not replaced");
+  }
+  // rename() would replace a file its owner may not write (and root writes anything): a
+  // read-only file is refused, as an editor does.
+  if (exists && ((existing.st_mode & S_IWUSR) == 0 || ::access(resolved.c_str(), W_OK) != 0)) {
+    return Error::at(path, "", "is read-only (mode " + mode_text(existing.st_mode) +
+                                   "); not overwritten (make it writable or save elsewhere)");
+  }
+  const fs::path target(resolved);
   fs::path folder = target.parent_path();
   if (folder.empty()) folder = ".";
   std::string temp_name = ".";
@@ -89,8 +160,7 @@ Status write_file_atomic(const std::string& path, std::string_view data) {
                                    errno_text(errno));
   }
   // mkstemp makes the file 0600; give it the usual permissions (or the target's own).
-  struct stat st {};
-  const mode_t mode = (::stat(path.c_str(), &st) == 0) ? (st.st_mode & 07777) : 0644;
+  const mode_t mode = exists ? (existing.st_mode & 07777) : 0644;
   ::fchmod(fd, mode);
 
   auto fail = [&](const std::string& what) -> Status {
@@ -106,7 +176,7 @@ Status write_file_atomic(const std::string& path, std::string_view data) {
     ::unlink(tmpl.c_str());
     return Error::at(path, "", "close failed: " + errno_text(err));
   }
-  if (::rename(tmpl.c_str(), path.c_str()) != 0) {
+  if (::rename(tmpl.c_str(), resolved.c_str()) != 0) {
     const int err = errno;
     ::unlink(tmpl.c_str());
     return Error::at(path, "", "cannot replace the file: " + errno_text(err));
@@ -131,9 +201,9 @@ std::string json_file_text(const Json& doc) {
     for (const auto& [key, value] : doc.items()) {
       if (key != "format" && key != "version") ordered[key] = nlohmann::ordered_json(value);
     }
-    text = ordered.dump(2);
+    text = ordered.dump(2, ' ', false, nlohmann::ordered_json::error_handler_t::replace);
   } else {
-    text = doc.dump(2);
+    text = json_text(doc, 2);
   }
   text.push_back('\n');
   return text;

@@ -3,8 +3,9 @@
 #include <algorithm>
 #include <charconv>
 #include <cmath>
+#include <cstdio>
 #include <cstdlib>
-#include <unordered_set>
+#include <new>
 #include <vector>
 
 #include "ossa/io/file.h"
@@ -13,99 +14,205 @@ namespace ossa {
 
 namespace {
 
-// Thrown from the parser callback on a key that its object already has.
-struct DuplicateKey {
-  std::string path;
-};
+// glibc malloc's chunk for an n-byte request (16-byte aligned, 8 bytes of header, 32 at least):
+// what the memory estimate below counts.
+constexpr size_t chunk(size_t n) { return std::max<size_t>(32, (n + 8 + 15) & ~size_t{15}); }
 
-// Follows the parser's events to know the path of the value being read, and keeps each open
-// object's keys so a repeated key is caught (nlohmann::json would silently keep the last one:
-// a second "colliders": [] would empty a level).
-class DuplicateKeyCheck {
+// Builds the document from nlohmann's SAX events (its parser is iterative, so no input nests
+// it into a stack overflow) and enforces what json.h promises: a key given twice in one object
+// is an error naming its path (nlohmann::json would silently keep the last one: a second
+// "colliders": [] would empty a level), nesting stops at kMaxJsonDepth before anything
+// recursive sees the document, and the estimated memory of the document stays within
+// kJsonBytesPerInputByte of the text's size. Every event costs O(1) (a key lookup O(log n) in
+// its own object), so parsing is linear in the text.
+class DomBuilder {
  public:
-  bool operator()(int /*depth*/, Json::parse_event_t event, Json& parsed) {
-    using E = Json::parse_event_t;
-    switch (event) {
-      case E::object_start:
-      case E::array_start:
-        begin_element();
-        frames_.emplace_back();
-        frames_.back().array = event == E::array_start;
-        break;
-      case E::object_end:
-      case E::array_end:
-        if (!frames_.empty()) frames_.pop_back();
-        break;
-      case E::key: {
-        Frame& f = frames_.back();
-        std::string key = parsed.get<std::string>();
-        if (f.has(key)) throw DuplicateKey{path_with(key)};
-        f.add(key);
-        f.key = std::move(key);
-        break;
-      }
-      case E::value: begin_element(); break;
-    }
+  DomBuilder(Json& root, size_t text_size)
+      : root_(root), budget_(kJsonBytesPerInputByte * static_cast<long double>(text_size) + 65536.0L) {}
+
+  // What went wrong, for parse_json's message (empty when the parser reported a syntax error).
+  std::string field;
+  std::string what;
+
+  bool null() { return add(Json(nullptr), 0); }
+  bool boolean(bool v) { return add(Json(v), 0); }
+  bool number_integer(Json::number_integer_t v) { return add(Json(v), 0); }
+  bool number_unsigned(Json::number_unsigned_t v) { return add(Json(v), 0); }
+  bool number_float(Json::number_float_t v, const std::string&) { return add(Json(v), 0); }
+  bool string(std::string& v) {
+    const size_t heap = chunk(sizeof(std::string)) + (v.size() > 15 ? chunk(v.size() + 1) : 0);
+    return add(Json(std::move(v)), heap);
+  }
+  bool binary(Json::binary_t&) { return fail_at("", "binary data is not JSON"); }
+  bool start_object(size_t) { return open(Json::object(), chunk(48)); }
+  bool start_array(size_t) { return open(Json::array(), chunk(sizeof(std::vector<Json>))); }
+  bool end_object() { return close(); }
+  bool end_array() { return close(); }
+  bool key(std::string& k) {
+    Frame& f = stack_.back();
+    if (f.value->contains(k)) return fail_at(path_to(&k), "duplicate key (a key may appear only once in an object)");
+    // A map node holds the key, the value and the tree links.
+    if (!charge(chunk(32 + sizeof(std::string) + sizeof(Json)) + (k.size() > 15 ? chunk(k.size() + 1) : 0))) return false;
+    auto [it, inserted] = f.value->get_ref<Json::object_t&>().emplace(std::move(k), Json());
+    f.key = &it->first;
+    f.slot = &it->second;
     return true;
   }
+  bool parse_error(size_t position, const std::string&, const nlohmann::detail::exception& e) {
+    syntax_byte = position;
+    syntax_what = e.what();
+    return false;
+  }
+
+  size_t syntax_byte = 0;
+  std::string syntax_what;
 
  private:
   struct Frame {
-    bool array = false;
-    long long index = -1;                  // arrays: the element being read
-    std::string key;                       // objects: the key being read
-    std::vector<std::string> small;        // objects: keys seen, while few
-    std::unordered_set<std::string> many;  // ... and once there are many
-
-    bool has(const std::string& k) const {
-      if (!many.empty()) return many.count(k) != 0;
-      return std::find(small.begin(), small.end(), k) != small.end();
-    }
-    void add(const std::string& k) {
-      if (many.empty() && small.size() < 16) {
-        small.push_back(k);
-        return;
-      }
-      if (many.empty()) many.insert(small.begin(), small.end());
-      many.insert(k);
-    }
+    Json* value = nullptr;           // the open array or object
+    const std::string* key = nullptr;  // objects: the key being read
+    Json* slot = nullptr;            // objects: where that key's value goes
   };
 
-  void begin_element() {
-    if (!frames_.empty() && frames_.back().array) ++frames_.back().index;
+  bool charge(size_t bytes) {
+    used_ += bytes;
+    if (used_ <= budget_) return true;
+    char what[200];
+    std::snprintf(what, sizeof what,
+                  "the document would take more than %.0f MiB in memory (%d times the text's size): "
+                  "too many small values",
+                  static_cast<double>(budget_ / (1024.0L * 1024.0L)), kJsonBytesPerInputByte);
+    return fail_at("", what);
   }
 
-  std::string path_with(const std::string& key) const {
-    std::string p;
-    for (size_t i = 0; i + 1 < frames_.size(); ++i) {
-      p = frames_[i].array ? json_path(p, static_cast<size_t>(frames_[i].index)) : json_path(p, frames_[i].key);
+  // Where a new value goes: the root, the end of the open array, or the slot of the last key.
+  Json* place(Json&& v) {
+    if (stack_.empty()) {
+      root_ = std::move(v);
+      return &root_;
     }
-    return json_path(p, key);
+    Frame& f = stack_.back();
+    if (f.value->is_array()) {
+      auto& a = f.value->get_ref<Json::array_t&>();
+      a.push_back(std::move(v));
+      return &a.back();
+    }
+    *f.slot = std::move(v);
+    return f.slot;
   }
 
-  std::vector<Frame> frames_;
+  bool add(Json&& v, size_t heap) {
+    // An array element costs its slot twice (a vector grows by doubling); an object's value
+    // lives in the map node charged by key().
+    const bool in_array = !stack_.empty() && stack_.back().value->is_array();
+    if (!charge(heap + (in_array ? 2 * sizeof(Json) : 0))) return false;
+    place(std::move(v));
+    return true;
+  }
+
+  bool open(Json&& container, size_t heap) {
+    if (stack_.size() >= static_cast<size_t>(kMaxJsonDepth)) {
+      return fail_at(path_to(nullptr),
+                     "nested more than " + std::to_string(kMaxJsonDepth) + " arrays or objects deep");
+    }
+    const bool in_array = !stack_.empty() && stack_.back().value->is_array();
+    if (!charge(heap + (in_array ? 2 * sizeof(Json) : 0))) return false;
+    Json* at = place(std::move(container));
+    stack_.push_back({at, nullptr, nullptr});
+    return true;
+  }
+
+  bool close() {
+    stack_.pop_back();
+    return true;
+  }
+
+  bool fail_at(std::string f, std::string w) {
+    field = std::move(f);
+    what = std::move(w);
+    return false;
+  }
+
+  // The path of the value about to be read: in each open container the child being read (an
+  // array's last element; the next one in the innermost array), ending in `key` when given.
+  // Deep paths are cut after kPathLevels containers ("a[0][0]...": 256 levels of "[0]" say
+  // nothing more).
+  std::string path_to(const std::string* key) const {
+    constexpr size_t kPathLevels = 8;
+    std::string p;
+    for (size_t i = 0; i < stack_.size(); ++i) {
+      if (i == kPathLevels && stack_.size() > kPathLevels + 1) {
+        p += "...";
+        if (key) p += "." + *key;
+        break;
+      }
+      const Frame& f = stack_[i];
+      const bool innermost = i + 1 == stack_.size();
+      if (f.value->is_array()) {
+        const size_t n = f.value->size();
+        p = json_path(p, innermost || n == 0 ? n : n - 1);
+      } else if (innermost && key) {
+        p = json_path(p, *key);
+      } else if (f.key) {
+        p = json_path(p, *f.key);
+      }
+    }
+    return p.empty() ? "(document)" : p;
+  }
+
+  Json& root_;
+  long double budget_;
+  long double used_ = 0;
+  std::vector<Frame> stack_;
 };
 
 }  // namespace
 
+std::optional<std::string> non_utf8_encoding(std::string_view text) {
+  const auto b = [&](size_t i) { return i < text.size() ? static_cast<unsigned char>(text[i]) : 0x100u; };
+  if (b(0) == 0x00 && b(1) == 0x00 && b(2) == 0xFE && b(3) == 0xFF) return "UTF-32 (big-endian)";
+  if (b(0) == 0xFF && b(1) == 0xFE && b(2) == 0x00 && b(3) == 0x00) return "UTF-32 (little-endian)";
+  if (b(0) == 0xFE && b(1) == 0xFF) return "UTF-16 (big-endian)";
+  if (b(0) == 0xFF && b(1) == 0xFE) return "UTF-16 (little-endian)";
+  // Without a byte order mark: an ASCII character and a zero byte, in either order.
+  if (text.size() >= 4 && b(0) == 0x00 && b(1) != 0x00 && b(1) < 0x80 && b(2) == 0x00) return "UTF-16 (big-endian)";
+  if (text.size() >= 4 && b(0) != 0x00 && b(0) < 0x80 && b(1) == 0x00 && b(3) == 0x00 && b(2) != 0x00) {
+    return "UTF-16 (little-endian)";
+  }
+  return std::nullopt;
+}
+
 Result<Json> parse_json(std::string_view text, std::string_view file) {
+  if (auto enc = non_utf8_encoding(text)) {
+    return Error::at(file, "", "is " + *enc + " text; JSON must be UTF-8 (save the file as UTF-8)");
+  }
+  Json root;
+  DomBuilder builder(root, text.size());
   try {
-    return Json::parse(text.begin(), text.end(), DuplicateKeyCheck{});
-  } catch (const DuplicateKey& d) {
-    return Error::at(file, d.path, "duplicate key (a key may appear only once in an object)");
-  } catch (const Json::parse_error& e) {
-    // e.byte is the 1-based offset of the offending byte; turn it into line and column.
-    size_t line = 1, column = 1;
-    const size_t end = std::min<size_t>(e.byte == 0 ? 0 : e.byte - 1, text.size());
-    for (size_t i = 0; i < end; ++i) {
-      if (text[i] == '\n') { ++line; column = 1; } else { ++column; }
-    }
-    std::string what = "not valid JSON at line " + std::to_string(line) + ", column " +
-                       std::to_string(column) + " (" + e.what() + ")";
-    return Error::at(file, "", what);
+    if (Json::sax_parse(text.begin(), text.end(), &builder)) return root;
+  } catch (const std::bad_alloc&) {
+    return Error::at(file, "", "out of memory while reading the JSON document");
   } catch (const std::exception& e) {
     return Error::at(file, "", std::string("not valid JSON (") + e.what() + ")");
   }
+  if (!builder.what.empty()) return Error::at(file, builder.field, builder.what);
+  // A syntax error: the byte offset (1-based) of the offending byte as line and column.
+  size_t line = 1, column = 1;
+  const size_t end = std::min<size_t>(builder.syntax_byte == 0 ? 0 : builder.syntax_byte - 1, text.size());
+  for (size_t i = 0; i < end; ++i) {
+    if (text[i] == '\n') {
+      ++line;
+      column = 1;
+    } else {
+      ++column;
+    }
+  }
+  return Error::at(file, "", "not valid JSON at line " + std::to_string(line) + ", column " + std::to_string(column) +
+                                 " (" + builder.syntax_what + ")");
+}
+
+std::string json_text(const Json& value, int indent) {
+  return value.dump(indent, ' ', false, Json::error_handler_t::replace);
 }
 
 Result<Json> read_json_file(const std::string& path) {
@@ -265,6 +372,22 @@ double JsonReader::number(const Json& parent, std::string_view path, std::string
   const Json* f = field(parent, path, key);
   if (!f) return std::isfinite(min) ? min : 0.0;
   return as_number(*f, json_path(path, key), min, max);
+}
+
+float JsonReader::number_f(const Json& parent, std::string_view path, std::string_view key, double min,
+                           double max) {
+  const double fmin = std::isfinite(min) ? static_cast<double>(static_cast<float>(min)) : min;
+  const double fmax = std::isfinite(max) ? static_cast<double>(static_cast<float>(max)) : max;
+  const Json* f = field(parent, path, key);
+  if (!f) return static_cast<float>(std::isfinite(min) ? min : 0.0);
+  const std::string p = json_path(path, key);
+  const bool representable = f->is_number() && std::fabs(f->get<double>()) <= std::numeric_limits<float>::max();
+  if (representable) {
+    const double x = static_cast<double>(static_cast<float>(f->get<double>()));
+    if (x >= fmin && x <= fmax) return static_cast<float>(x);
+  }
+  fail(p, "expected " + range_text(min, max) + ", got " + describe_json(*f));
+  return static_cast<float>(std::isfinite(min) ? min : 0.0);
 }
 
 long long JsonReader::integer(const Json& parent, std::string_view path, std::string_view key,

@@ -5,6 +5,7 @@
 // be written straight through and check failed() once.
 
 #include <limits>
+#include <optional>
 #include <string>
 #include <string_view>
 
@@ -16,8 +17,24 @@ namespace ossa {
 
 using Json = nlohmann::json;
 
+// Every JSON document ossa reads (levels, maps, genomes, replays, rig mappings, tuning,
+// datasets, the glTF pre-check) goes through parse_json, which enforces these rules:
+// - nesting: at most kMaxJsonDepth arrays and objects inside each other. Deeper input is
+//   refused while parsing, before anything recursive (copying, printing, comparing a document;
+//   Assimp's glTF reader) sees it;
+// - duplicate keys: a key given twice in one object is an error naming its path (JSON parsers
+//   disagree on which one wins);
+// - memory: the document's estimated size in memory (counted as it is built) stays within
+//   kJsonBytesPerInputByte bytes per byte of text, else it is refused; files of ordinary
+//   structure take 3 to 19 (an indented level 6, a level written without spaces 19);
+// - work: linear in the text (each key is checked against its own object in O(log n));
+// - encoding: UTF-8 (a UTF-8 byte order mark is skipped); UTF-16 and UTF-32 text is refused
+//   with a message saying so.
+inline constexpr int kMaxJsonDepth = 256;
+inline constexpr int kJsonBytesPerInputByte = 24;
+
 // Parses text; errors name `file` and the line and column of the syntax error, or the path of
-// a key that appears twice in one object (an error: JSON parsers disagree on which one wins).
+// the field that broke one of the rules above.
 Result<Json> parse_json(std::string_view text, std::string_view file);
 // Reads (read_file: regular files of at most kMaxDataFileBytes) and parses a file; errors name
 // the file.
@@ -26,6 +43,16 @@ Result<Json> read_json_file(const std::string& path);
 // "parent.key" (or "key" when parent is empty) and "parent[index]".
 std::string json_path(std::string_view parent, std::string_view key);
 std::string json_path(std::string_view parent, size_t index);
+
+// The text of a value as dump(indent) gives it, except that bytes that are not UTF-8 in a
+// string (a file name from the file system is bytes, not text) become U+FFFD instead of
+// throwing: every JSON that tools print or save goes through this or json_file_text.
+std::string json_text(const Json& value, int indent = -1);
+
+// "UTF-16 (little-endian)" and the like when `text` starts like UTF-16 or UTF-32 text (a byte
+// order mark, or ASCII interleaved with zero bytes); nullopt otherwise. Text files ossa reads
+// must be UTF-8; loaders name the encoding they found.
+std::optional<std::string> non_utf8_encoding(std::string_view text);
 
 // The double whose shortest decimal form equals the float's shortest form, so JSON files
 // show 0.9 rather than 0.8999999761581421 and still load back to the same float.
@@ -58,10 +85,11 @@ class JsonReader {
   const Json* array(const Json& parent, std::string_view path, std::string_view key);
   double number(const Json& parent, std::string_view path, std::string_view key,
                 double min = -kInf, double max = kInf);
+  // A number read into a float. The range is checked on the float the value becomes, against
+  // the range's ends as floats: a field whose documented range ends at 1.05 accepts 1.05 (which
+  // becomes the float 1.05f, the same as the end) and what its writer saved from a float.
   float number_f(const Json& parent, std::string_view path, std::string_view key,
-                 double min = -kInf, double max = kInf) {
-    return static_cast<float>(number(parent, path, key, min, max));
-  }
+                 double min = -kInf, double max = kInf);
   long long integer(const Json& parent, std::string_view path, std::string_view key,
                     long long min = std::numeric_limits<long long>::min(),
                     long long max = std::numeric_limits<long long>::max());

@@ -122,34 +122,22 @@ void BoxTree::update(int index, const Box& box) {
   }
 }
 
-std::optional<GroundHit> BoxTree::ground(float x_min, float x_max, float lo, float hi) const {
-  if (nodes_.empty()) return std::nullopt;
-  float best_h = -kInf;
-  int best_i = INT_MAX;
+template <class Skip, class Leaf, class LeftFirst>
+void BoxTree::walk(Skip&& skip, Leaf&& leaf, LeftFirst&& left_first) const {
+  if (nodes_.empty()) return;
   int stack[kStackSize];
   int top = 0;
   stack[top++] = 0;
   while (top > 0) {
-    const Node& n = nodes_[stack[--top]];
-    const Box& b = n.bounds;
-    if (b.min_ws.x > x_max || b.max_ws.x < x_min || b.max_ws.y < lo || b.min_ws.y > hi) continue;
-    // No box below can be higher than min(bounds top, hi): skip if that cannot win.
-    if (std::min(b.max_ws.y, hi) < best_h) continue;
+    const int id = stack[--top];
+    const Node& n = nodes_[id];
+    if (skip(n)) continue;
     if (n.count > 0) {
-      for (const Item* it = &items_[n.first], *e = it + n.count; it != e; ++it) {
-        const float h = it->box.max_ws.y;
-        if (h > hi) continue;
-        if (h < lo || h < best_h) break;  // sorted by top: nothing further can win
-        if (it->box.min_ws.x <= x_max && it->box.max_ws.x >= x_min) {
-          if (h > best_h || it->index < best_i) { best_h = h; best_i = it->index; }
-          break;
-        }
-      }
+      if (!leaf(n)) return;
       continue;
     }
-    // Visit the child that may hold the higher top first, so pruning starts early.
-    const int l = static_cast<int>(&n - nodes_.data()) + 1, r = n.first;
-    if (nodes_[l].bounds.max_ws.y > nodes_[r].bounds.max_ws.y) {
+    const int l = id + 1, r = n.first;
+    if (left_first(l, r)) {
       stack[top++] = r;
       stack[top++] = l;
     } else {
@@ -157,107 +145,95 @@ std::optional<GroundHit> BoxTree::ground(float x_min, float x_max, float lo, flo
       stack[top++] = r;
     }
   }
+}
+
+std::optional<GroundHit> BoxTree::ground(float x_min, float x_max, float lo, float hi) const {
+  float best_h = -kInf;
+  int best_i = INT_MAX;
+  walk(
+      [&](const Node& n) {
+        const Box& b = n.bounds;
+        // No box below can be higher than min(bounds top, hi): skip if that cannot win.
+        return b.min_ws.x > x_max || b.max_ws.x < x_min || b.max_ws.y < lo || b.min_ws.y > hi || std::min(b.max_ws.y, hi) < best_h;
+      },
+      [&](const Node& n) {
+        for (const Item* it = &items_[n.first], *e = it + n.count; it != e; ++it) {
+          const float h = it->box.max_ws.y;
+          if (h > hi) continue;
+          if (h < lo || h < best_h) break;  // sorted by top: nothing further can win
+          if (it->box.min_ws.x <= x_max && it->box.max_ws.x >= x_min) {
+            if (h > best_h || it->index < best_i) {
+              best_h = h;
+              best_i = it->index;
+            }
+            break;
+          }
+        }
+        return true;
+      },
+      // The child that may hold the higher top first, so pruning starts early.
+      [&](int l, int r) { return nodes_[l].bounds.max_ws.y > nodes_[r].bounds.max_ws.y; });
   if (best_i == INT_MAX) return std::nullopt;
   return GroundHit{best_h, best_i};
 }
 
 bool BoxTree::any_overlap(const Box& box) const {
-  if (nodes_.empty()) return false;
-  int stack[kStackSize];
-  int top = 0;
-  stack[top++] = 0;
-  while (top > 0) {
-    const int id = stack[--top];
-    const Node& n = nodes_[id];
-    if (!n.bounds.overlaps(box)) continue;
-    if (n.count == 0) {
-      stack[top++] = n.first;
-      stack[top++] = id + 1;
-      continue;
-    }
-    for (int i = n.first; i < n.first + n.count; ++i) {
-      if (items_[i].box.overlaps(box)) return true;
-    }
-  }
-  return false;
+  bool found = false;
+  walk([&](const Node& n) { return !n.bounds.overlaps(box); },
+       [&](const Node& n) {
+         for (int i = n.first; i < n.first + n.count && !found; ++i) found = items_[i].box.overlaps(box);
+         return !found;
+       },
+       [](int, int) { return true; });
+  return found;
 }
 
 int BoxTree::lowest_overlap(const Box& box) const {
   int best = INT_MAX;
-  if (nodes_.empty()) return -1;
-  int stack[kStackSize];
-  int top = 0;
-  stack[top++] = 0;
-  while (top > 0) {
-    const int id = stack[--top];
-    const Node& n = nodes_[id];
-    if (!n.bounds.overlaps(box)) continue;
-    if (n.count == 0) {
-      stack[top++] = n.first;
-      stack[top++] = id + 1;
-      continue;
-    }
-    for (int i = n.first; i < n.first + n.count; ++i) {
-      if (items_[i].index < best && items_[i].box.overlaps(box)) best = items_[i].index;
-    }
-  }
+  walk([&](const Node& n) { return !n.bounds.overlaps(box); },
+       [&](const Node& n) {
+         for (int i = n.first; i < n.first + n.count; ++i) {
+           if (items_[i].index < best && items_[i].box.overlaps(box)) best = items_[i].index;
+         }
+         return true;
+       },
+       [](int, int) { return true; });
   return best == INT_MAX ? -1 : best;
 }
 
 void BoxTree::overlapping(const Box& box, std::vector<int>& out) const {
-  if (nodes_.empty()) return;
   const size_t start = out.size();
-  int stack[kStackSize];
-  int top = 0;
-  stack[top++] = 0;
-  while (top > 0) {
-    const int id = stack[--top];
-    const Node& n = nodes_[id];
-    if (!n.bounds.overlaps(box)) continue;
-    if (n.count == 0) {
-      stack[top++] = n.first;
-      stack[top++] = id + 1;
-      continue;
-    }
-    for (int i = n.first; i < n.first + n.count; ++i) {
-      if (items_[i].box.overlaps(box)) out.push_back(items_[i].index);
-    }
-  }
+  walk([&](const Node& n) { return !n.bounds.overlaps(box); },
+       [&](const Node& n) {
+         for (int i = n.first; i < n.first + n.count; ++i) {
+           if (items_[i].box.overlaps(box)) out.push_back(items_[i].index);
+         }
+         return true;
+       },
+       [](int, int) { return true; });
   std::sort(out.begin() + static_cast<std::ptrdiff_t>(start), out.end());
 }
 
 std::optional<SweepHit> BoxTree::sweep(const Box& moving, glm::vec2 delta) const {
-  if (nodes_.empty()) return std::nullopt;
   std::optional<SweepHit> best;
-  int stack[kStackSize];
-  int top = 0;
-  stack[top++] = 0;
-  while (top > 0) {
-    const int id = stack[--top];
-    const Node& n = nodes_[id];
-    const float entry = sweep_entry(n.bounds, moving, delta);
-    if (entry == kInf || (best && entry > best->t)) continue;
-    if (n.count == 0) {
-      // Nearer child on top of the stack.
-      const int l = id + 1, r = n.first;
-      if (sweep_entry(nodes_[l].bounds, moving, delta) <= sweep_entry(nodes_[r].bounds, moving, delta)) {
-        stack[top++] = r;
-        stack[top++] = l;
-      } else {
-        stack[top++] = l;
-        stack[top++] = r;
-      }
-      continue;
-    }
-    for (int i = n.first; i < n.first + n.count; ++i) {
-      std::optional<SweepHit> hit = sweep_against(moving, delta, items_[i].box);
-      if (!hit) continue;
-      if (!best || hit->t < best->t || (hit->t == best->t && items_[i].index < best->index)) {
-        best = hit;
-        best->index = items_[i].index;
-      }
-    }
-  }
+  walk(
+      [&](const Node& n) {
+        const float entry = sweep_entry(n.bounds, moving, delta);
+        return entry == kInf || (best && entry > best->t);
+      },
+      [&](const Node& n) {
+        for (int i = n.first; i < n.first + n.count; ++i) {
+          std::optional<SweepHit> hit = sweep_against(moving, delta, items_[i].box);
+          if (!hit) continue;
+          if (!best || hit->t < best->t || (hit->t == best->t && items_[i].index < best->index)) {
+            best = hit;
+            best->index = items_[i].index;
+          }
+        }
+        return true;
+      },
+      // The nearer child first.
+      [&](int l, int r) { return sweep_entry(nodes_[l].bounds, moving, delta) <= sweep_entry(nodes_[r].bounds, moving, delta); });
   return best;
 }
 

@@ -29,6 +29,12 @@ class BoxTree {
   // The tree stays correct; its quality drops if boxes move far, so rebuild now and then.
   void update(int index, const Box& box);
   int size() const { return static_cast<int>(items_.size()); }
+  // The smallest box holding every box (the root's bounds: exact, as update() refits from the
+  // children), or nullopt for an empty tree. O(1).
+  std::optional<Box> bounds() const {
+    if (nodes_.empty()) return std::nullopt;
+    return nodes_.front().bounds;
+  }
 
   // Highest box top in [lo, hi] among boxes touching [x_min, x_max] (is_ground_candidate).
   std::optional<GroundHit> ground(float x_min, float x_max, float lo, float hi) const;
@@ -53,6 +59,13 @@ class BoxTree {
     int first = 0;
     int count = 0;
   };
+
+  // The one traversal of the tree, depth first from the root: a node `skip(node)` says is of
+  // no use is left with all below it; `leaf(node)` visits a leaf's items and returns false to
+  // end the walk; an inner node's left child (node index + 1) is visited before its right one
+  // (nodes_[first]) when `left_first(left, right)` (the node indices) says so.
+  template <class Skip, class Leaf, class LeftFirst>
+  void walk(Skip&& skip, Leaf&& leaf, LeftFirst&& left_first) const;
 
   int build_node(int begin, int end, int parent);
   void sort_leaf(int node);

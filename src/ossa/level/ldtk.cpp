@@ -14,7 +14,6 @@ namespace ossa {
 
 namespace {
 
-constexpr long long kMaxCells = 1LL << 24;  // per IntGrid layer
 
 std::string lower(std::string s) {
   for (char& c : s) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
@@ -34,6 +33,7 @@ struct LdtkImporter {
   std::optional<glm::vec2> spawn;
   std::string spawn_path;
   int64_t solid_cells = 0, boxes_from_cells = 0;
+  int64_t cells_read = 0;  // IntGrid cells of every layer so far (level_load.h kMaxMapCells)
 
   float to_x(double px, const std::string& path) {
     const double m = (world_x + px) / ppm;
@@ -89,13 +89,15 @@ struct LdtkImporter {
   }
 
   void intgrid(const Json& layer, const std::string& path, const std::string& what, double offx, double offy) {
-    const long long w = r.integer(layer, path, "__cWid", 0, kMaxCells);
-    const long long h = r.integer(layer, path, "__cHei", 0, kMaxCells);
+    const long long w = r.integer(layer, path, "__cWid", 0, kMaxMapCells);
+    const long long h = r.integer(layer, path, "__cHei", 0, kMaxMapCells);
     const long long grid = r.integer(layer, path, "__gridSize", 1, 1000000);
     const long long uid = r.integer_or(layer, path, "layerDefUid", -1);
     if (r.failed()) return;
-    if (w * h > kMaxCells) {
-      r.fail(path, what + " has " + std::to_string(w * h) + " cells; at most " + std::to_string(kMaxCells));
+    cells_read += w * h;  // every layer of the level counts towards one limit
+    if (w * h > kMaxMapCells || cells_read > kMaxMapCells) {
+      r.fail(path, what + " has " + std::to_string(w * h) + " cells, " + std::to_string(cells_read) +
+                       " with the layers before; at most " + std::to_string(kMaxMapCells) + " in all the layers of a level");
       return;
     }
     const Json* csv = r.array(layer, path, "intGridCsv");

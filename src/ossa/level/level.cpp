@@ -36,9 +36,9 @@ const Box& Level::box(int index) const {
 }
 
 Box Level::bounds() const {
-  Box b{spawn_ws, spawn_ws};
-  for (const Box& c : colliders_) b = b.united(c);
-  return b;
+  const Box b{spawn_ws, spawn_ws};
+  const std::optional<Box> boxes = index_.bounds();
+  return boxes ? b.united(*boxes) : b;
 }
 
 int Level::add_box(const Box& box) {
@@ -108,12 +108,11 @@ void Level::overlapping(const Box& box, std::vector<int>& out) const {
   index_.overlapping(box, out);
 }
 
-float Level::kill_y() const {
+float Level::kill_y(float hip_height_m) const {
   if (kill_height_ws) return *kill_height_ws;
-  if (colliders_.empty()) return spawn_ws.y - kKillMargin;
-  float lowest = colliders_.front().min_ws.y;
-  for (const Box& b : colliders_) lowest = std::min(lowest, b.min_ws.y);
-  return lowest - kKillMargin;
+  const float margin = std::isfinite(hip_height_m) ? std::max(kKillMargin, kKillMarginOfHip * hip_height_m) : kKillMargin;
+  const std::optional<Box> boxes = index_.bounds();
+  return (boxes ? boxes->min_ws.y : spawn_ws.y) - margin;
 }
 
 bool Level::spawn_has_ground() const {

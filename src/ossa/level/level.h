@@ -63,7 +63,7 @@ class Level {
   int size() const { return static_cast<int>(colliders_.size()); }
   bool empty() const { return colliders_.empty(); }
   const Box& box(int index) const;
-  // Smallest box holding every collider and the spawn point.
+  // Smallest box holding every collider and the spawn point. O(1) (the index's root).
   Box bounds() const;
 
   // Appends a valid box and returns its index (size() - 1).
@@ -112,10 +112,14 @@ class Level {
   glm::vec2 free_point_above(glm::vec2 p_ws) const;
   // Is the spawn point inside a collider? (The level editor marks such a spawn.)
   bool spawn_inside_box() const { return free_point_above(spawn_ws) != spawn_ws; }
-  // The kill height: kill_height_ws, else kKillMargin below the lowest box (or below the
-  // spawn in a level without boxes).
-  float kill_y() const;
-  static constexpr float kKillMargin = 2.0f;  // metres
+  // The kill height: kill_height_ws, else a margin below the lowest box (or below the spawn in
+  // a level without boxes). The margin is kKillMargin, or kKillMarginOfHip times the hip height
+  // of the creature asking when that is more (a creature a hundred times a horse's size is
+  // not dead when its feet dip 2 m). O(1): the lowest box is the spatial index's root bound,
+  // kept exact by every edit, so asking every tick costs nothing however many boxes there are.
+  float kill_y(float hip_height_m = 0.0f) const;
+  static constexpr float kKillMargin = 2.0f;       // metres
+  static constexpr float kKillMarginOfHip = 1.0f;  // hip heights
   // Is there ground below the spawn point, above the kill height?
   bool spawn_has_ground() const;
 

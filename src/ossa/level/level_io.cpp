@@ -30,7 +30,9 @@ double read_size(JsonReader& r, const Json& parent, const std::string& path, con
     r.fail(json_path(path, key), "expected a number > 0, got " + describe_json(parent.at(key)));
     return 0.0;
   }
-  if (v > 2.0 * kMaxLevelCoordinate) {
+  // (A little slack: a box from -1000 to 1000 may be written as 2000.0001 when that is the
+  // shortest width that rounds back to its far edge; the far edge is checked below.)
+  if (v > 2.0 * kMaxLevelCoordinate * (1.0 + 1e-6)) {
     r.fail(json_path(path, key), "expected a number <= " + std::to_string(static_cast<int>(2.0 * kMaxLevelCoordinate)) +
                                      ", got " + describe_json(parent.at(key)));
     return 0.0;
@@ -108,17 +110,19 @@ Result<Level> level_from_json(const Json& doc, std::string_view file) {
     const double w = read_size(r, c, path, "w");
     const double h = read_size(r, c, path, "h");
     if (r.failed()) return r.error();
-    for (const auto& [key, far] : {std::pair{"w", x + w}, std::pair{"h", y + h}}) {
-      if (far > kMaxLevelCoordinate) {
+    // The far corner is x + w rounded once to a float, so saved files read back exactly; the
+    // bound applies to that float, the edge the level holds (a writer's x + w may lie a
+    // rounding step past 1000 m and still be the edge at 1000 m).
+    const Box box{{static_cast<float>(x), static_cast<float>(y)},
+                  {static_cast<float>(x + w), static_cast<float>(y + h)}};
+    for (const auto& [key, far] : {std::pair{"w", box.max_ws.x}, std::pair{"h", box.max_ws.y}}) {
+      if (far > static_cast<float>(kMaxLevelCoordinate)) {
         r.fail(json_path(path, key), "puts the box's far edge at " + std::to_string(far) + ", expected at most " +
                                          std::to_string(static_cast<int>(kMaxLevelCoordinate)) +
                                          " m from the origin (beyond it a float cannot keep 0.1 mm)");
         return r.error();
       }
     }
-    // The far corner is x + w rounded once, so saved files read back exactly.
-    const Box box{{static_cast<float>(x), static_cast<float>(y)},
-                  {static_cast<float>(x + w), static_cast<float>(y + h)}};
     if (!(box.min_ws.x < box.max_ws.x)) {
       r.fail(json_path(path, "w"), "too small to be represented at x = " + std::to_string(x));
       return r.error();
@@ -130,7 +134,51 @@ Result<Level> level_from_json(const Json& doc, std::string_view file) {
     boxes.push_back(box);
   }
   level.set_colliders(std::move(boxes));
+  if (Status s = check_level(level, file); !s) return s.error();
   return level;
+}
+
+Status check_level(const Level& level, std::string_view file) {
+  const float limit = static_cast<float>(kMaxLevelCoordinate);
+  const auto outside = [&](float v) { return !(std::fabs(v) <= limit); };
+  char text[256];
+  if (outside(level.spawn_ws.x) || outside(level.spawn_ws.y)) {
+    std::snprintf(text, sizeof text, "(%g, %g) lies more than %g m from the origin", double(level.spawn_ws.x),
+                  double(level.spawn_ws.y), kMaxLevelCoordinate);
+    return Error::at(file, "spawn", text);
+  }
+  if (level.kill_height_ws) {
+    const float kill = *level.kill_height_ws;
+    if (outside(kill)) {
+      std::snprintf(text, sizeof text, "expected a number in [-%g, %g], got %g", kMaxLevelCoordinate, kMaxLevelCoordinate, double(kill));
+      return Error::at(file, "kill_height", text);
+    }
+    // A creature starts at the spawn: below the kill height it would start again every tick.
+    if (!(kill < level.spawn_ws.y)) {
+      std::snprintf(text, sizeof text,
+                    "expected below the spawn (y %g), got %g: a creature would start below the kill height and "
+                    "start again every tick",
+                    double(level.spawn_ws.y), double(kill));
+      return Error::at(file, "kill_height", text);
+    }
+  }
+  if (const std::optional<Box> b = level.empty() ? std::nullopt : std::optional<Box>(level.bounds())) {
+    if (outside(b->min_ws.x) || outside(b->min_ws.y) || outside(b->max_ws.x) || outside(b->max_ws.y)) {
+      for (int i = 0; i < level.size(); ++i) {
+        const Box& c = level.box(i);
+        if (outside(c.min_ws.x) || outside(c.min_ws.y) || outside(c.max_ws.x) || outside(c.max_ws.y)) {
+          std::snprintf(text, sizeof text, "the box [%g, %g] x [%g, %g] reaches more than %g m from the origin",
+                        double(c.min_ws.x), double(c.max_ws.x), double(c.min_ws.y), double(c.max_ws.y), kMaxLevelCoordinate);
+          return Error::at(file, json_path("colliders", static_cast<size_t>(i)), text);
+        }
+      }
+    }
+  }
+  if (level.size() > kMaxLevelColliders) {
+    return Error::at(file, "colliders", "expected at most " + std::to_string(kMaxLevelColliders) + " boxes, got " +
+                                            std::to_string(level.size()));
+  }
+  return {};
 }
 
 Result<Level> parse_level(std::string_view text, std::string_view file) {
@@ -200,9 +248,9 @@ std::string level_to_text(const Level& level) {
       for (const char* k : {"x", "y", "image", "parallax", "colour"}) {
         if (doc[key].contains(k)) o[k] = doc[key][k];
       }
-      out += o.dump();
+      out += o.dump(-1, ' ', false, nlohmann::ordered_json::error_handler_t::replace);
     } else {
-      out += doc[key].dump();
+      out += json_text(doc[key]);
     }
     out += ",\n";
   }
@@ -211,13 +259,15 @@ std::string level_to_text(const Level& level) {
   for (size_t i = 0; i < colliders.size(); ++i) {
     nlohmann::ordered_json c;
     for (const char* k : {"x", "y", "w", "h"}) c[k] = colliders[i][k];
-    out += (i == 0 ? "\n    " : ",\n    ") + c.dump();
+    out += (i == 0 ? "\n    " : ",\n    ") + c.dump(-1, ' ', false, nlohmann::ordered_json::error_handler_t::replace);
   }
   out += colliders.empty() ? "]\n}\n" : "\n  ]\n}\n";
   return out;
 }
 
 Status save_level(const std::string& path, const Level& level) {
+  // Whatever is saved loads back: a level the loader would refuse is not written.
+  if (Status s = check_level(level, path); !s) return Error{s.message() + " (not saved)"};
   return write_file_atomic(path, level_to_text(level));
 }
 

@@ -9,21 +9,24 @@
 //     "name": "default",                 optional string, default ""
 //     "spawn": {"x": 2.0, "y": 0.0},     required: where the player's creature starts
 //     "background": {                    optional object; every field optional
-//       "image": "backgrounds/hills.png",   image path relative to assets/, default ""
+//       "image": "backgrounds/hills.png",   image path relative to the level's folder (see
+//                                           resolve_level_resource), default ""
 //       "parallax": 0.5,                    scroll factor in [0, 1], default 0.5
 //       "colour": [0.55, 0.70, 0.85]        linear RGB, three numbers in [0, 1]
 //     },
-//     "kill_height": -12.0,              optional number: a creature whose root falls below
-//                                        this y has left the level and starts again at the
-//                                        spawn; default 2 m below the lowest box
+//     "kill_height": -12.0,              optional number below the spawn's y: a creature whose
+//                                        root falls below this y has left the level and starts
+//                                        again at the spawn; default 2 m (or the creature's hip
+//                                        height, if more) below the lowest box
 //     "colliders": [                     required array (may be empty), at most 1 000 000
 //       {"x": 0.0, "y": -1.0, "w": 70.0, "h": 1.0},   x, y = bottom-left corner;
 //       ...                                            w, h = width and height > 0
 //     ]
 //   }
 //
-// Coordinates must be finite with |x|, |y| <= 1 000 000; sizes in (0, 1 000 000]. Unknown
-// fields are ignored, so newer writers may add fields without breaking older readers.
+// Coordinates must be finite with |x|, |y| <= kMaxLevelCoordinate (1000 m), far edges included
+// (x + w, rounded to the float the level holds); sizes > 0. Unknown fields are ignored, so
+// newer writers may add fields without breaking older readers.
 // Numbers are written in their shortest form that reads back to the same float ("0.1", not
 // "0.10000000149011612"), and loading a saved level gives an equal Level.
 //
@@ -61,8 +64,14 @@ Json level_to_json(const Level& level);
 // The file text: the same document in the documented key order, one collider per line.
 std::string level_to_text(const Level& level);
 // Saves level_to_text atomically (write_file_atomic: temporary file, fsync, rename), so a
-// failed save leaves the old file intact.
+// failed save leaves the old file intact. A level check_level refuses is not written (the
+// error names the field), so every saved level loads back.
 Status save_level(const std::string& path, const Level& level);
+
+// What the loader requires of a whole level beyond each field's own range: the spawn, every
+// box and the kill height within kMaxLevelCoordinate, the kill height below the spawn, at most
+// kMaxLevelColliders boxes. Errors name `file` and the field.
+Status check_level(const Level& level, std::string_view file);
 
 // The double closest to the shortest decimal that reads back as `f` (0.1f -> 0.1), so files
 // stay readable. Shared with the Tiled export.

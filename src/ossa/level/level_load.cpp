@@ -109,7 +109,12 @@ Result<Level> parse_level_any(std::string_view text, const std::string& file, co
               "LevelLoadOptions::pixels_per_metre must be > 0");
   LevelLoadReport local;
   LevelLoadReport& rep = report ? *report : local;
+  std::vector<std::string> files = std::move(rep.files);  // load_level's, kept
   rep = LevelLoadReport{};
+  rep.files = std::move(files);
+  if (auto enc = non_utf8_encoding(text)) {
+    return Error::at(file, "", "is " + *enc + " text; level files must be UTF-8 (save it as UTF-8)");
+  }
   // Parse JSON once: the content decides, the extension only when the content says nothing.
   std::optional<Result<Json>> doc;
   LevelFormat format;
@@ -162,7 +167,34 @@ Result<Level> load_level(const std::string& path, const LevelLoadOptions& option
   }
   Result<std::string> text = read_file(file);
   if (!text) return text.error();
-  return parse_level_any(*text, file, options, report, [](const std::string& p) { return read_file(p); }, level_name);
+  LevelLoadReport local;
+  LevelLoadReport& rep = report ? *report : local;
+  rep.files = {file};
+  const FileLoader loader = [&rep](const std::string& p) {
+    rep.files.push_back(p);
+    return read_file(p);
+  };
+  return parse_level_any(*text, file, options, &rep, loader, level_name);
+}
+
+Result<std::string> resolve_level_resource(const std::string& level_file, std::string_view field,
+                                           const std::string& resource, const std::string& fallback_folder) {
+  namespace fs = std::filesystem;
+  std::string file = level_file;
+  std::error_code ec;
+  if (const size_t hash = file.rfind('#'); hash != std::string::npos && !fs::exists(file, ec)) file.resize(hash);
+  const fs::path rel(resource);
+  if (resource.empty()) return Error::at(file, field, "expected a file name, got an empty string");
+  const fs::path norm = rel.lexically_normal();
+  if (rel.is_absolute() || rel.has_root_name() || (!norm.empty() && *norm.begin() == "..")) {
+    return Error::at(file, field, "\"" + resource + "\" leaves the level's folder; name a file in it or below it");
+  }
+  const fs::path folder = fs::path(file).parent_path();
+  const fs::path in_level = folder / norm;
+  if (fs::exists(in_level, ec) || fallback_folder.empty()) return in_level.string();
+  const fs::path in_fallback = fs::path(fallback_folder) / norm;
+  if (fs::exists(in_fallback, ec)) return in_fallback.string();
+  return in_level.string();  // missing: the reader names it
 }
 
 }  // namespace ossa

@@ -50,7 +50,15 @@ struct LevelLoadReport {
   int64_t solid_cells = 0;         // solid tiles / IntGrid cells merged into boxes
   int64_t boxes_from_cells = 0;    // the boxes they became (tile_merge.h)
   std::vector<std::string> warnings;
+  // Every file read (the map first, then external tilesets and LDtk level files), as opened:
+  // a tool refuses to write over any of them (io/file.h check_output_path).
+  std::vector<std::string> files;
 };
+
+// Tile maps (Tiled tile layers and chunks, LDtk IntGrid layers): at most this many cells in
+// all the layers of one map together, so the work of decoding and merging a map (O(n log n) in
+// its cells) is bounded per map, whatever its layers' count.
+inline constexpr int64_t kMaxMapCells = 1LL << 24;
 
 // What a designer should know about a level that loads (every tool prints these as
 // "warning: FILE: ..." lines): a level without boxes, a spawn inside a box, a spawn with no
@@ -63,6 +71,14 @@ using FileLoader = std::function<Result<std::string>(const std::string& path)>;
 
 // The format of `text` by content, else by the extension of `path`, else kOssa.
 LevelFormat detect_level_format(std::string_view text, std::string_view path);
+
+// A file a level names (its background image) as a path to open: relative to the level's own
+// folder (`level_file` may end in "#LevelName"); a path that leaves that folder ("..", or an
+// absolute path) is refused with a message naming the level and the field. When no such file
+// exists in the level's folder, `fallback_folder` (the game's assets/, where images were looked
+// up before) is tried, with the same rule.
+Result<std::string> resolve_level_resource(const std::string& level_file, std::string_view field,
+                                           const std::string& resource, const std::string& fallback_folder = {});
 
 // Loads a level file of any format above; `path` may end in "#LevelName" for LDtk. External
 // Tiled tilesets and LDtk level files are read relative to the map.

@@ -122,8 +122,22 @@ struct Converter {
       fail(path, "expected encoding \"csv\" or \"base64\", got \"" + encoding + "\"");
       return Json::array();
     }
+    // <tile gid="..."/> children: a gid is 32 bits (the tile id and the flip flags); a larger
+    // number is an error, not wrapped to another tile.
     Json out = Json::array();
-    for (const pugi::xml_node& t : n.children("tile")) out.push_back(static_cast<uint32_t>(t.attribute("gid").as_ullong(0) & 0xFFFFFFFFull));
+    size_t i = 0;
+    for (const pugi::xml_node& t : n.children("tile")) {
+      const char* text = t.attribute("gid").as_string("0");
+      char* end = nullptr;
+      errno = 0;
+      const unsigned long long v = std::strtoull(text, &end, 10);
+      if (end == text || *end || errno == ERANGE || v > 0xFFFFFFFFull || *text == '-' || *text == '+' || *text == ' ') {
+        fail(json_path(path, i), "expected a tile gid (an integer in [0, 4294967295]), got \"" + std::string(text).substr(0, 24) + "\"");
+        return out;
+      }
+      out.push_back(static_cast<uint32_t>(v));
+      ++i;
+    }
     return out;
   }
 
@@ -224,6 +238,9 @@ struct Converter {
 };
 
 Result<pugi::xml_document*> parse_xml(pugi::xml_document& doc, std::string_view text, std::string_view file) {
+  if (auto enc = non_utf8_encoding(text)) {
+    return Error::at(file, "", "is " + *enc + " text; Tiled files must be UTF-8 (save it as UTF-8)");
+  }
   // Names and properties become JSON strings, which must be UTF-8 (and XML declares it here).
   if (const size_t bad = first_invalid_utf8(text); bad != std::string_view::npos) {
     const size_t line = 1 + static_cast<size_t>(std::count(text.begin(), text.begin() + static_cast<std::ptrdiff_t>(bad), '\n'));

@@ -5,10 +5,20 @@
 
 #include <cstring>
 
+#include "ossa/io/file.h"
+#include "ossa/io/image_info.h"
+
 namespace ossa {
 
 Result<Image> load_image(const std::string& path) {
-  SDL_Surface* loaded = IMG_Load(path.c_str());
+  // The input rule (io/file.h) and the size from the header before SDL_image decodes anything
+  // (io/image_info.h): SDL_image would open a pipe and wait, and decode any size it is given.
+  Result<std::string> bytes = read_file(path, kMaxImageFileBytes);
+  if (!bytes) return bytes.error();
+  if (Result<ImageInfo> info = check_image(*bytes, path); !info) return info.error();
+  SDL_RWops* rw = SDL_RWFromConstMem(bytes->data(), static_cast<int>(bytes->size()));
+  if (!rw) return Error{path + ": cannot load image: " + SDL_GetError()};
+  SDL_Surface* loaded = IMG_Load_RW(rw, 1);
   if (!loaded) return Error{path + ": cannot load image: " + IMG_GetError()};
   // RGBA32 is R, G, B, A in byte order whatever the endianness: what GL_RGBA/UNSIGNED_BYTE reads.
   SDL_Surface* rgba = SDL_ConvertSurfaceFormat(loaded, SDL_PIXELFORMAT_RGBA32, 0);

@@ -22,7 +22,9 @@ struct Image {
   }
 };
 
-// Loads an image file as RGBA. Errors name the file and SDL_image's reason.
+// Loads an image file as RGBA: a regular file of at most kMaxImageFileBytes, PNG, JPEG or BMP,
+// whose size check_image accepts from its header before anything is decoded (io/image_info.h).
+// Errors name the file and the reason.
 Result<Image> load_image(const std::string& path);
 
 // A magenta/dark-grey checkerboard of `cell`-pixel squares: the visible fallback for a

@@ -63,6 +63,21 @@ void add_background(DebugDraw& draw, const Camera2D& camera, const BackgroundSty
             glm::mix(glm::vec3(0.36f, 0.52f, 0.38f), haze, 0.25f));
 }
 
+void draw_background_image(Renderer& r, const Texture& texture, float parallax) {
+  if (!texture.is_valid()) return;
+  // A tile's world x is camera.x·(1 − parallax) + k·tile width. One quad over the view whose
+  // texture coordinates run over as many tiles as it shows; u at the view's left edge is
+  // reduced to [0, 1) in double, so float texture coordinates keep their precision.
+  const Box view = r.camera.visible_box();
+  const double tile_w = static_cast<double>(view.height()) * texture.width() / std::max(1, texture.height());
+  const double origin = static_cast<double>(r.camera.center_ws.x) * (1.0 - static_cast<double>(parallax));
+  const double u_left = (static_cast<double>(view.min_ws.x) - origin) / tile_w;
+  const double u0 = u_left - std::floor(u_left);
+  const double u1 = u0 + static_cast<double>(view.width()) / tile_w;
+  if (!std::isfinite(u0) || !std::isfinite(u1)) return;
+  r.draw_textured_box(texture, view, glm::vec4(1.0f), {static_cast<float>(u0), 0.0f}, {static_cast<float>(u1), 1.0f});
+}
+
 void add_level_scenery(DebugDraw& draw, const Level& level, const Box& visible) {
   const glm::vec4 earth{0.47f, 0.35f, 0.24f, 1.0f};
   const glm::vec4 earth_dark{0.30f, 0.22f, 0.15f, 1.0f};

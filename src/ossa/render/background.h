@@ -9,6 +9,7 @@
 
 #include "ossa/level/box.h"
 #include "ossa/render/renderer.h"
+#include "ossa/render/texture.h"
 
 namespace ossa {
 
@@ -25,6 +26,13 @@ struct BackgroundStyle {
 // Sky bands covering `camera`'s view and the hills (far range scrolls at parallax/3, near at
 // `parallax`); hills are a sum of sines of the scrolled x, so they never repeat visibly.
 void add_background(DebugDraw& draw, const Camera2D& camera, const BackgroundStyle& style);
+
+// A level's background image over the camera's view, scrolled by `parallax` in [0, 1] and
+// repeated horizontally (tiles as tall as the view, each image's aspect kept): one draw,
+// whatever the image's shape and however far the camera is from the origin (a 1 px wide strip
+// used to cost one draw per tile, and a loop counting tiles in a float never ended past 2^24).
+// `texture` should be made with Texture::Wrap::kRepeat; an invalid one draws nothing.
+void draw_background_image(Renderer& renderer, const Texture& texture, float parallax);
 
 // The colliders overlapping `visible` as ground: fill, a lighter top band (grass) and a
 // darker outline. Boxes whose top is covered by another box get no grass band.

@@ -178,12 +178,13 @@ void Renderer::draw_bones(CreatureBatch& batch, glm::vec4 colour) {
   stats.vertices += 2 * batch.bone_count();
 }
 
-void Renderer::draw_textured_box(const Texture& texture, const Box& b, glm::vec4 tint) {
+void Renderer::draw_textured_box(const Texture& texture, const Box& b, glm::vec4 tint, glm::vec2 uv_min, glm::vec2 uv_max) {
   if (!quad_) quad_ = std::make_unique<VertexArray<TexturedVertex>>();
+  const glm::vec2 a = uv_min, c = uv_max;
   const TexturedVertex v[6] = {
-      {{b.min_ws.x, b.min_ws.y}, {0, 0}}, {{b.max_ws.x, b.min_ws.y}, {1, 0}},
-      {{b.max_ws.x, b.max_ws.y}, {1, 1}}, {{b.min_ws.x, b.min_ws.y}, {0, 0}},
-      {{b.max_ws.x, b.max_ws.y}, {1, 1}}, {{b.min_ws.x, b.max_ws.y}, {0, 1}}};
+      {{b.min_ws.x, b.min_ws.y}, {a.x, a.y}}, {{b.max_ws.x, b.min_ws.y}, {c.x, a.y}},
+      {{b.max_ws.x, b.max_ws.y}, {c.x, c.y}}, {{b.min_ws.x, b.min_ws.y}, {a.x, a.y}},
+      {{b.max_ws.x, b.max_ws.y}, {c.x, c.y}}, {{b.min_ws.x, b.max_ws.y}, {a.x, c.y}}};
   quad_->upload(v, {}, GL_STREAM_DRAW);
   textured.use();
   textured.set("u_view_proj", camera.view_proj());

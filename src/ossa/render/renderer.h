@@ -96,8 +96,11 @@ class Renderer {
   // A batch holds the instances the look needs (bodies, sprites or both).
   void draw_creatures(CreatureBatch& batch, std::span<const Texture* const> textures, CreatureLook look);
   void draw_bones(CreatureBatch& batch, glm::vec4 colour);
-  // A textured rectangle in world space (background image), tinted.
-  void draw_textured_box(const Texture& texture, const Box& box_ws, glm::vec4 tint = glm::vec4(1.0f));
+  // A textured rectangle in world space (background image), tinted. `uv_min`/`uv_max` are the
+  // texture coordinates of its bottom-left and top-right corners: beyond [0, 1] a texture made
+  // with Texture::Wrap::kRepeat tiles, so a strip repeated across the screen is one draw.
+  void draw_textured_box(const Texture& texture, const Box& box_ws, glm::vec4 tint = glm::vec4(1.0f),
+                         glm::vec2 uv_min = glm::vec2(0.0f), glm::vec2 uv_max = glm::vec2(1.0f));
 
  private:
   std::unique_ptr<VertexArray<TexturedVertex>> quad_;

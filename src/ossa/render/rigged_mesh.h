@@ -37,6 +37,11 @@
 // those), a file Assimp cannot read, no mesh with bones, more than kMaxRiggedBones
 // bones, two meshes that bind one bone differently, non-finite positions, UVs or weights,
 // negative weights, and indices out of range. No input, however malformed, crashes.
+// Before Assimp sees a glTF: its JSON is parsed with parse_json (nesting at most kMaxJsonDepth:
+// Assimp's reader recurses), and its nodes must form trees at most 1 024 deep (Assimp's node
+// import recurses). Every file Assimp opens — the mesh, glTF buffers — follows the input rule
+// of io/file.h (regular files of at most 64 MiB, 256 MiB together; a pipe is refused, not
+// waited on). Textures are sized from their header before decoding (io/image_info.h).
 
 #include <array>
 #include <cstdint>
@@ -87,6 +92,8 @@ struct RiggedMesh {
   std::vector<uint32_t> indices;   // triangles, back to front (see above)
   std::vector<RiggedBone> bones;   // parents first
   std::string source;              // the file (or name) it was loaded from, for messages
+  std::vector<std::string> files;  // every file read for it (the mesh, its glTF buffers): a
+                                   // tool never writes over one of them (io/file.h)
   // Texture of the first skinned mesh's material (diffuse / base colour), if any:
   std::string texture_path;        // a file: resolved against the model's folder; empty when
                                    // there is none or it is embedded

@@ -19,13 +19,13 @@
 
 namespace ossa {
 
-Texture Texture::load(const std::string& path) {
+Texture Texture::load(const std::string& path, Wrap wrap) {
   auto image = load_image(path);
   if (!image.ok()) {
     render_log(image.message() + " (using the checker texture)");
     return checker();
   }
-  return from_image(image.value());
+  return from_image(image.value(), true, wrap);
 }
 
 Texture Texture::checker() {
@@ -34,7 +34,7 @@ Texture Texture::checker() {
   return t;
 }
 
-Texture Texture::from_image(const Image& image, bool linear_filter) {
+Texture Texture::from_image(const Image& image, bool linear_filter, Wrap wrap) {
   if (image.empty() || image.rgba.size() < static_cast<size_t>(image.width) * image.height * 4) {
     render_log("texture: empty image (using the checker texture)");
     return checker();
@@ -56,8 +56,9 @@ Texture Texture::from_image(const Image& image, bool linear_filter) {
   const GLint filter = linear_filter ? GL_LINEAR : GL_NEAREST;
   glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, filter);
   glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, filter);
-  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
-  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+  const GLint wrap_mode = wrap == Wrap::kRepeat ? GL_REPEAT : GL_CLAMP_TO_EDGE;
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, wrap_mode);
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, wrap_mode);
   glBindTexture(GL_TEXTURE_2D, 0);
   return t;
 }

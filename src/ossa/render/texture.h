@@ -16,10 +16,13 @@ namespace ossa {
 
 class Texture {
  public:
-  // Loads `path`; on failure logs and returns the checker fallback (is_valid() == false).
-  static Texture load(const std::string& path);
+  // How texture coordinates outside [0, 1] sample: the edge pixels, or the image repeated.
+  enum class Wrap { kClamp, kRepeat };
+  // Loads `path` (load_image: the input rule and the size check before decoding); on failure
+  // logs and returns the checker fallback (is_valid() == false).
+  static Texture load(const std::string& path, Wrap wrap = Wrap::kClamp);
   // Uploads an image (rows top to bottom). An empty image gives the checker fallback.
-  static Texture from_image(const Image& image, bool linear_filter = true);
+  static Texture from_image(const Image& image, bool linear_filter = true, Wrap wrap = Wrap::kClamp);
   static Texture checker();
 
   Texture() = default;

@@ -13,6 +13,7 @@
 #include <glm/geometric.hpp>
 
 #include "ossa/anim/anim_math.h"
+#include "ossa/rig/character_checks.h"
 #include "ossa/math/angle.h"
 #include "ossa/math/two_bone_ik.h"
 
@@ -356,6 +357,9 @@ Result<Character> build_character(const ImportedSkeleton& sk, const RigMapping& 
     } else {
       bend[i] = cross > 0.0f ? 1 : -1;
     }
+    if (Status st = check_leg_size(c.path, map.legs[i].end, ankle, contacts[i], reach, file, ch.warnings); !st.ok()) {
+      return st.error();
+    }
     const float hip_h = hip.y;
     if (contacts[i].y > kFloatingOfHip * hip_h) {
       char what[160];
@@ -364,6 +368,8 @@ Result<Character> build_character(const ImportedSkeleton& sk, const RigMapping& 
       ch.warnings.push_back(what);
     }
   }
+
+  check_leg_pairs(map, ch.warnings);
 
   // (5) The ossa skeleton: root first, then the mesh order; a bone outside the root's subtree
   // (or above it) hangs from the root.

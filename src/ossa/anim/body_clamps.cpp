@@ -1,0 +1,350 @@
+// Body placement's clamps, in their order (body_placement.h), and the girdle moves they make.
+
+#include <algorithm>
+#include <cmath>
+
+#include "ossa/anim/anim_math.h"
+#include "ossa/anim/animator_params.h"
+#include "ossa/anim/body_placement_internal.h"
+#include "ossa/anim/foothold.h"
+#include "ossa/anim/leg_geometry.h"
+#include "ossa/math/two_bone_ik.h"
+
+namespace ossa::anim::placement {
+
+// Moves girdle g's joint up by dy, turning the body about the girdle at the other end.
+void move_girdle(Placement& p, int g, float dy) {
+  const AnimRig& rig = p.ctx.rig;
+  BodyFrame& body = p.body;
+  const int n = static_cast<int>(rig.girdles.size());
+  if (n < 2 || (g != 0 && g != n - 1)) {
+    body.root_y_ws += dy;
+    return;
+  }
+  // Turn the body about the girdle at the other end (o), which stays put; whatever a turn
+  // within the pitch limits (per tick and overall) cannot give, the whole body moves.
+  const glm::vec2 root_rest(0.0f, rig.root_rest_y);
+  const glm::vec2 o = rig.girdles[g == 0 ? n - 1 : 0].joint_ms - root_rest;
+  const glm::vec2 v = rig.girdles[g].joint_ms - root_rest - o;
+  const float len = std::sqrt(v.x * v.x + v.y * v.y);
+  const glm::vec2 v_before = body.rotate_body(v), o_before = body.rotate_body(o);
+  if (len > 1e-4f) {
+    const float phi = fast_atan2(v.y, v.x), a = body.pitch + body.lean;
+    const float s = std::asin(std::clamp((v_before.y + dy) / len, -0.95f, 0.95f));
+    const float turned = (std::cos(a + phi) >= 0.0f ? s : kPi - s) - phi;
+    const float step = std::clamp(wrap_angle(turned - a), -kMaxPitchStep, kMaxPitchStep);
+    body.pitch = std::clamp(body.pitch + step, std::max(p.state.pitch_target - kMaxPitchOff, -kMaxPitch),
+                            std::min(p.state.pitch_target + kMaxPitchOff, kMaxPitch));
+  }
+  const float moved = body.rotate_body(v).y - v_before.y;
+  body.root_y_ws += o_before.y - body.rotate_body(o).y + (dy - moved);
+}
+
+// The least height of a girdle joint at joint_ws (rest height `rest`) out of the ground:
+// kGirdleKeepOutOfRest of its rest height above the highest ground within
+// kGirdleKeepOutHalfOfRest of it either side, the ground as far again beyond counting less and
+// less (keep_out_height), so that a bump's edge coming into reach as the body moves or turns
+// does not pop the body up by its height. Ground is looked for from half a rest height (plus
+// `extra`) above the joint; -1e30 where there is none.
+// The highest ground a girdle's keep-out counts: ground more than kKeepOutStepsOfClimb
+// climbable steps above the ground the girdle stands over is a wall (the wall sweep stops the
+// body at it), not ground to lift the body over: a creature turned round below a ledge would
+// otherwise be lifted by the ledge's height as its shoulders near the face.
+float girdle_keep_out_top(const AnimContext& ctx, glm::vec2 joint_ws, float rest, float extra) {
+  const float step = ctx.params.max_step_up * ctx.rig.climb_height;
+  return std::min(joint_ws.y + 0.5f * rest, joint_ws.y - rest * ctx.params.stance_height + kKeepOutStepsOfClimb * step) + extra;
+}
+
+float girdle_keep_out(const AnimContext& ctx, glm::vec2 joint_ws, float rest, float extra) {
+  return keep_out_height(ctx.level, joint_ws.x, kGirdleKeepOutHalfOfRest * rest, kGirdleKeepOutOfRest * rest,
+                         kKeepOutFadeOfRest * rest, girdle_keep_out_top(ctx, joint_ws, rest, extra), ctx.rig.scale.search_depth, ctx.hits);
+}
+
+// [SECTION] clamps, in their order ------------------------------------------------------------
+
+// 1. Never over-extend a leg on the ground: lower its girdle (hard clamp, no smoothing; again
+// when that moved it, as a rolling foot's reach depends on where the joint is). The end
+// girdles turn the body about each other, so a hind leg left on a lower step pitches the body
+// up instead of pulling the shoulders down into the steps ahead. Returns how far each girdle
+// may still rise with its feet in reach (room).
+void keep_stance_legs_in_reach(Placement& p, std::vector<float>& need, std::vector<float>& room) {
+  const AnimRig& rig = p.ctx.rig;
+  const size_t n_groups = rig.girdles.size();
+  for (int pass = 0; pass < 3; ++pass) {
+    bool beyond = false;  // a stance foot out of reach even level with the joint
+    for (size_t g = 0; g < n_groups; ++g) {  // (one loop: no call to memset for two floats)
+      need[g] = 0.0f;
+      room[g] = 1e30f;
+    }
+    GirdleJointFs joints;
+    for (size_t i = 0; i < rig.legs.size(); ++i) {
+      const RigLeg& info = rig.legs[i];
+      const FootState& f = p.feet.of_leg(static_cast<int>(i));
+      // On the turn tick, swinging feet (taken over by other legs) must stay in reach too.
+      if (f.state != LegState::kStance && !(p.in.turning && !f.easing)) continue;
+      const glm::vec2 joint = joints.of(rig, p.body, info.girdle);
+      float r;
+      const glm::vec2 anchor = leg_anchor(p.ctx, p.body, static_cast<int>(i), p.body.to_fs(f.pos_ws), joint,
+                                          f.state == LegState::kStance ? f.stance_clear : f.swing_clear, &r);
+      const float dx = std::fabs(anchor.x - joint.x);
+      if (dx >= r) {
+        beyond = beyond || f.state == LegState::kStance;
+        continue;
+      }
+      const float allowed = anchor.y + reach_across(r, dx);
+      // (A joint further below the foot than the leg reaches is out of reach too; a foot within
+      // kReachCheckSlack of its reach is left to clamp 6's own test, whose rounding differs.)
+      beyond = beyond || (f.state == LegState::kStance &&
+                          (2.0f * anchor.y - allowed > joint.y - kReachCheckSlack || joint.y > allowed - kReachCheckSlack));
+      need[info.girdle] = std::max(need[info.girdle], joint.y - allowed);
+      room[info.girdle] = std::min(room[info.girdle], allowed - joint.y);
+      // A foot left behind and below (stairs) that drags the body down lifts on the next tick
+      // rather than fold the other legs into the step ahead.
+      if (pass == 0 && f.state == LegState::kStance && anchor.x < joint.x &&
+          joint.y - allowed > kDragLiftOfRest * rig.girdles[info.girdle].rest_height) {
+        (*p.release)[p.feet.foot_of_leg[i]] = 1;
+      }
+    }
+    // Turning the body moves the other girdle's joint sideways a little: the last pass lowers
+    // the whole body, which keeps every joint's x.
+    float most = 0.0f;
+    for (float d : need) most = std::max(most, d);
+    if (most <= 0.0f) {
+      // Every stance foot within reach (need ≤ 0 is allowed ≥ joint.y: |anchor - joint| ≤ r).
+      p.reach_checked = !beyond;
+      p.checked_root = p.body.root_y_ws;
+      p.checked_pitch = p.body.pitch;
+      break;
+    }
+    for (size_t g = 0; g < n_groups; ++g) {
+      if (need[g] <= 0.0f) continue;
+      if (pass < 2) move_girdle(p, static_cast<int>(g), -need[g]);
+      room[g] += need[g];
+    }
+    if (pass == 2) p.body.root_y_ws -= most;
+  }
+}
+
+// 2. Nor fold a leg on the ground tighter than it can (short legs with long shins on a low
+// body, a hind foot stepped up a ledge under its joint): raise its girdle until each stance
+// ankle is at least the folded length away. The end girdles turn the body about each other,
+// as in 1, so that the other end's feet stay where they are.
+void keep_stance_legs_unfolded(Placement& p, std::vector<float>& fold_raise, std::vector<float>& room) {
+  const AnimRig& rig = p.ctx.rig;
+  bool any = false;  // fold_raise holds this tick's raises (filled at the first)
+  GirdleJointFs joints;
+  for (size_t i = 0; i < rig.legs.size(); ++i) {
+    const FootState& f = p.feet.of_leg(static_cast<int>(i));
+    if (f.state != LegState::kStance) continue;
+    const float fold = rig.legs[i].fold;
+    const glm::vec2 joint = joints.of(rig, p.body, rig.legs[i].girdle);
+    // The ankle lies within a foot's length of the contact point.
+    if (glm::length(p.body.to_fs(f.pos_ws) - joint) - rig.legs[i].foot_span >= fold) continue;
+    glm::vec2 dir;
+    const glm::vec2 ankle = leg_ankle(p.ctx, p.body, static_cast<int>(i), p.body.to_fs(f.pos_ws), joint, true, f.stance_clear, &dir, nullptr);
+    const float dx = std::fabs(ankle.x - joint.x);
+    if (dx < fold) {
+      if (!any) std::fill(fold_raise.begin(), fold_raise.end(), 0.0f);
+      any = true;
+      float& raise = fold_raise[rig.legs[i].girdle];
+      raise = std::max(raise, ankle.y + reach_across(fold, dx) - joint.y);
+    }
+  }
+  if (!any) return;
+  // The whole body rises when every girdle has the room; else the folded girdle alone.
+  float most = 0.0f, least_room = 1e30f;
+  for (size_t g = 0; g < fold_raise.size(); ++g) {
+    most = std::max(most, fold_raise[g]);
+    least_room = std::min(least_room, room[g]);
+  }
+  if (most <= 0.0f) return;
+  if (most <= least_room) {
+    p.body.root_y_ws += most;
+    for (float& r : room) r = std::max(r - most, 0.0f);
+    return;
+  }
+  for (size_t g = 0; g < fold_raise.size(); ++g) {
+    if (fold_raise[g] <= 0.0f) continue;
+    // What each girdle rises comes off its room.
+    for (size_t o = 0; o < room.size(); ++o) room[o] += p.body.girdle_ws(rig, static_cast<int>(o)).y;
+    move_girdle(p, static_cast<int>(g), fold_raise[g]);
+    for (size_t o = 0; o < room.size(); ++o) room[o] = std::max(room[o] - p.body.girdle_ws(rig, static_cast<int>(o)).y, 0.0f);
+  }
+}
+
+// How far leg i's stance foot is beyond its leg's reach (≤ 0: in reach; -1e30 for a leg not
+// on the ground).
+float stance_excess(const Placement& p, size_t i, GirdleJointFs& joints) {
+  const AnimRig& rig = p.ctx.rig;
+  const FootState& f = p.feet.of_leg(static_cast<int>(i));
+  if (f.state != LegState::kStance) return -1e30f;
+  const glm::vec2 joint = joints.of(rig, p.body, rig.legs[i].girdle);
+  float r;
+  const glm::vec2 anchor = leg_anchor(p.ctx, p.body, static_cast<int>(i), p.body.to_fs(f.pos_ws), joint, f.stance_clear, &r);
+  return glm::length(anchor - joint) - r;
+}
+
+// How far the stance foot furthest out of its leg's reach is beyond it (≤ 0: all in reach).
+float stance_reach_excess(const Placement& p) {
+  float most = -1e30f;
+  GirdleJointFs joints;
+  for (size_t i = 0; i < p.ctx.rig.legs.size(); ++i) most = std::max(most, stance_excess(p, i, joints));
+  return most;
+}
+
+// 3. Nor kneel: a leg folded so far that its knee would touch the ground (sprawling legs on a
+// low body, or lifted in a swing) raises its girdle until the knee clears the ground under
+// it. A swinging leg's knee raises it only as far as the legs on the ground allow (their feet
+// must not slide); past that the swing itself lifts and tucks the leg (leg IK). With the foot
+// in place a raised joint lifts the knee by less than itself: up to kKneePasses passes, as
+// long as some girdle moves.
+void keep_knees_off_ground(Placement& p, std::vector<float>& stance_up, std::vector<float>& swing_up, std::vector<float>& room) {
+  const AnimRig& rig = p.ctx.rig;
+  const Level& level = p.ctx.level;
+  for (int pass = 0; pass < kKneePasses; ++pass) {
+    std::fill(stance_up.begin(), stance_up.end(), 0.0f);
+    std::fill(swing_up.begin(), swing_up.end(), 0.0f);
+    GirdleJointFs joints;
+    for (size_t i = 0; i < rig.legs.size(); ++i) {
+      const FootState& f = p.feet.of_leg(static_cast<int>(i));
+      const bool stance = f.state == LegState::kStance;
+      const RigLeg& info = rig.legs[i];
+      const glm::vec2 joint = joints.of(rig, p.body, info.girdle);
+      const float margin = kKneeMarginOfReach * info.reach;
+      // The knee is no lower than a thigh below the joint nor a shin below the ankle: cheap
+      // tests before the IK (unless steps rise near the foot, or any ground above it: a shin
+      // lying low across the corner of the tread a foot stepped down from cuts it, however
+      // small the step).
+      const Clearance& near = stance ? f.stance_reach_clear : f.swing_clear;
+      const bool steps_near = !near.clear_above(f.pos_ws.y + margin);
+      const bool corner_near = stance && !steps_near && !near.clear_above(f.pos_ws.y);
+      if (!steps_near && !corner_near && joint.y - info.upper > f.pos_ws.y + margin) continue;
+      glm::vec2 dir;
+      const glm::vec2 ankle = leg_ankle(p.ctx, p.body, static_cast<int>(i), p.body.to_fs(f.pos_ws), joint, true,
+                                        stance ? f.stance_clear : f.swing_clear, &dir, nullptr);
+      if (!steps_near && !corner_near && ankle.y - info.lower > f.pos_ws.y + margin) continue;
+      const TwoBoneIkResult ik = solve_two_bone_ik_directions(joint, info.upper, info.lower, ankle, info.bend);
+      const glm::vec2 knee = p.body.to_ws(ik.middle);
+      float& up = stance ? stance_up[info.girdle] : swing_up[info.girdle];
+      // (The ground within kKneeHalfWidth of the knee, fading beyond: a knee beside a riser
+      // is not lifted by its height when a turn moves it a millimetre.)
+      if (const float ground = keep_out_height(level, knee.x, kKneeHalfWidth, margin, info.reach, knee.y + info.reach,
+                                               2.0f * info.reach, p.ctx.hits);
+          ground > -1e29f) {
+        up = std::max(up, ground - knee.y);
+      }
+      // On steps a thigh or shin may cross the edge of a step beside the knee (a swinging leg
+      // far back down a flight, say), as may a shin coming up to a foot on the edge of a ledge
+      // from a knee below it. A shin across a small tread's corner raises its girdle only as
+      // far as the stance legs reach (swing_up's limit), lest a foot slide.
+      if (steps_near || corner_near || knee.y < f.pos_ws.y + margin) {
+        const glm::vec2 hip = p.body.to_ws(joint), heel = p.body.to_ws(ik.end);
+        const float cross = std::max(raise_to_clear(hip, knee, level, p.ctx.hits), raise_to_clear(knee, heel, level, p.ctx.hits));
+        float& cross_up = corner_near && knee.y >= f.pos_ws.y + margin ? swing_up[info.girdle] : up;
+        cross_up = std::max(cross_up, cross);
+      }
+    }
+    bool moved = false;
+    for (size_t g = 0; g < rig.girdles.size(); ++g) {
+      const float up = std::min(std::max(stance_up[g], std::min(swing_up[g], room[g])), kMaxKneeRaiseOfHip * rig.hip_height);
+      if (up <= 0.0f) continue;
+      if (up > stance_up[g]) {
+        // A raised end girdle turns the body about the other one, whose joint moves sideways
+        // a little: a swinging knee's raise must not take a stance foot out of reach (halved
+        // until it does not; a stance knee's raise stands, and its foot lifts, clamp 6).
+        const BodyFrame before = p.body;
+        const float allowed = std::max(stance_reach_excess(p), 0.0f) + kSwingRaiseSlack;
+        float tried = up;
+        for (int k = 0; k < kSwingRaiseHalvings; ++k, tried *= 0.5f) {
+          move_girdle(p, static_cast<int>(g), tried);
+          if (stance_reach_excess(p) <= allowed) break;
+          p.body = before;
+        }
+        if (p.body.root_y_ws == before.root_y_ws && p.body.pitch == before.pitch) continue;
+        room[g] = std::max(room[g] - tried, 0.0f);
+        moved = true;
+        continue;
+      }
+      move_girdle(p, static_cast<int>(g), up);
+      room[g] = std::max(room[g] - up, 0.0f);
+      moved = true;
+    }
+    if (!moved) break;
+  }
+}
+
+// How far a shoulder at `shoulder` (world) must rise to keep kShoulderKeepOutOfHip above the
+// ground under it (looked for from half a standing height, plus `extra`, above it).
+float shoulder_need(const Placement& p, glm::vec2 shoulder, float extra) {
+  const float hip = p.ctx.rig.hip_height;
+  const float half = 0.05f * hip;
+  auto below = ground_below(p.ctx.level, shoulder.x - half, shoulder.x + half, shoulder.y + 0.5f * hip + extra, p.ctx.rig.scale.search_depth);
+  return below ? below->height_ws + kShoulderKeepOutOfHip * hip - shoulder.y : 0.0f;
+}
+
+// 4. The shoulder far ahead of a single girdle meeting a step: the body turns up about the
+// girdle (the feet stay in reach) rather than rise (the pitch target follows more slowly).
+void pitch_for_front_shoulder(Placement& p) {
+  const AnimRig& rig = p.ctx.rig;
+  if (!(rig.front_shoulder.x > 0.0f)) return;
+  const glm::vec2 rel = rig.girdles.front().joint_ms - glm::vec2(0.0f, rig.root_rest_y);
+  for (int pass = 0; pass < 2; ++pass) {
+    const float need = shoulder_need(p, p.body.body_point_ws(rig, rig.girdles.front().joint_ms + rig.front_shoulder), 0.0f);
+    if (need <= 0.0f) break;
+    const float girdle_y = p.body.rotate_body(rel).y;
+    p.body.pitch = std::min(p.body.pitch + std::asin(std::min(need / rig.front_shoulder.x, 0.9f)), kMaxPitch);
+    p.body.root_y_ws += girdle_y - p.body.rotate_body(rel).y;
+  }
+}
+
+// 5. Whatever the legs ask, a girdle never sinks into the ground under it: it keeps an
+// eighth of its standing height above the highest ground there (a leg may stretch, the body
+// stays out). Ground the body came down past on this tick (`fell`) counts too (clamp 1 may
+// pull it down further than the queries look up). Shoulders carrying arms, wings or fins too,
+// and folded wings do not cut a step's corner (a wall, too high to rise over, is the wall
+// sweep's business).
+void keep_body_out_of_ground(Placement& p, float fell) {
+  const AnimRig& rig = p.ctx.rig;
+  float raise = 0.0f;
+  for (size_t g = 0; g < rig.girdles.size(); ++g) {
+    const glm::vec2 joint = p.body.girdle_ws(rig, static_cast<int>(g));
+    const float rest = rig.girdles[g].rest_height;
+    // Ground within the window (twice its half, where claims fade) no higher than the keep
+    // below the joint cannot raise it: the ground profile says so without a level query.
+    const float half = 2.0f * kGirdleKeepOutHalfOfRest * rest;
+    if (!p.ctx.ground.may_rise_above(joint.x - half, joint.x + half, joint.y - kGirdleKeepOutOfRest * rest,
+                                     girdle_keep_out_top(p.ctx, joint, rest, fell))) {
+      continue;
+    }
+    raise = std::max(raise, girdle_keep_out(p.ctx, joint, rest, fell) - joint.y);
+  }
+  auto keep_shoulder_out = [&](const RigLimb& limb) {
+    raise = std::max(raise, shoulder_need(p, p.body.body_point_ws(rig, bone_start(rig.model_rest[limb.bones[0]])), fell));
+  };
+  for (const RigLimb& a : rig.outline_arms) keep_shoulder_out(a);
+  for (const RigLimb& w : rig.outline_wings) keep_shoulder_out(w);
+  for (const RigLimb& w : rig.outline_wings) {
+    glm::vec2 a = p.body.body_point_ws(rig, bone_start(rig.model_rest[w.bones[0]]), raise);
+    for (int b : w.bones) {
+      const glm::vec2 e = p.body.body_point_ws(rig, bone_end(rig.model_rest[b], rig.skeleton.length(b)), raise);
+      const float need = raise_to_clear(a, e, p.ctx.level, p.ctx.hits);
+      if (need < 0.5f * rig.hip_height) raise += need;
+      a = e;
+    }
+  }
+  for (const RigLimb& f : rig.outline_fins) keep_shoulder_out(f);
+  p.body.root_y_ws += raise;
+}
+
+// 6. The raising clamps (2, 3, 5) may stretch a stance leg again past its reach (a girdle over
+// a higher step lifts the body while another girdle's feet stand lower): such a foot lifts at
+// the next chance instead of sliding (the gait clock reads the hand-off).
+void release_overstretched_feet(Placement& p) {
+  if (p.reach_checked && p.body.root_y_ws == p.checked_root && p.body.pitch == p.checked_pitch) return;
+  GirdleJointFs joints;
+  for (size_t i = 0; i < p.ctx.rig.legs.size(); ++i) {
+    if (stance_excess(p, i, joints) > 0.0f) (*p.release)[p.feet.foot_of_leg[i]] = 1;
+  }
+}
+
+}  // namespace ossa::anim::placement

@@ -1,0 +1,44 @@
+#include "ossa/anim/leg_geometry.h"
+
+#include "ossa/anim/anim_math.h"
+#include "ossa/math/two_bone_ik.h"
+
+namespace ossa::anim {
+
+namespace {
+
+// A rolled foot that would sweep into a step turns back by bisection in this many halvings.
+constexpr int kRollBisections = 6;
+
+}  // namespace
+
+// leg_ankle's rare part (leg_geometry.h), out of line so that the common one stays small.
+[[gnu::noinline]] bool detail::limit_foot_roll(const AnimContext& ctx, const BodyFrame& body, int leg, glm::vec2 contact_fs,
+                                               glm::vec2* foot_dir) {
+  const RigLeg& info = ctx.rig.legs[leg];
+  const float F = info.foot_span;
+  auto clear = [&](glm::vec2 u) {
+    const glm::vec2 seg[2] = {body.to_ws(contact_fs - F * u), body.to_ws(contact_fs)};
+    return !polyline_hits_level(ctx.level, seg, 2, ctx.hits);
+  };
+  if (clear(*foot_dir)) return false;
+  const glm::vec2 rest = info.foot_dir_ms;
+  const float full = std::atan2(rest.x * foot_dir->y - rest.y * foot_dir->x, glm::dot(rest, *foot_dir));
+  float lo = 0.0f, hi = 1.0f;  // fractions of the roll: lo clears, hi does not
+  bisect(lo, hi, kRollBisections, [&](float mid) { return clear(rotate(rest, mid * full)); });
+  *foot_dir = lo > 0.0f ? rotate(rest, lo * full) : rest;
+  return true;
+}
+
+bool stance_leg_hits(const AnimContext& ctx, const BodyFrame& body, int leg, const FootState& f, glm::vec2 joint_fs) {
+  const RigLeg& info = ctx.rig.legs[leg];
+  const glm::vec2 contact = body.to_fs(f.pos_ws);
+  glm::vec2 dir;
+  const glm::vec2 ankle = leg_ankle(ctx, body, leg, contact, joint_fs, true, f.stance_clear, &dir, nullptr);
+  const TwoBoneIkResult ik = solve_two_bone_ik_directions(joint_fs, info.upper, info.lower, ankle, info.bend);
+  const glm::vec2 tip = ik.end + info.foot_length * dir;
+  const glm::vec2 p[4] = {body.to_ws(joint_fs), body.to_ws(ik.middle), body.to_ws(ik.end), body.to_ws(tip)};
+  return polyline_hits_level(ctx.level, p, info.foot_length > 0.0f ? 4 : 3, ctx.hits);
+}
+
+}  // namespace ossa::anim

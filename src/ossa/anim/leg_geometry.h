@@ -1,0 +1,83 @@
+#pragma once
+// Leg geometry: what a leg of the rig reaches, as every stage asks it — the ankle of a foot
+// rolled about its contact point, the point the girdle joint must stay within reach of, and
+// whether a stance leg standing where it stands would cut the level. Pure functions of the rig,
+// the body frame and the level, shared by the step stage, body motion, body placement and the
+// leg IK (no stage's own rule lives here). Facing space (_fs, anim_state.h), metres.
+
+#include <algorithm>
+#include <cmath>
+
+#include <glm/geometric.hpp>
+#include <glm/vec2.hpp>
+
+#include "ossa/anim/anim_state.h"
+
+namespace ossa::anim {
+
+namespace detail {
+// leg_ankle's rare part (leg_ik.cpp): turns a rolled foot back until it clears the level;
+// false if it already did.
+bool limit_foot_roll(const AnimContext& ctx, const BodyFrame& body, int leg, glm::vec2 contact_fs, glm::vec2* foot_dir);
+}  // namespace detail
+
+// (leg_ankle and leg_anchor are inline: every stage asks them for every leg, some several
+// times a tick.)
+
+// The ankle of leg `leg` for a contact point and girdle joint (_fs), and the foot bone's
+// direction: the rest angle unless that over-extends the leg, else pivoted about the contact
+// (no further than the level allows, when `level_aware`). *limited: the level kept the foot
+// from rolling as far as the leg's reach needs.
+[[gnu::always_inline]] inline glm::vec2 leg_ankle(const AnimContext& ctx, const BodyFrame& body, int leg, glm::vec2 contact_fs,
+                                                  glm::vec2 joint_fs, bool level_aware, const Clearance& near,
+                                                  glm::vec2* foot_dir, bool* limited) {
+  // Hooves and toes roll: with the contact point c fixed, the ankle a(θ) = c - F·u(θ) lies on
+  // a circle of the foot's length F around it. The leg (joint j → ankle) reaches r, so
+  // |a - j| <= r, i.e. u(θ)·d >= q with d = c - j and q = (|d|² + F² - r²) / 2F: an arc of
+  // directions within β = acos(q / |d|) of d. The foot keeps its rest direction inside the
+  // arc and turns to the arc's nearer end outside it (into line with d when it is empty).
+  const RigLeg& info = ctx.rig.legs[leg];
+  *foot_dir = info.foot_dir_ms;
+  if (limited) *limited = false;
+  const float F = info.foot_span;
+  if (F <= 0.0f) return contact_fs;  // flat contact: the contact point is the ankle
+  const glm::vec2 d = contact_fs - joint_fs;
+  const float r = info.leg_reach;
+  const float dd = glm::dot(d, d);
+  const float q = (dd + F * F - r * r) / (2.0f * F);
+  if (glm::dot(d, info.foot_dir_ms) < q && dd > 1e-12f) {
+    const float len = std::sqrt(dd);
+    const glm::vec2 n = d / len;
+    const float cos_b = std::min(q / len, 1.0f);
+    const float sin_b = std::sqrt(std::max(1.0f - cos_b * cos_b, 0.0f));
+    // The side of d the rest direction lies on.
+    const float side = n.x * info.foot_dir_ms.y - n.y * info.foot_dir_ms.x >= 0.0f ? 1.0f : -1.0f;
+    *foot_dir = {cos_b * n.x - side * sin_b * n.y, side * sin_b * n.x + cos_b * n.y};
+    if (level_aware && *foot_dir != info.foot_dir_ms && !near.clear_above(std::min(contact_fs.y, contact_fs.y - F * foot_dir->y)) &&
+        detail::limit_foot_roll(ctx, body, leg, contact_fs, foot_dir) && limited) {
+      *limited = true;
+    }
+  }
+  return contact_fs - F * *foot_dir;
+}
+
+// The point the girdle joint of leg `leg` must stay within *radius of: the contact point
+// (foot free to roll) or the ankle (foot held by the level).
+[[gnu::always_inline]] inline glm::vec2 leg_anchor(const AnimContext& ctx, const BodyFrame& body, int leg, glm::vec2 contact_fs,
+                                                   glm::vec2 joint_fs, const Clearance& near, float* radius) {
+  glm::vec2 dir;
+  bool limited = false;
+  const glm::vec2 ankle = leg_ankle(ctx, body, leg, contact_fs, joint_fs, true, near, &dir, &limited);
+  if (!limited) {
+    *radius = ctx.rig.legs[leg].contact_reach;
+    return contact_fs;
+  }
+  *radius = kReachLimit * ctx.rig.legs[leg].reach;
+  return ankle;
+}
+
+// Would leg `leg`'s chain (joint, knee, ankle, toe), its foot standing where it stands, cut
+// into a box with its girdle joint at joint_fs?
+bool stance_leg_hits(const AnimContext& ctx, const BodyFrame& body, int leg, const FootState& foot, glm::vec2 joint_fs);
+
+}  // namespace ossa::anim

@@ -1,0 +1,95 @@
+// Level probes (level_probe.h) against brute force over random levels.
+
+#include "ossa/anim/level_probe.h"
+
+#include <catch2/catch.hpp>
+
+#include <cmath>
+
+#include "ossa/math/rng.h"
+#include "shared/level_scenes.h"
+
+using namespace ossa;
+
+namespace {
+
+// Does segment a-b pass through the interior (shrunk by a millimetre) of `box`? Sampled finely.
+bool segment_hits(const Box& box, glm::vec2 a, glm::vec2 b) {
+  for (int k = 0; k <= 2000; ++k) {
+    const glm::vec2 p = a + (b - a) * (static_cast<float>(k) / 2000.0f);
+    if (p.x > box.min_ws.x + 1.001e-3f && p.x < box.max_ws.x - 1.001e-3f && p.y > box.min_ws.y + 1.001e-3f &&
+        p.y < box.max_ws.y - 1.001e-3f) {
+      return true;
+    }
+  }
+  return false;
+}
+
+}  // namespace
+
+TEST_CASE("level probe: ground_below takes a span in either order and no drop below zero", "[anim][probe]") {
+  const Level level({Box::from_corner(0.0f, -1.0f, 10.0f, 1.0f), Box::from_corner(4.0f, 0.0f, 1.0f, 0.5f)}, {1.0f, 0.0f});
+  const auto a = anim::ground_below(level, 3.0f, 4.5f, 2.0f, 5.0f);
+  const auto b = anim::ground_below(level, 4.5f, 3.0f, 2.0f, 5.0f);
+  REQUIRE(a);
+  REQUIRE(b);
+  CHECK(a->height_ws == b->height_ws);
+  CHECK(a->height_ws == Approx(0.5f));
+  CHECK_FALSE(anim::ground_below(level, 1.0f, 2.0f, 2.0f, -3.0f));  // a negative drop is no drop
+  CHECK(anim::ground_below(level, 1.0f, 2.0f, 0.0f, -3.0f));       // ...but ground right at from_y counts
+}
+
+TEST_CASE("level probe: polyline_hits_level equals a fine sampling, raise_to_clear clears", "[anim][probe]") {
+  for (uint64_t seed = 1; seed <= 12; ++seed) {
+    INFO("seed " << seed);
+    const Level level = scenes::random_level(seed, 30);
+    Rng rng(seed * 7919);
+    auto u = [&](float lo, float hi) { return static_cast<float>(rng.uniform(lo, hi)); };
+    std::vector<int> hits;
+    for (int k = 0; k < 60; ++k) {
+      const glm::vec2 a{u(0.0f, 60.0f), u(0.0f, 12.0f)};
+      const glm::vec2 b = a + glm::vec2(u(-2.0f, 2.0f), u(-2.0f, 2.0f));
+      bool brute = false;
+      for (int i = 0; i < level.size() && !brute; ++i) brute = segment_hits(level.box(i), a, b);
+      const glm::vec2 p[2] = {a, b};
+      CHECK(anim::polyline_hits_level(level, p, 2, hits) == brute);
+      // Raised by raise_to_clear, the segment leaves every box it cut.
+      const float up = anim::raise_to_clear(a, b, level, hits);
+      CHECK(up >= 0.0f);
+      const glm::vec2 q[2] = {a + glm::vec2(0.0f, up + 2e-3f), b + glm::vec2(0.0f, up + 2e-3f)};
+      for (int i = 0; i < level.size(); ++i) {
+        if (segment_hits(level.box(i), a, b)) CHECK_FALSE(segment_hits(level.box(i), q[0], q[1]));
+      }
+    }
+  }
+}
+
+TEST_CASE("level probe: keep_out_height changes smoothly past the edge of a step", "[anim][probe]") {
+  // A 0.3 m step from x = 5: the needed height fades from its top to the ground's as a point
+  // moves away from its edge, no jump larger than the motion's share of the fade (the fade
+  // reaches below the ground's own keep-out: a step no higher than fade - keep).
+  const Level level({Box::from_corner(-10.0f, -1.0f, 30.0f, 1.0f), Box::from_corner(5.0f, 0.0f, 10.0f, 0.3f)}, {0.0f, 0.0f});
+  std::vector<int> hits;
+  const float half = 0.1f, keep = 0.05f, fade = 0.3f;
+  float last = anim::keep_out_height(level, 4.5f, half, keep, fade, 1.0f, 5.0f, hits);
+  CHECK(last == Approx(keep));  // far from the step: the ground's keep-out
+  for (float x = 4.5f; x <= 5.2f; x += 0.001f) {
+    const float h = anim::keep_out_height(level, x, half, keep, fade, 1.0f, 5.0f, hits);
+    CHECK(std::fabs(h - last) < 0.02f);
+    last = h;
+  }
+  CHECK(last == Approx(0.3f + keep));  // over the step: its keep-out
+  CHECK(anim::keep_out_height(level, 40.0f, half, keep, fade, 1.0f, 5.0f, hits) < -1e29f);  // no ground
+}
+
+TEST_CASE("level probe: a clearance knows the highest top above its base near a foot", "[anim][probe]") {
+  const Level level({Box::from_corner(-10.0f, -1.0f, 30.0f, 1.0f), Box::from_corner(1.0f, 0.0f, 0.5f, 0.4f)}, {0.0f, 0.0f});
+  std::vector<int> hits;
+  const anim::Clearance near = anim::clearance_in(Box{{0.0f, -0.5f}, {2.0f, 1.0f}}, 0.0f, level, hits);
+  CHECK(near.top == Approx(0.4f));
+  CHECK_FALSE(near.clear_above(0.2f));  // a limb at 0.2 m may meet the box
+  CHECK(near.clear_above(0.45f));       // above its top it meets nothing
+  const anim::Clearance far = anim::clearance_in(Box{{3.0f, -0.5f}, {4.0f, 1.0f}}, 0.0f, level, hits);
+  CHECK(far.clear_above(0.01f));        // flat ground only
+  CHECK_FALSE(anim::Clearance{}.clear_above(100.0f));  // the default knows nothing
+}

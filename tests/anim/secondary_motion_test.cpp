@@ -1,0 +1,120 @@
+// Secondary motion (secondary_motion.h) on its own: the bob and the idle breathing, the tail's
+// spring, the legless wave, the arms' swing and the fins' beat.
+
+#include "ossa/anim/secondary_motion.h"
+
+#include <catch2/catch.hpp>
+
+#include <cmath>
+#include <map>
+#include <string>
+
+#include "ossa/anim/anim_math.h"
+#include "ossa/gen/skeleton_builder.h"
+#include "shared/scenes.h"
+
+using namespace ossa;
+
+namespace {
+
+const Creature& example(const char* name) {
+  static std::map<std::string, Creature> cache;
+  auto it = cache.find(name);
+  if (it == cache.end()) it = cache.emplace(name, build_creature(scenes::generator().example(name).value()).value()).first;
+  return it->second;
+}
+
+}  // namespace
+
+TEST_CASE("secondary motion: the bob repeats twice a cycle, the idle breathing over its period", "[anim][secondary]") {
+  const auto rig = build_anim_rig(scenes::quadruped());
+  const AnimatorParams params;
+  const SplinePrototypes prototypes = SplinePrototypes::defaults();
+  anim::GaitState gait;
+  gait.moving = true;
+  float lo = 1e9f, hi = -1e9f;
+  for (float phase = 0.0f; phase < 0.5f; phase += 0.01f) {
+    gait.phase = phase;
+    const float a = anim::body_bob(*rig, params, prototypes, gait, 0.0f);
+    gait.phase = phase + 0.5f;
+    const float b = anim::body_bob(*rig, params, prototypes, gait, 0.0f);
+    CHECK(a == Approx(b).margin(1e-5));  // twice per cycle
+    lo = std::min(lo, a), hi = std::max(hi, a);
+  }
+  CHECK(hi > lo);                          // it does move
+  CHECK(hi - lo < 0.1f * rig->hip_height); // a bob, not a jump
+  gait.moving = false;
+  const float breath0 = anim::body_bob(*rig, params, prototypes, gait, 0.25f * params.idle_period);
+  CHECK(breath0 == Approx(anim::body_bob(*rig, params, prototypes, gait, 1.25f * params.idle_period)).margin(1e-5));
+}
+
+TEST_CASE("secondary motion: the tail's spring settles where the body leaves it, within its swing", "[anim][secondary]") {
+  const Creature& horse = example("horse");
+  const auto rig = build_anim_rig(horse);
+  REQUIRE_FALSE(rig->tail.empty());
+  AnimatorParams params;
+  anim::TailSpring tail;
+  Pose pose = rig->rest_pose;
+  // A body pitched up holds half its pitch back in the tail; a root rising fast lets it lag.
+  for (int t = 0; t < 2400; ++t) {
+    pose = rig->rest_pose;
+    anim::swing_tail(*rig, params, 1.0f / 120.0f, 0.0f, 0.2f, tail, pose);
+  }
+  CHECK(tail.angle == Approx(-0.1f).margin(1e-3));
+  CHECK(std::fabs(tail.rate) < 1e-3f);
+  for (int t = 0; t < 600; ++t) anim::swing_tail(*rig, params, 1.0f / 120.0f, 50.0f, 0.0f, tail, pose);
+  CHECK(std::fabs(tail.angle) <= params.tail_max_swing + 1e-6f);
+}
+
+TEST_CASE("secondary motion: the legless wave grows with the speed and is still at rest", "[anim][secondary]") {
+  const Creature& snake = example("snake");
+  const auto rig = build_anim_rig(snake);
+  REQUIRE(rig->legs.empty());
+  REQUIRE_FALSE(rig->crawl_chain.empty());
+  const AnimatorParams params;
+  auto bend = [&](float speed) {
+    Pose pose = rig->rest_pose;
+    anim::crawl_wave(*rig, params, 0.3f, speed, pose);
+    float most = 0.0f;
+    for (int b : rig->crawl_chain) most = std::max(most, std::fabs(pose.locals[b].angle_ls - rig->rest_pose.locals[b].angle_ls));
+    return most;
+  };
+  CHECK(bend(0.0f) == 0.0f);
+  const float walk = anim::walk_speed(*rig, params);
+  CHECK(bend(0.5f * walk) > 0.0f);
+  CHECK(bend(walk) > bend(0.5f * walk));
+  CHECK(bend(walk) <= params.crawl_amplitude + 1e-6f);
+  CHECK(bend(3.0f * walk) == Approx(bend(walk)));  // full amplitude from the walk on
+}
+
+TEST_CASE("secondary motion: arms swing counter to their own side's leg, fins beat with the motion", "[anim][secondary]") {
+  const Creature& kangaroo = scenes::biped();
+  const auto rig = build_anim_rig(kangaroo);
+  REQUIRE_FALSE(rig->arms.empty());
+  const SplinePrototypes prototypes = SplinePrototypes::defaults();
+  anim::GaitState gait;
+  anim::FootSet feet;
+  feet.feet.resize(rig->legs.size());
+  for (size_t i = 0; i < rig->legs.size(); ++i) feet.foot_of_leg.push_back(static_cast<int>(i));
+  anim::reset_offsets(*rig, feet, gait);
+  const RigLimb& arm = rig->arms.front();
+  auto swing = [&](float phase, float motion) {
+    gait.phase = phase;
+    Pose pose = rig->rest_pose;
+    anim::swing_arm(*rig, prototypes, gait, feet, arm, motion, pose);
+    return pose.locals[arm.bones[0]].angle_ls - rig->rest_pose.locals[arm.bones[0]].angle_ls;
+  };
+  CHECK(swing(0.3f, 0.0f) == 0.0f);  // standing: no swing
+  // Half a cycle later the arm is where the other side's arm was: the swing alternates.
+  float most = 0.0f;
+  for (float p = 0.0f; p < 1.0f; p += 0.05f) most = std::max(most, std::fabs(swing(p, 1.0f) - swing(p + 0.5f, 1.0f)));
+  CHECK(most > 0.01f);
+  // Fins: no beat without motion.
+  const Creature& trout = example("trout");
+  const auto fish = build_anim_rig(trout);
+  if (!fish->fins.empty()) {
+    Pose pose = fish->rest_pose;
+    anim::beat_fin(AnimatorParams{}, fish->fins.front(), 0.0f, 0.25f, pose);
+    CHECK(pose.locals[fish->fins.front().bones[0]].angle_ls == fish->rest_pose.locals[fish->fins.front().bones[0]].angle_ls);
+  }
+}
