@@ -96,7 +96,9 @@ std::vector<Mat2x3> mid_stride(const std::shared_ptr<const Creature>& c, const L
 TEST_CASE("every sprite's joint anchors, found through the texture, land on its bone's joints within a pixel", "[render][sprites]") {
   const SpriteSet sprites = default_sprite_set();  // texture rectangles = unit boxes
   const Level level = scenes::flat_level(200.0f);
-  for (const auto& [name, c] : creatures()) {
+  for (const auto& entry : creatures()) {
+    const std::string& name = entry.first;
+    const auto& c = entry.second;  // (not a structured binding: clang 14 lambdas cannot capture one)
     for (bool smooth : {false, true}) {
       SpriteMeshOptions o;
       o.smooth_weights = smooth;
@@ -147,7 +149,9 @@ TEST_CASE("feet stand on their contact: no claw, hoof or toe below the ground at
     images.push_back(std::move(image.value()));
   }
   const Level level = scenes::flat_level(200.0f);
-  for (const auto& [name, c] : creatures()) {
+  for (const auto& entry : creatures()) {
+    const std::string& name = entry.first;
+    const auto& c = entry.second;  // (not a structured binding: clang 14 lambdas cannot capture one)
     const SpriteMesh mesh = build_sprite_mesh(*c, sprites);
     const float tol = pixel(mesh);
     std::vector<int> stance;
@@ -188,7 +192,9 @@ TEST_CASE("feet stand on their contact: no claw, hoof or toe below the ground at
 
 TEST_CASE("a sprite is as thick as its bone's width, not its length: long thin bones stay thin", "[render][sprites]") {
   const SpriteSet sprites = default_sprite_set();
-  for (const auto& [name, c] : creatures()) {
+  for (const auto& entry : creatures()) {
+    const std::string& name = entry.first;
+    const auto& c = entry.second;  // (not a structured binding: clang 14 lambdas cannot capture one)
     SpriteMeshOptions rigid;
     rigid.smooth_weights = false;
     const SpriteMesh mesh = build_sprite_mesh(*c, sprites, rigid);

@@ -20,8 +20,10 @@
 // texture slot s draws with the s-th texture given to draw(), in the same palette upload, one
 // draw call per layer and slot in use (slot 0 first within each layer).
 // Bodies (body/body_mesh.h) are instances of their own (add_body): their vertices live in a
-// second vertex buffer drawn by the body program (draw_bodies, one draw per layer), their
-// palettes in the same upload. A creature shown as body and bones (the x-ray look) is two
+// second vertex buffer drawn by the body program (draw_bodies: ONE draw for all of them,
+// creature after creature, each its far limbs, body and near limbs, so overlapping creatures
+// never interleave; draw_body_layer: a layer at a time for the x-ray look), their palettes in
+// the same upload. A creature shown as body and bones (the x-ray look) is two
 // instances with the same world matrices.
 
 #include <array>
@@ -127,10 +129,11 @@ class CreatureBatch {
   int draw(const ShaderProgram& skinned, std::span<const unsigned> textures);
   // Texture slots in use: 1 + the largest slot of any instance (1 when empty).
   int texture_slots() const;
-  // Bodies: binds the palette, one glDrawElements per non-empty layer (the body program in
-  // use with u_view_proj set; `alpha` multiplies the coat's: 1 opaque, < 1 the x-ray look).
-  // Returns the draw calls issued. draw_body_layer draws one layer (for interleaving with the
-  // sprites' layers).
+  // Bodies: binds the palette, one glDrawElements for every body, creature by creature in the
+  // order they were added, each far limbs, body, near limbs (the body program in use with
+  // u_view_proj set; `alpha` multiplies the coat's: 1 opaque, < 1 translucent). Returns the
+  // draw calls issued (0 or 1). draw_body_layer draws one layer of every body (for the x-ray
+  // look's interleaving with the sprites' layers).
   int draw_bodies(const ShaderProgram& body, float alpha = 1.0f);
   int draw_body_layer(const ShaderProgram& body, int layer, float alpha = 1.0f);
   // The same for the sprites: one layer (draw() draws all three), one draw per texture slot.
@@ -183,6 +186,7 @@ class CreatureBatch {
   std::vector<uint32_t> body_mesh_indices_;  // per body, body-local vertex numbers
   std::vector<uint32_t> body_indices_;       // layer-major, uploaded
   std::array<std::pair<uint32_t, uint32_t>, kLayerCount> body_layer_ranges_{};
+  std::pair<uint32_t, uint32_t> body_creature_range_{};  // every body, creature-major
 
   VertexArray<BatchVertex> mesh_va_;
   VertexArray<BodyBatchVertex> body_va_;

@@ -80,7 +80,7 @@ void CreatureBatch::set_floor(int instance, const BodyFloor& floor) {
 
 void CreatureBatch::rebuild_body_geometry() {
   body_indices_.clear();
-  body_indices_.reserve(body_mesh_indices_.size());
+  body_indices_.reserve(2 * body_mesh_indices_.size());
   for (int l = 0; l < kLayerCount; ++l) {
     const auto first = static_cast<uint32_t>(body_indices_.size());
     for (const Instance& c : creatures_) {
@@ -91,6 +91,16 @@ void CreatureBatch::rebuild_body_geometry() {
     }
     body_layer_ranges_[static_cast<size_t>(l)] = {first, static_cast<uint32_t>(body_indices_.size()) - first};
   }
+  // The same triangles creature-major (each body's own order: far, body, near), after them in
+  // the same buffer: one draw draws every body without interleaving overlapping creatures.
+  const auto first = static_cast<uint32_t>(body_indices_.size());
+  for (const Instance& c : creatures_) {
+    if (!c.body) continue;
+    for (uint32_t i = c.index_base + c.layer_begin[0]; i < c.index_base + c.layer_begin[kLayerCount]; ++i) {
+      body_indices_.push_back(c.vertex_base + body_mesh_indices_[i]);
+    }
+  }
+  body_creature_range_ = {first, static_cast<uint32_t>(body_indices_.size()) - first};
   body_va_.upload(body_vertices_, body_indices_, GL_STATIC_DRAW);
 }
 
@@ -105,9 +115,13 @@ int CreatureBatch::draw_body_layer(const ShaderProgram& body, int layer, float a
 }
 
 int CreatureBatch::draw_bodies(const ShaderProgram& body, float alpha) {
-  int calls = 0;
-  for (int l = 0; l < kLayerCount; ++l) calls += draw_body_layer(body, l, alpha);
-  return calls;
+  if (geometry_dirty_) rebuild_geometry();
+  const auto& [first, count] = body_creature_range_;
+  if (count == 0) return 0;
+  bind_palette(body);
+  body.set("u_alpha", alpha);
+  body_va_.draw_indices(GL_TRIANGLES, static_cast<int>(first), static_cast<int>(count));
+  return 1;
 }
 
 }  // namespace ossa

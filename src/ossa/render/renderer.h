@@ -89,7 +89,7 @@ class Renderer {
   // the rigged characters' own.
   void draw_batch(CreatureBatch& batch, std::span<const Texture* const> textures);
   void draw_batch_naive(CreatureBatch& batch, const Texture& atlas);
-  // Bodies only (the body look): one draw per layer.
+  // Bodies only (the body look): one draw for every body, creature by creature.
   void draw_bodies(CreatureBatch& batch, float alpha = 1.0f);
   // The creatures of `batch` as `look` asks (body/body_mesh.h): bodies; bodies translucent
   // over the sprites, layer by layer (far sprites, far bodies, body sprites, …); or sprites.
