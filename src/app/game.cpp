@@ -224,6 +224,7 @@ Status Game::init(const GameOptions& o) {
   gamepad_ = std::make_unique<Gamepad>(resolve_data_path("assets/gamecontrollerdb.txt"));
   keyboard_ = std::make_unique<MouseKeyboardInput>();
   m.hud.visible = o.hud;
+  m.look = o.look;
   m.capture_all_frames = false;
   if (!o.gif.empty()) {
     if (auto s = m.start_gif(o.gif, o.headless ? 1e9f : o.gif_seconds); !s.ok()) return s;
@@ -297,6 +298,11 @@ bool Game::frame(double dt_seconds) {
   if (presses[Action::kRandomCreature]) random_creature();
   if (presses[Action::kNextCharacter]) next_character();
   if (presses[Action::kToggleHud]) m.hud.visible = !m.hud.visible;
+  if (presses[Action::kNextLook]) {
+    m.look = static_cast<CreatureLook>((static_cast<int>(m.look) + 1) % kCreatureLookCount);
+    m.batch_dirty = true;
+    m.say(std::string("look: ") + creature_look_name(m.look) + " (B for the next)");
+  }
   if (presses[Action::kGif] && !m.gif) {
     const std::string path = next_free(options_.out_dir, "gif", ".gif");
     if (auto s = m.start_gif(path, options_.gif_seconds); !s.ok()) m.say(s.message());

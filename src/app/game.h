@@ -22,6 +22,7 @@
 #include <string>
 #include <vector>
 
+#include "ossa/body/body_mesh.h"
 #include "ossa/game/controls.h"
 #include "ossa/game/replay.h"
 #include "ossa/game/world.h"
@@ -65,6 +66,9 @@ struct GameOptions {
   // main for headless runs without a replay.
   bool demo = false;
   bool hud = true;              // the HUD starts visible
+  // How generated creatures are drawn: their bodies (default), bodies over bones (x-ray) or
+  // bone sprites; key B cycles (body/body_mesh.h). Rigged characters are drawn as made.
+  CreatureLook look = CreatureLook::kBody;
   int max_steps_per_frame = 8;  // the spiral-of-death guard, >= 1
 };
 

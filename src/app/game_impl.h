@@ -42,6 +42,10 @@ struct Game::Impl {
   bool imgui = false;
   bool batch_dirty = true;
   std::unordered_map<const Creature*, SpriteMesh> meshes;  // built once per creature
+  std::unordered_map<const Creature*, BodyMesh> bodies;    // built once per creature
+  CreatureLook look = CreatureLook::kBody;                 // key B cycles
+  // Per entity (0 = player, 1.. NPCs) its batch instances (sprites and/or body).
+  std::vector<std::vector<int>> instances;
   std::unordered_map<std::string, Texture> images;         // level background images
   std::vector<const void*> batch_creatures;                // what the batch was built from (Creature or Character)
 

@@ -1,4 +1,5 @@
-// Game — window and ImGui set-up, interpolation, camera, drawing, captures and replays.
+// Game — window and ImGui set-up, interpolation, camera, drawing and GIF captures (replays and
+// the demo script: game_replay.cpp).
 
 #include <imgui.h>
 #include <backends/imgui_impl_opengl3.h>
@@ -314,41 +315,60 @@ void Game::Impl::render(Game& game, float alpha) {
     batch->clear();
     meshes.clear();  // creatures may have been replaced (an address can be reused)
     // NPCs first, the player last: within each layer instances draw in order, so the
-    // player's creature stays in front of the walkers it passes.
+    // player's creature stays in front of the walkers it passes. A creature brings its
+    // sprites and/or its body, as the look shows it.
+    bodies.clear();
+    instances.assign(static_cast<size_t>(n), {});
     for (int k = 0; k < n; ++k) {
-      const Entity& e = entity_at(world, k == n - 1 ? 0 : k + 1);
+      const int index = k == n - 1 ? 0 : k + 1;
+      const Entity& e = entity_at(world, index);
+      std::vector<int>& ids = instances[static_cast<size_t>(index)];
       if (e.is_character()) {
         int slot = 0;
         for (size_t j = 0; j < characters.size(); ++j) {
           if (characters[j]->loaded.character.get() == e.character()) slot = static_cast<int>(j) + 1;
         }
         const CharacterEntry* entry = entry_of(e.character());
-        // A character the game did not load (an embedder's) is drawn with nothing: skip it.
-        if (entry) batch->add(entry->loaded.sprite_mesh, e.skeleton(), slot);
+        // A character the game did not load (an embedder's) is drawn with nothing.
+        if (entry) ids.push_back(batch->add(entry->loaded.sprite_mesh, e.skeleton(), slot));
         else {
           SpriteMesh empty;
           empty.inverse_bind.assign(e.skeleton().bone_count(), Mat2x3{});
-          batch->add(empty, e.skeleton());
+          ids.push_back(batch->add(empty, e.skeleton()));
         }
         continue;
       }
       const Creature& c = e.creature();
-      auto it = meshes.find(&c);
-      if (it == meshes.end()) it = meshes.emplace(&c, build_sprite_mesh(c, atlas->sprites)).first;
-      batch->add(it->second, c.skeleton);
+      if (look != CreatureLook::kBody) {
+        auto it = meshes.find(&c);
+        if (it == meshes.end()) it = meshes.emplace(&c, build_sprite_mesh(c, atlas->sprites)).first;
+        ids.push_back(batch->add(it->second, c.skeleton));
+      }
+      if (look != CreatureLook::kBones) {
+        auto it = bodies.find(&c);
+        if (it == bodies.end()) it = bodies.emplace(&c, build_body(c)).first;
+        ids.push_back(batch->add_body(it->second, c.skeleton));
+      }
     }
     batch_dirty = false;
   }
-  for (int i = 0; i < n && i < static_cast<int>(curr.size()); ++i) {
-    const int instance = i == 0 ? n - 1 : i - 1;
+  for (int i = 0; i < n && i < static_cast<int>(curr.size()) && i < static_cast<int>(instances.size()); ++i) {
     const auto& b = curr[i];
     const auto& a = prev[i].size() == b.size() ? prev[i] : b;
     blended.resize(b.size());
     for (size_t k = 0; k < b.size(); ++k) blended[k] = blend(a[k], b[k], alpha);
-    if (!blended.empty() && static_cast<int>(blended.size()) == batch->bone_count(instance)) batch->set_world(instance, blended);
+    for (const int instance : instances[static_cast<size_t>(i)]) {
+      if (blended.empty() || static_cast<int>(blended.size()) != batch->bone_count(instance)) continue;
+      batch->set_world(instance, blended);
+      // A body rests on the ground under it (body_floor.h): flesh flattens, never enters it.
+      const Entity& e = entity_at(world, i);
+      if (const auto it = e.is_character() ? bodies.end() : bodies.find(&e.creature()); it != bodies.end()) {
+        batch->set_floor(instance, body_floor(level, e.skeleton(), blended, it->second.reach));
+      }
+    }
   }
   batch->upload_palettes();
-  r.draw_batch(*batch, textures);
+  r.draw_creatures(*batch, textures, look);
   if (game.on_viewport) {
     DebugDraw overlay;
     game.on_viewport(overlay);
@@ -426,73 +446,6 @@ Status Game::Impl::finish_gif() {
   gif.reset();
   if (s.ok()) std::fprintf(stderr, "ossa: GIF written: %s\n", gif_path.c_str());
   return s;
-}
-
-// ---- Replays and the demo -------------------------------------------------------------------
-
-std::string Game::Impl::next_free_replay_path() {
-  std::error_code ec;
-  std::filesystem::create_directories(out_dir, ec);
-  for (int i = 1;; ++i) {
-    char name[64];
-    std::snprintf(name, sizeof(name), "/replay-%04d.replay.json", i);
-    if (!std::filesystem::exists(out_dir + name, ec)) return out_dir + name;
-  }
-}
-
-void Game::Impl::start_recording(World& world, const std::string& level, bool respawn) {
-  // A replay starts from a freshly placed creature so playback can rebuild the exact state.
-  if (respawn) {
-    const Player& p = *world.player();
-    const glm::vec2 at{p.animator().x(), player_root(1.0f).y + 0.5f};
-    const int facing = p.animator().facing();
-    if (p.is_character()) {
-      world.spawn_player(p.character_ptr(), at, facing);
-    } else {
-      world.spawn_player(p.creature_ptr(), at, facing);
-    }
-    spawn = at;
-    snapshot_all(world, true);
-  }
-  record = Replay{};
-  record.tick_hz = world.tick_hz();
-  record.level = level;
-  if (world.player()->is_character()) {
-    record.character = character_path;
-  } else {
-    record.creature = genome_to_json(genome);
-  }
-  record.spawn_ws = spawn;
-  record.facing = world.player()->animator().facing();
-  recording = true;
-}
-
-std::string Game::Impl::stop_recording(const std::string& path) {
-  recording = false;
-  std::error_code ec;
-  const auto parent = std::filesystem::path(path).parent_path();
-  if (!parent.empty()) std::filesystem::create_directories(parent, ec);
-  const Status s = save_replay(path, record);
-  last_record_failed = !s.ok();
-  const std::string msg = s.ok() ? "replay written: " + path : s.message();
-  std::fprintf(stderr, "ossa: %s\n", msg.c_str());
-  return msg;
-}
-
-Controls Game::Impl::demo_controls(uint64_t tick, int tick_hz) const {
-  // The script (kDemoScript) loops.
-  uint64_t total = 0;
-  for (const ScriptSegment& s : demo) total += static_cast<uint64_t>(s.ticks(tick_hz));
-  if (total == 0) return {};
-  uint64_t t = tick % total;
-  Controls previous;
-  for (const ScriptSegment& s : demo) {
-    previous = s.controls(previous);
-    const uint64_t n = static_cast<uint64_t>(s.ticks(tick_hz));
-    if (t < n) return previous;
-    t -= n;
-  }
-  return {};
 }
 
 }  // namespace ossa

@@ -37,12 +37,15 @@ Walk a generated creature over a box level with a gamepad or the keyboard.
   --fps-cap N       frames per second limit without vsync, 0-1000 (0 = none)
   --size WxH        window size in pixels (default 1280x720)
   --no-hud          start with the HUD hidden
+  --look L          how creatures are drawn: body (default: flesh, skin and coat), xray
+                    (the body translucent over the bones) or bones (bone sprites); key B
+                    cycles them
   --out DIR         folder for key-triggered screenshots, GIFs and replays (default out)
   --help            this text
 
 keys: A/D or Left/Right walk, Shift runs, Space/W/Up jumps, N next example, M random
-      creature, C next character, H HUD, F12/P screenshot, G GIF of the next seconds,
-      R start/stop a replay, wheel zoom, Esc quits
+      creature, C next character, B next look (body, x-ray, bones), H HUD, F12/P
+      screenshot, G GIF of the next seconds, R start/stop a replay, wheel zoom, Esc quits
 gamepad: left stick walks (half throw = walk speed, full = run), RB/RT run, A jumps,
       Y next example, X random creature, LB next character, Back HUD, Start replay
 )";
@@ -145,6 +148,14 @@ Result<ParsedArgs> parse_game_args(const std::vector<std::string>& args) {
       }
     } else if (flag == "--no-hud") {
       o.hud = false;
+    } else if (flag == "--look") {
+      if (!value()) {
+        s = Error{flag + ": missing value"};
+      } else if (const auto look = creature_look_from_name(v)) {
+        o.look = *look;
+      } else {
+        s = Error{flag + ": expected body, xray or bones, got \"" + v + "\""};
+      }
     } else if (flag == "--out") {
       s = text(o.out_dir);
     } else {

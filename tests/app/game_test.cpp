@@ -365,7 +365,8 @@ TEST_CASE("ossa --headless --frames 600 --png shows the creature on the level", 
   const std::string dir = temp_dir();
   const std::string png = dir + "/headless.png", state = dir + "/state.json";
   std::string err;
-  const int rc = run_command(bin_dir() + "/ossa --headless --frames 600 --no-hud --png " + png + " --state " + state, &err);
+  // The bone sprites (--look bones): cream pixels are easy to tell from the level's colours.
+  const int rc = run_command(bin_dir() + "/ossa --headless --frames 600 --no-hud --look bones --png " + png + " --state " + state, &err);
   INFO(err);
   REQUIRE(rc == 0);
   auto doc = read_json_file(state);
@@ -402,6 +403,40 @@ TEST_CASE("ossa --headless --frames 600 --png shows the creature on the level", 
   }
   CHECK(bone_pixels > 2000);
   CHECK(grounded_columns > 100);
+}
+
+TEST_CASE("ossa --headless draws bodies by default: the pig wears its pink coat on the ground", "[app]") {
+  const std::string dir = temp_dir();
+  const std::string png = dir + "/pig.png";
+  std::string err;
+  const int rc = run_command(bin_dir() + "/ossa --headless --frames 240 --no-hud --npcs 0 --example pig --png " + png, &err);
+  INFO(err);
+  REQUIRE(rc == 0);
+  auto image = load_image(png);
+  REQUIRE(image.ok());
+  const Image& img = image.value();
+  // Pink coat pixels (red well above green and blue, bright: no sky, hill, grass, earth or
+  // bone sprite colour) in the middle of the frame, with earth below them.
+  int coat = 0, grounded_columns = 0, bones = 0;
+  for (int x = img.width / 5; x < img.width * 4 / 5; ++x) {
+    int lowest = -1;
+    for (int y = 0; y < img.height; ++y) {
+      const uint8_t* p = img.pixel(x, y);
+      if (p[0] > 150 && p[0] > p[1] + 25 && p[0] > p[2] + 30 && p[1] >= p[2] - 10) ++coat, lowest = y;
+      bones += p[0] > 235 && p[1] > 225 && p[2] > 195;  // the sprites' ivory highlights
+    }
+    if (lowest < 0) continue;
+    for (int y = lowest + 1; y < img.height; ++y) {
+      const uint8_t* p = img.pixel(x, y);
+      if (p[0] > 90 && p[0] < 150 && p[1] > 60 && p[1] < 110 && p[2] < 80) {
+        ++grounded_columns;
+        break;
+      }
+    }
+  }
+  CHECK(coat > 3000);
+  CHECK(grounded_columns > 100);
+  CHECK(bones < 50);  // the body look draws no bone sprites
 }
 
 TEST_CASE("ossa rejects bad arguments and files with a message", "[app]") {
@@ -457,6 +492,13 @@ TEST_CASE("command line parsing", "[app]") {
   CHECK(r->options.frames == 0);
   CHECK_FALSE(parse_game_args({"--seed", "-3"}).ok());
   CHECK(parse_game_args({"--help"})->help);
+  // Bodies by default; --look picks another, a wrong one names the flag and the choices.
+  CHECK(p->options.look == CreatureLook::kBody);
+  CHECK(parse_game_args({"--look", "xray"})->options.look == CreatureLook::kXray);
+  CHECK(parse_game_args({"--look", "bones"})->options.look == CreatureLook::kBones);
+  const auto bad = parse_game_args({"--look", "fur"});
+  REQUIRE_FALSE(bad.ok());
+  CHECK(bad.message().find("--look: expected body, xray or bones") != std::string::npos);
 }
 
 TEST_CASE("a slow frame runs at most max_steps_per_frame ticks and drops the rest", "[app]") {

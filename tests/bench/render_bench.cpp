@@ -1,5 +1,6 @@
 // Renderer benchmarks (issue "Renderer"): the batched GPU-skinning path of CreatureBatch
-// against the per-bone reference, and the palette upload against a memcpy of the same bytes.
+// against the per-bone reference, the palette upload against a memcpy of the same bytes, and
+// (issue 30) a frame of 1 000 bodies against the same frame of bone sprites.
 // Built into ossa-render-bench (tools/ossa-render/CMakeLists.txt) with bench_main.cpp, so the
 // ratio table is printed at the end. Runs offscreen (SDL's offscreen driver, Mesa llvmpipe):
 // GPU time here is CPU time of the software rasteriser, so the frame figures include it.
@@ -15,6 +16,8 @@
 #include <memory>
 #include <vector>
 
+#include "ossa/body/body_floor.h"
+#include "ossa/body/body_mesh.h"
 #include "ossa/gen/generator.h"
 #include "ossa/gen/skeleton_builder.h"
 #include "ossa/io/data_dir.h"
@@ -41,6 +44,9 @@ struct Scene {
   std::unique_ptr<Atlas> atlas;
   std::unique_ptr<CreatureBatch> batch;
   std::unique_ptr<CreatureBatch> rigid_batch;  // the same creatures without smooth skinning
+  std::unique_ptr<CreatureBatch> body_batch;   // the same creatures with bodies (issue 30)
+  std::vector<BodyMesh> bodies;                // per kind
+  Level ground;                                // a floor under the grid's rows
   std::vector<Creature> kinds;
   std::vector<int> kind_of;                  // per instance
   std::vector<std::vector<Mat2x3>> world;    // per instance, per bone
@@ -73,6 +79,9 @@ struct Scene {
     }
     batch = std::make_unique<CreatureBatch>();
     rigid_batch = std::make_unique<CreatureBatch>();
+    body_batch = std::make_unique<CreatureBatch>();
+    for (const Creature& c : kinds) bodies.push_back(build_body(c));
+    for (int row = 0; row < kCreatures / 40; ++row) ground.add_box(Box::from_corner(-2.0f, 2.5f * static_cast<float>(row) - 0.5f, 124.0f, 0.5f));
     std::vector<SpriteMesh> meshes, rigid_meshes;
     SpriteMeshOptions rigid;
     rigid.smooth_weights = false;
@@ -85,6 +94,7 @@ struct Scene {
       kind_of.push_back(k);
       batch->add(meshes[k], kinds[k].skeleton);
       rigid_batch->add(rigid_meshes[k], kinds[k].skeleton);
+      body_batch->add_body(bodies[k], kinds[k].skeleton);
       // A 40 x 25 grid of creatures, 3 m apart.
       Transform2D place;
       place.translation = {3.0f * static_cast<float>(i % 40), 2.5f * static_cast<float>(i / 40)};
@@ -102,6 +112,14 @@ struct Scene {
   }
   void build_rigid_palettes() {
     for (int i = 0; i < kCreatures; ++i) rigid_batch->set_world(i, world[i]);
+  }
+  // As the game does every frame: each body's palette and the floor under it.
+  void build_body_palettes() {
+    for (int i = 0; i < kCreatures; ++i) {
+      const int k = kind_of[static_cast<size_t>(i)];
+      body_batch->set_world(i, world[i]);
+      body_batch->set_floor(i, body_floor(ground, kinds[k].skeleton, world[i], bodies[k].reach));
+    }
   }
 };
 
@@ -170,6 +188,40 @@ void smooth_skinning_frame_reference(benchmark::State& state) {
   state.counters["palette"] = s.rigid_batch->palette_size();
 }
 
+// Bodies (issue 30: a frame of 1 000 creatures with bodies at most 1.5 times the same frame
+// with bone sprites): palettes and floors, the one upload, the body look's draws, against the
+// bone sprites' frame of the same creatures (the reference).
+void bodies_frame_ossa(benchmark::State& state) {
+  Scene& s = scene();
+  if (!s.ok) return state.SkipWithError("no GL context / data");
+  const int uploads = s.body_batch->palette_uploads();
+  for (auto _ : state) {
+    s.build_body_palettes();
+    s.body_batch->upload_palettes();
+    s.renderer->begin_frame(kWidth, kHeight, {0.5f, 0.6f, 0.7f});
+    s.renderer->draw_creatures(*s.body_batch, {}, CreatureLook::kBody);
+    glFinish();
+  }
+  state.counters["draw_calls"] = s.renderer->stats.draw_calls;
+  state.counters["vertices"] = s.body_batch->body_vertex_count();
+  state.counters["uploads_per_frame"] = static_cast<double>(s.body_batch->palette_uploads() - uploads) / static_cast<double>(state.iterations());
+}
+
+void bodies_frame_reference(benchmark::State& state) {
+  Scene& s = scene();
+  if (!s.ok) return state.SkipWithError("no GL context / data");
+  const Texture* textures[] = {&s.atlas->texture};
+  for (auto _ : state) {
+    s.build_palettes();
+    s.batch->upload_palettes();
+    s.renderer->begin_frame(kWidth, kHeight, {0.5f, 0.6f, 0.7f});
+    s.renderer->draw_creatures(*s.batch, textures, CreatureLook::kBones);
+    glFinish();
+  }
+  state.counters["draw_calls"] = s.renderer->stats.draw_calls;
+  state.counters["vertices"] = s.batch->vertex_count();
+}
+
 void palette_upload_ossa(benchmark::State& state) {
   Scene& s = scene();
   if (!s.ok) return state.SkipWithError("no GL context / data");
@@ -199,6 +251,8 @@ BENCHMARK(frame_1000_creatures_ossa)->Name("frame_1000_creatures:ossa")->Unit(be
 BENCHMARK(frame_1000_creatures_reference)->Name("frame_1000_creatures:reference")->Unit(benchmark::kMillisecond);
 BENCHMARK(smooth_skinning_frame_ossa)->Name("smooth_skinning_frame:ossa")->Unit(benchmark::kMillisecond);
 BENCHMARK(smooth_skinning_frame_reference)->Name("smooth_skinning_frame:reference")->Unit(benchmark::kMillisecond);
+BENCHMARK(bodies_frame_ossa)->Name("bodies_frame_1000:ossa")->Unit(benchmark::kMillisecond);
+BENCHMARK(bodies_frame_reference)->Name("bodies_frame_1000:reference")->Unit(benchmark::kMillisecond);
 BENCHMARK(palette_upload_ossa)->Name("palette_upload:ossa")->Unit(benchmark::kMicrosecond);
 BENCHMARK(palette_upload_reference)->Name("palette_upload:reference")->Unit(benchmark::kMicrosecond);
 

@@ -151,12 +151,25 @@ TEST_CASE("creature panel: PNG export draws the creature offscreen at the asked 
   CHECK(png.pixel(png.width - 1, png.height - 1)[3] == 0);
   CHECK(creature > png.width * png.height / 20);
   CHECK((x0 > 0 && y0 > 0 && x1 < png.width - 1 && y1 < png.height - 1));
-  // Opaque sprite pixels are bone-coloured, not black (straight alpha, sprites found).
-  int bright = 0;
+  // The body look (the default): opaque pixels wear the horse's coat, a bay brown — red above
+  // green above blue, not black (straight alpha, the coat found).
+  int coat = 0;
   for (size_t i = 0; i < png.rgba.size(); i += 4) {
-    bright += png.rgba[i + 3] == 255 && png.rgba[i] + png.rgba[i + 1] + png.rgba[i + 2] > 300;
+    const uint8_t* p = &png.rgba[i];
+    coat += p[3] == 255 && p[0] > p[1] && p[1] > p[2] && p[0] > 60;
   }
-  CHECK(bright > creature / 4);
+  CHECK(coat > creature / 2);
+  // The bones look: opaque sprite pixels are bone-coloured.
+  CreatureImageOptions bones = o;
+  bones.look = CreatureLook::kBones;
+  REQUIRE(m.export_png(path, bones).ok());
+  const Png sprites = decode_png(path);
+  int bright = 0, drawn = 0;
+  for (size_t i = 0; i < sprites.rgba.size(); i += 4) {
+    drawn += sprites.rgba[i + 3] > 0;
+    bright += sprites.rgba[i + 3] == 255 && sprites.rgba[i] + sprites.rgba[i + 1] + sprites.rgba[i + 2] > 300;
+  }
+  CHECK(bright > drawn / 4);
 
   // A plain background fills every pixel that is not creature.
   o.background = {0.0f, 0.0f, 1.0f, 1.0f};

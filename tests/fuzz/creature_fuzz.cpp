@@ -1,7 +1,8 @@
 // Fuzzes everything behind a genome the loader accepts (issue 17's one rule): load it, build
 // the creature, walk it for 2 simulated seconds of random stick input on a small random level,
-// and build its sprite mesh (CPU side). Nothing may assert, produce a NaN, or hang; every
-// accepted genome must also save and load back.
+// and build its sprite mesh and its body (CPU side; the body skinned in the last pose, resting
+// on the level's floor). Nothing may assert, produce a NaN, or hang; every accepted genome must
+// also save and load back.
 //
 // Input: when the bytes parse as a genome file they are that genome (the seeds: shipped
 // examples and the reproductions of issue 17); otherwise the bytes themselves are read as a
@@ -14,8 +15,11 @@
 #include <cstdlib>
 #include <cstdio>
 #include <string_view>
+#include <vector>
 
 #include "ossa/anim/animator.h"
+#include "ossa/body/body_floor.h"
+#include "ossa/body/body_mesh.h"
 #include "ossa/gen/genome.h"
 #include "ossa/gen/skeleton_builder.h"
 #include "ossa/level/level.h"
@@ -61,6 +65,17 @@ ossa::Genome genome_from_bytes(Bytes& b) {
   g.scale = static_cast<float>(b.in(kMinGenomeScale, kMaxGenomeScale));
   g.options.multi_limb = b.u8() & 1;
   g.options.neck_girdle = b.u8() & 1;
+  // The body's genes (version 2): a look and appendages anywhere in their ranges.
+  g.look.pattern = static_cast<CoatPattern>(b.u8() % kCoatPatternCount);
+  g.look.pattern_scale = static_cast<float>(b.in(kMinPatternScale, kMaxPatternScale));
+  g.look.fatness = static_cast<float>(b.in(kMinFatness, kMaxFatness));
+  g.look.wings = b.u8() & 1 ? WingCover::kMembrane : WingCover::kFeathered;
+  const uint32_t kinds = b.u16();
+  for (int k = 0; k < kAppendageKindCount && k < 16; ++k) {
+    if (kinds >> k & 1u) g.appendages.push_back({static_cast<AppendageKind>(k), static_cast<float>(b.in(kMinAppendageSize, kMaxAppendageSize))});
+  }
+  g.skull_shape = {static_cast<float>(b.in(kMinSkullLength, kMaxSkullLength)), static_cast<float>(b.in(kMinSkullHeight, kMaxSkullHeight)),
+                   static_cast<float>(b.in(kMinSnout, kMaxSnout))};
   const int limbs = static_cast<int>(b.u8() % (kMaxLimbPairs + 1));
   for (int i = 0; i < limbs; ++i) {
     LimbGene l;
@@ -145,6 +160,24 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   }
   for (const Mat2x3& m : animator.world_matrices()) {
     if (!finite(m)) fail("pose matrix not finite");
+  }
+
+  // The body: built, its indices in range, skinned in the last pose onto the level's floor.
+  Result<BodyMesh> body = try_build_body(creature);
+  if (!body.ok()) fail("a creature the loader accepted has no body");
+  for (const uint32_t i : body->indices) {
+    if (i >= body->vertices.size()) fail("body index out of range");
+  }
+  const std::vector<Mat2x3>& world = animator.world_matrices();
+  std::vector<Mat2x3> palette(static_cast<size_t>(body->palette_size()));
+  const BodyFloor floor = body_floor(level, creature.skeleton, world, body->reach);
+  body_palette(*body, world, palette, floor);
+  for (const BodyVertex& v : body->vertices) {
+    for (int k = 0; k < 4; ++k) {
+      if (v.weights[static_cast<size_t>(k)] > 0.0f && v.bones[static_cast<size_t>(k)] >= body->floor_entry()) fail("body vertex beyond its palette");
+    }
+    const glm::vec2 p = floor_point(skin_body_vertex(v, palette), floor);
+    if (!std::isfinite(p.x) || !std::isfinite(p.y)) fail("skinned body vertex not finite");
   }
   return 0;
 }

@@ -3,6 +3,7 @@
 #include <catch2/catch.hpp>
 
 #include <filesystem>
+#include <functional>
 #include <string>
 
 #include "ossa/gen/generator.h"
@@ -77,6 +78,127 @@ TEST_CASE("options.smooth_skinning: saved, loaded, true when missing, refused wh
   CHECK(load_written(path, doc).message() ==
         path + ": options.smooth_skinning: expected true or false, got a string \"yes\"");
   std::filesystem::remove(path);
+}
+
+TEST_CASE("look, appendages and skull shape: saved, loaded, checked, and version 1 files still load", "[gen][io]") {
+  const Generator& gen = scenes::generator();
+  const std::string path = temp_path("ossa_look.creature.json");
+  Genome g = gen.example("giraffe").value();
+  // The example's own: patches, ears, ossicones and a mane, a long skull.
+  CHECK(g.look.pattern == CoatPattern::kPatches);
+  REQUIRE(g.appendages.size() == 3);
+  CHECK(g.appendages[0].kind == AppendageKind::kEars);
+  CHECK(g.skull_shape.length == Approx(0.45f));
+
+  // Every field round-trips (through "#rrggbb" colours: a byte per channel).
+  g.look.base = *colour_from_hex("#123456");
+  g.look.belly = *colour_from_hex("#abcdef");
+  g.look.pattern_colour = *colour_from_hex("#010203");
+  g.look.pattern = CoatPattern::kRosettes;
+  g.look.pattern_scale = 0.37f;
+  g.look.fatness = 1.45f;
+  g.look.wings = WingCover::kMembrane;
+  g.appendages = {{AppendageKind::kAntlers, 2.5f}, {AppendageKind::kTailFin, 0.3f}};
+  g.skull_shape = {0.61f, 0.33f, 0.72f};
+  REQUIRE(save_genome(path, g).ok());
+  const Json written = read_json_file(path).value();
+  CHECK(written["version"] == 2);
+  CHECK(written["look"]["base"] == "#123456");
+  CHECK(written["look"]["pattern"] == "rosettes");
+  CHECK(written["appendages"][0]["kind"] == "antlers");
+  Result<Genome> loaded = load_genome(path);
+  REQUIRE(loaded.ok());
+  CHECK(loaded->look == g.look);
+  REQUIRE(loaded->appendages.size() == 2);
+  CHECK(loaded->appendages[0].kind == AppendageKind::kAntlers);
+  CHECK(loaded->appendages[0].size == 2.5f);
+  CHECK(loaded->appendages[1].kind == AppendageKind::kTailFin);
+  CHECK(loaded->skull_shape == g.skull_shape);
+  const Creature c = build_creature(*loaded).value();
+  CHECK(c.look == g.look);
+  CHECK(c.skull_snout == 0.72f);
+  CHECK(c.skeleton.length(c.skull) == Approx(0.61f * [&] {
+          float back = 0.0f;
+          for (int b : c.back) back += c.skeleton.length(b);
+          return back;
+        }()).epsilon(0.02));
+
+  // Version 1 (no look, appendages or skull shape) loads: the look drawn from the seed, no
+  // appendages, the variant's default skull — the skeleton it was built with.
+  Json v1 = genome_to_json(g);
+  v1["version"] = 1;
+  v1.erase("look");
+  v1.erase("appendages");
+  v1.erase("skull_shape");
+  Result<Genome> old = load_written(path, v1);
+  REQUIRE(old.ok());
+  CHECK(old->appendages.empty());
+  CHECK(old->skull_shape == default_skull_shape(old->skull_variant));
+  CHECK(old->look == random_look(old->seed, old->skull_variant, false));
+  v1["look"] = look_to_json(g.look);
+  CHECK_THAT(load_written(path, v1).message(), Catch::StartsWith(path + ": look: needs version 2"));
+
+  // Out of range or malformed: refused, naming the file and the field.
+  const auto refused = [&](const std::function<void(Json&)>& spoil, const std::string& message) {
+    Json doc = genome_to_json(g);
+    spoil(doc);
+    const Result<Genome> r = load_written(path, doc);
+    REQUIRE_FALSE(r.ok());
+    CHECK(r.message() == path + ": " + message);
+  };
+  refused([](Json& d) { d["look"]["fatness"] = 3.0; }, "look.fatness: expected a number in [0.6, 1.6], got 3.0");
+  refused([](Json& d) { d["look"]["base"] = "brown"; }, "look.base: expected a colour \"#rrggbb\" (six hex digits), got \"brown\"");
+  refused([](Json& d) { d["look"]["pattern"] = "tartan"; },
+          "look.pattern: expected \"none\", \"stripes\", \"spots\", \"rosettes\", \"dapples\" or \"patches\", got \"tartan\"");
+  refused([](Json& d) { d["look"]["pattern_scale"] = 0.0; }, "look.pattern_scale: expected a number in [0.02, 1], got 0.0");
+  refused([](Json& d) { d["look"]["wings"] = "scales"; }, "look.wings: expected \"feathered\" or \"membrane\", got \"scales\"");
+  refused([](Json& d) { d["look"]["fur"] = true; },
+          "look.fur: unknown field (expected base, belly, pattern, pattern_colour, pattern_scale, fatness or wings)");
+  refused([](Json& d) { d["appendages"][0]["kind"] = "wheels"; },
+          "appendages[0].kind: expected one of ears, horns, antlers, frill, crest, mane, trunk, hump, sail, plates, shell, dorsal_fin, tail_fin, got \"wheels\"");
+  refused([](Json& d) { d["appendages"][1]["kind"] = "antlers"; },
+          "appendages[1].kind: expected each kind once, but \"antlers\" is given twice");
+  refused([](Json& d) { d["appendages"][0]["size"] = 9.0; }, "appendages[0].size: expected a number in [0.25, 3], got 9.0");
+  refused([](Json& d) { d["skull_shape"]["snout"] = 0.95; }, "skull_shape.snout: expected a number in [0.1, 0.85], got 0.95");
+  refused([](Json& d) { d["skull_shape"]["length"] = -1.0; }, "skull_shape.length: expected a number in [0.08, 0.8], got -1.0");
+  std::filesystem::remove(path);
+}
+
+TEST_CASE("random creatures wear plausible, seeded looks, and clamping keeps every field in range", "[gen]") {
+  const Generator& gen = scenes::generator();
+  int patterned = 0;
+  for (uint64_t seed = 1; seed <= 60; ++seed) {
+    const Genome a = gen.random(seed), b = gen.random(seed);
+    CHECK(a.look == b.look);  // the seed decides
+    CHECK(a.look.fatness >= 0.9f);
+    CHECK(a.look.fatness <= 1.1f);
+    patterned += a.look.pattern != CoatPattern::kNone;
+    // The belly lighter than the back (countershading).
+    CHECK(a.look.belly.r + a.look.belly.g + a.look.belly.b > a.look.base.r + a.look.base.g + a.look.base.b);
+    for (const Appendage& x : a.appendages) {
+      CHECK(x.size >= kMinAppendageSize);
+      CHECK(x.size <= kMaxAppendageSize);
+    }
+  }
+  CHECK(patterned > 5);
+  CHECK(patterned < 50);
+  Genome wild = gen.random(3);
+  wild.look.fatness = 99.0f;
+  wild.look.pattern_scale = -1.0f;
+  wild.look.base = glm::vec3(-2.0f, 0.5f, 7.0f);
+  wild.appendages = {{AppendageKind::kEars, 50.0f}, {AppendageKind::kEars, 1.0f}};
+  wild.skull_shape = {9.0f, -1.0f, 0.5f};
+  clamp_to_genome_limits(wild);
+  CHECK(wild.look.fatness == kMaxFatness);
+  CHECK(wild.look.pattern_scale == kMinPatternScale);
+  CHECK(wild.look.base == glm::vec3(0.0f, 0.5f, 1.0f));
+  REQUIRE(wild.appendages.size() == 1);
+  CHECK(wild.appendages[0].size == kMaxAppendageSize);
+  CHECK(wild.skull_shape.length == kMaxSkullLength);
+  CHECK(wild.skull_shape.height == kMinSkullHeight);
+  const Result<Genome> back = genome_from_json(genome_to_json(wild), "wild");
+  INFO((back.ok() ? std::string() : back.message()));
+  CHECK(back.ok());
 }
 
 TEST_CASE("random genomes at the ends of every range save and load back the same", "[gen]") {

@@ -240,3 +240,72 @@ TEST_CASE("glTF export of generated examples re-imports with their skeletons", "
 }
 
 }  // namespace ossa
+
+namespace ossa {
+
+TEST_CASE("glTF export of a body: skinned, coloured, posable, its rest pose the body's", "[gltf][body]") {
+  // --look body: one mesh, the body (vertex colours, weights summing to 1 over real bones);
+  // loaded as a designer's character would be, its rest pose lies on the body as built.
+  // --look xray: the sprites and the body; bones: the sprites alone (as before bodies).
+  Result<Generator> gen = Generator::load(scenes::source_path("assets/creatures/examples.json"));
+  REQUIRE(gen.ok());
+  for (const char* name : {"horse", "pigeon", "crocodile"}) {
+    INFO(name);
+    Result<Genome> genome = gen->example(name, 1);
+    REQUIRE(genome.ok());
+    Result<Creature> c = build_creature(*genome);
+    REQUIRE(c.ok());
+    const BodyMesh body = build_body(*c);
+    for (CreatureLook look : {CreatureLook::kBody, CreatureLook::kXray, CreatureLook::kBones}) {
+      INFO(creature_look_name(look));
+      GltfOptions o;
+      o.look = look;
+      const std::string path = temp_path(std::string(name) + "_" + creature_look_name(look) + ".gltf");
+      REQUIRE(export_gltf(*c, path, o).ok());
+      Assimp::Importer importer;
+      const aiScene* scene = importer.ReadFile(path, 0);
+      REQUIRE(scene != nullptr);
+      CHECK(scene->mNumMeshes == (look == CreatureLook::kXray ? 2u : 1u));
+      const aiMesh* mesh = nullptr;
+      // The body is the mesh with vertex colours (the sprites have a texture instead).
+      for (unsigned m = 0; m < scene->mNumMeshes; ++m) {
+        if (scene->mMeshes[m]->HasVertexColors(0)) mesh = scene->mMeshes[m];
+      }
+      if (look == CreatureLook::kBones) {
+        CHECK(mesh == nullptr);
+        continue;
+      }
+      REQUIRE(mesh != nullptr);
+      // Assimp's exporter joins identical vertices; every body vertex is there.
+      CHECK(mesh->mNumVertices <= body.vertices.size());
+      CHECK(mesh->mNumVertices >= body.vertices.size() * 9 / 10);
+      CHECK(mesh->mNumFaces == static_cast<unsigned>(body.triangle_count()));
+      // The coat: more than one colour, the outline darker than the body.
+      float lo = 1e9f, hi = -1e9f;
+      for (unsigned v = 0; v < mesh->mNumVertices; ++v) {
+        const aiColor4D& col = mesh->mColors[0][v];
+        lo = std::min(lo, col.r + col.g + col.b);
+        hi = std::max(hi, col.r + col.g + col.b);
+      }
+      CHECK(hi - lo > 0.3f);
+      std::vector<float> total(mesh->mNumVertices, 0.0f);
+      for (unsigned b = 0; b < mesh->mNumBones; ++b) {
+        for (unsigned w = 0; w < mesh->mBones[b]->mNumWeights; ++w) total[mesh->mBones[b]->mWeights[w].mVertexId] += mesh->mBones[b]->mWeights[w].mWeight;
+      }
+      for (float t : total) CHECK(t == Approx(1.0f).margin(1e-5));
+      if (look != CreatureLook::kBody) continue;
+      Result<RiggedMesh> loaded = load_rigged_mesh(path);
+      INFO((loaded.ok() ? std::string() : loaded.message()));
+      REQUIRE(loaded.ok());
+      const std::vector<Mat2x3> palette = rigged_palette(*loaded, rest_locals(*loaded));
+      for (size_t i = 0; i < loaded->vertices.size(); i += 5) {
+        const glm::vec2 p = skin_position(loaded->vertices[i], palette);
+        float nearest = 1e30f;
+        for (const BodyVertex& q : body.vertices) nearest = std::min(nearest, glm::length(p - q.position_ms));
+        CHECK(nearest < 1e-4f);
+      }
+    }
+  }
+}
+
+}  // namespace ossa

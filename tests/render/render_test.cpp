@@ -142,7 +142,7 @@ TEST_CASE("offscreen window gives a GL 3.3 core context", "[render]") {
 TEST_CASE("every shader compiles and links", "[render]") {
   Gl& g = gl();
   for (const ShaderProgram* p : {&g.renderer->debug, &g.renderer->textured, &g.renderer->skinned,
-                                 &g.renderer->skinned_naive, &g.renderer->bone}) {
+                                 &g.renderer->skinned_naive, &g.renderer->bone, &g.renderer->body}) {
     INFO(p->vertex_path());
     CHECK(p->is_valid());
     GLint linked = 0;
@@ -155,7 +155,7 @@ TEST_CASE("every shader compiles and links", "[render]") {
     const auto ext = e.path().extension();
     if (ext == ".vert" || ext == ".frag") ++files;
   }
-  CHECK(files == 9);
+  CHECK(files == 11);
 }
 
 TEST_CASE("a shader with a syntax error reports file and line", "[render]") {
@@ -544,6 +544,7 @@ TEST_CASE("a creature image is the window's picture, framed on the sprites, GL s
     o.height = kH;
     o.background = bg;
     o.margin = 0.05f;
+    o.look = CreatureLook::kBones;  // compared below with the sprites drawn in the window
     auto img = render_creature_image(*g.renderer, *g.atlas, c, o);
     REQUIRE(img.ok());
     REQUIRE((img->width == kW && img->height == kH));

@@ -46,7 +46,7 @@ const Creature& example(const std::string& name) {
 // The vertex of `bone` at unit-box (u, v); with the default set uv = (u, 1 - v).
 const SpriteVertex* find_vertex(const SpriteMesh& mesh, int bone, float u, float v) {
   for (const SpriteVertex& vert : mesh.vertices) {
-    if (vert.bones[0] == bone && std::fabs(vert.uv.x - u) < 1e-6f && std::fabs(vert.uv.y - (1.0f - v)) < 1e-6f) {
+    if (vert.bones[0] == bone && std::fabs(vert.uv.x - u) < 1e-6f && std::fabs(vert.uv.y - v) < 1e-6f) {
       return &vert;
     }
   }
@@ -114,6 +114,9 @@ TEST_CASE("the shipped sprites.json loads and agrees with the built-in defaults"
     CHECK(a.child_anchor.x == Approx(b.child_anchor.x).margin(1e-6));
     CHECK(a.child_anchor.y == Approx(b.child_anchor.y).margin(1e-6));
     CHECK(a.aspect == Approx(b.aspect).margin(1e-6));
+    CHECK(a.thickness == Approx(b.thickness).margin(1e-6));
+    CHECK(a.contact_from == Approx(b.contact_from).margin(1e-6));
+    CHECK(a.snout_from == Approx(b.snout_from).margin(1e-6));
     CHECK(std::filesystem::exists(scenes::source_path("assets/sprites/bones/" + a.file)));
     CHECK(std::filesystem::exists(scenes::source_path("assets/sprites/bones/src/" + a.name + ".svg")));
   }
@@ -127,7 +130,10 @@ TEST_CASE("bad sprite files give errors naming the file and field", "[render]") 
   };
   const std::vector<Case> cases = {
       {"\"ossa.sprites\"", "\"ossa.level\"", "format: expected \"ossa.sprites\""},
-      {"\"version\": 1", "\"version\": 2", "version: expected an integer in [1, 1]"},
+      {"\"version\": 2", "\"version\": 3", "version: expected an integer in [1, 2]"},
+      {"\"thickness\": 0.6800", "\"thickness\": 1.5", "sprites.long_bone.thickness: expected a number in [0.001, 1]"},
+      {"\"contact_from\": 0.8359", "\"contact_from\": 0.01", "sprites.paw.contact_from: expected a number in"},
+      {"\"snout_from\": 0.5469", "\"snout_from\": \"x\"", "sprites.skull_mammal.snout_from"},
       {"\"parent_anchor\": [0.0469, 0.2222]", "\"parent_anchor\": [0.0469]", "sprites.vertebra.parent_anchor: expected [u, v]"},
       {"\"parent_anchor\": [0.0469, 0.2222]", "\"parent_anchor\": [0.0469, 1.5]", "sprites.vertebra.parent_anchor[1]"},
       {"\"parent_anchor\": [0.0469, 0.2222]", "\"parent_anchor\": [0.0469, \"x\"]", "sprites.vertebra.parent_anchor[1]"},
@@ -202,7 +208,8 @@ TEST_CASE("sprite choice follows kind, limb, contact and skull variant", "[rende
         case LimbKind::kFin: CHECK(hand == SpriteId::kFin); break;
         case LimbKind::kArm: CHECK(hand == SpriteId::kFlatFoot); break;
         case LimbKind::kLeg:
-          if (winged) CHECK(hand == SpriteId::kBirdFoot);
+          // A bird's foot, unless it lies nearly flat (then its sole is drawn on the ground).
+          if (winged) CHECK((hand == SpriteId::kBirdFoot || hand == SpriteId::kFlatFoot));
           else if (c.contact == ContactMode::kFlat) CHECK(hand == SpriteId::kFlatFoot);
           else CHECK((hand == SpriteId::kHoof || hand == SpriteId::kPaw || hand == SpriteId::kFlatFoot));
           break;
@@ -240,13 +247,15 @@ TEST_CASE("every example's sprite anchors land on its bone starts and ends", "[r
       CHECK(pa.y == Approx(start.y).margin(tol));
       CHECK(ca.x == Approx(end.x).margin(tol));
       CHECK(ca.y == Approx(end.y).margin(tol));
-      // Height: max(aspect × length, width), measured across the sprite at the parent anchor.
+      // Height: width / thickness (or max(aspect × length, width) for a sprite without one),
+      // measured across the sprite at the parent anchor.
       const SpriteVertex* lo = find_vertex(mesh, b, info.parent_anchor.x, 0.0f);
       const SpriteVertex* hi = find_vertex(mesh, b, info.parent_anchor.x, 1.0f);
       const glm::vec2 across = hi->position_ms - lo->position_ms;
       const glm::vec2 axis = (end - start) / s.length(b);
       const float height = axis.x * across.y - axis.y * across.x;  // signed: up = +v
-      const float expect = std::max(info.aspect * s.length(b), s.width(b));
+      const float expect = info.thickness > 0.0f && s.width(b) > 0.0f ? s.width(b) / info.thickness
+                                                                       : std::max(info.aspect * s.length(b), s.width(b));
       CHECK(std::fabs(height) == Approx(expect).margin(tol));
       CHECK((height < 0.0f) == s.sprite_flip_y(b));  // flipped sprites have +v on local -y
     }
@@ -303,8 +312,18 @@ TEST_CASE("sprite meshes: skinning the rest pose gives the rest pose, weights su
       }
       CHECK((smooth ? blended > 0 : blended == 0));
       CHECK(max_weights_per_vertex(mesh) == (smooth ? 2 : 1));
-      // Knee (elbow) and ankle (wrist), each kSmoothJointFrames frames: every example has room.
-      CHECK(mesh.mid_joints.size() == (smooth ? kSmoothJointFrames * 2 * c.limbs.size() : 0));
+      // Knee (elbow) and ankle (wrist), each kSmoothJointFrames frames: every example has room;
+      // a leg's foot drawn flat keeps its ankle rigid (its sole lies on the ground from the
+      // ankle on). Plus, when smooth, one level frame per foot that stands on the ground.
+      size_t level = 0, joints = 0;
+      for (const MidJoint& j : mesh.mid_joints) level += j.level;
+      for (const Limb& l : c.limbs) {
+        joints += l.bones[1] >= 0;
+        joints += l.bones[2] >= 0 && !(l.kind == LimbKind::kLeg &&
+                                       mesh.bone_sprites[static_cast<size_t>(l.bones[2])] == SpriteId::kFlatFoot);
+      }
+      CHECK(mesh.mid_joints.size() - level == (smooth ? kSmoothJointFrames * joints : 0));
+      CHECK((smooth ? level <= c.limbs.size() : level == 0));
       // Layer ranges: ordered, covering all indices, each triangle in the layer of its bone.
       REQUIRE(mesh.layer_begin[0] == 0);
       REQUIRE(mesh.layer_begin[3] == mesh.indices.size());

@@ -23,7 +23,15 @@
 #include "ossa/io/file.h"
 #include "ossa/io/json.h"
 #include "ossa/io/parse_arg.h"
+#include "ossa/body/body_svg.h"
 #include "ossa/render/gltf_export.h"
+#ifdef OSSA_GEN_HAVE_RENDER
+#include "ossa/platform/window.h"
+#include "ossa/render/capture.h"
+#include "ossa/render/creature_sheet.h"
+#include "ossa/render/renderer.h"
+#include "ossa/render/texture.h"
+#endif
 
 namespace {
 
@@ -51,14 +59,19 @@ variations:
 outputs (with variations, F-1.ext .. F-K.ext):
   --out F.creature.json save the genome
   --svg F.svg           side view of the skeleton
-  --gltf F.gltf         glTF 2.0 (node hierarchy, skinned sprite mesh) via Assimp
+  --gltf F.gltf         glTF 2.0 via Assimp: the node hierarchy and, by --look, the skinned
+                        body (vertex colours), the bone sprite mesh, or both
   --obj F.obj           box proxies, one box per bone
   --summary             JSON description of the creature(s) on stdout (the default output)
   --count N             with --random --summary: N creatures from consecutive seeds, print
                         counts, limb-layout histogram and throughput
 model:
   --stats               JSON statistics of the PCA model on stdout
-  --sheet F.svg         all examples (seed 1 each) in a grid with their names
+  --sheet F.svg|F.png   all examples (seed 1 each) in a grid with their names: an SVG, or a
+                        PNG drawn by the game's renderer offscreen (no display needed)
+  --sheet-random N      with --sheet: N random creatures (seeds 1..N) after the examples
+  --look L              how --sheet, --svg and --gltf show creatures: body (default), xray
+                        (the body translucent over the bones) or bones
   --dataset F           examples file (default: $OSSA_SOURCE_DIR/assets/creatures/examples.json)
   --help                this text
 )";
@@ -70,6 +83,8 @@ struct Args {
   std::optional<int> wings, leg_pairs, variations;
   std::optional<double> weight, sigma;
   std::optional<long long> count;
+  std::optional<int> sheet_random;
+  CreatureLook look = CreatureLook::kBody;
   bool neck_girdle = false, multi_limb = false;
 };
 
@@ -137,6 +152,13 @@ Args parse_args(int argc, char** argv) {
     else if (flag == "--obj") once(a.obj, value());
     else if (flag == "--sheet") once(a.sheet, value());
     else if (flag == "--dataset") once(a.dataset, value());
+    else if (flag == "--sheet-random") once(a.sheet_random, static_cast<int>(parse_int(flag, value(), 0, 1000)));
+    else if (flag == "--look") {
+      const std::string v = value();
+      const auto look = creature_look_from_name(v);
+      if (!look) usage_error("--look: expected body, xray or bones, got \"" + v + "\"");
+      a.look = *look;
+    }
     else if (flag == "--stats") a.stats = true;
     else if (flag == "--summary") a.summary = true;
     else if (flag == "--count") once(a.count, parse_int(flag, value(), 1, 100000000));
@@ -159,6 +181,7 @@ Args parse_args(int argc, char** argv) {
     usage_error("--count only prints a summary; drop --variations and file outputs");
   }
   if (a.sigma && !a.variations) usage_error("--sigma needs --variations");
+  if (a.sheet_random && !a.sheet) usage_error("--sheet-random needs --sheet");
   return a;
 }
 
@@ -239,6 +262,33 @@ Json model_stats(const Generator& gen) {
   return j;
 }
 
+// A PNG contact sheet drawn by the game's renderer in an offscreen window.
+Status write_sheet_png(const std::string& path, const std::vector<std::pair<std::string, Creature>>& sheet,
+                       CreatureLook look) {
+#ifdef OSSA_GEN_HAVE_RENDER
+  setenv("SDL_VIDEODRIVER", "offscreen", 0);
+  WindowDesc desc;
+  desc.title = "ossa-gen";
+  desc.width = 64;
+  desc.height = 64;
+  desc.offscreen = true;
+  auto window = Window::create(desc);
+  if (!window.ok()) return Error::at(path, "", window.message());
+  auto renderer = Renderer::create(default_shader_dir());
+  if (!renderer.ok()) return Error::at(path, "", renderer.message());
+  const Atlas atlas = Atlas::load(default_sprite_dir());
+  SheetOptions o;
+  o.look = look;
+  auto image = render_sheet(*renderer, atlas, sheet, o);
+  if (!image.ok()) return Error::at(path, "", image.message());
+  return write_png(path, *image);
+#else
+  (void)sheet;
+  (void)look;
+  return Error::at(path, "", "this ossa-gen was built without the renderer (SDL2/GL): write an .svg sheet");
+#endif
+}
+
 int fail(const std::string& message) {
   std::fprintf(stderr, "ossa-gen: %s\n", message.c_str());
   return 1;
@@ -280,7 +330,19 @@ int run(const Args& a) {
       sheet.emplace_back(animal.name + " (" + animal.name_de + ")", std::move(*creature));
       skulls.push_back(genome->skull_variant);
     }
-    if (Status st = write_text(*a.sheet, sheet_svg(sheet, 6, skulls)); !st) return fail(st.message());
+    for (int k = 1; k <= a.sheet_random.value_or(0); ++k) {
+      const Genome genome = generator->random(static_cast<uint64_t>(k));
+      Result<Creature> creature = build_creature(genome);
+      if (!creature) return fail("random " + std::to_string(k) + ": " + creature.message());
+      sheet.emplace_back("random, seed " + std::to_string(k), std::move(*creature));
+      skulls.push_back(genome.skull_variant);
+    }
+    const bool png = a.sheet->size() > 4 && a.sheet->substr(a.sheet->size() - 4) == ".png";
+    if (png) {
+      if (Status st = write_sheet_png(*a.sheet, sheet, a.look); !st) return fail(st.message());
+    } else if (Status st = write_text(*a.sheet, look_sheet_svg(sheet, 6, skulls, a.look)); !st) {
+      return fail(st.message());
+    }
   }
 
   if (!a.example && !a.random && !a.in) return 0;
@@ -362,7 +424,7 @@ int run(const Args& a) {
     if (a.svg) {
       SvgOptions o;
       o.skull_variant = genome.skull_variant;
-      if (Status st = write_text(numbered(*a.svg, k + 1, total), creature_svg(c, o)); !st) {
+      if (Status st = write_text(numbered(*a.svg, k + 1, total), look_svg(c, a.look, o)); !st) {
         return fail(st.message());
       }
     }
@@ -374,6 +436,7 @@ int run(const Args& a) {
     if (a.gltf) {
       GltfOptions o;
       o.atlas_path = atlas;
+      o.look = a.look;
       if (Status st = export_gltf(c, numbered(*a.gltf, k + 1, total), o); !st) {
         return fail(st.message());
       }

@@ -12,6 +12,7 @@
 #include <string>
 #include <vector>
 
+#include "ossa/body/body_mesh.h"
 #include "ossa/gen/generator.h"
 #include "ossa/gen/genome.h"
 #include "ossa/gen/skeleton_builder.h"
@@ -54,17 +55,24 @@ options:
   --png OUT               write the frame as PNG
   --width W --height H    image size in pixels (default 1024 x 576)
   --count N               N creatures side by side (default 1, at most 10000)
-  --bones                 draw skeleton lines over the sprites
+  --look L                body (default: the creature's flesh, skin and coat), xray (the body
+                          translucent over the bone sprites) or bones (the bone sprites alone);
+                          rigged meshes and characters are always drawn as made
+  --bones                 draw skeleton lines over the creature
   --rigid                 no smooth skinning: every sprite follows its own bone (as a genome
                           with "options": {"smooth_skinning": false} asks)
   --stats                 print JSON: draw_calls, creatures, bones, vertices, triangles,
-                          max_weights_per_vertex
+                          max_weights_per_vertex (of the bone sprites), and for a generated
+                          creature body_vertices, body_triangles, body_area_m2 (every part's
+                          side-view area, overlaps counted), body_mass_kg and
+                          expected_mass_kg (the genome's weight at the creature's size)
   --help                  this text
 )";
 
 struct Args {
   std::optional<std::string> example, creature, mesh, character, level, png;
   bool random = false, stats = false, bones = false, rigid = false;
+  CreatureLook look = CreatureLook::kBody;
   uint64_t seed = 1;
   int width = 1024, height = 576, count = 1;
   float pixels_per_metre = 32.0f;  // LevelLoadOptions::pixels_per_metre
@@ -122,6 +130,11 @@ Args parse_args(int argc, char** argv) {
       a.count = static_cast<int>(parse_int(flag, value(), 1, 10000));
     } else if (flag == "--stats") {
       a.stats = true;
+    } else if (flag == "--look") {
+      const std::string v = value();
+      const auto look = creature_look_from_name(v);
+      if (!look) fail("--look: expected body, xray or bones, got \"" + v + "\"");
+      a.look = *look;
     } else if (flag == "--bones") {
       a.bones = true;
     } else if (flag == "--rigid") {
@@ -227,7 +240,17 @@ int run(const Args& a) {
   const SpriteMesh mesh = character ? character->sprite_mesh
                           : rig     ? rigged_sprite_mesh(*rig)
                                     : build_sprite_mesh(creature, atlas.sprites);
+  // A generated creature's body (rigged meshes and characters bring their own drawing).
+  const CreatureLook look = rig ? CreatureLook::kBones : a.look;
+  std::optional<BodyMesh> flesh;
+  if (!rig) {
+    auto b = try_build_body(creature);
+    if (!b.ok()) fail(b.message());
+    flesh = std::move(b.value());
+  }
+  const bool show_sprites = look != CreatureLook::kBody, show_body = flesh && look != CreatureLook::kBones;
   Box body = sprite_mesh_bounds(mesh);
+  if (show_body && !flesh->vertices.empty()) body = body.united(body_bounds(*flesh));
   float lift = 0.0f;  // model y that stands on the ground: 0 for creatures and characters, the feet for meshes
   if (character) {
     // Bind-pose vertices are in the mesh's own space: the body box in model space (y = 0 on
@@ -282,12 +305,23 @@ int run(const Args& a) {
          std::to_string(static_cast<int>(kMinCreaturePixels)) + " px: nothing would show); use --count " +
          std::to_string(fits) + " or less, or a larger --width");
   }
+  // The creatures: their sprites and/or bodies, as the look shows them.
   CreatureBatch batch;
   for (const glm::vec2& at : feet) {
-    const int id = batch.add(mesh, creature.skeleton);
     Transform2D place;
     place.translation = {at.x, at.y + lift};
-    batch.set_pose(id, creature.skeleton, creature.rest_pose.locals, place.to_mat2x3());
+    if (show_sprites) {
+      const int id = batch.add(mesh, creature.skeleton);
+      batch.set_pose(id, creature.skeleton, creature.rest_pose.locals, place.to_mat2x3());
+    }
+    if (show_body) {
+      const int id = batch.add_body(*flesh, creature.skeleton);
+      batch.set_pose(id, creature.skeleton, creature.rest_pose.locals, place.to_mat2x3());
+      // Its flesh rests on the ground as in the game (body_floor.h).
+      std::vector<Mat2x3> world = model_matrices(creature.skeleton, creature.rest_pose.locals);
+      for (Mat2x3& m : world) m = place.to_mat2x3() * m;
+      batch.set_floor(id, level ? body_floor(*level, creature.skeleton, world, flesh->reach) : flat_floor(at.y));
+    }
   }
   batch.upload_palettes();
 
@@ -310,7 +344,8 @@ int run(const Args& a) {
   renderer->begin_frame(window->width(), window->height(), sky);
   renderer->draw_debug(debug);
   const int calls_before = renderer->stats.draw_calls;
-  renderer->draw_batch(batch, texture);
+  const Texture* textures[1] = {&texture};
+  renderer->draw_creatures(batch, textures, look);
   const int creature_calls = renderer->stats.draw_calls - calls_before;
   if (a.bones) renderer->draw_bones(batch, {0.9f, 0.1f, 0.1f, 1.0f});
   if (!check_gl("ossa-render")) fail("OpenGL reported an error while drawing (see above)");
@@ -321,13 +356,27 @@ int run(const Args& a) {
   }
   if (a.stats) {
     const DrawStats& st = renderer->stats;
+    std::string body_stats;
+    if (flesh) {
+      char buf[512];
+      std::snprintf(buf, sizeof buf,
+                    "  \"look\": \"%s\",\n  \"body_vertices\": %zu,\n  \"body_triangles\": %d,\n"
+                    "  \"body_area_m2\": %.6g,\n  \"body_mass_kg\": %.6g,\n  \"expected_mass_kg\": %s,\n"
+                    "  \"body_girth\": %.4g,\n",
+                    creature_look_name(look), flesh->vertices.size(), flesh->triangle_count(),
+                    static_cast<double>(flesh->area_m2), static_cast<double>(flesh->mass_kg),
+                    creature.body_mass_kg ? std::to_string(*creature.body_mass_kg).c_str() : "null",
+                    static_cast<double>(flesh->girth));
+      body_stats = buf;
+    }
     std::printf(
-        "{\n  \"name\": \"%s\",\n  \"creatures\": %d,\n  \"bones\": %d,\n  \"vertices\": %d,\n"
+        "{\n  \"name\": \"%s\",\n%s  \"creatures\": %d,\n  \"bones\": %d,\n  \"vertices\": %d,\n"
         "  \"triangles\": %d,\n  \"max_weights_per_vertex\": %d,\n  \"draw_calls\": %d,\n"
         "  \"creature_draw_calls\": %d,\n  \"atlas_missing_sprites\": %d,\n  \"width\": %d,\n"
         "  \"height\": %d\n}\n",
-        creature.name.c_str(), batch.creature_count(), batch.bone_count(), batch.vertex_count(),
-        batch.triangle_count(), max_weights_per_vertex(mesh), st.draw_calls, creature_calls, atlas.missing,
+        creature.name.c_str(), body_stats.c_str(), a.count, a.count * creature.skeleton.bone_count(),
+        show_sprites ? batch.vertex_count() : 0,
+        show_sprites ? batch.triangle_count() : 0, max_weights_per_vertex(mesh), st.draw_calls, creature_calls, atlas.missing,
         window->width(), window->height());
   }
   return 0;

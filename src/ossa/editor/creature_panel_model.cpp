@@ -106,6 +106,50 @@ void CreaturePanelModel::regenerate(CreaturePart part) {
   set_genome(g, std::string("regenerate ") + creature_part_name(part));
 }
 
+void CreaturePanelModel::set_look(Look look) {
+  clamp_look(look);
+  if (look == genome_.look) return;
+  Genome g = genome_;
+  g.look = look;
+  set_genome(std::move(g), "look");
+}
+
+void CreaturePanelModel::random_look() {
+  const bool winged = std::any_of(genome_.limbs.begin(), genome_.limbs.end(), [](const LimbGene& l) { return l.kind == LimbKind::kWing; });
+  set_look(ossa::random_look(seed, genome_.skull_variant, winged));
+}
+
+std::optional<float> CreaturePanelModel::appendage(AppendageKind kind) const {
+  for (const Appendage& a : genome_.appendages) {
+    if (a.kind == kind) return a.size;
+  }
+  return std::nullopt;
+}
+
+void CreaturePanelModel::set_appendage(AppendageKind kind, std::optional<float> size) {
+  Genome g = genome_;
+  auto it = std::find_if(g.appendages.begin(), g.appendages.end(), [&](const Appendage& a) { return a.kind == kind; });
+  if (!size) {
+    if (it == g.appendages.end()) return;
+    g.appendages.erase(it);
+  } else if (it == g.appendages.end()) {
+    g.appendages.push_back({kind, *size});
+  } else {
+    it->size = *size;
+  }
+  clamp_appendages(g.appendages);
+  if (genome_to_json(g) == genome_to_json(genome_)) return;
+  set_genome(std::move(g), std::string(size ? "" : "remove ") + appendage_kind_name(kind));
+}
+
+void CreaturePanelModel::set_skull_shape(SkullShape shape) {
+  Genome g = genome_;
+  g.skull_shape = shape;
+  clamp_to_genome_limits(g);
+  if (g.skull_shape == genome_.skull_shape) return;
+  set_genome(std::move(g), "skull shape");
+}
+
 double CreaturePanelModel::sigma(int i) const {
   if (i < 0 || i >= kPcaDims) return 0.0;
   return generator_->model().to_sigma(to_pca_vector(genome_.pca))[i];

@@ -7,7 +7,9 @@
 // the player, spawn as an NPC) through callbacks.
 //
 // Step-wise generation [Z 8.3]: every change of the genome is one UndoStack step (document
-// kGenome); a slider drag (begin_edit … set_sigma … end_edit) is one step.
+// kGenome); a slider drag (begin_edit … set_sigma … end_edit) is one step. The body's look
+// (coat colours, pattern, its scale, fatness, wing cover), its appendages and the skull's
+// proportions are edited the same way.
 //
 // Exports (files written atomically; on failure the error names the file, an existing file is
 // left untouched and the genome is kept):
@@ -19,6 +21,7 @@
 #include <array>
 #include <functional>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -68,6 +71,18 @@ class CreaturePanelModel {
   // Smooth skinning of the current genome (options.smooth_skinning; one undo step when it
   // changes) and of the creatures generated next (conditions.genome).
   void set_smooth_skinning(bool on);
+
+  // ---- The body: look, appendages, skull (issue 30; each one undo step, or one per drag
+  // inside begin_edit/end_edit). Values are clamped into the genome's ranges (gen/look.h,
+  // gen/skull_shape.h); a change that leaves the genome as it is adds no step.
+  void set_look(Look look);
+  // A new look drawn from `seed` (random_look) for this body's kind.
+  void random_look();
+  // The appendage of `kind`: added or resized to `size`, or removed when `size` is empty.
+  void set_appendage(AppendageKind kind, std::optional<float> size);
+  // The appendage of `kind` on the current genome, if any.
+  std::optional<float> appendage(AppendageKind kind) const;
+  void set_skull_shape(SkullShape shape);
 
   // ---- σ sliders -------------------------------------------------------------------------
   // Coordinate of the current genome along principal component i (0 <= i < kSliderCount),

@@ -1,6 +1,7 @@
 // EditorSuite: the creature panel window — example picker, random with seed and conditions,
 // σ sliders of the first principal components, variations, part regeneration, genome files,
-// glTF / SVG / PNG export, apply / spawn — with a rest-pose preview of the skeleton.
+// the body's look, appendages and skull (creature_body_window.cpp), glTF / SVG / PNG export,
+// apply / spawn — with a rest-pose preview of the skeleton.
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
@@ -145,6 +146,8 @@ void EditorSuite::draw_creature_window() {
     }
     ImGui::TreePop();
   }
+
+  draw_creature_body(m);
 
   ImGui::SetNextItemWidth(120);
   ImGui::SliderFloat("sd##var", &variation_sigma_, 0.05f, 2.0f, "%.2f");

@@ -144,6 +144,7 @@ class EditorSuite {
   void draw_level_window();
   void draw_spline_window();
   void draw_creature_window();
+  void draw_creature_body(CreaturePanelModel& m);  // the look, appendages, skull (creature_body_window.cpp)
   void draw_tuning_window();
   void draw_rig_window();
   void draw_rig_preview(float width, float height);
@@ -195,6 +196,7 @@ class EditorSuite {
   bool open_discard_popup_ = false;
   bool quit_confirmed_ = false;
   float variation_sigma_ = 0.5f;
+  std::string colour_edit_;  // the body colour whose picker is open (one undo step)
   int creature_example_ = 0;
   int creature_character_ = 0;
   std::string character_message_;

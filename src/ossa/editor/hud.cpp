@@ -56,6 +56,7 @@ void Hud::draw(const HudInfo& info) {
     if (!info.status.empty()) ImGui::TextWrapped("%s", info.status.c_str());
     ImGui::Separator();
     ImGui::TextDisabled("A/D walk, Shift run, Space/W/Up jump, N next, M random, C character, H hud");
+    ImGui::TextDisabled("B look: body, x-ray, bones");
     ImGui::TextDisabled("pad: RB/RT run, A jump, Y next, X random, LB character, Back hud");
     ImGui::TextDisabled("F12/P shot, G gif, R replay, wheel zoom, Esc quit");
   }

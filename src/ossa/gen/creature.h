@@ -7,11 +7,13 @@
 // by frame_to_model: p_ms = (p_frame - origin_frame) * scale.
 
 #include <array>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include <glm/vec2.hpp>
 
+#include "ossa/gen/look.h"
 #include "ossa/skeleton/pose.h"
 #include "ossa/skeleton/skeleton.h"
 
@@ -47,11 +49,21 @@ struct Creature {
   Pose rest_pose;
   ContactMode contact = ContactMode::kTip;
   int skull_variant = 0;        // 0 mammal, 1 bird, 2 reptile, 3 fish (genome.h)
+  float skull_snout = 0.5f;     // the muzzle's share of the skull length (SkullShape::snout)
   float scale = 0.002f;         // metres per frame unit
   glm::vec2 origin_frame{0.0f}; // frame point that maps to the model origin
   float ground_y_ms = 0.0f;     // always 0 by construction; kept explicit for clarity
   std::string name;             // example name, or "random-<seed>"
   bool smooth_skinning = true;  // GenomeOptions::smooth_skinning: sprites blend across joints
+
+  // The body (body/body_mesh.h): the genome's look and appendages, its weight, and the body
+  // mass the weight asks for at this creature's size (gen/true_size.h:
+  // expected_body_mass_kg; nullopt when the animal's true size is unknown — the body then
+  // keeps its default girths times look.fatness).
+  Look look;
+  std::vector<Appendage> appendages;
+  float weight_kg = 0.0f;
+  std::optional<float> body_mass_kg;
 
   // Spine chain bone indices from the head end to the tail tip (skull excluded), the root,
   // the skull, and the girdle bones (-1 when absent).

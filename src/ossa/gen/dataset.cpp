@@ -85,6 +85,25 @@ Animal read_animal(JsonReader& r, const Json& v, size_t index) {
   }
   a.front = read_limb(r, v, path, "front", "hand");
   a.hind = read_limb(r, v, path, "hind", "foot");
+  // Optional: the skull's proportions (skull_shape.h), how the body looks and its appendages
+  // (look.h).
+  if (r.has(v, "skull")) {
+    if (const Json* sk = r.object(v, path, "skull")) {
+      const std::string sp = json_path(path, "skull");
+      SkullShape shape;
+      shape.length = r.number_f(*sk, sp, "length", json_float(kMinSkullLength), json_float(kMaxSkullLength));
+      shape.height = r.number_f(*sk, sp, "height", json_float(kMinSkullHeight), json_float(kMaxSkullHeight));
+      shape.snout = r.number_f(*sk, sp, "snout", json_float(kMinSnout), json_float(kMaxSnout));
+      if (!r.failed()) a.skull = shape;
+    }
+  }
+  // Optional: how the animal's body looks and its appendages (gen/look.h).
+  if (r.has(v, "look")) {
+    Look look;
+    read_look(r, v, path, "look", look);
+    if (!r.failed()) a.look = look;
+  }
+  if (r.has(v, "appendages")) read_appendages(r, v, path, "appendages", a.appendages);
   return a;
 }
 

@@ -14,12 +14,15 @@
 //       "weight_kg": 600, "spine": [[x, y] × 10],
 //       "front": {"upper": .., "lower": .., "hand": ..},
 //       "hind": {"upper": .., "lower": .., "foot": ..},
-//       "note": "optional free text"}, ...]}
+//       "note": "optional free text",
+//       "skull": {"length": 0.5, "height": 0.36, "snout": 0.62},   (optional, skull_shape.h)
+//       "look": {...}, "appendages": [...]}, ...]}     (optional: the body, gen/look.h)
 //
 // Each animal is also a point of the 29-dimensional raw vector space the PCA works in
 // (to_vector / from_vector, layout in `Dim`).
 
 #include <array>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -27,6 +30,8 @@
 #include <Eigen/Core>
 #include <glm/vec2.hpp>
 
+#include "ossa/gen/look.h"
+#include "ossa/gen/skull_shape.h"
 #include "ossa/io/result.h"
 
 namespace ossa {
@@ -60,6 +65,9 @@ struct Animal {
   std::array<glm::vec2, kSpinePoints> spine{};  // frame units, see kSpineHead..kSpineTailTip
   LimbLengths front;         // upper arm, forearm, hand (birds: the wing)
   LimbLengths hind;          // thigh, shank, foot
+  std::optional<SkullShape> skull;  // the skull's proportions (else its class's default)
+  std::optional<Look> look;  // the body's coat (else drawn from the genome's seed)
+  std::vector<Appendage> appendages;  // ears, horns, mane … the animal has
 };
 
 struct Dataset {

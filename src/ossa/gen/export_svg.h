@@ -23,13 +23,24 @@
 // bounds plus a margin. Bones with non-finite matrices or sizes are left out, so the output is
 // always valid XML with finite numbers.
 
+#include <array>
 #include <string>
 #include <utility>
 #include <vector>
 
+#include <glm/vec2.hpp>
+
 #include "ossa/gen/creature.h"
 
 namespace ossa {
+
+// A body drawn as SVG by body/body_svg.h, one group's content per Layer, in model coordinates
+// (y up, as the bones), and its bounds. export_svg draws each layer's bones, then its body.
+struct SvgBody {
+  std::array<std::string, 3> layers;
+  glm::vec2 lo{0.0f}, hi{0.0f};
+  float opacity = 1.0f;        // < 1: translucent over the bones (the x-ray look)
+};
 
 struct SvgOptions {
   int width_px = 800;          // output width in pixels; the height follows the aspect
@@ -40,6 +51,8 @@ struct SvgOptions {
   int skull_variant = -1;
   bool ground = true;          // draw the ground line at y = 0
   bool title = true;           // write the creature's name as <title>
+  bool bones = true;           // draw the bones (false: the body alone)
+  const SvgBody* body = nullptr;  // the creature's body, drawn with the bones as above
 };
 
 // A complete SVG document (UTF-8) of `creature` in its rest pose.
@@ -49,9 +62,10 @@ std::string creature_svg(const Creature& creature, const SvgOptions& options = {
 // its aspect ratio, with its name written below (escaped). Each creature is drawn with
 // `options` (skull_variant -1 unless a per-creature variant is given in `skull_variants`,
 // which is either empty or one entry per creature).
+// `bodies` is empty or one per creature (then each cell draws its body, options.body ignored).
 std::string sheet_svg(const std::vector<std::pair<std::string, Creature>>& creatures,
                       int columns, const std::vector<int>& skull_variants = {},
-                      const SvgOptions& options = {});
+                      const SvgOptions& options = {}, const std::vector<SvgBody>& bodies = {});
 
 // `text` with &, <, >, " and ' replaced by XML entities.
 std::string xml_escape(const std::string& text);

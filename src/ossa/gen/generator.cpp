@@ -64,6 +64,64 @@ bool place_limb(LimbKind kind, std::vector<LimbGene>& placed, const std::vector<
 
 }  // namespace
 
+SkullShape random_skull_shape(int variant, uint64_t seed) {
+  Rng rng(seed ^ 0x736b756c6c2d7631ull);  // "skull-v1": its own stream of the seed
+  SkullShape s = default_skull_shape(variant);
+  s.length *= static_cast<float>(rng.uniform(0.85, 1.2));
+  s.height *= static_cast<float>(rng.uniform(0.85, 1.2));
+  s.snout = std::clamp(s.snout * static_cast<float>(rng.uniform(0.85, 1.15)), kMinSnout, kMaxSnout);
+  return s;
+}
+
+std::vector<Appendage> random_appendages(const Genome& g, uint64_t seed) {
+  Rng rng(seed ^ 0x617070656e646167ull);  // "appendag": its own stream of the seed
+  int legs = 0, wings = 0, fins = 0, leg_pairs_hip = 0;
+  for (const LimbGene& l : g.limbs) {
+    legs += l.kind == LimbKind::kLeg;
+    wings += l.kind == LimbKind::kWing;
+    fins += l.kind == LimbKind::kFin;
+    leg_pairs_hip += l.kind == LimbKind::kLeg && l.girdle == GirdleKind::kHip;
+  }
+  std::vector<Appendage> out;
+  const auto add = [&](AppendageKind kind, double lo, double hi) {
+    out.push_back({kind, static_cast<float>(rng.uniform(lo, hi))});
+  };
+  const bool swims = legs == 0 && wings == 0 && fins > 0;
+  if (swims) {
+    // Fish and whales: a caudal fin or fluke, usually a dorsal fin.
+    add(AppendageKind::kTailFin, 0.8, 1.2);
+    if (rng.chance(g.skull_variant == 3 ? 0.9 : 0.5)) add(AppendageKind::kDorsalFin, 0.6, 1.2);
+    return out;
+  }
+  switch (g.skull_variant) {
+    case 0:  // mammals: ears; hoofed quadrupeds sometimes horns or antlers
+      if (legs > 0) add(AppendageKind::kEars, 0.7, 1.4);
+      if (legs >= 2 && g.contact == ContactMode::kTip) {
+        const double u = rng.uniform();
+        if (u < 0.2) add(AppendageKind::kHorns, 0.6, 1.3);
+        else if (u < 0.3) add(AppendageKind::kAntlers, 0.6, 1.2);
+      }
+      if (legs >= 2 && rng.chance(0.15)) add(AppendageKind::kMane, 0.6, 1.2);
+      if (legs >= 2 && rng.chance(0.05)) add(AppendageKind::kHump, 0.6, 1.2);
+      if (legs >= 2 && g.pca[kWeightKg] > 1000.0 && rng.chance(0.1)) add(AppendageKind::kTrunk, 0.7, 1.2);
+      break;
+    case 1:  // birds: sometimes a crest
+      if (rng.chance(0.2)) add(AppendageKind::kCrest, 0.6, 1.3);
+      break;
+    case 2: {  // reptiles: crests, frills, sails, plates, shells — now and then
+      const double u = rng.uniform();
+      if (legs > 0 && u < 0.08) add(AppendageKind::kFrill, 0.6, 1.2);
+      else if (legs > 0 && u < 0.16) add(AppendageKind::kSail, 0.6, 1.2);
+      else if (legs > 0 && u < 0.22) add(AppendageKind::kPlates, 0.6, 1.2);
+      else if (legs >= 2 && leg_pairs_hip > 0 && u < 0.26) add(AppendageKind::kShell, 0.8, 1.1);
+      else if (u < 0.38) add(AppendageKind::kCrest, 0.5, 1.2);
+      break;
+    }
+    default: break;
+  }
+  return out;
+}
+
 Generator::Generator(Dataset dataset, PcaModel model) : dataset_(std::move(dataset)), model_(std::move(model)) {}
 
 Result<Generator> Generator::load(const std::string& dataset_path) {
@@ -186,6 +244,7 @@ Genome Generator::complete(std::array<double, kPcaDims> pca, Rng& rng, const Gen
   } else {
     g.skull_variant = rng.chance(0.25) ? 2 : 0;
   }
+  g.skull_shape = random_skull_shape(g.skull_variant, seed);
 
   // Size: a 2 m frame, or length ∝ mass^(1/3) (a 500 kg animal fills the 2 m frame).
   g.scale = 0.002f;
@@ -215,6 +274,9 @@ Genome Generator::complete(std::array<double, kPcaDims> pca, Rng& rng, const Gen
     }
   }
   recompute_rest_angles(g);
+  // The body: a coat and appendages from their own streams of the seed (no other draw moves).
+  g.look = random_look(seed, g.skull_variant, wings > 0);
+  g.appendages = random_appendages(g, seed);
   clamp_to_genome_limits(g);
   return g;
 }
@@ -264,6 +326,12 @@ Result<Genome> Generator::example(std::string_view name, uint64_t seed, const Ge
   Rng rng(seed);
   Genome g = complete(pca, rng, o, animal->name, seed);
   g.skull_variant = skull_for_class(animal->animal_class);
+  g.skull_shape = animal->skull ? *animal->skull : default_skull_shape(g.skull_variant);
+  // The example's own coat and appendages where the dataset gives them.
+  const bool winged = std::any_of(g.limbs.begin(), g.limbs.end(), [](const LimbGene& l) { return l.kind == LimbKind::kWing; });
+  g.look = animal->look ? *animal->look : random_look(seed, g.skull_variant, winged);
+  g.appendages = animal->look || !animal->appendages.empty() ? animal->appendages : random_appendages(g, seed);
+  clamp_to_genome_limits(g);
   return g;
 }
 
@@ -285,7 +353,10 @@ Genome Generator::variation(const Genome& parent, uint64_t seed, double sigma) c
   if (g.tail_vertebrae > 0 && rng.chance(0.2)) g.tail_vertebrae = std::clamp(g.tail_vertebrae + rng.uniform_int(-3, 3), 5, 20);
   if (rng.chance(0.2)) g.rib_interval = static_cast<float>(std::clamp(g.rib_interval + rng.normal(0.0, 0.1), 0.2, 1.0));
   if (g.neck_vertebrae > 7 && rng.chance(0.2)) g.neck_vertebrae = std::clamp(g.neck_vertebrae + rng.uniform_int(-2, 2), 10, 30);
-  if (rng.chance(0.05)) g.skull_variant = rng.uniform_int(0, kSkullVariants - 1);
+  if (rng.chance(0.05)) {
+    g.skull_variant = rng.uniform_int(0, kSkullVariants - 1);
+    g.skull_shape = default_skull_shape(g.skull_variant);
+  }
   if (g.options.true_size) g.scale = static_cast<float>(0.002 * std::cbrt(g.pca[kWeightKg] / 500.0));
   // A neck girdle needs a long neck; drop limbs whose girdle the new body no longer has.
   clamp_to_genome_limits(g);

@@ -60,6 +60,16 @@ class Generator {
   PcaModel model_;
 };
 
+// A skull of `variant` with its proportions varied around the variant's default (length and
+// height by 0.85 … 1.2, snout by 0.85 … 1.15), drawn from `seed` (a stream of its own).
+SkullShape random_skull_shape(int variant, uint64_t seed);
+
+// Appendages drawn from `seed` (a stream of its own) for a body like `genome`'s: swimmers a
+// tail fin and usually a dorsal fin; mammals ears, hoofed ones now and then horns or antlers,
+// a mane, a hump, heavy ones rarely a trunk; birds sometimes a crest; reptiles now and then a
+// frill, sail, plates, shell or crest.
+std::vector<Appendage> random_appendages(const Genome& genome, uint64_t seed);
+
 // Recomputes the rest angles of every leg, arm and fin of `genome` from its current PCA point
 // and layout ([Z 7.2.2] leg placement); wing angles (drawn at random) are kept.
 void recompute_rest_angles(Genome& genome);

@@ -1,5 +1,6 @@
 #include "ossa/gen/genome.h"
 
+#include <algorithm>
 #include <cmath>
 
 #include "ossa/gen/skeleton_builder.h"
@@ -47,6 +48,19 @@ void clamp_to_genome_limits(Genome& g) {
   for (LimbGene& l : g.limbs) {
     for (float& a : l.angles) a = clamp(a, -10.0f, 10.0f);
   }
+  g.skull_shape.length = clamp(g.skull_shape.length, kMinSkullLength, kMaxSkullLength);
+  g.skull_shape.height = clamp(g.skull_shape.height, kMinSkullHeight, kMaxSkullHeight);
+  g.skull_shape.snout = clamp(g.skull_shape.snout, kMinSnout, kMaxSnout);
+  clamp_look(g.look);
+  clamp_appendages(g.appendages);
+}
+
+SkullShape default_skull_shape(int variant) {
+  static constexpr float kLength[kSkullVariants] = {0.30f, 0.22f, 0.30f, 0.34f};
+  static constexpr float kHeight[kSkullVariants] = {0.42f, 0.5f, 0.36f, 0.45f};
+  static constexpr float kSnout[kSkullVariants] = {0.5f, 0.55f, 0.6f, 0.4f};
+  const int v = std::clamp(variant, 0, kSkullVariants - 1);
+  return {kLength[v], kHeight[v], kSnout[v]};
 }
 
 const char* skull_variant_name(int variant) {
@@ -79,13 +93,19 @@ Json genome_to_json(const Genome& g) {
               {"limbs", limbs},
               {"contact", contact_mode_name(g.contact)},
               {"skull", g.skull_variant},
+              {"skull_shape",
+               {{"length", json_float(g.skull_shape.length)},
+                {"height", json_float(g.skull_shape.height)},
+                {"snout", json_float(g.skull_shape.snout)}}},
               {"scale", json_float(g.scale)},
               {"options",
                {{"arc_length_vertebrae", g.options.arc_length_vertebrae},
                 {"neck_girdle", g.options.neck_girdle},
                 {"multi_limb", g.options.multi_limb},
                 {"true_size", g.options.true_size},
-                {"smooth_skinning", g.options.smooth_skinning}}}};
+                {"smooth_skinning", g.options.smooth_skinning}}},
+              {"look", look_to_json(g.look)},
+              {"appendages", appendages_to_json(g.appendages)}};
 }
 
 Result<Genome> genome_from_json(const Json& doc, std::string_view file) {
@@ -96,8 +116,8 @@ Result<Genome> genome_from_json(const Json& doc, std::string_view file) {
     r.fail("format", std::string("expected \"") + kFormat + "\", got \"" + format + "\"");
   }
   const long long version = r.integer(doc, "", "version", 1, 1000000);
-  if (!r.failed() && version != Genome::kVersion) {
-    r.fail("version", "expected " + std::to_string(Genome::kVersion) + " (this build reads version " +
+  if (!r.failed() && version > Genome::kVersion) {
+    r.fail("version", "expected 1 to " + std::to_string(Genome::kVersion) + " (this build reads versions up to " +
                           std::to_string(Genome::kVersion) + "), got " + std::to_string(version));
   }
   Genome g;
@@ -164,6 +184,30 @@ Result<Genome> genome_from_json(const Json& doc, std::string_view file) {
       g.options.multi_limb = r.boolean_or(*o, "options", "multi_limb", false);
       g.options.true_size = r.boolean_or(*o, "options", "true_size", false);
       g.options.smooth_skinning = r.boolean_or(*o, "options", "smooth_skinning", true);
+    }
+  }
+  // Version 2: the body's look and appendages. A version 1 file wears a look drawn from its
+  // seed and no appendages (it was written before bodies existed).
+  g.look = random_look(g.seed, g.skull_variant, std::any_of(g.limbs.begin(), g.limbs.end(), [](const LimbGene& l) {
+                         return l.kind == LimbKind::kWing;
+                       }));
+  g.skull_shape = default_skull_shape(g.skull_variant);
+  if (version >= 2) {
+    if (r.has(doc, "skull_shape")) {
+      if (const Json* ss = r.object(doc, "", "skull_shape")) {
+        g.skull_shape.length = r.number_f(*ss, "skull_shape", "length", json_float(kMinSkullLength), json_float(kMaxSkullLength));
+        g.skull_shape.height = r.number_f(*ss, "skull_shape", "height", json_float(kMinSkullHeight), json_float(kMaxSkullHeight));
+        g.skull_shape.snout = r.number_f(*ss, "skull_shape", "snout", json_float(kMinSnout), json_float(kMaxSnout));
+      }
+    }
+    if (r.has(doc, "look")) read_look(r, doc, "", "look", g.look);
+    if (r.has(doc, "appendages")) read_appendages(r, doc, "", "appendages", g.appendages);
+  } else if (!r.failed()) {
+    for (const char* key : {"look", "appendages", "skull_shape"}) {
+      if (r.has(doc, key)) {
+        r.fail(key, "needs version 2 (version 1 files have no look, appendages or skull_shape)");
+        break;
+      }
     }
   }
   if (!r.failed()) {

@@ -11,7 +11,13 @@
 //                  "angles": [-1.9, 0.4, -0.5] }, ... ],
 //     "contact": "tip", "skull": 0, "scale": 0.0021,
 //     "options": { "arc_length_vertebrae": true, "neck_girdle": false, "multi_limb": false,
-//                  "true_size": false, "smooth_skinning": true } }
+//                  "true_size": false, "smooth_skinning": true },
+//     "look": { "base": "#8a5a3c", "belly": "#d8c3a0", "pattern": "none", ... },
+//     "appendages": [ { "kind": "ears", "size": 1 }, { "kind": "mane", "size": 1 } ] }
+//
+// Version 2 added `look` and `appendages` (gen/look.h: the body's coat, fatness, wing cover and
+// optional parts; they change no bone). Version 1 files still load: their look is drawn from
+// their seed (random_look) and they have no appendages.
 //
 // `pca` holds the 29 dimensions of gen/dataset.h by their dim_name(). `angles` are the rest
 // pose of the limb chain: the upper bone's absolute angle in model space, then the lower bone
@@ -26,6 +32,8 @@
 
 #include "ossa/gen/creature.h"
 #include "ossa/gen/dataset.h"
+#include "ossa/gen/look.h"
+#include "ossa/gen/skull_shape.h"
 #include "ossa/io/json.h"
 #include "ossa/io/result.h"
 
@@ -42,6 +50,7 @@ struct GenomeOptions {
                                      // the key (older ones) get true. Changes no bone.
 };
 
+
 struct LimbGene {
   LimbKind kind = LimbKind::kLeg;
   GirdleKind girdle = GirdleKind::kShoulder;
@@ -50,7 +59,7 @@ struct LimbGene {
 };
 
 struct Genome {
-  static constexpr int kVersion = 1;
+  static constexpr int kVersion = 2;         // 2: look and appendages; 1 still loads
 
   std::string name;                          // example name or "random"
   uint64_t seed = 0;                         // the seed the choices were drawn from (info only)
@@ -63,8 +72,11 @@ struct Genome {
   std::vector<LimbGene> limbs;               // one per limb pair
   ContactMode contact = ContactMode::kTip;
   int skull_variant = 0;                     // 0 mammal, 1 bird, 2 reptile, 3 fish
+  SkullShape skull_shape;                    // its proportions (default: the variant's)
   float scale = 0.002f;                      // metres per frame unit
   GenomeOptions options;
+  Look look;                                 // the body's coat, fatness, wing cover (gen/look.h)
+  std::vector<Appendage> appendages;         // ears, horns, mane … (at most one of each kind)
 };
 
 constexpr int kSkullVariants = 4;
@@ -92,7 +104,8 @@ struct PcaRange {
   double min, max;
 };
 PcaRange pca_range(int dim);
-// Clamps every field into the ranges above (NaN becomes the range's low end).
+// Clamps every field into the ranges above (NaN becomes the range's low end), the look and
+// appendages into theirs (gen/look.h).
 void clamp_to_genome_limits(Genome& genome);
 const char* skull_variant_name(int variant);
 

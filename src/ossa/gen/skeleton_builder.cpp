@@ -6,6 +6,7 @@
 #include <map>
 
 #include "ossa/gen/body_plan.h"
+#include "ossa/gen/true_size.h"
 #include "ossa/math/angle.h"
 
 namespace ossa {
@@ -32,6 +33,10 @@ class Assembler {
     c_.contact = g.contact;
     c_.skull_variant = g.skull_variant;
     c_.smooth_skinning = g.options.smooth_skinning;
+    c_.skull_snout = g.skull_shape.snout;
+    c_.look = g.look;
+    c_.appendages = g.appendages;
+    c_.weight_kg = static_cast<float>(g.pca[kWeightKg]);
     bone_ending_at_.assign(plan.joints.size(), -1);
   }
 
@@ -166,13 +171,13 @@ class Assembler {
         return {};
       }
       case Symbol::kSkull: {
-        static constexpr float kLength[kSkullVariants] = {0.30f, 0.22f, 0.30f, 0.34f};
-        static constexpr float kWidth[kSkullVariants] = {0.42f, 0.5f, 0.36f, 0.45f};
+        // Length and height from the genome's skull shape (its variant's default for files
+        // written before skulls had proportions), the angle by variant.
         static constexpr float kAngle[kSkullVariants] = {-0.35f, -0.15f, -0.2f, 0.0f};
         const int v = std::clamp(g_.skull_variant, 0, kSkullVariants - 1);
-        const float length = kLength[v] * plan_.body_size;
+        const float length = g_.skull_shape.length * plan_.body_size;
         c_.skull = emit("skull", BoneKind::kSkull, bone_ending_at_[0], plan_.joints[0], kAngle[v],
-                        length, kWidth[v] * length, Layer::kBody);
+                        length, g_.skull_shape.height * length, Layer::kBody);
         return {};
       }
       case Symbol::kRibs: {  // Ribs on back vertebrae within [0, rib_interval] of the back
@@ -298,7 +303,9 @@ Result<Creature> build_creature(const Genome& genome) {
     return Error::at("", "scale", "expected a number > 0");
   }
   const BodyPlan plan = plan_body(genome);
-  return Assembler(genome, plan).run();
+  Result<Creature> creature = Assembler(genome, plan).run();
+  if (creature) creature->body_mass_kg = expected_body_mass_kg(*creature, genome);
+  return creature;
 }
 
 }  // namespace ossa

@@ -146,6 +146,7 @@ void MouseKeyboardInput::handle_event(const SDL_Event& e, ActionPresses& presses
           case SDL_SCANCODE_ESCAPE: presses.set(Action::kQuit); quit_ = true; break;
           case SDL_SCANCODE_N: presses.set(Action::kNextCreature); break;
           case SDL_SCANCODE_C: presses.set(Action::kNextCharacter); break;
+          case SDL_SCANCODE_B: presses.set(Action::kNextLook); break;
           case SDL_SCANCODE_M: presses.set(Action::kRandomCreature); break;
           case SDL_SCANCODE_H: presses.set(Action::kToggleHud); break;
           case SDL_SCANCODE_F12:

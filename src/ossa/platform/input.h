@@ -42,6 +42,7 @@ enum class Action : uint8_t {
   kRecord,          // keyboard R / gamepad Start: start/stop recording a replay
   kQuit,            // keyboard Escape
   kNextCharacter,   // keyboard C / gamepad left shoulder: the next shipped rigged character
+  kNextLook,        // keyboard B: the creatures' look, body → x-ray → bones → body
   kCount
 };
 

@@ -93,6 +93,9 @@ int CreatureBatch::add(const SpriteMesh& mesh, const Skeleton& skeleton, int tex
 void CreatureBatch::clear() {
   creatures_.clear();
   vertices_.clear();
+  body_vertices_.clear();
+  body_mesh_indices_.clear();
+  body_indices_.clear();
   mesh_indices_.clear();
   mesh_indices_total_ = 0;
   bone_lines_.clear();
@@ -117,7 +120,9 @@ void CreatureBatch::set_world(int instance, std::span<const Mat2x3> world) {
   const bool ok = job.run();
   OSSA_ASSERT(ok, "set_world: palette job failed");
   (void)ok;
-  if (!c.mid_joints.empty()) mid_joint_palette(c.mid_joints, world, palette(instance));
+  if (!c.mid_joints.empty()) {
+    mid_joint_palette(c.mid_joints, world, palette(instance).first(static_cast<size_t>(c.bone_count) + c.mid_joints.size()));
+  }
 }
 
 void CreatureBatch::set_pose(int instance, const Skeleton& skeleton,
@@ -149,7 +154,7 @@ void CreatureBatch::rebuild_geometry() {
     for (int slot = 0; slot < slots; ++slot) {
     const uint32_t slot_first = static_cast<uint32_t>(indices.size());
     for (const Instance& c : creatures_) {
-      if (c.texture_slot != slot) continue;
+      if (c.texture_slot != slot || c.body) continue;
       const uint32_t begin = c.index_base + c.layer_begin[l];
       const uint32_t end = c.index_base + c.layer_begin[l + 1];
       for (uint32_t i = begin; i < end; ++i) {
@@ -176,6 +181,7 @@ void CreatureBatch::rebuild_geometry() {
   }
   mesh_va_.upload(vertices_, indices, GL_STATIC_DRAW);
   bone_va_.upload(bone_lines_, {}, GL_STATIC_DRAW);
+  rebuild_body_geometry();
   geometry_dirty_ = false;
 }
 
@@ -204,6 +210,7 @@ void CreatureBatch::upload_palettes() {
   glBindBuffer(GL_TEXTURE_BUFFER, palette_buffer_);
   glBufferSubData(GL_TEXTURE_BUFFER, 0, static_cast<GLsizeiptr>(palette_.size() * sizeof(Mat2x3)),
                   palette_.data());
+  ++palette_uploads_;
   glBindBuffer(GL_TEXTURE_BUFFER, 0);
 }
 
@@ -218,30 +225,32 @@ int CreatureBatch::draw(const ShaderProgram& skinned, unsigned atlas_texture) {
   return draw(skinned, textures);
 }
 
-int CreatureBatch::draw(const ShaderProgram& skinned, std::span<const unsigned> textures) {
-  if (geometry_dirty_) rebuild_geometry();
+void CreatureBatch::bind_palette(const ShaderProgram& program) {
   ensure_palette_buffer();
   glActiveTexture(GL_TEXTURE1);
   glBindTexture(GL_TEXTURE_BUFFER, palette_texture_);
-  skinned.set("u_atlas", 0);
-  skinned.set("u_palette", 1);
+  program.set("u_palette", 1);
   glActiveTexture(GL_TEXTURE0);
+}
+
+int CreatureBatch::draw(const ShaderProgram& skinned, std::span<const unsigned> textures) {
   int calls = 0;
-  unsigned bound = 0;
-  bool any_bound = false;
-  for (int l = 0; l < kLayerCount; ++l) {
-    for (size_t slot = 0; slot < slot_ranges_.size(); ++slot) {
-      const auto& [first, count] = slot_ranges_[slot][static_cast<size_t>(l)];
-      if (count == 0) continue;
-      const unsigned texture = slot < textures.size() ? textures[slot] : (textures.empty() ? 0u : textures[0]);
-      if (!any_bound || texture != bound) {
-        glBindTexture(GL_TEXTURE_2D, texture);
-        bound = texture;
-        any_bound = true;
-      }
-      mesh_va_.draw_indices(GL_TRIANGLES, static_cast<int>(first), static_cast<int>(count));
-      ++calls;
-    }
+  for (int l = 0; l < kLayerCount; ++l) calls += draw_layer(skinned, textures, l);
+  return calls;
+}
+
+int CreatureBatch::draw_layer(const ShaderProgram& skinned, std::span<const unsigned> textures, int l) {
+  if (geometry_dirty_) rebuild_geometry();
+  bind_palette(skinned);
+  skinned.set("u_atlas", 0);
+  int calls = 0;
+  for (size_t slot = 0; slot < slot_ranges_.size(); ++slot) {
+    const auto& [first, count] = slot_ranges_[slot][static_cast<size_t>(l)];
+    if (count == 0) continue;
+    const unsigned texture = slot < textures.size() ? textures[slot] : (textures.empty() ? 0u : textures[0]);
+    glBindTexture(GL_TEXTURE_2D, texture);
+    mesh_va_.draw_indices(GL_TRIANGLES, static_cast<int>(first), static_cast<int>(count));
+    ++calls;
   }
   return calls;
 }

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 #include <vector>
 
 #include <glm/common.hpp>
@@ -10,6 +11,7 @@
 #include "ossa/platform/window.h"
 #include "ossa/render/capture.h"
 #include "ossa/render/creature_batch.h"
+#include "ossa/render/debug_draw.h"
 #include "ossa/render/gl.h"
 #include "ossa/render/render_target.h"
 #include "ossa/render/sprite_mesh.h"
@@ -47,7 +49,16 @@ Result<Image> render_creature_image(Renderer& renderer, const Atlas& atlas, cons
   auto mesh = try_build_sprite_mesh(creature, atlas.sprites);
   if (!mesh.ok()) return Error{mesh.message()};
   if (mesh->vertices.empty()) return Error{"the creature has no bone sprites to draw"};
-  const Box bounds = sprite_mesh_bounds(*mesh);
+  const bool sprites = options.look != CreatureLook::kBody;
+  std::optional<BodyMesh> body;
+  if (options.look != CreatureLook::kBones) {
+    auto b = try_build_body(creature);
+    if (!b.ok()) return Error{b.message()};
+    if (!b->vertices.empty()) body = std::move(b.value());
+  }
+  Box bounds = sprite_mesh_bounds(*mesh);
+  if (body) bounds = sprites ? bounds.united(body_bounds(*body)) : body_bounds(*body);
+  if (options.ground) bounds.min_ws.y = std::min(bounds.min_ws.y, 0.0f);
   if (!std::isfinite(bounds.min_ws.x + bounds.min_ws.y + bounds.max_ws.x + bounds.max_ws.y)) {
     return Error{"the creature's rest pose is not finite"};
   }
@@ -64,14 +75,39 @@ Result<Image> render_creature_image(Renderer& renderer, const Atlas& atlas, cons
     const Skeleton& skeleton = creature.skeleton;
     const bool have_rest = creature.rest_pose.locals.size() == static_cast<size_t>(skeleton.bone_count());
     CreatureBatch batch;
-    const int id = batch.add(*mesh, skeleton);
-    batch.set_pose(id, skeleton, have_rest ? creature.rest_pose.locals : skeleton.rest_locals(),
-                   Mat2x3::identity());
+    const auto& locals = have_rest ? creature.rest_pose.locals : skeleton.rest_locals();
+    if (sprites) batch.set_pose(batch.add(*mesh, skeleton), skeleton, locals, Mat2x3::identity());
+    if (body) {
+      const int id = batch.add_body(*body, skeleton);
+      batch.set_pose(id, skeleton, locals, Mat2x3::identity());
+      if (options.ground) batch.set_floor(id, flat_floor(0.0f));  // the flesh rests on the ground line
+    }
     batch.upload_palettes();
     renderer.begin_frame(*target, glm::vec4(0.0f));  // transparent black: see composite_over
-    renderer.camera.fit(bounds, static_cast<float>(options.width) / static_cast<float>(options.height),
-                        options.margin);
-    renderer.draw_batch(batch, atlas.texture);
+    const float aspect = static_cast<float>(options.width) / static_cast<float>(options.height);
+    renderer.camera.fit(bounds, aspect, options.margin);
+    if (options.frame_height > 0.0f) {
+      // A common scale (a contact sheet at true relative size): the creature stands on the
+      // image's lower edge plus the margin.
+      renderer.camera.half_height = 0.5f * options.frame_height;
+      renderer.camera.center_ws = {0.5f * (bounds.min_ws.x + bounds.max_ws.x),
+                                   bounds.min_ws.y - options.margin * options.frame_height + renderer.camera.half_height};
+    }
+    if (options.ground && options.frame_height <= 0.0f) {
+      // The ground near the lower edge: the creature stands on it, little soil shows.
+      const Box view = renderer.camera.visible_box();
+      const float below = std::max(view.min_ws.y - bounds.min_ws.y, 0.0f);
+      renderer.camera.center_ws.y += (0.0f - options.margin * 0.5f * (view.max_ws.y - view.min_ws.y)) - (view.min_ws.y + below);
+    }
+    if (options.ground) {
+      DebugDraw ground;
+      const Box view = renderer.camera.visible_box();
+      ground.add_box({{view.min_ws.x - 1.0f, view.min_ws.y - 1.0f}, {view.max_ws.x + 1.0f, 0.0f}}, {0.42f, 0.36f, 0.27f, 1.0f}, true);
+      ground.add_line({view.min_ws.x - 1.0f, 0.0f}, {view.max_ws.x + 1.0f, 0.0f}, {0.25f, 0.2f, 0.14f, 1.0f});
+      renderer.draw_debug(ground);
+    }
+    const Texture* textures[1] = {&atlas.texture};
+    renderer.draw_creatures(batch, textures, options.look);
     image = target->read();
   }
   const bool gl_ok = check_gl("render_creature_image");

@@ -9,8 +9,9 @@
 //   o.height = 600;                                     // transparent background by default
 //   Status s = write_creature_png("out/horse.png", creature, o);   // needs a current GL context
 //
-// Space: world +y up is up in the image; the creature's bind-pose sprites (every vertex of its
-// SpriteMesh) are centred and fill the image up to the margin on the tighter axis.
+// Space: world +y up is up in the image; the creature as drawn in its rest pose (its body's and
+// its sprites' vertices, as the look shows them) is centred and fills the image up to the
+// margin on the tighter axis.
 
 #include <string>
 
@@ -30,6 +31,9 @@ struct CreatureImageOptions {
   glm::vec4 background{0.0f};  // straight RGBA in [0, 1]; alpha 0 = transparent
   float margin = 0.05f;        // free space around the creature, as a fraction of its size
                                // on the tighter axis, >= 0
+  CreatureLook look = CreatureLook::kBody;  // body, x-ray (body over bones) or bone sprites
+  bool ground = false;         // a ground strip under y = 0 (the creature stands on it)
+  float frame_height = 0.0f;   // metres of world the image's height shows (0: fit the creature)
 };
 
 // Draws `creature` with `renderer` and `atlas` into an offscreen target and reads it back

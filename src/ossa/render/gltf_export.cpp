@@ -16,6 +16,8 @@
 #include <utility>
 #include <vector>
 
+#include "ossa/body/body_mesh.h"
+#include "ossa/body/coat.h"
 #include "ossa/io/file.h"
 #include "ossa/render/sprite_mesh.h"
 #include "ossa/skeleton/pose.h"
@@ -91,6 +93,7 @@ struct ExportMesh {
     glm::vec2 position{0.0f};
     float z = 0.0f;
     glm::vec2 uv{0.0f};
+    glm::vec4 colour{1.0f};                          // linear RGBA (bodies)
     std::array<std::pair<int, float>, 4> weights{};  // (bone, weight); weight 0: unused
   };
   std::vector<Vertex> vertices;
@@ -147,7 +150,7 @@ Result<ExportMesh> smooth_sprites(const Creature& creature, const SpriteSet& spr
     ExportMesh::Vertex v;
     v.position = mesh.rest_positions.size() == mesh.vertices.size() ? mesh.rest_positions[i] : sv.position_ms;
     v.z = depth(s, sv.bones[0]);
-    v.uv = {sv.uv.x, 1.0f - sv.uv.y};  // sprite meshes' t runs down, Assimp's v up
+    v.uv = sv.uv;  // t up in both (sprite_mesh.h SpriteInfo::uv_min, Assimp)
     int used = 0;
     const auto add = [&](int bone, float w) {
       if (!(w > 0.0f)) return;
@@ -176,6 +179,128 @@ Result<ExportMesh> smooth_sprites(const Creature& creature, const SpriteSet& spr
   }
   out.indices.assign(mesh.indices.begin(), mesh.indices.end());
   return out;
+}
+
+// Adds `w` of `bone` to a vertex's weights (merging a bone already there).
+void add_weight(ExportMesh::Vertex& v, int& used, int bone, float w) {
+  if (!(w > 0.0f)) return;
+  for (int k = 0; k < used; ++k) {
+    if (v.weights[static_cast<size_t>(k)].first == bone) {
+      v.weights[static_cast<size_t>(k)].second += w;
+      return;
+    }
+  }
+  if (used < 4) v.weights[static_cast<size_t>(used++)] = {bone, w};
+}
+
+float linear(float srgb) { return srgb <= 0.04045f ? srgb / 12.92f : std::pow((srgb + 0.055f) / 1.055f, 2.4f); }
+
+// The body (body/body_mesh.h) in its rest pose: each part's outline stroke just behind its
+// fill, the far limbs behind the body and the near ones in front (as its draw order); vertex
+// colours the coat (countershading, the pattern at the vertex as body.frag draws it per
+// pixel, far limbs darker); weights with every mid-joint frame folded into its two bones by
+// its turn and a foot's level frame into the foot (exact at rest, as for the sprites).
+ExportMesh body_geometry(const Creature& creature) {
+  const BodyMesh body = build_body(creature);
+  const int n = creature.skeleton.bone_count();
+  ExportMesh out;
+  out.vertices.resize(body.vertices.size());
+  std::vector<bool> done(body.vertices.size(), false);
+  for (size_t p = 0; p < body.parts.size(); ++p) {
+    const BodyPart& part = body.parts[p];
+    const float z = 0.001f * (static_cast<float>(part.layer) - 1.0f) + 2e-6f * static_cast<float>(p);
+    const auto place = [&](uint32_t first, uint32_t count, float dz) {
+      for (uint32_t i = first; i < first + count; ++i) {
+        const uint32_t id = body.indices[i];
+        out.indices.push_back(id);
+        if (done[id]) continue;
+        done[id] = true;
+        const BodyVertex& bv = body.vertices[id];
+        ExportMesh::Vertex& v = out.vertices[id];
+        v.position = bv.position_ms;
+        v.z = z + dz;
+        v.uv = bv.coat_uv;
+        const glm::vec3 base(bv.colour[0] / 255.0f, bv.colour[1] / 255.0f, bv.colour[2] / 255.0f);
+        const glm::vec3 pattern(bv.pattern[0] / 255.0f, bv.pattern[1] / 255.0f, bv.pattern[2] / 255.0f);
+        const float amount = bv.pattern[3] / 255.0f * coat_pattern(static_cast<CoatPattern>(bv.pattern_kind), bv.coat_uv);
+        const glm::vec3 rgb = glm::mix(base, pattern, amount);
+        v.colour = {linear(rgb.r), linear(rgb.g), linear(rgb.b), bv.colour[3] / 255.0f};
+        int used = 0;
+        for (size_t k = 0; k < 4; ++k) {
+          const int b = bv.bones[k];
+          const float w = bv.weights[k];
+          if (b < n) {
+            add_weight(v, used, b, w);
+          } else if (b - n < static_cast<int>(body.mid_joints.size())) {
+            const MidJoint& j = body.mid_joints[static_cast<size_t>(b - n)];
+            if (j.level) {
+              add_weight(v, used, j.child, w);
+            } else {
+              add_weight(v, used, j.parent, w * (1.0f - j.turn));
+              add_weight(v, used, j.child, w * j.turn);
+            }
+          }
+        }
+        float total = 0.0f;
+        for (const auto& [bone, wk] : v.weights) total += wk;
+        for (auto& [bone, wk] : v.weights) wk = total > 0.0f ? wk / total : 0.0f;
+      }
+    };
+    place(part.stroke_first_index, part.stroke_index_count, -1e-6f);
+    place(part.first_index, part.index_count, 0.0f);
+  }
+  return out;
+}
+
+// An aiMesh of `geometry` skinned to the skeleton's bones (one mesh bone per skeleton bone,
+// the inverse rest matrix as Assimp's offset), with vertex colours when `colours`.
+aiMesh* skinned_mesh(const ExportMesh& geometry, const Skeleton& s, const std::vector<Mat2x3>& model,
+                     const std::string& name, unsigned material, bool colours) {
+  const int n = s.bone_count();
+  aiMesh* mesh = new aiMesh;
+  mesh->mName = name;
+  mesh->mPrimitiveTypes = aiPrimitiveType_TRIANGLE;
+  mesh->mMaterialIndex = material;
+  mesh->mNumVertices = static_cast<unsigned>(geometry.vertices.size());
+  mesh->mVertices = new_array<aiVector3D>(geometry.vertices.size());
+  mesh->mNormals = new_array<aiVector3D>(geometry.vertices.size());
+  mesh->mTextureCoords[0] = new_array<aiVector3D>(geometry.vertices.size());
+  mesh->mNumUVComponents[0] = 2;
+  if (colours) mesh->mColors[0] = new_array<aiColor4D>(geometry.vertices.size());
+  std::vector<std::vector<aiVertexWeight>> weights(static_cast<size_t>(n));
+  for (size_t i = 0; i < geometry.vertices.size(); ++i) {
+    const ExportMesh::Vertex& v = geometry.vertices[i];
+    mesh->mVertices[i] = aiVector3D(v.position.x, v.position.y, v.z);
+    mesh->mNormals[i] = aiVector3D(0.0f, 0.0f, 1.0f);
+    mesh->mTextureCoords[0][i] = aiVector3D(v.uv.x, v.uv.y, 0.0f);
+    if (colours) mesh->mColors[0][i] = aiColor4D(v.colour.r, v.colour.g, v.colour.b, v.colour.a);
+    for (const auto& [bone, w] : v.weights) {
+      if (w > 0.0f) weights[static_cast<size_t>(bone)].emplace_back(static_cast<unsigned>(i), w);
+    }
+  }
+  mesh->mNumFaces = static_cast<unsigned>(geometry.indices.size() / 3);
+  mesh->mFaces = new_array<aiFace>(mesh->mNumFaces);
+  for (unsigned f = 0; f < mesh->mNumFaces; ++f) {
+    aiFace& face = mesh->mFaces[f];
+    face.mNumIndices = 3;
+    face.mIndices = new unsigned[3];
+    for (unsigned k = 0; k < 3; ++k) face.mIndices[k] = geometry.indices[3 * f + k];
+  }
+  // One mesh bone per skeleton bone (a zero-length bone of a smooth mesh draws no sprite and
+  // has no weights), the inverse rest (bind) matrix as Assimp's offset matrix.
+  mesh->mNumBones = static_cast<unsigned>(n);
+  mesh->mBones = new aiBone*[static_cast<size_t>(n)];
+  for (int i = 0; i < n; ++i) {
+    aiBone* bone = new aiBone;
+    bone->mName = s.name(i);
+    bone->mOffsetMatrix = to_ai(inverse(model[static_cast<size_t>(i)]));  // mesh (model) space → bone space
+    const std::vector<aiVertexWeight>& w = weights[static_cast<size_t>(i)];
+    bone->mNumWeights = static_cast<unsigned>(w.size());
+    bone->mWeights = new_array<aiVertexWeight>(w.size());
+    std::copy(w.begin(), w.end(), bone->mWeights);
+    mesh->mBones[i] = bone;
+  }
+  return mesh;
 }
 
 }  // namespace
@@ -207,9 +332,14 @@ Status export_gltf(const Creature& creature, const std::string& path, const Gltf
     const int p = s.parent(i);
     children[p < 0 ? static_cast<size_t>(n) : static_cast<size_t>(p)].push_back(node);
   }
-  aiNode* mesh_node = new aiNode((creature.name.empty() ? "creature" : creature.name) + "_mesh");
-  mesh_node->mNumMeshes = 1;
-  mesh_node->mMeshes = new unsigned[1]{0};
+  // The meshes the look asks for: the bone sprites, the body, or both (x-ray).
+  const std::string base = creature.name.empty() ? "creature" : creature.name;
+  const bool sprites = options.look != CreatureLook::kBody, flesh = options.look != CreatureLook::kBones;
+  const unsigned mesh_count = (sprites ? 1u : 0u) + (flesh ? 1u : 0u);
+  aiNode* mesh_node = new aiNode(base + "_mesh");
+  mesh_node->mNumMeshes = mesh_count;
+  mesh_node->mMeshes = new unsigned[mesh_count];
+  for (unsigned k = 0; k < mesh_count; ++k) mesh_node->mMeshes[k] = k;
   children[static_cast<size_t>(n)].push_back(mesh_node);
   for (size_t i = 0; i <= static_cast<size_t>(n); ++i) {
     aiNode* parent = i == static_cast<size_t>(n) ? scene->mRootNode : nodes[i];
@@ -222,57 +352,25 @@ Status export_gltf(const Creature& creature, const std::string& path, const Gltf
   }
 
   // Sprite mesh: rigid quads, or the smooth sprite mesh, in the rest pose (= the bind pose).
-  ExportMesh geometry;
-  if (creature.smooth_skinning) {
-    Result<ExportMesh> smooth = smooth_sprites(creature, options.sprites ? *options.sprites : default_sprite_set());
-    if (!smooth.ok()) return Error::at(path, "", smooth.message());
-    geometry = std::move(smooth.value());
-  } else {
-    geometry = rigid_quads(creature, model);
-  }
-  aiMesh* mesh = new aiMesh;
-  mesh->mName = (creature.name.empty() ? "creature" : creature.name) + "_sprites";
-  mesh->mPrimitiveTypes = aiPrimitiveType_TRIANGLE;
-  mesh->mMaterialIndex = 0;
-  mesh->mNumVertices = static_cast<unsigned>(geometry.vertices.size());
-  mesh->mVertices = new_array<aiVector3D>(geometry.vertices.size());
-  mesh->mNormals = new_array<aiVector3D>(geometry.vertices.size());
-  mesh->mTextureCoords[0] = new_array<aiVector3D>(geometry.vertices.size());
-  mesh->mNumUVComponents[0] = 2;
-  std::vector<std::vector<aiVertexWeight>> weights(static_cast<size_t>(n));
-  for (size_t i = 0; i < geometry.vertices.size(); ++i) {
-    const ExportMesh::Vertex& v = geometry.vertices[i];
-    mesh->mVertices[i] = aiVector3D(v.position.x, v.position.y, v.z);
-    mesh->mNormals[i] = aiVector3D(0.0f, 0.0f, 1.0f);
-    mesh->mTextureCoords[0][i] = aiVector3D(v.uv.x, v.uv.y, 0.0f);
-    for (const auto& [bone, w] : v.weights) {
-      if (w > 0.0f) weights[static_cast<size_t>(bone)].emplace_back(static_cast<unsigned>(i), w);
+  std::vector<aiMesh*> meshes;
+  if (sprites) {
+    ExportMesh geometry;
+    if (creature.smooth_skinning) {
+      Result<ExportMesh> smooth = smooth_sprites(creature, options.sprites ? *options.sprites : default_sprite_set());
+      if (!smooth.ok()) return Error::at(path, "", smooth.message());
+      geometry = std::move(smooth.value());
+    } else {
+      geometry = rigid_quads(creature, model);
     }
+    meshes.push_back(skinned_mesh(geometry, s, model, base + "_sprites", 0, false));
   }
-  mesh->mNumFaces = static_cast<unsigned>(geometry.indices.size() / 3);
-  mesh->mFaces = new_array<aiFace>(mesh->mNumFaces);
-  for (unsigned f = 0; f < mesh->mNumFaces; ++f) {
-    aiFace& face = mesh->mFaces[f];
-    face.mNumIndices = 3;
-    face.mIndices = new unsigned[3];
-    for (unsigned k = 0; k < 3; ++k) face.mIndices[k] = geometry.indices[3 * f + k];
+  if (flesh) {
+    if (s.bone_count() > 255) return Error::at(path, "skeleton", "expected at most 255 bones for a body mesh");
+    meshes.push_back(skinned_mesh(body_geometry(creature), s, model, base + "_body", sprites ? 1u : 0u, true));
   }
-  // One mesh bone per skeleton bone (a zero-length bone of a smooth mesh draws no sprite and
-  // has no weights), the inverse rest (bind) matrix as Assimp's offset matrix.
-  mesh->mNumBones = static_cast<unsigned>(n);
-  mesh->mBones = new aiBone*[static_cast<size_t>(n)];
-  for (int i = 0; i < n; ++i) {
-    aiBone* bone = new aiBone;
-    bone->mName = s.name(i);
-    bone->mOffsetMatrix = to_ai(inverse(model[static_cast<size_t>(i)]));  // mesh (model) space → bone space
-    const std::vector<aiVertexWeight>& w = weights[static_cast<size_t>(i)];
-    bone->mNumWeights = static_cast<unsigned>(w.size());
-    bone->mWeights = new_array<aiVertexWeight>(w.size());
-    std::copy(w.begin(), w.end(), bone->mWeights);
-    mesh->mBones[i] = bone;
-  }
-  scene->mNumMeshes = 1;
-  scene->mMeshes = new aiMesh*[1]{mesh};
+  scene->mNumMeshes = static_cast<unsigned>(meshes.size());
+  scene->mMeshes = new aiMesh*[meshes.size()];
+  std::copy(meshes.begin(), meshes.end(), scene->mMeshes);
 
   aiMaterial* material = new aiMaterial;
   const aiString material_name("bone");
@@ -290,8 +388,22 @@ Status export_gltf(const Creature& creature, const std::string& path, const Gltf
     material->AddProperty(&tex, AI_MATKEY_TEXTURE_DIFFUSE(0));
     material->AddProperty(&tex, AI_MATKEY_TEXTURE(aiTextureType_BASE_COLOR, 0));
   }
-  scene->mNumMaterials = 1;
-  scene->mMaterials = new aiMaterial*[1]{material};
+  // The body's material: white, its colours from the vertices (glTF's COLOR_0 multiplies the
+  // base colour).
+  aiMaterial* coat = new aiMaterial;
+  const aiString coat_name("coat");
+  coat->AddProperty(&coat_name, AI_MATKEY_NAME);
+  const aiColor4D white(1.0f, 1.0f, 1.0f, 1.0f);
+  coat->AddProperty(&white, 1, AI_MATKEY_COLOR_DIFFUSE);
+  coat->AddProperty(&white, 1, AI_MATKEY_BASE_COLOR);
+  std::vector<aiMaterial*> materials;
+  if (sprites) materials.push_back(material);
+  else delete material;
+  if (flesh) materials.push_back(coat);
+  else delete coat;
+  scene->mNumMaterials = static_cast<unsigned>(materials.size());
+  scene->mMaterials = new aiMaterial*[materials.size()];
+  std::copy(materials.begin(), materials.end(), scene->mMaterials);
 
   MemoryFiles files;
   {

@@ -27,6 +27,7 @@
 
 #include <string>
 
+#include "ossa/body/body_mesh.h"
 #include "ossa/gen/creature.h"
 #include "ossa/io/result.h"
 
@@ -35,6 +36,13 @@ namespace ossa {
 struct SpriteSet;
 
 struct GltfOptions {
+  // Which meshes: the bone sprites (kBones, the default: "<name>_sprites" as above), the
+  // body (kBody: "<name>_body", body/body_mesh.h in its rest pose, each part's outline stroke
+  // just behind its fill, far limbs behind and near limbs in front by 1 mm, vertex colours
+  // (COLOR_0, linear) the coat with its pattern sampled at the vertices, a white "coat"
+  // material; weights as for the sprites, a foot's level frame folded into the foot), or
+  // both (kXray).
+  CreatureLook look = CreatureLook::kBones;
   std::string atlas_path;             // PNG atlas; empty or missing file: plain material
   const SpriteSet* sprites = nullptr;  // a smooth creature's sprite anchors, sizes and UVs
                                        // (an Atlas's set: its rectangles); null: the

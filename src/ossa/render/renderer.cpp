@@ -57,6 +57,7 @@ Result<Renderer> Renderer::create(const std::string& dir) {
       {&r.textured, "textured.vert", "textured.frag"},
       {&r.skinned, "skinned.vert", "skinned.frag"},
       {&r.skinned_naive, "skinned_naive.vert", "skinned.frag"},
+      {&r.body, "body.vert", "body.frag"},
       {&r.bone, "bone.vert", "bone.frag"},
   };
   for (const Entry& e : entries) {
@@ -91,7 +92,7 @@ void Renderer::setup_frame(unsigned framebuffer, int width, int height, glm::vec
 
 int Renderer::reload_shaders_if_changed() {
   int n = 0;
-  for (ShaderProgram* p : {&debug, &textured, &skinned, &skinned_naive, &bone}) {
+  for (ShaderProgram* p : {&debug, &textured, &skinned, &skinned_naive, &bone, &body}) {
     n += p->reload_if_changed() ? 1 : 0;
   }
   return n;
@@ -130,6 +131,43 @@ void Renderer::draw_batch_naive(CreatureBatch& batch, const Texture& atlas) {
   skinned_naive.use();
   skinned_naive.set("u_view_proj", camera.view_proj());
   count_batch(batch, batch.draw_naive(skinned_naive, atlas.id()));
+}
+
+void Renderer::draw_bodies(CreatureBatch& batch, float alpha) {
+  body.use();
+  body.set("u_view_proj", camera.view_proj());
+  stats.draw_calls += batch.draw_bodies(body, alpha);
+  stats.creatures += batch.creature_count();
+  stats.vertices += batch.body_vertex_count();
+}
+
+void Renderer::draw_creatures(CreatureBatch& batch, std::span<const Texture* const> textures, CreatureLook look) {
+  std::vector<unsigned> ids;
+  for (const Texture* t : textures) ids.push_back(t ? t->id() : 0u);
+  if (look != CreatureLook::kXray) {
+    if (batch.body_vertex_count() > 0) draw_bodies(batch, 1.0f);
+    if (batch.vertex_count() > 0) {
+      skinned.use();
+      skinned.set("u_view_proj", camera.view_proj());
+      stats.draw_calls += batch.draw(skinned, ids);
+      stats.vertices += batch.vertex_count();
+    }
+    stats.creatures += batch.creature_count();
+    stats.bones += batch.bone_count();
+    return;
+  }
+  // X-ray: each layer's bones, then that layer's bodies translucent over them.
+  for (int l = 0; l < kLayerCount; ++l) {
+    skinned.use();
+    skinned.set("u_view_proj", camera.view_proj());
+    stats.draw_calls += batch.draw_layer(skinned, ids, l);
+    body.use();
+    body.set("u_view_proj", camera.view_proj());
+    stats.draw_calls += batch.draw_body_layer(body, l, kXrayBodyAlpha);
+  }
+  stats.creatures += batch.creature_count();
+  stats.bones += batch.bone_count();
+  stats.vertices += batch.vertex_count() + batch.body_vertex_count();
 }
 
 void Renderer::draw_bones(CreatureBatch& batch, glm::vec4 colour) {

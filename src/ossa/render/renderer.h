@@ -18,6 +18,7 @@
 #include <glm/vec3.hpp>
 #include <glm/vec4.hpp>
 
+#include "ossa/body/body_mesh.h"
 #include "ossa/io/result.h"
 #include "ossa/level/box.h"
 #include "ossa/render/shader.h"
@@ -69,7 +70,7 @@ class Renderer {
   // Loads every program from `shader_dir`; the error names the file and line.
   static Result<Renderer> create(const std::string& shader_dir);
 
-  ShaderProgram debug, textured, skinned, skinned_naive, bone;
+  ShaderProgram debug, textured, skinned, skinned_naive, bone, body;
   Camera2D camera;
   DrawStats stats;
 
@@ -88,6 +89,12 @@ class Renderer {
   // the rigged characters' own.
   void draw_batch(CreatureBatch& batch, std::span<const Texture* const> textures);
   void draw_batch_naive(CreatureBatch& batch, const Texture& atlas);
+  // Bodies only (the body look): one draw for every body, creature by creature.
+  void draw_bodies(CreatureBatch& batch, float alpha = 1.0f);
+  // The creatures of `batch` as `look` asks (body/body_mesh.h): bodies; bodies translucent
+  // over the sprites, layer by layer (far sprites, far bodies, body sprites, …); or sprites.
+  // A batch holds the instances the look needs (bodies, sprites or both).
+  void draw_creatures(CreatureBatch& batch, std::span<const Texture* const> textures, CreatureLook look);
   void draw_bones(CreatureBatch& batch, glm::vec4 colour);
   // A textured rectangle in world space (background image), tinted. `uv_min`/`uv_max` are the
   // texture coordinates of its bottom-left and top-right corners: beyond [0, 1] a texture made

@@ -1,201 +1,19 @@
 #include "ossa/render/sprite_mesh.h"
 
-// Sections:
-//   [SECTION] Sprite set — names, built-in anchors, sprites.json loader
-//   [SECTION] Sprite choice — BoneKind + limb + contact + skull variant → SpriteId
-//   [SECTION] Mesh — anchor mapping [Z 7.4], strips, weights, layers
+// The sprite mesh builder: anchor mapping [Z 7.4], strips, smooth weights across chain
+// joints, layers (sprite_mesh.h). The sprite set is in sprite_set.cpp, the sprite choice in
+// sprite_choice.cpp, the mid-joint frames and chain joints in sprite_skinning.cpp.
 
 #include <algorithm>
 #include <cmath>
 
-#include "ossa/io/json.h"
-#include "ossa/math/angle.h"
+#include <glm/geometric.hpp>
+
 #include "ossa/skeleton/pose.h"
 
 #include <glm/common.hpp>
 
 namespace ossa {
-namespace {
-
-constexpr size_t kSpriteCount = static_cast<size_t>(SpriteId::kCount);
-
-constexpr const char* kSpriteNames[kSpriteCount] = {
-    "skull_mammal", "skull_bird", "skull_reptile", "skull_fish", "vertebra", "tail_vertebra",
-    "rib",          "scapula",    "pelvis",        "long_bone",  "paw",      "hoof",
-    "flat_foot",    "bird_foot",  "wing_hand",     "fin"};
-
-// [SECTION] Sprite set -----------------------------------------------------------------------
-
-struct DefaultAnchors {
-  float pu, pv, cu, cv, aspect;
-};
-// Measured from the SVG sources by tools/make-bone-sprites (sprites.json, 4 decimals).
-constexpr DefaultAnchors kDefaults[kSpriteCount] = {
-    {0.0703f, 0.4000f, 0.9609f, 0.4000f, 0.6140f},  // skull_mammal
-    {0.0938f, 0.4286f, 0.9766f, 0.4286f, 0.4956f},  // skull_bird
-    {0.0547f, 0.4565f, 0.9688f, 0.4565f, 0.3932f},  // skull_reptile
-    {0.0391f, 0.4839f, 0.9766f, 0.4839f, 0.5167f},  // skull_fish
-    {0.0469f, 0.2222f, 0.9531f, 0.2222f, 1.2414f},  // vertebra
-    {0.0312f, 0.4643f, 0.9688f, 0.4643f, 0.4667f},  // tail_vertebra
-    {0.0547f, 0.8056f, 0.9570f, 0.8056f, 0.3117f},  // rib
-    {0.0469f, 0.5000f, 0.9219f, 0.5000f, 0.5000f},  // scapula
-    {0.0469f, 0.5625f, 0.7031f, 0.5625f, 0.7619f},  // pelvis
-    {0.0781f, 0.5000f, 0.9219f, 0.5000f, 0.2037f},  // long_bone
-    {0.0703f, 0.2045f, 0.9062f, 0.2045f, 0.4112f},  // paw
-    {0.0625f, 0.4500f, 0.9766f, 0.4500f, 0.3419f},  // hoof
-    {0.1328f, 0.5000f, 0.9688f, 0.5000f, 0.2804f},  // flat_foot
-    {0.0800f, 0.3000f, 0.8500f, 0.3000f, 0.6494f},  // bird_foot
-    {0.0547f, 0.5417f, 0.9766f, 0.5208f, 0.2034f},  // wing_hand
-    {0.0547f, 0.5000f, 0.9531f, 0.5000f, 0.8696f},  // fin
-};
-
-// The anchors must span a positive u range, and the design's width/height ratio
-// r = sqrt(1/aspect² - dv²) / du must exist (see sprite_frame below).
-bool anchors_consistent(glm::vec2 p, glm::vec2 c, float aspect) {
-  const float du = c.x - p.x, dv = c.y - p.y;
-  return du > 1e-4f && aspect > 0.0f && 1.0f / (aspect * aspect) > dv * dv + 1e-8f;
-}
-
-glm::vec2 read_anchor(JsonReader& r, const Json& sprite, const std::string& path, const char* key) {
-  const Json* a = r.array(sprite, path, key);
-  const std::string apath = json_path(path, key);
-  if (!a) return glm::vec2(0.0f);
-  if (a->size() != 2) {
-    r.fail(apath, "expected [u, v], two numbers in [0, 1], got " + std::to_string(a->size()) + " values");
-    return glm::vec2(0.0f);
-  }
-  return {static_cast<float>(r.as_number((*a)[0], json_path(apath, size_t{0}), 0.0, 1.0)),
-          static_cast<float>(r.as_number((*a)[1], json_path(apath, size_t{1}), 0.0, 1.0))};
-}
-
-}  // namespace
-
-const char* sprite_name(SpriteId id) {
-  const auto i = static_cast<size_t>(id);
-  return i < kSpriteCount ? kSpriteNames[i] : "unknown";
-}
-
-SpriteId sprite_id_from_name(std::string_view name) {
-  for (size_t i = 0; i < kSpriteCount; ++i) {
-    if (name == kSpriteNames[i]) return static_cast<SpriteId>(i);
-  }
-  return SpriteId::kCount;
-}
-
-SpriteSet default_sprite_set() {
-  SpriteSet set;
-  for (size_t i = 0; i < kSpriteCount; ++i) {
-    SpriteInfo& s = set.sprites[i];
-    s.name = kSpriteNames[i];
-    s.file = s.name + ".png";
-    s.parent_anchor = {kDefaults[i].pu, kDefaults[i].pv};
-    s.child_anchor = {kDefaults[i].cu, kDefaults[i].cv};
-    s.aspect = kDefaults[i].aspect;
-  }
-  return set;
-}
-
-glm::vec2 joint_reach(const SpriteInfo& info, bool child_end) {
-  const glm::vec2 measured = child_end ? info.child_reach : info.parent_reach;
-  if (measured.x >= 0.0f && measured.y >= 0.0f) return measured;
-  const float v = child_end ? info.child_anchor.y : info.parent_anchor.y;
-  return {v, 1.0f - v};
-}
-
-Result<SpriteSet> load_sprite_set(const std::string& path) {
-  Result<Json> doc = read_json_file(path);
-  if (!doc.ok()) return doc.error();
-  JsonReader r(path);
-  const Json& root = doc.value();
-  if (!r.expect_object(root, "")) return r.error();
-  const std::string format = r.string(root, "", "format");
-  if (!r.failed() && format != "ossa.sprites") r.fail("format", "expected \"ossa.sprites\", got \"" + format + "\"");
-  r.integer(root, "", "version", 1, 1);
-  const Json* sprites = r.object(root, "", "sprites");
-  if (r.failed()) return r.error();
-
-  for (auto it = sprites->begin(); it != sprites->end(); ++it) {
-    if (sprite_id_from_name(it.key()) == SpriteId::kCount) {
-      r.fail(json_path("sprites", it.key()), "unknown sprite name");
-      return r.error();
-    }
-  }
-  SpriteSet set;
-  for (size_t i = 0; i < kSpriteCount; ++i) {
-    const Json* s = r.object(*sprites, "sprites", kSpriteNames[i]);
-    if (!s) return r.error();
-    const std::string spath = json_path("sprites", kSpriteNames[i]);
-    SpriteInfo& info = set.sprites[i];
-    info.name = kSpriteNames[i];
-    info.file = r.string(*s, spath, "file");
-    if (!r.failed() && (info.file.size() < 5 || info.file.substr(info.file.size() - 4) != ".png" ||
-                        info.file.find_first_of("/\\") != std::string::npos)) {
-      r.fail(json_path(spath, "file"), "expected a .png file name without folders, got \"" + info.file + "\"");
-    }
-    info.parent_anchor = read_anchor(r, *s, spath, "parent_anchor");
-    info.child_anchor = read_anchor(r, *s, spath, "child_anchor");
-    info.aspect = r.number_f(*s, spath, "aspect", 1e-3, 100.0);
-    if (r.failed()) return r.error();
-    if (info.child_anchor.x <= info.parent_anchor.x + 1e-4f) {
-      r.fail(json_path(spath, "child_anchor"), "expected u greater than parent_anchor's u");
-    } else if (!anchors_consistent(info.parent_anchor, info.child_anchor, info.aspect)) {
-      r.fail(json_path(spath, "aspect"), "expected 1 / aspect > |child v - parent v| (the anchors' distance)");
-    }
-    if (r.failed()) return r.error();
-  }
-  return set;
-}
-
-// [SECTION] Sprite choice --------------------------------------------------------------------
-
-SpriteId sprite_for_bone(const Creature& creature, int bone) {
-  const Skeleton& s = creature.skeleton;
-  OSSA_ASSERT(bone >= 0 && bone < s.bone_count(), "sprite_for_bone: bone index out of range");
-  switch (s.kind(bone)) {
-    case BoneKind::kRoot:
-    case BoneKind::kBackVertebra: return SpriteId::kVertebra;
-    // Neck vertebrae are long spools with low spines, like tail vertebrae: the tall-spined
-    // back vertebra stretched to a neck segment's length reads as a row of spikes.
-    case BoneKind::kNeckVertebra:
-    case BoneKind::kTailVertebra: return SpriteId::kTailVertebra;
-    case BoneKind::kSkull:
-      return static_cast<SpriteId>(static_cast<int>(SpriteId::kSkullMammal) +
-                                   std::clamp(creature.skull_variant, 0, 3));
-    case BoneKind::kRib: return SpriteId::kRib;
-    case BoneKind::kScapula: return SpriteId::kScapula;
-    case BoneKind::kPelvis: return SpriteId::kPelvis;
-    case BoneKind::kUpperLimb:
-    case BoneKind::kLowerLimb: return SpriteId::kLongBone;
-    case BoneKind::kHand: break;
-  }
-  const Limb* limb = nullptr;
-  for (const Limb& l : creature.limbs) {
-    if (l.bones[2] == bone) limb = &l;
-  }
-  if (!limb) return SpriteId::kFlatFoot;
-  switch (limb->kind) {
-    case LimbKind::kWing: return SpriteId::kWingHand;
-    case LimbKind::kFin: return SpriteId::kFin;
-    case LimbKind::kArm: return SpriteId::kFlatFoot;
-    case LimbKind::kLeg: break;
-  }
-  if (creature.count(LimbKind::kWing) > 0) return SpriteId::kBirdFoot;
-  if (creature.contact == ContactMode::kFlat) return SpriteId::kFlatFoot;
-  // Tip contact: the rest-pose direction of the bone is the sum of the joint angles up the
-  // chain (rest locals carry no scale or mirror). Same rule as export_svg's hand_shape.
-  const std::vector<BoneLocal>& locals =
-      creature.rest_pose.locals.size() == static_cast<size_t>(s.bone_count()) ? creature.rest_pose.locals
-                                                                             : s.rest_locals();
-  float angle = 0.0f;
-  for (int b = bone; b >= 0; b = s.parent(b)) angle += locals[static_cast<size_t>(b)].angle_ls;
-  const float steep = std::fabs(std::sin(angle));
-  if (steep < 0.5f) return SpriteId::kFlatFoot;
-  const int lower = limb->bones[1];
-  const bool cannon = lower >= 0 && s.length(bone) >= 0.45f * s.length(lower);
-  return steep > 0.7f && cannon ? SpriteId::kHoof : SpriteId::kPaw;
-}
-
-// [SECTION] Mesh -----------------------------------------------------------------------------
 
 namespace {
 
@@ -218,11 +36,21 @@ int kind_order(BoneKind kind) {
   return 7;
 }
 
+// The limb index of a leg's hand (foot) bone, or -1.
+int s_kind_hand(const Creature& c, int bone) {
+  if (c.skeleton.kind(bone) != BoneKind::kHand) return -1;
+  for (size_t i = 0; i < c.limbs.size(); ++i) {
+    if (c.limbs[i].bones[2] == bone && c.limbs[i].kind == LimbKind::kLeg) return static_cast<int>(i);
+  }
+  return -1;
+}
+
 // Maps the sprite's unit box onto a bone's frame [Z 7.4: "two offsets per bone, to the joint
 // with the parent and to the joint with the child, so the placement fits whatever the size"].
 // In design space (u·r, v) — height 1, width r — the anchors lie 1/aspect apart; a similarity
 // takes the parent anchor to (0, 0) and the child anchor to (length, 0), then the bone's
-// perpendicular axis is stretched by k so the drawn height is max(aspect·length, width).
+// perpendicular axis is stretched by k so the drawn height is drawn_height(): width / thickness
+// (the sprite's thickness, SpriteInfo), or max(aspect·length, width) without one.
 struct SpriteFrame {
   glm::vec2 p{0.0f};     // parent anchor, unit box
   float r = 1.0f;        // design width / height
@@ -235,6 +63,11 @@ struct SpriteFrame {
   }
 };
 
+float drawn_height(const SpriteInfo& info, float length, float width) {
+  if (info.thickness > 0.0f && width > 0.0f) return width / info.thickness;
+  return std::max(info.aspect * length, width);
+}
+
 SpriteFrame sprite_frame(const SpriteInfo& info, float length, float width, bool flip) {
   SpriteFrame f;
   f.p = info.parent_anchor;
@@ -244,38 +77,40 @@ SpriteFrame sprite_frame(const SpriteInfo& info, float length, float width, bool
   f.r = std::sqrt(std::max(span * span - dv * dv, 1e-12f)) / std::max(du, 1e-6f);
   f.e = glm::vec2(du * f.r, dv) / span;
   f.sx = length / span;  // = aspect · length per design unit
-  const float k = std::max(1.0f, width / std::max(info.aspect * length, 1e-12f));
+  const float k = drawn_height(info, length, width) / std::max(info.aspect * length, 1e-12f);
   f.sy = f.sx * k * (flip ? -1.0f : 1.0f);
   return f;
 }
 
 }  // namespace
 
-std::vector<int> chain_children(const Skeleton& s, const std::vector<BoneLocal>& locals) {
-  const int n = s.bone_count();
-  std::vector<int> child(static_cast<size_t>(n), -1);
-  std::vector<float> turn(static_cast<size_t>(n), 0.0f);
-  const auto drawn = [&](int b) { return s.length(b) > 1e-6f && std::isfinite(s.length(b)); };
-  for (int c = 0; c < n; ++c) {
-    const int p = s.parent(c);
-    if (p < 0 || !drawn(p) || !drawn(c) || s.layer(c) != s.layer(p)) continue;
-    // A girdle's flat blade meets the limb at a ball joint, not a hinge: blending would bend
-    // the blade's end (the pelvis's hook, the scapula's neck) after the limb.
-    if (s.kind(p) == BoneKind::kScapula || s.kind(p) == BoneKind::kPelvis) continue;
-    const BoneLocal& l = locals[static_cast<size_t>(c)];
-    if (glm::length(l.offset_ls - glm::vec2(s.length(p), 0.0f)) > 0.01f * s.length(p)) continue;
-    const float t = std::fabs(wrap_angle(l.angle_ls));
-    const auto pi = static_cast<size_t>(p);
-    if (child[pi] < 0 || t < turn[pi]) child[pi] = c, turn[pi] = t;
-  }
-  return child;
-}
-
 namespace {
 
 // A sprite's drawn half height (metres) — the joint's thickness as the sprite shows it.
+// How far a foot's contact part turns (radians, in the bone's frame) so it stands on the ground
+// in the rest pose: the angle from the bone's direction to straight down, for the hand bone of
+// a leg whose sprite has a contact part (0 otherwise).
+constexpr float kContactRamp = 0.06f;
+float contact_angle(const Creature& c, int bone, const SpriteInfo& info, const Mat2x3& rest) {
+  if (s_kind_hand(c, bone) < 0 || info.contact_from < 0.0f) return 0.0f;
+  // World down in the bone's frame (the rest frame's inverse rotation; a mirror flips it).
+  const glm::vec2 x(rest.m[0], rest.m[1]), y(rest.m[2], rest.m[3]);
+  const glm::vec2 down(glm::dot(glm::vec2(0.0f, -1.0f), x) / std::max(glm::dot(x, x), 1e-12f),
+                       glm::dot(glm::vec2(0.0f, -1.0f), y) / std::max(glm::dot(y, y), 1e-12f));
+  return std::atan2(down.y, down.x);
+}
+
+// Whether a bone's sprite is drawn mirrored across its bone: Skeleton::sprite_flip_y, and a
+// leg's flat foot (no contact part to stand up) with its sole on the ground, its art's top up
+// whichever way the rest pose points the foot (a hind foot folded back points it down).
+bool drawn_flipped(const Creature& c, int bone, const SpriteInfo& info, const Mat2x3& rest) {
+  bool flip = c.skeleton.sprite_flip_y(bone);
+  if (s_kind_hand(c, bone) >= 0 && !(info.contact_from >= 0.0f) && rest.m[3] < 0.0f) flip = !flip;
+  return flip;
+}
+
 float half_height(const SpriteInfo& info, float length, float width) {
-  return 0.5f * std::max(info.aspect * length, width);
+  return 0.5f * drawn_height(info, length, width);
 }
 
 // One blended chain joint: parent and child bones, the palette indices of its mid-joint
@@ -366,7 +201,15 @@ SpriteMesh build_sprite_mesh(const Creature& creature, const SpriteSet& sprites,
     return k == BoneKind::kLowerLimb || k == BoneKind::kHand;
   };
   if (smooth) {
-    const std::vector<int> chain = chain_children(s, locals);
+    std::vector<int> chain = chain_children(s, locals);
+    // A foot drawn flat has its sole on the ground from the ankle on: blending the ankle would
+    // swing the sole's start with the shin, below the ground; its sprite stays rigid there.
+    for (int p = 0; p < n; ++p) {
+      const int c = chain[static_cast<size_t>(p)];
+      if (c >= 0 && s_kind_hand(creature, c) >= 0 && mesh.bone_sprites[static_cast<size_t>(c)] == SpriteId::kFlatFoot) {
+        chain[static_cast<size_t>(p)] = -1;
+      }
+    }
     // kSmoothJointFrames frames per limb joint while the uint8 indices last, else one (which
     // every genome within its limits has room for, see kMaxSpriteMeshBones).
     int limb_joints = 0;
@@ -394,8 +237,8 @@ SpriteMesh build_sprite_mesh(const Creature& creature, const SpriteSet& sprites,
         // thicker parent, or a bigger knob at that end of the art) its outline shows beside
         // the child's as a second one. So the parent's end shrinks across the bone to within
         // the child's reach, from where the child's sprite begins to half way to the joint.
-        const glm::vec2 pr = reach_ms(pi, true, 2.0f * hp, s.sprite_flip_y(p));
-        const glm::vec2 cr = reach_ms(ci, false, 2.0f * hc, s.sprite_flip_y(c));
+        const glm::vec2 pr = reach_ms(pi, true, 2.0f * hp, drawn_flipped(creature, p, pi, rest[static_cast<size_t>(p)]));
+        const glm::vec2 cr = reach_ms(ci, false, 2.0f * hc, drawn_flipped(creature, c, ci, rest[static_cast<size_t>(c)]));
         j.squeeze = std::min(1.0f, std::min(pr.x > 0.0f ? cr.x / pr.x : 1.0f, pr.y > 0.0f ? cr.y / pr.y : 1.0f));
         const float child_begins = -ci.parent_anchor.x / (ci.child_anchor.x - ci.parent_anchor.x) * s.length(c);
         j.squeeze_from = std::max(child_begins, -0.5f * s.length(p));
@@ -417,9 +260,32 @@ SpriteMesh build_sprite_mesh(const Creature& creature, const SpriteSet& sprites,
       mid.turn = static_cast<float>(f + 1) / static_cast<float>(j.frames + 1);
       const Mat2x3 bind =
           mid_joint_frame(model[static_cast<size_t>(j.parent)], model[static_cast<size_t>(j.child)], mid.turn);
+      mid.rest_half = mid_joint_half_turn(model[static_cast<size_t>(j.parent)], model[static_cast<size_t>(j.child)]);
       mid.inverse_bind = inverse(bind);
       mesh.mid_joints.push_back(mid);
     }
+  }
+  // Feet whose contact part stands on the ground get a level frame (MidJoint::level): their
+  // toes, hooves and claws keep their rest turn while the foot bone turns over them, as planted
+  // toes do — where the uint8 palette indices have room (else the contact part stays rigid).
+  std::vector<int> level_entry(static_cast<size_t>(n), -1);
+  for (int b = 0; b < n && smooth; ++b) {
+    const SpriteInfo& info = sprites[mesh.bone_sprites[static_cast<size_t>(b)]];
+    if (contact_angle(creature, b, info, rest[static_cast<size_t>(b)]) == 0.0f) continue;
+    if (n + static_cast<int>(mesh.mid_joints.size()) >= kMaxSpriteMeshBones + 1) break;
+    MidJoint j;
+    j.level = true;
+    j.parent = j.child = b;
+    j.point_ls = {s.length(b), 0.0f};
+    const glm::vec2 x(rest[static_cast<size_t>(b)].m[0], rest[static_cast<size_t>(b)].m[1]);
+    j.rest_x = glm::length(x) > 0.0f ? glm::normalize(x) : glm::vec2(1.0f, 0.0f);
+    Mat2x3 bind = model[static_cast<size_t>(b)];
+    const glm::vec2 tip = bind.apply(j.point_ls);
+    bind.m[4] = tip.x;
+    bind.m[5] = tip.y;
+    j.inverse_bind = inverse(bind);
+    level_entry[static_cast<size_t>(b)] = n + static_cast<int>(mesh.mid_joints.size());
+    mesh.mid_joints.push_back(j);
   }
 
   std::vector<int> order;
@@ -441,13 +307,36 @@ SpriteMesh build_sprite_mesh(const Creature& creature, const SpriteSet& sprites,
     while (layer < bone_layer) mesh.layer_begin[static_cast<size_t>(++layer)] = static_cast<uint32_t>(mesh.indices.size());
 
     const SpriteInfo& info = sprites[mesh.bone_sprites[static_cast<size_t>(bone)]];
-    const SpriteFrame frame = sprite_frame(info, s.length(bone), std::max(s.width(bone), 0.0f), s.sprite_flip_y(bone));
+    const SpriteFrame frame = sprite_frame(info, s.length(bone), std::max(s.width(bone), 0.0f),
+                                           drawn_flipped(creature, bone, info, rest[static_cast<size_t>(bone)]));
     const Mat2x3& m = model[static_cast<size_t>(bone)];
     const float shade = s.layer(bone) == Layer::kFar ? options.far_shade : 1.0f;
     const float pu = info.parent_anchor.x, cu = info.child_anchor.x;
     const float metres_per_u = s.length(bone) / (cu - pu);  // along the bone
     const JointBlend& at_start = start_blend[static_cast<size_t>(bone)];
     const JointBlend& at_end = end_blend[static_cast<size_t>(bone)];
+    // A skull's muzzle takes the creature's share of its length (SpriteInfo::snout_from).
+    const bool snout = s.kind(bone) == BoneKind::kSkull && info.snout_from > pu && info.snout_from < cu;
+    const float snout_x0 = snout ? frame.map({info.snout_from, info.parent_anchor.y}).x : 0.0f;
+    const float snout_x = (1.0f - std::clamp(creature.skull_snout, 0.05f, 0.95f)) * s.length(bone);
+    const auto warp = [&](float x) {
+      if (!snout || !(snout_x0 > 0.0f) || !(snout_x0 < s.length(bone))) return x;
+      return x < snout_x0 ? x * snout_x / snout_x0
+                          : snout_x + (x - snout_x0) * (s.length(bone) - snout_x) / (s.length(bone) - snout_x0);
+    };
+    // A foot's contact part stands on the ground in the rest pose: turned about the contact
+    // point (the child anchor, the bone's end) from the bone's direction to straight down,
+    // ramping in over kContactRamp of u before contact_from (SpriteInfo::contact_from).
+    const float contact_turn = contact_angle(creature, bone, info, rest[static_cast<size_t>(bone)]);
+    const bool contact = contact_turn != 0.0f;
+    const float ramp_from = info.contact_from - kContactRamp;
+    const auto turn = [&](glm::vec2 p, float u) {
+      if (!contact || u <= ramp_from) return p;
+      const float t = std::clamp((u - ramp_from) / kContactRamp, 0.0f, 1.0f);
+      const float a = contact_turn * t * t * (3.0f - 2.0f * t);
+      const glm::vec2 pivot(s.length(bone), 0.0f), d = p - pivot;
+      return pivot + glm::vec2(std::cos(a) * d.x - std::sin(a) * d.y, std::sin(a) * d.x + std::cos(a) * d.y);
+    };
 
     // Columns: the sprite's ends and both anchors; around each blended joint kSmoothColumns
     // more on either side, evenly over the blend, and where the end's squeeze ramps (those on
@@ -466,6 +355,10 @@ SpriteMesh build_sprite_mesh(const Creature& creature, const SpriteSet& sprites,
       for (const float at : {at_end.squeeze_from, at_end.squeeze_to}) {
         if (const float u = cu + at / metres_per_u; u > 0.0f && u < 1.0f) columns.push_back(u);
       }
+    }
+    if (snout) columns.push_back(info.snout_from);
+    if (contact) {
+      for (int k = 0; k <= 4; ++k) columns.push_back(ramp_from + kContactRamp * static_cast<float>(k) / 4.0f);
     }
     std::sort(columns.begin(), columns.end());
     columns.erase(std::unique(columns.begin(), columns.end(), [](float a, float b) { return b - a < 1e-5f; }),
@@ -496,14 +389,24 @@ SpriteMesh build_sprite_mesh(const Creature& creature, const SpriteSet& sprites,
           weights[static_cast<size_t>(used++)] = bw.weight;
         }
       }
+      // The contact part follows the foot's level frame, ramping in with its turn.
+      if (contact && level_entry[static_cast<size_t>(bone)] >= 0 && u > ramp_from && used < 4) {
+        const float t = std::clamp((u - ramp_from) / kContactRamp, 0.0f, 1.0f);
+        const float level = t * t * (3.0f - 2.0f * t);
+        for (float& wk : weights) wk *= 1.0f - level;
+        bones[static_cast<size_t>(used)] = static_cast<uint8_t>(level_entry[static_cast<size_t>(bone)]);
+        weights[static_cast<size_t>(used++)] = level;
+      }
       const float squeeze = at_end.parent >= 0 ? end_squeeze(at_end, s_end) : 1.0f;
       for (int r = 0; r <= rows; ++r) {
         const float v = static_cast<float>(r) / static_cast<float>(rows);
         glm::vec2 p = frame.map({u, v});  // bone frame: x along the bone, y across it
         p.y *= squeeze;
+        p.x = warp(p.x);
+        p = turn(p, u);
         SpriteVertex vert;
         vert.position_ms = m.apply(p);
-        vert.uv = info.uv_min + glm::vec2(u, 1.0f - v) * (info.uv_max - info.uv_min);
+        vert.uv = info.uv_min + glm::vec2(u, v) * (info.uv_max - info.uv_min);
         vert.bones = bones;
         vert.weights = weights;
         vert.shade = shade;
@@ -532,73 +435,6 @@ SpriteMesh build_sprite_mesh(const Creature& creature, const SpriteSet& sprites,
     for (const SpriteVertex& v : mesh.vertices) mesh.rest_positions.push_back(skin_vertex(v, palette));
   }
   return mesh;
-}
-
-glm::vec2 skin_vertex(const SpriteVertex& v, std::span<const Mat2x3> palette) {
-  glm::vec2 p(0.0f);
-  for (size_t k = 0; k < 4; ++k) {
-    if (v.weights[k] != 0.0f) p += v.weights[k] * palette[v.bones[k]].apply(v.position_ms);
-  }
-  return p;
-}
-
-namespace {
-
-// The unit complex square root of the unit complex z, the shorter way: normalise(1 + z)
-// (a half turn gives a quarter turn).
-glm::vec2 unit_sqrt(glm::vec2 z) {
-  const glm::vec2 h(1.0f + z.x, z.y);
-  const float len = glm::length(h);
-  return len > 1e-6f * (1.0f + glm::length(z)) ? h / len : glm::vec2(0.0f, 1.0f);
-}
-
-}  // namespace
-
-Mat2x3 mid_joint_frame(const Mat2x3& parent, const Mat2x3& child, float turn) {
-  // The child's turn relative to the parent: L_p⁻¹ L_c is a rotation (any common scale or
-  // mirror cancels), the unit complex z; its quarters are square roots, no trigonometry.
-  const float a = parent.m[0], b = parent.m[1], c = parent.m[2], d = parent.m[3];
-  const float det = a * d - b * c;
-  glm::vec2 z(1.0f, 0.0f);
-  if (std::fabs(det) > 1e-20f) {
-    z = glm::vec2(d * child.m[0] - c * child.m[1], -b * child.m[0] + a * child.m[1]) / det;
-    z /= std::max(glm::length(z), 1e-20f);
-  }
-  const glm::vec2 half = unit_sqrt(z);
-  glm::vec2 r = half;
-  if (turn < 0.375f) {
-    r = unit_sqrt(half);  // a quarter
-  } else if (turn > 0.625f) {
-    const glm::vec2 q = unit_sqrt(half);
-    r = glm::vec2(half.x * q.x - half.y * q.y, half.x * q.y + half.y * q.x);  // three quarters
-  }
-  Mat2x3 turn_m;
-  turn_m.m[0] = r.x, turn_m.m[1] = r.y, turn_m.m[2] = -r.y, turn_m.m[3] = r.x;
-  Mat2x3 mid = parent * turn_m;
-  mid.m[4] = child.m[4];
-  mid.m[5] = child.m[5];
-  return mid;
-}
-
-void mid_joint_palette(std::span<const MidJoint> mid_joints, std::span<const Mat2x3> world,
-                       std::span<Mat2x3> palette) {
-  const size_t bones = world.size();
-  OSSA_ASSERT(palette.size() == bones + mid_joints.size(), "mid_joint_palette: one entry per bone and mid joint");
-  for (size_t i = 0; i < mid_joints.size(); ++i) {
-    const MidJoint& j = mid_joints[i];
-    palette[bones + i] =
-        mid_joint_frame(world[static_cast<size_t>(j.parent)], world[static_cast<size_t>(j.child)], j.turn) * j.inverse_bind;
-  }
-}
-
-int max_weights_per_vertex(const SpriteMesh& mesh) {
-  int most = 0;
-  for (const SpriteVertex& v : mesh.vertices) {
-    int count = 0;
-    for (float w : v.weights) count += w > 0.0f;
-    most = std::max(most, count);
-  }
-  return most;
 }
 
 Box sprite_mesh_bounds(const SpriteMesh& mesh) {

@@ -23,6 +23,7 @@
 #include "ossa/io/result.h"
 #include "ossa/level/box.h"
 #include "ossa/math/transform2d.h"
+#include "ossa/skeleton/mid_joint.h"
 
 namespace ossa {
 
@@ -43,12 +44,25 @@ struct SpriteInfo {
   std::string file;           // PNG file name relative to the sprites.json folder ("vertebra.png")
   glm::vec2 parent_anchor{0.0f, 0.5f};  // unit box: where the joint to the parent sits
   glm::vec2 child_anchor{1.0f, 0.5f};   // unit box: where the joint to the child sits
-  float aspect = 0.25f;       // height / (distance between the anchors) at width 1 — a
-                              // bone's drawn height is max(aspect * length, bone width)
+  float aspect = 0.25f;       // height / (distance between the anchors) at width 1
+  // The fraction of the sprite's height the bone's width spans (its knobs, its shaft): the
+  // drawn height is width / thickness, so a long thin bone stays thin. 0: the drawn height is
+  // max(aspect × length, width) (ribs and fins, whose height is their curve or fan).
+  float thickness = 0.0f;
+  // Feet (paw, hoof, bird foot): the u where the contact part (toes, hoof, claws) begins; the
+  // art is drawn for a vertical bone with the ground at the child anchor, the contact part at
+  // u ≥ contact_from no further than the anchor's u. The builder turns that part about the
+  // child anchor so it stands on the ground in the rest pose, whatever the foot's angle.
+  // Negative: none.
+  float contact_from = -1.0f;
+  // Skulls: the u where the muzzle or beak begins; the builder stretches the art on either
+  // side so the muzzle takes the creature's share of the skull (Creature::skull_snout).
+  // Negative: none.
+  float snout_from = -1.0f;
   glm::vec2 uv_min{0.0f}, uv_max{1.0f};  // atlas rectangle (filled in when the atlas is packed)
-                              // in texture coordinates with t growing DOWN the image (t = 0 is
-                              // the first PNG row, as glTexImage2D receives an unflipped PNG):
-                              // uv_min = top-left corner, uv_max = bottom-right corner.
+                              // in texture coordinates with t growing UP the image, as the
+                              // textures are uploaded (Texture::from_image flips the rows):
+                              // uv_min = bottom-left corner, uv_max = top-right corner.
   // How far the drawing reaches across the bone at each joint: unit-box v from the anchor's v
   // down (x) and up (y) to the last opaque pixel (alpha ≥ 50 %) over the sprite's end around
   // that anchor (u within the anchor's overhang past it, mirrored inwards). Measured from the
@@ -67,9 +81,10 @@ struct SpriteSet {
   std::array<SpriteInfo, static_cast<size_t>(SpriteId::kCount)> sprites;
   const SpriteInfo& operator[](SpriteId id) const { return sprites[static_cast<size_t>(id)]; }
 };
-// Validation: format "ossa.sprites", version 1, one entry per SpriteId name (sprite_name), each
-// with file (a .png name), parent_anchor and child_anchor in [0, 1]², child u > parent u, and
-// aspect > 0 consistent with the anchors (1 / aspect > |child v - parent v|). Unknown sprite
+// Validation: format "ossa.sprites", version 1 or 2, one entry per SpriteId name (sprite_name),
+// each with file (a .png name), parent_anchor and child_anchor in [0, 1]², child u > parent u,
+// and aspect > 0 consistent with the anchors (1 / aspect > |child v - parent v|); version 2 may
+// add thickness in (0, 1], contact_from and snout_from between the anchors' u. Unknown sprite
 // names are errors (typos would otherwise fall back silently).
 Result<SpriteSet> load_sprite_set(const std::string& path);
 // The built-in anchors (used by tests and when no file is given): the same values as the
@@ -82,7 +97,7 @@ SpriteId sprite_id_from_name(std::string_view name);
 // One vertex as the skinned shader reads it.
 struct SpriteVertex {
   glm::vec2 position_ms;            // bind-pose model space, metres
-  glm::vec2 uv;                     // atlas texture coordinates (t down, see SpriteInfo::uv_min)
+  glm::vec2 uv;                     // atlas texture coordinates (t up, see SpriteInfo::uv_min)
   std::array<uint8_t, 4> bones{};   // bone indices within the creature (≤ 255 bones); bones[0]
                                     // is the bone whose sprite the vertex belongs to (its layer)
   std::array<float, 4> weights{};   // sum to 1; unused slots 0 (bones[0]'s may be 0 too: a
@@ -113,16 +128,6 @@ struct SpriteMeshOptions {
   float far_shade = 0.62f;          // brightness of far-side bones
 };
 
-// A mid-joint frame of smooth skinning: at the child's start, its axes turned `turn` of the
-// way from the parent's to the child's (mid_joint_frame). It has a palette entry of its own
-// after the bones' (index bone_count + i in SpriteMesh::mid_joints), computed every frame
-// from the two bones' world matrices (CreatureBatch::set_world).
-struct MidJoint {
-  int parent = 0, child = 0;  // bones
-  float turn = 0.5f;          // 0.25, 0.5 or 0.75
-  Mat2x3 inverse_bind;        // model space → the mid frame of the bind pose
-};
-
 // Triangles in three index ranges, one per Layer (far first, then body, then near), so one
 // draw call per layer draws every creature of a batch in the right order.
 struct SpriteMesh {
@@ -139,17 +144,6 @@ struct SpriteMesh {
   // Palette entries a creature with this mesh needs: its bones, then its mid joints.
   int palette_size() const { return static_cast<int>(inverse_bind.size() + mid_joints.size()); }
 };
-
-// The mid-joint frame of a parent and a child bone frame (bone frame → model or world): at
-// the child's origin, turned from the parent's axes by `turn` (0.25, 0.5 or 0.75; others are
-// rounded to these) of the child's turn relative to the parent (the shorter way). Any common
-// scale or mirror of the two is kept: the frames of a creature facing left give the mirrored
-// mid frame.
-Mat2x3 mid_joint_frame(const Mat2x3& parent, const Mat2x3& child, float turn = 0.5f);
-// palette[bones + i] = mid_joint_frame(world[parent], world[child], turn) · inverse_bind for
-// every mid joint; `palette` holds bone_count + mid_joints.size() entries, its bones' already set.
-void mid_joint_palette(std::span<const MidJoint> mid_joints, std::span<const Mat2x3> world,
-                       std::span<Mat2x3> palette);
 
 // Sprite choice (documented rule, same as the SVG exporter's shapes):
 //   skull → skull variant (creature.skull_variant: 0 mammal, 1 bird, 2 reptile, 3 fish);
@@ -177,12 +171,12 @@ static_assert(kMaxCreatureBones + 2 * 2 * kMaxLimbPairs <= kMaxSpriteMeshBones +
 // kSmoothMaxSpan × either bone's length (so a bone's two blends never meet), sampled by
 // kSmoothColumns quad columns on each side of a limb joint (kSmoothSpineColumns at the
 // spine) so the bent outline is a curve, not a kink, and kSmoothRows rows across a limb
-// bone's sprite. kSmoothBlend, with the shipped art (tests/render/smooth_skinning_test.cpp):
-// narrower turns the joint over too short a stretch, folding the inside of a bent knee over
-// itself and wrinkling the outside (0.6 pinches a pixel of background off in the crease of
-// the horse's knee at -90°, 0.5 leaves a notch outside the magpie's at +90°); wider swells
-// the knob and leaves gaps beside it in the crease (0.8 shows them).
-constexpr float kSmoothBlend = 0.7f;
+// bone's sprite. kSmoothBlend, with the shipped art drawn as thick as its bones' widths
+// (tests/render/smooth_skinning_test.cpp): narrower turns the joint over too short a stretch,
+// folding the inside of a bent knee over itself and wrinkling the outside (0.4 leaves a notch
+// outside the horse's knee at -90°); wider swells the knob and leaves gaps beside it in the
+// crease (0.7 pinches pixels of background off in the kangaroo's and the magpie's at -90°).
+constexpr float kSmoothBlend = 0.55f;
 constexpr float kSmoothMaxSpan = 0.45f;
 constexpr int kSmoothColumns = 4;        // limb joints (a multiple of (kSmoothJointFrames + 1) / 2)
 constexpr int kSmoothSpineColumns = 2;   // spine joints, which turn a few degrees each

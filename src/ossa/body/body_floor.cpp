@@ -1,0 +1,106 @@
+// The floor a body rests on (body_floor.h).
+
+#include "ossa/body/body_floor.h"
+
+#include <algorithm>
+#include <cmath>
+#include <vector>
+
+#include "ossa/assert.h"
+#include "ossa/skeleton/pose.h"
+
+namespace ossa {
+
+BodyFloor body_floor(const Level& level, const Skeleton& skeleton, std::span<const Mat2x3> world, float reach) {
+  BodyFloor floor;
+  OSSA_ASSERT(static_cast<int>(world.size()) == skeleton.bone_count(), "body_floor: one matrix per bone");
+  if (world.empty() || level.empty() || !(reach >= 0.0f) || !std::isfinite(reach)) return floor;
+  // The bones, sampled at their ends and middles.
+  std::vector<glm::vec2> samples;
+  samples.reserve(world.size() * 3);
+  for (size_t b = 0; b < world.size(); ++b) {
+    const glm::vec2 a = bone_start(world[b]), e = bone_end(world[b], skeleton.length(static_cast<int>(b)));
+    if (!std::isfinite(a.x) || !std::isfinite(a.y) || !std::isfinite(e.x) || !std::isfinite(e.y)) return floor;
+    samples.insert(samples.end(), {a, 0.5f * (a + e), e});
+  }
+  glm::vec2 lo = samples.front(), hi = samples.front();
+  for (const glm::vec2 p : samples) lo = glm::min(lo, p), hi = glm::max(hi, p);
+  const float x0 = lo.x - reach, x1 = hi.x + reach;
+  std::vector<int> hits;
+  level.overlapping(Box{{x0, lo.y - reach - 1.0f}, {x1, hi.y}}, hits);
+  std::vector<glm::vec3> tops;
+  for (const int h : hits) {
+    const Box& box = level.box(h);
+    // The highest bone over the box, or past the bones' ends the nearest one: a floor has it
+    // above its top, or sunk into it by less than half the flesh's reach (a legless
+    // creature's crawl wave); a ceiling or a wall higher than the creature has not.
+    float ref = -1e30f, nearest = 1e30f, nearest_y = 0.0f;
+    for (const glm::vec2 p : samples) {
+      if (p.x >= box.min_ws.x && p.x <= box.max_ws.x) ref = std::max(ref, p.y);
+      const float dx = p.x < box.min_ws.x ? box.min_ws.x - p.x : p.x - box.max_ws.x;
+      if (dx < nearest) nearest = dx, nearest_y = p.y;
+    }
+    if (ref < -1e29f) ref = nearest_y;
+    if (box.max_ws.y > ref + std::max(0.001f, 0.5f * reach)) continue;
+    tops.push_back({std::max(box.min_ws.x, x0), std::min(box.max_ws.x, x1), box.max_ws.y});
+  }
+  std::sort(tops.begin(), tops.end(), [](const glm::vec3& a, const glm::vec3& b) { return a.x < b.x || (a.x == b.x && a.z > b.z); });
+  std::vector<glm::vec3> merged;
+  for (const glm::vec3& t : tops) {
+    if (!merged.empty() && merged.back().z == t.z && t.x <= merged.back().y) {
+      merged.back().y = std::max(merged.back().y, t.y);
+    } else {
+      merged.push_back(t);
+    }
+  }
+  if (merged.size() > static_cast<size_t>(kBodyFloorSegments)) {
+    const auto inside = [&](const glm::vec3& t) { return std::min(t.y, hi.x) - std::max(t.x, lo.x); };
+    std::stable_sort(merged.begin(), merged.end(), [&](const glm::vec3& a, const glm::vec3& b) { return inside(a) > inside(b); });
+    merged.resize(static_cast<size_t>(kBodyFloorSegments));
+    std::sort(merged.begin(), merged.end(), [](const glm::vec3& a, const glm::vec3& b) { return a.x < b.x; });
+  }
+  floor.count = static_cast<int>(merged.size());
+  for (size_t k = 0; k < merged.size(); ++k) floor.segments[k] = merged[k];
+  return floor;
+}
+
+BodyFloor flat_floor(float top) {
+  BodyFloor floor;
+  floor.count = 1;
+  floor.segments[0] = {-1e30f, 1e30f, top};
+  return floor;
+}
+
+glm::vec2 floor_point(glm::vec2 p, const BodyFloor& floor) {
+  for (int k = 0; k < kBodyFloorSegments; ++k) {
+    const glm::vec3& s = floor.segments[static_cast<size_t>(k)];
+    if (p.x >= s.x && p.x <= s.y && p.y < s.z) p.y = s.z;
+  }
+  return p;
+}
+
+void encode_floor(const BodyFloor& floor, std::span<Mat2x3> entries) {
+  OSSA_ASSERT(entries.size() == static_cast<size_t>(kBodyFloorEntries), "encode_floor: kBodyFloorEntries entries");
+  for (int k = 0; k < kBodyFloorEntries; ++k) {
+    const glm::vec3& a = floor.segments[static_cast<size_t>(2 * k)];
+    const glm::vec3& b = floor.segments[static_cast<size_t>(2 * k + 1)];
+    Mat2x3& m = entries[static_cast<size_t>(k)];
+    m.m[0] = a.x, m.m[1] = a.y, m.m[2] = a.z;
+    m.m[3] = b.x, m.m[4] = b.y, m.m[5] = b.z;
+  }
+}
+
+BodyFloor decode_floor(std::span<const Mat2x3> entries) {
+  OSSA_ASSERT(entries.size() == static_cast<size_t>(kBodyFloorEntries), "decode_floor: kBodyFloorEntries entries");
+  BodyFloor floor;
+  for (int k = 0; k < kBodyFloorEntries; ++k) {
+    const Mat2x3& m = entries[static_cast<size_t>(k)];
+    floor.segments[static_cast<size_t>(2 * k)] = {m.m[0], m.m[1], m.m[2]};
+    floor.segments[static_cast<size_t>(2 * k + 1)] = {m.m[3], m.m[4], m.m[5]};
+  }
+  floor.count = 0;
+  for (const glm::vec3& s : floor.segments) floor.count += s.x <= s.y;
+  return floor;
+}
+
+}  // namespace ossa

@@ -1,0 +1,89 @@
+// The floor a body rests on (body_floor.h): which box tops count, how a point rests on them,
+// and the palette entries the shader reads.
+
+#include <catch2/catch.hpp>
+
+#include <vector>
+
+#include "ossa/body/body_floor.h"
+#include "ossa/skeleton/pose.h"
+#include "ossa/skeleton/skeleton.h"
+
+using namespace ossa;
+
+namespace {
+
+// A two-bone creature lying along x from (x0, y) to (x0 + 2, y).
+struct Stick {
+  Skeleton skeleton;
+  std::vector<Mat2x3> world;
+  Stick(float x0, float y) {
+    skeleton.add_bone("a", BoneKind::kNeckVertebra, -1, 1.0f, 0.1f, BoneLocal{}, Layer::kBody);
+    skeleton.add_bone("b", BoneKind::kNeckVertebra, 0, 1.0f, 0.1f, BoneLocal{}, Layer::kBody);
+    Mat2x3 a;
+    a.m[4] = x0, a.m[5] = y;
+    Mat2x3 b = a;
+    b.m[4] = x0 + 1.0f;
+    world = {a, b};
+  }
+};
+
+Level level_of(std::vector<Box> boxes) {
+  Level level;
+  for (const Box& b : boxes) level.add_box(b);
+  return level;
+}
+
+}  // namespace
+
+TEST_CASE("a body's floor: the box tops under its bones, not ceilings or walls above them", "[body]") {
+  const Stick s(0.0f, 0.5f);
+  const Level level = level_of({
+      Box::from_corner(-5.0f, -1.0f, 10.0f, 1.0f),  // ground, top 0
+      Box::from_corner(1.2f, 0.0f, 0.3f, 0.2f),     // a step under the second bone, top 0.2
+      Box::from_corner(-1.0f, 1.0f, 4.0f, 0.5f),    // a ceiling above, bottom 1
+      Box::from_corner(2.05f, 0.0f, 1.0f, 3.0f),    // a wall just past the bones' end, top 3
+      Box::from_corner(8.0f, -1.0f, 1.0f, 2.0f),    // far away
+  });
+  const BodyFloor floor = body_floor(level, s.skeleton, s.world, 0.3f);
+  REQUIRE(floor.count == 2);
+  CHECK(floor.segments[0].z == 0.0f);
+  CHECK(floor.segments[0].x == Approx(-0.3f));  // clipped to the bones' reach
+  CHECK(floor.segments[0].y == Approx(2.3f));
+  CHECK(floor.segments[1].z == Approx(0.2f));
+  // Resting on it: lifted onto the highest top under the point, left alone above it.
+  CHECK(floor_point({1.0f, -0.1f}, floor).y == 0.0f);
+  CHECK(floor_point({1.3f, 0.1f}, floor).y == Approx(0.2f));
+  CHECK(floor_point({1.3f, 0.4f}, floor).y == Approx(0.4f));
+  CHECK(floor_point({5.0f, -2.0f}, floor).y == -2.0f);  // past the floor's ends
+}
+
+TEST_CASE("a body's floor counts ground its bones sank into, and merges tops of one height", "[body]") {
+  // A crawl wave may push bones below the ground's top: it is still the floor.
+  const Stick s(0.0f, -0.04f);
+  const Level level = level_of({Box::from_corner(-5.0f, -1.0f, 5.5f, 1.0f), Box::from_corner(0.5f, -1.0f, 5.0f, 1.0f)});
+  const BodyFloor floor = body_floor(level, s.skeleton, s.world, 0.1f);
+  REQUIRE(floor.count == 1);
+  CHECK(floor.segments[0].x == Approx(-0.1f));
+  CHECK(floor.segments[0].y == Approx(2.1f));
+  CHECK(floor_point({1.0f, -0.04f}, floor).y == 0.0f);
+  // No level, no floor.
+  CHECK(body_floor(Level{}, s.skeleton, s.world, 0.1f).count == 0);
+}
+
+TEST_CASE("a body's floor round-trips through its palette entries", "[body]") {
+  BodyFloor floor;
+  floor.count = 3;
+  floor.segments[0] = {-1.0f, 2.0f, 0.0f};
+  floor.segments[1] = {2.0f, 3.0f, 0.5f};
+  floor.segments[2] = {3.5f, 4.0f, -0.25f};
+  std::vector<Mat2x3> entries(kBodyFloorEntries);
+  encode_floor(floor, entries);
+  const BodyFloor back = decode_floor(entries);
+  CHECK(back.count == 3);
+  for (int k = 0; k < kBodyFloorSegments; ++k) CHECK(back.segments[static_cast<size_t>(k)] == floor.segments[static_cast<size_t>(k)]);
+  // The default floor holds nothing: every point stays where it is.
+  encode_floor(BodyFloor{}, entries);
+  CHECK(decode_floor(entries).count == 0);
+  CHECK(floor_point({0.0f, -10.0f}, decode_floor(entries)).y == -10.0f);
+}

@@ -1,0 +1,183 @@
+// Bodies drawn by the GPU (issue 30): the body program draws what the CPU skins (body_mesh.h's
+// skin_body_vertex and the floor, body_floor.h), one draw per layer however many creatures,
+// and one palette upload per frame for sprites and bodies together.
+
+#include <catch2/catch.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <vector>
+
+#include <glm/geometric.hpp>
+
+#include "gl_fixture.h"
+#include "ossa/body/body_floor.h"
+#include "ossa/body/body_mesh.h"
+#include "ossa/gen/skeleton_builder.h"
+#include "ossa/render/capture.h"
+#include "ossa/render/creature_batch.h"
+#include "ossa/render/gl.h"
+#include "ossa/render/sprite_mesh.h"
+#include "ossa/skeleton/pose.h"
+
+using namespace ossa;
+using namespace ossa::test;
+
+namespace {
+
+Creature example(const char* name) { return build_creature(scenes::generator().example(name).value()).value(); }
+
+bool background(const uint8_t* p, glm::vec3 bg) {
+  return std::abs(p[0] - bg.r * 255.0f) < 3.0f && std::abs(p[1] - bg.g * 255.0f) < 3.0f && std::abs(p[2] - bg.b * 255.0f) < 3.0f;
+}
+
+float cross2(glm::vec2 a, glm::vec2 b) { return a.x * b.y - a.y * b.x; }
+
+bool in_triangle(glm::vec2 p, glm::vec2 a, glm::vec2 b, glm::vec2 c) {
+  const float d1 = cross2(b - a, p - a), d2 = cross2(c - b, p - b), d3 = cross2(a - c, p - c);
+  return !((d1 < 0.0f || d2 < 0.0f || d3 < 0.0f) && (d1 > 0.0f || d2 > 0.0f || d3 > 0.0f));
+}
+
+}  // namespace
+
+TEST_CASE("bodies: the GPU draws what the CPU skins, flesh resting on the floor", "[render][body]") {
+  // A horse in its rest pose sunk 8 cm into a ground whose top is y = 0: the shader lifts the
+  // flesh below the top onto it, as floor_point() does. The pixels the GPU covers are the
+  // pixels the CPU's skinned, floored triangles cover (up to the edges' antialiasing).
+  Gl& g = gl();
+  const glm::vec3 bg{0.1f, 0.2f, 0.3f};
+  const Creature c = example("horse");
+  const BodyMesh body = build_body(c);
+  Level level;
+  level.add_box(Box::from_corner(-10.0f, -2.0f, 20.0f, 2.0f));
+  Transform2D sunk;
+  sunk.translation = {0.0f, -0.08f};
+  const std::vector<Mat2x3> model = model_matrices(c.skeleton, c.rest_pose.locals);
+  std::vector<Mat2x3> world(model.size());
+  for (size_t b = 0; b < model.size(); ++b) world[b] = sunk.to_mat2x3() * model[b];
+  const BodyFloor floor = body_floor(level, c.skeleton, world, body.reach);
+  REQUIRE(floor.count == 1);
+
+  CreatureBatch batch;
+  const int id = batch.add_body(body, c.skeleton);
+  batch.set_world(id, world);
+  batch.set_floor(id, floor);
+  batch.upload_palettes();
+  const Box b = body_bounds(body);
+  g.renderer->camera.fit({b.min_ws - glm::vec2(0.1f), b.max_ws + glm::vec2(0.1f)}, float(kW) / kH);
+  g.renderer->begin_frame(kW, kH, bg);
+  g.renderer->draw_creatures(batch, {}, CreatureLook::kBody);
+  CHECK(check_gl("bodies"));
+  CHECK(g.renderer->stats.draw_calls == 1);  // every body at once, creature by creature
+  CHECK(batch.palette_uploads() == 1);
+  const Image img = read_framebuffer(kW, kH);
+
+  // The CPU's picture: every vertex skinned and floored, the triangles' pixel centres.
+  std::vector<Mat2x3> palette(static_cast<size_t>(body.palette_size()));
+  body_palette(body, world, palette, floor);
+  std::vector<glm::vec2> px(body.vertices.size());
+  float lowest = 1e9f;
+  for (size_t i = 0; i < px.size(); ++i) {
+    const glm::vec2 p = floor_point(skin_body_vertex(body.vertices[i], palette), floor);
+    lowest = std::min(lowest, p.y);
+    px[i] = g.renderer->camera.world_to_pixel(p, kW, kH);
+  }
+  CHECK(lowest >= 0.0f);  // nothing below the ground's top
+  std::vector<uint8_t> cpu(static_cast<size_t>(kW * kH), 0);
+  for (size_t t = 0; t + 2 < body.indices.size(); t += 3) {
+    const glm::vec2 a = px[body.indices[t]], bb = px[body.indices[t + 1]], cc = px[body.indices[t + 2]];
+    const int x0 = std::max(0, static_cast<int>(std::floor(std::min({a.x, bb.x, cc.x}))));
+    const int x1 = std::min(kW - 1, static_cast<int>(std::ceil(std::max({a.x, bb.x, cc.x}))));
+    const int y0 = std::max(0, static_cast<int>(std::floor(std::min({a.y, bb.y, cc.y}))));
+    const int y1 = std::min(kH - 1, static_cast<int>(std::ceil(std::max({a.y, bb.y, cc.y}))));
+    for (int y = y0; y <= y1; ++y) {
+      for (int x = x0; x <= x1; ++x) {
+        if (in_triangle({x + 0.5f, y + 0.5f}, a, bb, cc)) cpu[static_cast<size_t>(y * kW + x)] = 1;
+      }
+    }
+  }
+  // read_framebuffer's rows: top row first (as world_to_pixel's y).
+  int both = 0, either = 0, below_ground = 0;
+  const float ground_px = g.renderer->camera.world_to_pixel({0.0f, 0.0f}, kW, kH).y;
+  for (int y = 0; y < kH; ++y) {
+    for (int x = 0; x < kW; ++x) {
+      const bool gpu = !background(img.pixel(x, y), bg);
+      const bool mine = cpu[static_cast<size_t>(y * kW + x)] != 0;
+      both += gpu && mine;
+      either += gpu || mine;
+      below_ground += gpu && y > ground_px + 1.0f;
+    }
+  }
+  INFO("both " << both << ", either " << either);
+  REQUIRE(either > 2000);
+  CHECK(static_cast<double>(both) / either > 0.95);
+  CHECK(below_ground == 0);
+}
+
+TEST_CASE("bodies: the body look is one draw, the x-ray look a draw per layer each, from one palette upload", "[render][body]") {
+  Gl& g = gl();
+  const Creature c = example("pig");
+  const BodyMesh body = build_body(c);
+  const SpriteMesh sprites = build_sprite_mesh(c, g.atlas->sprites);
+  auto draw = [&](int n, CreatureLook look) {
+    CreatureBatch batch;
+    for (int i = 0; i < n; ++i) {
+      Transform2D place;
+      place.translation = {2.5f * static_cast<float>(i % 20), 2.0f * static_cast<float>(i / 20)};
+      if (look != CreatureLook::kBody) batch.set_pose(batch.add(sprites, c.skeleton), c.skeleton, c.rest_pose.locals, place.to_mat2x3());
+      if (look != CreatureLook::kBones) batch.set_pose(batch.add_body(body, c.skeleton), c.skeleton, c.rest_pose.locals, place.to_mat2x3());
+    }
+    batch.upload_palettes();
+    g.renderer->camera.fit({{-1.0f, -1.0f}, {50.0f, 20.0f}}, float(kW) / kH);
+    g.renderer->begin_frame(kW, kH, {0.0f, 0.0f, 0.0f});
+    const Texture* textures[] = {&g.atlas->texture};
+    g.renderer->draw_creatures(batch, textures, look);
+    CHECK(batch.palette_uploads() == 1);
+    CHECK(check_gl("x-ray"));
+    return g.renderer->stats.draw_calls;
+  };
+  CHECK(draw(1, CreatureLook::kBody) == 1);
+  CHECK(draw(1, CreatureLook::kXray) == 2 * kLayerCount);
+  // However many creatures.
+  CHECK(draw(300, CreatureLook::kBody) == 1);
+  CHECK(draw(300, CreatureLook::kXray) == 2 * kLayerCount);
+}
+
+TEST_CASE("bodies: overlapping creatures do not interleave (the later one is wholly in front)", "[render][body]") {
+  // Two pigs on the same spot, a blue one added first and a red one after: wherever the red
+  // one covers the picture it is drawn exactly as if alone — the blue one's near legs (drawn
+  // after the bodies' trunks by a layer-major order) never show through it.
+  Gl& g = gl();
+  const glm::vec3 bg{0.1f, 0.2f, 0.3f};
+  Creature blue = example("pig"), red = example("pig");
+  blue.look.base = blue.look.belly = {0.1f, 0.2f, 0.9f};
+  red.look.base = red.look.belly = {0.9f, 0.1f, 0.1f};
+  blue.look.pattern = red.look.pattern = CoatPattern::kNone;
+  const BodyMesh blue_body = build_body(blue), red_body = build_body(red);
+  Transform2D shifted;
+  shifted.translation = {0.15f, 0.0f};  // a little ahead: the blue legs under the red trunk
+  const auto picture = [&](bool both) {
+    CreatureBatch batch;
+    if (both) batch.set_pose(batch.add_body(blue_body, blue.skeleton), blue.skeleton, blue.rest_pose.locals, shifted.to_mat2x3());
+    batch.set_pose(batch.add_body(red_body, red.skeleton), red.skeleton, red.rest_pose.locals, Mat2x3::identity());
+    batch.upload_palettes();
+    const Box b = body_bounds(red_body);
+    g.renderer->camera.fit({b.min_ws - glm::vec2(0.3f), b.max_ws + glm::vec2(0.3f)}, float(kW) / kH);
+    g.renderer->begin_frame(kW, kH, bg);
+    g.renderer->draw_creatures(batch, {}, CreatureLook::kBody);
+    return read_framebuffer(kW, kH);
+  };
+  const Image alone = picture(false), both = picture(true);
+  int covered = 0, differ = 0;
+  for (int y = 0; y < kH; ++y) {
+    for (int x = 0; x < kW; ++x) {
+      if (background(alone.pixel(x, y), bg)) continue;
+      ++covered;
+      const uint8_t* a = alone.pixel(x, y);
+      const uint8_t* b = both.pixel(x, y);
+      differ += std::abs(a[0] - b[0]) + std::abs(a[1] - b[1]) + std::abs(a[2] - b[2]) > 6;
+    }
+  }
+  REQUIRE(covered > 2000);
+  CHECK(differ < covered / 200);  // antialiased edges only
+}
