@@ -19,6 +19,7 @@
 #include "ossa/render/capture.h"
 #include "ossa/render/character_mesh.h"
 #include "ossa/render/creature_batch.h"
+#include "ossa/render/level_view.h"
 #include "ossa/render/renderer.h"
 #include "ossa/render/texture.h"
 
@@ -42,7 +43,7 @@ struct Game::Impl {
   bool imgui = false;
   bool batch_dirty = true;
   std::unordered_map<const Creature*, SpriteMesh> meshes;  // built once per creature
-  std::unordered_map<std::string, Texture> images;         // level background images
+  std::optional<LevelView> level_view;                     // the level as designed (art, look, sky)
   std::vector<const void*> batch_creatures;                // what the batch was built from (Creature or Character)
 
   // Rigged characters loaded so far, by rig path, each with its texture once GL is up.

@@ -81,6 +81,9 @@ Status Game::Impl::open_window(const GameOptions& o) {
   auto r = Renderer::create(default_shader_dir());
   if (!r.ok()) return r.error();
   renderer.emplace(std::move(r.value()));
+  auto view = LevelView::create(default_shader_dir());
+  if (!view.ok()) return view.error();
+  level_view.emplace(std::move(view.value()));
   const std::string sprite_dir = resolve_data_path("assets/sprites/bones");
   SpriteSet sprites = default_sprite_set();
   if (auto s = load_sprite_set(sprite_dir + "/sprites.json"); s.ok()) {
@@ -120,7 +123,7 @@ void Game::Impl::shutdown_imgui() {
 
 void Game::Impl::release_gl() {
   gif.reset();
-  images.clear();
+  level_view.reset();
   batch.reset();
   atlas.reset();
   renderer.reset();
@@ -255,39 +258,11 @@ void Game::Impl::render(Game& game, float alpha) {
   r.camera.half_height = base_half_height * zoom;
 
   const Level& level = world.level();
-  BackgroundStyle style;
-  if (level.background) {
-    style.sky_bottom = level.background->colour;
-    style.sky_top = level.background->colour * glm::vec3(0.62f, 0.75f, 0.95f);
-    style.parallax = level.background->parallax;
-  }
-  style.horizon_ws = level.spawn_ws.y;
-  r.begin_frame(window.width(), window.height(), style.sky_bottom);
-  DebugDraw scene;
-  add_background(scene, r.camera, style);
-  r.draw_debug(scene);
-  if (level.background && !level.background->image.empty()) {
-    // The level's image behind the hills' place, repeated and scrolled by its parallax in one
-    // draw (background.h).
-    const std::string key = level_path + "\n" + level.background->image;
-    auto it = images.find(key);
-    if (it == images.end()) {
-      // Relative to the level's folder (level_load.h resolve_level_resource), else assets/.
-      Result<std::string> file = resolve_level_resource(resolve_data_path(level_path), "background.image",
-                                                        level.background->image, data_path("assets"));
-      Texture texture;
-      if (file) {
-        texture = Texture::load(*file, Texture::Wrap::kRepeat);
-      } else {
-        render_log(file.message() + " (no background image)");
-      }
-      it = images.emplace(key, std::move(texture)).first;
-    }
-    draw_background_image(r, it->second, level.background->parallax);
-  }
-  DebugDraw ground;
-  add_level_scenery(ground, level, r.camera.visible_box());
-  r.draw_debug(ground);
+  level_view->reload_shaders_if_changed();
+  // The sky, the art behind the creatures and the ground (level_view.h); the clear colour is
+  // covered by the sky.
+  r.begin_frame(window.width(), window.height(), level.background ? level.background->colour : glm::vec3(0.55f, 0.70f, 0.85f));
+  level_view->draw_back(r, level, resolve_data_path(level_path));
 
   // Creatures: rebuild the batch when the cast changed, then one palette upload per frame.
   // Someone else (the editors' creature panel) may have replaced a creature: compare.
@@ -349,6 +324,7 @@ void Game::Impl::render(Game& game, float alpha) {
   }
   batch->upload_palettes();
   r.draw_batch(*batch, textures);
+  level_view->draw_front(r, level);
   if (game.on_viewport) {
     DebugDraw overlay;
     game.on_viewport(overlay);
