@@ -277,7 +277,9 @@ bool Game::frame(double dt_seconds) {
   Impl& m = *impl_;
   ActionPresses presses;
   SDL_Event e;
+  key_presses_.clear();
   while (SDL_PollEvent(&e)) {
+    if (auto chord = key_chord(e)) key_presses_.push_back(*chord);
     m.process_imgui_event(e);
     keyboard_->handle_event(e, presses);
     gamepad_->handle_event(e, presses);

@@ -19,6 +19,7 @@
 #include <functional>
 #include <memory>
 #include <optional>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -26,6 +27,7 @@
 #include "ossa/game/replay.h"
 #include "ossa/game/world.h"
 #include "ossa/io/result.h"
+#include "ossa/platform/input.h"
 
 namespace ossa {
 
@@ -115,6 +117,9 @@ class Game {
   bool replay_finished() const;
   // The camera of the last rendered frame (world metres; for mouse picking).
   const Camera2D& camera() const;
+  // The keys pressed during this frame's events, in order (a press and its release within one
+  // frame included): the editors' shortcuts read them in on_ui.
+  std::span<const KeyChord> key_presses() const { return key_presses_; }
 
   // ---- Hooks for the editors (DESIGN.md §10) -----------------------------------------------
   // Called every frame inside the ImGui frame, after the HUD (dt = the frame's seconds).
@@ -133,6 +138,7 @@ class Game {
   std::unique_ptr<Impl> impl_;
   GameOptions options_;
   std::unique_ptr<World> world_;
+  std::vector<KeyChord> key_presses_;
   std::unique_ptr<Gamepad> gamepad_;
   std::unique_ptr<MouseKeyboardInput> keyboard_;
   Controls last_controls_;

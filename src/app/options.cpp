@@ -42,7 +42,9 @@ Walk a generated creature over a box level with a gamepad or the keyboard.
 
 keys: A/D or Left/Right walk, Shift runs, Space/W/Up jumps, N next example, M random
       creature, C next character, H HUD, F12/P screenshot, G GIF of the next seconds,
-      R start/stop a replay, wheel zoom, Esc quits
+      R start/stop a replay, wheel zoom, F2 editors, Esc quits
+editors: Ctrl+Z undo, Ctrl+Y (or Ctrl+Shift+Z) redo, Ctrl+S save the level, Delete removes
+      the selected box
 gamepad: left stick walks (half throw = walk speed, full = run), RB/RT run, A jumps,
       Y next example, X random creature, LB next character, Back HUD, Start replay
 )";

@@ -18,8 +18,10 @@
 #include <string>
 
 #include "app/game.h"
+#include "app/game_editors.h"
 #include "app/options.h"
 #include "ossa/io/json.h"
+#include "ossa/level/level_load.h"
 #include "ossa/platform/image.h"
 #include "ossa/platform/input.h"
 
@@ -52,8 +54,9 @@ void run_frames(Game& game, int n) {
   for (int i = 0; i < n; ++i) REQUIRE(game.frame(kFrame));
 }
 
-void push_key(SDL_Scancode code, bool down) {
+void push_key(SDL_Scancode code, bool down, Uint16 mod = KMOD_NONE) {
   SDL_Event e{};
+  e.key.keysym.mod = mod;
   e.type = down ? SDL_KEYDOWN : SDL_KEYUP;
   e.key.state = down ? SDL_PRESSED : SDL_RELEASED;
   e.key.keysym.scancode = code;
@@ -209,6 +212,59 @@ TEST_CASE("keyboard events pushed through SDL walk and run the player", "[app]")
   // Escape quits.
   push_key(SDL_SCANCODE_ESCAPE, true);
   CHECK_FALSE(game.frame(kFrame));
+}
+
+TEST_CASE("F2 pressed and released within one frame shows and hides the editors, Ctrl+Z, Ctrl+Y and Ctrl+S too",
+          "[app]") {
+  use_offscreen();
+  GameOptions o = quiet_options();
+  // A copy of the default level: Ctrl+S writes it.
+  o.level = temp_dir() + "/keys_level.json";
+  std::filesystem::copy_file(resolve_data_path("levels/default.json"), o.level,
+                             std::filesystem::copy_options::overwrite_existing);
+  Game game;
+  REQUIRE(game.init(o).ok());
+  GameEditors editors(game, o);
+  EditorSuite& suite = editors.suite();
+  suite.enabled = false;
+  run_frames(game, 2);
+  // Four taps, each a press and its release in the same frame's events (ImGui 1.86's key
+  // state drops these): open, close, open, close.
+  for (int tap = 0; tap < 4; ++tap) {
+    push_key(SDL_SCANCODE_F2, true);
+    push_key(SDL_SCANCODE_F2, false);
+    run_frames(game, 1);
+    INFO("tap " << tap);
+    CHECK(suite.enabled == (tap % 2 == 0));
+  }
+  REQUIRE_FALSE(suite.enabled);
+
+  // Editors shown: a box added, Ctrl+Z tapped within a frame removes it, Ctrl+Y brings it back.
+  push_key(SDL_SCANCODE_F2, true);
+  push_key(SDL_SCANCODE_F2, false);
+  run_frames(game, 1);
+  REQUIRE(suite.enabled);
+  const size_t boxes = game.world().level().colliders().size();
+  suite.level_editor().add_box({2.0f, 6.0f}, {1.0f, 1.0f});
+  REQUIRE(game.world().level().colliders().size() == boxes + 1);
+  const auto tap_ctrl = [&](SDL_Scancode key) {
+    push_key(SDL_SCANCODE_LCTRL, true, KMOD_LCTRL);
+    push_key(key, true, KMOD_LCTRL);
+    push_key(key, false, KMOD_LCTRL);
+    push_key(SDL_SCANCODE_LCTRL, false);
+    run_frames(game, 1);
+  };
+  tap_ctrl(SDL_SCANCODE_Z);
+  CHECK(game.world().level().colliders().size() == boxes);
+  tap_ctrl(SDL_SCANCODE_Y);
+  CHECK(game.world().level().colliders().size() == boxes + 1);
+  // Ctrl+S saves the level to its file.
+  CHECK(suite.level_editor().dirty());
+  tap_ctrl(SDL_SCANCODE_S);
+  CHECK_FALSE(suite.level_editor().dirty());
+  auto saved = load_level(o.level, LevelLoadOptions{});
+  REQUIRE(saved.ok());
+  CHECK(saved->colliders().size() == boxes + 1);
 }
 
 TEST_CASE("unplugging the gamepad mid-game keeps running and hands control to the keyboard", "[app]") {

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include <SDL.h>
+
 #include "ossa/editor/editor_suite_internal.h"
 #include "ossa/game/world.h"
 #include "ossa/render/character_mesh.h"
@@ -219,26 +221,41 @@ void EditorSuite::draw_viewport(DebugDraw& debug) const {
   }
 }
 
-void EditorSuite::handle_shortcuts() {
-  const ImGuiIO& io = ImGui::GetIO();
-  if (io.WantTextInput) return;
-  if (io.KeyCtrl && ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Z), false)) {
-    if (io.KeyShift) undo_.redo(); else undo_.undo();
+void EditorSuite::handle_keys(std::span<const KeyChord> keys) {
+  for (const KeyChord& k : keys) {
+    if (k.key == SDLK_F2 && !k.ctrl && !k.alt) {
+      enabled = !enabled;
+      continue;
+    }
+    if (!enabled) continue;
+    const bool context = ImGui::GetCurrentContext() != nullptr;
+    if (context && ImGui::GetIO().WantTextInput) continue;  // the text field's own undo and keys
+    if (k.ctrl && !k.alt && k.key == SDLK_z) {
+      if (k.shift) undo_.redo(); else undo_.undo();
+    } else if (k.ctrl && !k.alt && k.key == SDLK_y) {
+      undo_.redo();
+    } else if (k.ctrl && !k.alt && k.key == SDLK_s) {
+      save_level();
+    } else if (k.key == SDLK_DELETE && !k.ctrl && level_edit_mode && !(context && ImGui::GetIO().WantCaptureKeyboard)) {
+      level_->delete_selected();
+    }
   }
-  if (io.KeyCtrl && ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Y), false)) undo_.redo();
-  if (!io.WantCaptureKeyboard && level_edit_mode &&
-      ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Delete), false))
-    level_->delete_selected();
+}
+
+void EditorSuite::save_level() {
+  LevelEditorModel& m = *level_;
+  if (m.path().empty()) (void)m.save_as(level_path_buf_); else (void)m.save();
+  refresh_level_files();
 }
 
 void EditorSuite::draw_ui() {
   if (!enabled) return;
-  handle_shortcuts();
   if (ImGui::BeginMainMenuBar()) {
     if (ImGui::BeginMenu("Edit")) {
       const std::string u = "Undo " + undo_.undo_label(), r = "Redo " + undo_.redo_label();
       if (ImGui::MenuItem(u.c_str(), "Ctrl+Z", false, undo_.can_undo())) undo_.undo();
       if (ImGui::MenuItem(r.c_str(), "Ctrl+Y", false, undo_.can_redo())) undo_.redo();
+      if (ImGui::MenuItem("Save level", "Ctrl+S")) save_level();
       ImGui::EndMenu();
     }
     if (ImGui::BeginMenu("Windows")) {

@@ -13,6 +13,7 @@
 //   ...
 //   editors.update(frame_dt);                           // footfall sampling, hot reload
 //   ImGui_ImplOpenGL3_NewFrame(); ImGui_ImplSDL2_NewFrame(); ImGui::NewFrame();
+//   editors.handle_keys(key_presses);                   // F2, Ctrl+Z/Y/S, Delete (SDL events)
 //   bool used = editors.handle_mouse(mouse_px, left_down, wheel, camera, viewport_px);
 //   if (!used && !ImGui::GetIO().WantCaptureMouse) { /* game mouse: pan, zoom */ }
 //   if (!editors.wants_keyboard()) { /* game keys */ }
@@ -31,6 +32,7 @@
 #include <functional>
 #include <memory>
 #include <optional>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -42,6 +44,7 @@
 #include "ossa/editor/spline_editor_model.h"
 #include "ossa/editor/tuning_model.h"
 #include "ossa/editor/undo_stack.h"
+#include "ossa/platform/input.h"
 #include "ossa/render/renderer.h"
 
 namespace ossa {
@@ -88,8 +91,15 @@ class EditorSuite {
   // current state and shows the error). dt in seconds.
   void update(float dt);
 
-  // Draws every editor window and the popups; handles Ctrl+Z / Ctrl+Y (and Delete for the
-  // selected box) when no text field has the keyboard. Call between ImGui::NewFrame() and
+  // The keyboard shortcuts, from the frame's key presses (Game::key_presses(): SDL events, so a
+  // tap shorter than a frame is never lost): F2 shows / hides the editors (`enabled`); while
+  // shown and no text field has the keyboard, Ctrl+Z undoes (Ctrl+Shift+Z redoes), Ctrl+Y
+  // redoes, Ctrl+S saves the level (the Level window's Save) and Delete removes the selected
+  // box (viewport editing on, no window has the keyboard). Call once per frame, inside the
+  // ImGui frame, before draw_ui().
+  void handle_keys(std::span<const KeyChord> keys);
+
+  // Draws every editor window and the popups. Call between ImGui::NewFrame() and
   // ImGui::Render().
   void draw_ui();
 
@@ -149,7 +159,7 @@ class EditorSuite {
   void draw_rig_preview(float width, float height);
   Status apply_character_to_player(const std::string& rig_path);
   void draw_popups();
-  void handle_shortcuts();
+  void save_level();
   void draw_spline_canvas(int slot, SplineVersion version, float width, float height);
   void draw_preview_canvas(float width, float height);
   void refresh_level_files();

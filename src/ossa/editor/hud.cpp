@@ -57,7 +57,7 @@ void Hud::draw(const HudInfo& info) {
     ImGui::Separator();
     ImGui::TextDisabled("A/D walk, Shift run, Space/W/Up jump, N next, M random, C character, H hud");
     ImGui::TextDisabled("pad: RB/RT run, A jump, Y next, X random, LB character, Back hud");
-    ImGui::TextDisabled("F12/P shot, G gif, R replay, wheel zoom, Esc quit");
+    ImGui::TextDisabled("F12/P shot, G gif, R replay, wheel zoom, F2 editors, Esc quit");
   }
   ImGui::End();
 }

@@ -57,10 +57,7 @@ void EditorSuite::draw_level_window() {
   }
   ImGui::SetNextItemWidth(-1);
   ImGui::InputText("##path", level_path_buf_, sizeof level_path_buf_);
-  if (ImGui::Button("Save")) {
-    if (m.path().empty()) (void)m.save_as(level_path_buf_); else (void)m.save();
-    refresh_level_files();
-  }
+  if (ImGui::Button("Save")) save_level();
   ImGui::SameLine();
   if (ImGui::Button("Save as")) {
     (void)m.save_as(level_path_buf_);
