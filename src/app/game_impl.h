@@ -19,6 +19,7 @@
 #include "ossa/render/capture.h"
 #include "ossa/render/character_mesh.h"
 #include "ossa/render/creature_batch.h"
+#include "app/camera_follow.h"
 #include "ossa/render/level_view.h"
 #include "ossa/render/renderer.h"
 #include "ossa/render/texture.h"
@@ -62,8 +63,8 @@ struct Game::Impl {
   double accumulator = 0.0;      // seconds not yet simulated
 
   // Camera.
-  glm::vec2 camera_ws{0.0f};
-  float look_ahead = 0.0f;       // metres, smoothed
+  CameraFollow follow;           // camera_follow.h
+  glm::vec2 camera_ws{0.0f};     // follow's centre, drawn with
   float zoom = 1.0f;             // wheel factor on the base view height
   float base_half_height = 2.5f; // metres, from the player's size
 
@@ -91,6 +92,8 @@ struct Game::Impl {
   void release_gl();
   void shutdown_imgui();
   void process_imgui_event(const SDL_Event& e);
+  CameraSubject camera_subject(const World& world, float alpha) const;
+  float window_aspect() const;
   void reset_camera(const World& world);
   void update_camera(const World& world, float alpha, float dt);
   void render(Game& game, float alpha);

@@ -219,33 +219,28 @@ Status Game::Impl::switch_character(World& world, const std::string& path, bool 
 
 // ---- Camera ---------------------------------------------------------------------------------
 
+CameraSubject Game::Impl::camera_subject(const World& world, float alpha) const {
+  const Animator& a = world.player()->animator();
+  CameraSubject s;
+  s.root_ws = player_root(alpha);
+  s.hip_height = a.hip_height();
+  s.velocity_x = a.velocity();
+  s.airborne = a.airborne();
+  return s;
+}
+
+float Game::Impl::window_aspect() const {
+  return static_cast<float>(window.width()) / static_cast<float>(std::max(1, window.height()));
+}
+
 void Game::Impl::reset_camera(const World& world) {
   base_half_height = framing_half_height(world.player()->animator().hip_height());
-  const glm::vec2 root = player_root(1.0f);
-  const float ground = root.y - world.player()->animator().hip_height();
-  camera_ws = {root.x, ground + 0.55f * base_half_height * zoom};
-  look_ahead = 0.0f;
+  follow.reset(world.level(), camera_subject(world, 1.0f), base_half_height * zoom, window_aspect());
+  camera_ws = follow.center_ws();
 }
 
 void Game::Impl::update_camera(const World& world, float alpha, float dt) {
-  const Animator& a = world.player()->animator();
-  const float half_height = base_half_height * zoom;
-  const float aspect = static_cast<float>(window.width()) / static_cast<float>(std::max(1, window.height()));
-  // Look ahead in the walking direction: up to a third of the half-width, reached in ~1 s.
-  const float max_ahead = 0.35f * half_height * aspect;
-  const float want_ahead = std::clamp(a.velocity() * 0.8f, -max_ahead, max_ahead);
-  look_ahead += (want_ahead - look_ahead) * (1.0f - std::exp(-1.5f * dt));
-  const glm::vec2 root = player_root(alpha);
-  const float ground = root.y - a.hip_height();
-  // The ground sits in the lower third of the screen.
-  const glm::vec2 target{root.x + look_ahead, ground + 0.55f * half_height};
-  // Critically damped-ish follow: fast horizontally so the creature never leaves the view,
-  // slower vertically so steps do not shake the picture.
-  camera_ws.x += (target.x - camera_ws.x) * (1.0f - std::exp(-5.0f * dt));
-  camera_ws.y += (target.y - camera_ws.y) * (1.0f - std::exp(-3.0f * dt));
-  // Never let the player leave the inner 80 % of the view.
-  const float limit = 0.8f * half_height * aspect;
-  camera_ws.x = std::clamp(camera_ws.x, root.x - limit, root.x + limit);
+  camera_ws = follow.update(world.level(), camera_subject(world, alpha), base_half_height * zoom, window_aspect(), dt);
 }
 
 // ---- Drawing --------------------------------------------------------------------------------
@@ -255,7 +250,7 @@ void Game::Impl::render(Game& game, float alpha) {
   Renderer& r = *renderer;
   r.reload_shaders_if_changed();  // edited shader files take effect while the game runs
   r.camera.center_ws = camera_ws;
-  r.camera.half_height = base_half_height * zoom;
+  r.camera.half_height = follow.half_height(base_half_height * zoom);
 
   const Level& level = world.level();
   level_view->reload_shaders_if_changed();

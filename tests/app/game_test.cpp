@@ -16,6 +16,9 @@
 #include <sys/wait.h>
 #include <unistd.h>
 #include <string>
+#include <vector>
+
+#include <glm/geometric.hpp>
 
 #include "app/game.h"
 #include "app/game_editors.h"
@@ -24,6 +27,7 @@
 #include "ossa/level/level_load.h"
 #include "ossa/platform/image.h"
 #include "ossa/platform/input.h"
+#include "ossa/render/renderer.h"
 
 namespace {
 
@@ -265,6 +269,85 @@ TEST_CASE("F2 pressed and released within one frame shows and hides the editors,
   auto saved = load_level(o.level, LevelLoadOptions{});
   REQUIRE(saved.ok());
   CHECK(saved->colliders().size() == boxes + 1);
+}
+
+TEST_CASE("the camera shows the landing of every ledge of drops.json 0.3 s before touch-down and rests still",
+          "[app]") {
+  use_offscreen();
+  for (const bool run : {false, true}) {
+    INFO((run ? "running" : "walking"));
+    GameOptions o = quiet_options();
+    o.level = resolve_data_path("levels/drops.json");
+    Game game;
+    REQUIRE(game.init(o).ok());
+    const Animator& a = game.world().player()->animator();
+    const Level& level = game.world().level();
+    struct Sample {
+      double t;
+      Box view;
+      bool airborne;
+      float x, feet;
+    };
+    std::vector<Sample> samples;
+    push_key(SDL_SCANCODE_D, true);
+    if (run) push_key(SDL_SCANCODE_LSHIFT, true, KMOD_LSHIFT);
+    double t = 0.0;
+    // Over the 0.3, 1, 2 and 4 m ledges (x = 6, 12, 18, 26) to the gap at x = 38.
+    while (a.x() < 36.5f && t < 60.0) {
+      REQUIRE(game.frame(kFrame));
+      t += kFrame;
+      samples.push_back({t, game.camera().visible_box(), a.airborne(), a.x(), a.root_y() - a.hip_height()});
+    }
+    REQUIRE(a.x() >= 36.5f);
+    if (run) push_key(SDL_SCANCODE_LSHIFT, false);
+    push_key(SDL_SCANCODE_D, false);
+    // The ledges: a box's right edge where the next box starts lower.
+    struct Ledge {
+      float x, upper, lower;
+    };
+    std::vector<Ledge> ledges;
+    for (const Box& b : level.colliders()) {
+      for (const Box& c : level.colliders()) {
+        if (std::abs(c.min_ws.x - b.max_ws.x) < 1e-3f && c.max_ws.y < b.max_ws.y - 0.2f && b.max_ws.x > level.spawn_ws.x &&
+            b.max_ws.x < 36.5f) {
+          ledges.push_back({b.max_ws.x, b.max_ws.y, c.max_ws.y});
+        }
+      }
+    }
+    REQUIRE(ledges.size() == 4);
+    bool fell_in_the_air = false;
+    for (const Ledge& ledge : ledges) {
+      // Touch-down: the first frame past the edge with the feet down on the lower box.
+      size_t i = 0;
+      while (i < samples.size() && !(samples[i].x > ledge.x && samples[i].feet < ledge.lower + 0.1f)) ++i;
+      REQUIRE(i < samples.size());
+      for (size_t j = i; j > 0 && samples[j - 1].x > ledge.x - 1.0f; --j) fell_in_the_air |= samples[j - 1].airborne;
+      const glm::vec2 landing{samples[i].x, ledge.lower};
+      for (size_t j = i + 1; j-- > 0 && samples[j].t >= samples[i].t - 0.3 - 1e-9;) {
+        INFO("ledge at x " << ledge.x << ", " << ledge.upper - ledge.lower << " m: landing at (" << landing.x << ", "
+                           << landing.y << ") at t = " << samples[i].t << " s; frame at t = " << samples[j].t
+                           << " s, view y " << samples[j].view.min_ws.y << " .. " << samples[j].view.max_ws.y << ", x "
+                           << samples[j].view.min_ws.x << " .. " << samples[j].view.max_ws.x);
+        const Box& v = samples[j].view;
+        CHECK(landing.x > v.min_ws.x + 0.05f);
+        CHECK(landing.x < v.max_ws.x - 0.05f);
+        CHECK(landing.y > v.min_ws.y + 0.05f);
+        CHECK(landing.y < v.max_ws.y - 0.05f);
+      }
+    }
+    CHECK(fell_in_the_air);  // the 4 m ledge at least is a fall
+
+    // At rest the camera comes to a stop: no jitter.
+    run_frames(game, 240);
+    glm::vec2 last = game.camera().center_ws;
+    float moved = 0.0f;
+    for (int i = 0; i < 60; ++i) {
+      run_frames(game, 1);
+      moved = std::max(moved, glm::length(game.camera().center_ws - last));
+      last = game.camera().center_ws;
+    }
+    CHECK(moved < 5e-4f);
+  }
 }
 
 TEST_CASE("unplugging the gamepad mid-game keeps running and hands control to the keyboard", "[app]") {
