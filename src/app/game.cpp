@@ -223,7 +223,7 @@ Status Game::init(const GameOptions& o) {
   if (auto s = m.open_window(o); !s.ok()) return s;
   gamepad_ = std::make_unique<Gamepad>(resolve_data_path("assets/gamecontrollerdb.txt"));
   keyboard_ = std::make_unique<MouseKeyboardInput>();
-  m.hud.visible = o.hud;
+  m.hud.mode = o.hud ? HudMode::kPlayer : HudMode::kOff;
   m.capture_all_frames = false;
   if (!o.gif.empty()) {
     if (auto s = m.start_gif(o.gif, o.headless ? 1e9f : o.gif_seconds); !s.ok()) return s;
@@ -271,6 +271,8 @@ void Game::next_character() {
   }
 }
 
+HudMode Game::hud_mode() const { return impl_->hud.mode; }
+
 Status Game::set_player_character(const std::string& rig_path) { return impl_->switch_character(*world_, rig_path, true); }
 
 bool Game::frame(double dt_seconds) {
@@ -298,7 +300,10 @@ bool Game::frame(double dt_seconds) {
   if (presses[Action::kNextCreature]) next_example();
   if (presses[Action::kRandomCreature]) random_creature();
   if (presses[Action::kNextCharacter]) next_character();
-  if (presses[Action::kToggleHud]) m.hud.visible = !m.hud.visible;
+  if (presses[Action::kToggleHud]) {
+    m.hud.cycle();
+    if (m.hud.mode != HudMode::kOff) m.say(std::string("HUD: ") + hud_mode_name(m.hud.mode));
+  }
   if (presses[Action::kGif] && !m.gif) {
     const std::string path = next_free(options_.out_dir, "gif", ".gif");
     if (auto s = m.start_gif(path, options_.gif_seconds); !s.ok()) m.say(s.message());

@@ -26,6 +26,7 @@
 #include "ossa/game/controls.h"
 #include "ossa/game/replay.h"
 #include "ossa/game/world.h"
+#include "ossa/editor/hud.h"
 #include "ossa/io/result.h"
 #include "ossa/platform/input.h"
 
@@ -115,6 +116,8 @@ class Game {
   // saved it since); on an error the player stays as it was and the error names the file.
   Status set_player_character(const std::string& rig_path);
   bool replay_finished() const;
+  // What the HUD shows (H cycles it: player, developer, off).
+  HudMode hud_mode() const;
   // The camera of the last rendered frame (world metres; for mouse picking).
   const Camera2D& camera() const;
   // The keys pressed during this frame's events, in order (a press and its release within one

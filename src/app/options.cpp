@@ -36,13 +36,14 @@ Walk a generated creature over a box level with a gamepad or the keyboard.
   --no-vsync        do not wait for the display's refresh
   --fps-cap N       frames per second limit without vsync, 0-1000 (0 = none)
   --size WxH        window size in pixels (default 1280x720)
-  --no-hud          start with the HUD hidden
+  --no-hud          start with the HUD off (default: the player HUD: name, km/h, gait)
   --out DIR         folder for key-triggered screenshots, GIFs and replays (default out)
   --help            this text
 
 keys: A/D or Left/Right walk, Shift runs, Space/W/Up jumps, N next example, M random
-      creature, C next character, H HUD, F12/P screenshot, G GIF of the next seconds,
-      R start/stop a replay, wheel zoom, F2 editors, Esc quits
+      creature, C next character (humanoid, dog), H HUD (player, developer, off),
+      F12/P screenshot, G GIF of the next seconds, R start/stop a replay, wheel zoom,
+      F2 editors, Esc quits
 editors: Ctrl+Z undo, Ctrl+Y (or Ctrl+Shift+Z) redo, Ctrl+S save the level, Delete removes
       the selected box
 gamepad: left stick walks (half throw = walk speed, full = run), RB/RT run, A jumps,
