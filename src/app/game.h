@@ -118,6 +118,8 @@ class Game {
   bool replay_finished() const;
   // What the HUD shows (H cycles it: player, developer, off).
   HudMode hud_mode() const;
+  // Whether the HUD is drawn: its mode is not off and hide_hud (the editors) does not hide it.
+  bool hud_shown() const { return hud_mode() != HudMode::kOff && !(hide_hud && hide_hud()); }
   // The camera of the last rendered frame (world metres; for mouse picking).
   const Camera2D& camera() const;
   // The keys pressed during this frame's events, in order (a press and its release within one
@@ -135,6 +137,9 @@ class Game {
   std::function<bool()> on_quit;
   // Polled every frame: true ends the game (e.g. the editors' "discard" was confirmed).
   std::function<bool()> should_quit;
+  // Polled every frame: true hides the HUD (the editors are shown: their windows and menu bar
+  // take the screen's edges).
+  std::function<bool()> hide_hud;
 
  private:
   struct Impl;

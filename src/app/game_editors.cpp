@@ -55,6 +55,7 @@ GameEditors::GameEditors(Game& game, const GameOptions& o) : game_(&game) {
     return false;
   };
   game.should_quit = [&editors] { return editors.quit_confirmed(); };
+  game.hide_hud = [&editors] { return editors.enabled; };
 }
 
 GameEditors::~GameEditors() {
@@ -62,6 +63,7 @@ GameEditors::~GameEditors() {
   game_->on_viewport = nullptr;
   game_->on_quit = nullptr;
   game_->should_quit = nullptr;
+  game_->hide_hud = nullptr;
 }
 
 }  // namespace ossa

@@ -349,7 +349,7 @@ void Game::Impl::render(Game& game, float alpha) {
     info.status = status;
     info.recording = recording;
     info.gif = gif.has_value();
-    hud.draw(info);
+    if (!(game.hide_hud && game.hide_hud())) hud.draw(info);
     if (game.on_ui) game.on_ui(frame_dt);
     ImGui::Render();
     ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());

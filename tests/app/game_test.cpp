@@ -243,12 +243,14 @@ TEST_CASE("F2 pressed and released within one frame shows and hides the editors,
   run_frames(game, 2);
   // Four taps, each a press and its release in the same frame's events (ImGui 1.86's key
   // state drops these): open, close, open, close.
+  CHECK(game.hud_shown());
   for (int tap = 0; tap < 4; ++tap) {
     push_key(SDL_SCANCODE_F2, true);
     push_key(SDL_SCANCODE_F2, false);
     run_frames(game, 1);
     INFO("tap " << tap);
     CHECK(suite.enabled == (tap % 2 == 0));
+    CHECK(game.hud_shown() == !suite.enabled);  // the HUD is hidden while the editors are shown
   }
   REQUIRE_FALSE(suite.enabled);
 

@@ -242,6 +242,14 @@ void EditorSuite::handle_keys(std::span<const KeyChord> keys) {
   }
 }
 
+void EditorSuite::place_next_window(EditorWindow window) {
+  const ImVec2 display = ImGui::GetIO().DisplaySize;
+  const WindowRect r = editor_layout({display.x, display.y})[static_cast<size_t>(window)];
+  const ImGuiCond cond = reset_layout_ ? ImGuiCond_Always : ImGuiCond_FirstUseEver;
+  ImGui::SetNextWindowPos(ImVec2(r.pos.x, r.pos.y), cond);
+  ImGui::SetNextWindowSize(ImVec2(r.size.x, r.size.y), cond);
+}
+
 void EditorSuite::save_level() {
   LevelEditorModel& m = *level_;
   if (m.path().empty()) (void)m.save_as(level_path_buf_); else (void)m.save();
@@ -265,6 +273,8 @@ void EditorSuite::draw_ui() {
       ImGui::MenuItem("Tuning", nullptr, &show_tuning);
       ImGui::MenuItem("Rig", nullptr, &show_rig);
       ImGui::MenuItem("Edit level in viewport", nullptr, &level_edit_mode);
+      ImGui::Separator();
+      if (ImGui::MenuItem("Reset layout")) reset_layout_ = true;
       ImGui::EndMenu();
     }
     if (has_unsaved_changes()) ImGui::TextColored(ImVec4(1.0f, 0.8f, 0.3f, 1.0f), "  unsaved changes");
@@ -275,6 +285,7 @@ void EditorSuite::draw_ui() {
   if (show_creature) draw_creature_window();
   if (show_tuning) draw_tuning_window();
   if (show_rig) draw_rig_window();
+  reset_layout_ = false;
   draw_popups();
 }
 

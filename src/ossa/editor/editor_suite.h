@@ -39,6 +39,7 @@
 #include <glm/vec2.hpp>
 
 #include "ossa/editor/creature_panel_model.h"
+#include "ossa/editor/editor_layout.h"
 #include "ossa/editor/level_editor_model.h"
 #include "ossa/editor/rig_editor_model.h"
 #include "ossa/editor/spline_editor_model.h"
@@ -160,6 +161,9 @@ class EditorSuite {
   Status apply_character_to_player(const std::string& rig_path);
   void draw_popups();
   void save_level();
+  // Sets the next window's position and size from editor_layout() (first use, or always in
+  // the frame after Windows > Reset layout).
+  void place_next_window(EditorWindow window);
   void draw_spline_canvas(int slot, SplineVersion version, float width, float height);
   void draw_preview_canvas(float width, float height);
   void refresh_level_files();
@@ -191,6 +195,7 @@ class EditorSuite {
   float level_files_age_ = 1e9f;
   float poll_timer_ = 0.0f;
   char level_path_buf_[512] = {};
+  bool reset_layout_ = false;  // Windows > Reset layout: place every window anew this frame
   char tiled_path_buf_[512] = {};
   char proto_path_buf_[512] = {};
   char genome_path_buf_[512] = {};

@@ -114,8 +114,7 @@ void EditorSuite::draw_rig_preview(float width, float height) {
 
 void EditorSuite::draw_rig_window() {
   RigEditorModel& m = *rig_;
-  ImGui::SetNextWindowPos(ImVec2(420, 40), ImGuiCond_FirstUseEver);
-  ImGui::SetNextWindowSize(ImVec2(560, 720), ImGuiCond_FirstUseEver);
+  place_next_window(EditorWindow::kRig);
   const std::string title = std::string("Rig") + (m.dirty() ? " *" : "") + "###rig";
   if (!ImGui::Begin(title.c_str(), &show_rig)) {
     ImGui::End();
