@@ -340,9 +340,13 @@ bool Game::frame(double dt_seconds) {
       m.input_name = keyboard_->active() || !gamepad_->connected() ? "keyboard" : gamepad_->name();
     }
     m.snapshot_all(*world_, false);
+    // A replay's controls already had the player's meetings applied when they were recorded.
+    world_->player_meets_creatures = m.input_name != "replay";
     world_->step(c);
     m.after_step(*world_);
-    if (m.recording) m.record.push(c);
+    // The controls the world applied (a move into a creature dropped): the replay then plays
+    // back the same, whatever creatures are around.
+    if (m.recording) m.record.push(world_->applied_player_controls());
     last_controls_ = c;
     m.accumulator -= tick;
     ++steps;
