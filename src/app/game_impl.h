@@ -82,6 +82,7 @@ struct Game::Impl {
   std::string gif_path;
   float gif_remaining = 0.0f;    // seconds
   float gif_clock = 0.0f;        // seconds since the last GIF frame
+  std::optional<Image> gif_frame;  // the next GIF frame, read before the HUD was drawn
   bool capture_all_frames = false;
   bool recording = false;
   bool last_record_failed = false;

@@ -326,6 +326,10 @@ void Game::Impl::render(Game& game, float alpha) {
     r.draw_debug(overlay);
   }
 
+  // A GIF frame due this frame is the scene without the HUD and the editors' windows (at the
+  // GIF's half size their text would be unreadable).
+  if (gif && gif_clock + frame_dt >= 0.04f - 1e-4f) gif_frame = half_size(read_framebuffer(window.width(), window.height()));
+
   // HUD.
   if (imgui) {
     ImGui_ImplOpenGL3_NewFrame();
@@ -377,7 +381,8 @@ void Game::Impl::capture_gif_frame(float dt) {
   gif_clock += dt;
   if (gif_clock >= 0.04f - 1e-4f) {  // 25 frames per second, the GIF's 4 cs delay
     gif_clock = std::fmod(gif_clock, 0.04f);
-    const Status s = gif->add_frame(half_size(read_framebuffer(window.width(), window.height())));
+    const Status s = gif->add_frame(gif_frame ? *gif_frame : half_size(read_framebuffer(window.width(), window.height())));
+    gif_frame.reset();
     if (!s.ok()) {
       say(s.message());
       gif.reset();

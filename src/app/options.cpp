@@ -29,7 +29,8 @@ Walk a generated creature over a box level with a gamepad or the keyboard.
                     demo script driving the player (unless --replay)
   --frames N        stop after N frames (headless default: 600, or the replay's end)
   --png F           write the last frame as PNG on exit
-  --gif F           record a GIF (headless: the whole run; else the first --gif-seconds)
+  --gif F           record a GIF (headless: the whole run; else the first --gif-seconds),
+                    half size, without the HUD
   --gif-seconds S   length of a GIF, 0.5-60 seconds (default 5)
   --state F         write JSON on exit: frames, player {x, y, speed, creature}, spawn {x, y}
   --hz N            simulation ticks per second, 30-480 (default 120)

@@ -11,6 +11,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <random>
 #include <sstream>
 #include <sys/wait.h>
@@ -555,6 +556,36 @@ TEST_CASE("ossa --headless --frames 600 --png shows the creature on the level", 
   }
   CHECK(bone_pixels > 2000);
   CHECK(grounded_columns > 100);
+}
+
+TEST_CASE("a GIF leaves the HUD out: with and without the HUD the same frames", "[app]") {
+  const std::string dir = temp_dir();
+  std::string gifs[2];
+  for (int hud = 0; hud < 2; ++hud) {
+    gifs[hud] = dir + "/hud" + std::to_string(hud) + ".gif";
+    std::string err;
+    const int rc = run_command(bin_dir() + "/ossa --headless --frames 20 --npcs 0 --size 320x180 --gif " + gifs[hud] +
+                                   (hud ? "" : " --no-hud"),
+                               &err);
+    INFO(err);
+    REQUIRE(rc == 0);
+  }
+  std::ifstream a(gifs[0], std::ios::binary), b(gifs[1], std::ios::binary);
+  const std::string bytes_a((std::istreambuf_iterator<char>(a)), {}), bytes_b((std::istreambuf_iterator<char>(b)), {});
+  REQUIRE(bytes_a.size() > 100);
+  CHECK(bytes_a == bytes_b);
+  // The same run's last frame as PNG keeps the HUD (screenshots show what the window shows).
+  std::string err;
+  const std::string png[2] = {dir + "/hud0.png", dir + "/hud1.png"};
+  for (int hud = 0; hud < 2; ++hud) {
+    REQUIRE(run_command(bin_dir() + "/ossa --headless --frames 20 --npcs 0 --size 320x180 --png " + png[hud] +
+                            (hud ? "" : " --no-hud"),
+                        &err) == 0);
+  }
+  auto with = load_image(png[1]), without = load_image(png[0]);
+  REQUIRE(with.ok());
+  REQUIRE(without.ok());
+  CHECK(with->rgba != without->rgba);
 }
 
 TEST_CASE("ossa rejects bad arguments and files with a message", "[app]") {
