@@ -296,3 +296,33 @@ TEST_CASE("a look's top row runs along the uncovered tops only", "[render][level
   CHECK(tops[1].rect_ws.min_ws.y == Approx(0.5f));
   CHECK(g.parts[static_cast<size_t>(LookPart::kFill)].size() == 2);
 }
+
+TEST_CASE("a 200 x 50 tile map is one draw per tileset per layer", "[render][level_view]") {
+  const std::string png = write_quadrant_tileset();
+  auto art = std::make_shared<LevelArt>();
+  art->file = "big.tmx";
+  art->add_image(png, "quadrants.png", 16, 8);
+  ArtTileset set;
+  set.images = {0};
+  set.tile_w_px = set.tile_h_px = 8;
+  art->tilesets.push_back(set);
+  for (int layer = 0; layer < 2; ++layer) {
+    ArtLayer l;
+    ArtBatch batch;
+    for (int y = 0; y < 50; ++y) {
+      for (int x = 0; x < 200; ++x) {
+        batch.tiles.push_back(ArtTile{{0.5f * static_cast<float>(x), 0.5f * static_cast<float>(y)}, {0.5f, 0.5f},
+                                      static_cast<uint32_t>((x + y + layer) % 2), 0, 255});
+      }
+    }
+    l.batches.push_back(std::move(batch));
+    art->layers.push_back(std::move(l));
+  }
+  Level level;
+  level.add_box(Box{{0.0f, -1.0f}, {100.0f, 0.0f}});
+  level.art = art;
+  draw(level, "big.tmx", Box{{0.0f, 0.0f}, {100.0f, 25.0f}});
+  CHECK(view().stats().tiles_drawn == 20000);
+  CHECK(view().stats().draw_calls == 3);  // the sky and one per layer
+  CHECK(view().stats().textures == 1);
+}
