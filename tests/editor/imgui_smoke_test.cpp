@@ -233,6 +233,18 @@ TEST_CASE("imgui smoke: the rig window shows the character walking, edits undo, 
   rig.preview_stick = 0.5f;
   for (int i = 0; i < 60; ++i) s.frame({640.0f, 700.0f}, false);
   CHECK(rig.preview()->x() > 1.0f);
+  // The preview draws the skinned mesh with its texture: triangles from that texture, as many
+  // as the mesh has.
+  const unsigned texture = s.suite->rig_preview_texture();
+  REQUIRE(texture != 0u);
+  unsigned textured_indices = 0;
+  const ImDrawData* draw = ImGui::GetDrawData();
+  for (int l = 0; l < draw->CmdListsCount; ++l) {
+    for (const ImDrawCmd& cmd : draw->CmdLists[l]->CmdBuffer) {
+      if (cmd.TextureId == reinterpret_cast<ImTextureID>(static_cast<intptr_t>(texture))) textured_indices += cmd.ElemCount;
+    }
+  }
+  CHECK(textured_indices >= 3u * 20u);
   rig.select({RigSlotKind::kLegFoot, 0});
   s.frame({640.0f, 700.0f}, false, "rig");
   rig.clear({RigSlotKind::kLegFoot, 0});

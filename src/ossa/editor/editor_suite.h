@@ -47,6 +47,8 @@
 #include "ossa/editor/undo_stack.h"
 #include "ossa/platform/input.h"
 #include "ossa/render/renderer.h"
+#include "ossa/render/sprite_mesh.h"
+#include "ossa/render/texture.h"
 
 namespace ossa {
 
@@ -142,6 +144,10 @@ class EditorSuite {
   // suite's own loading without it).
   Status apply_character_to_player_for_tests(const std::string& rig_path) { return apply_character_to_player(rig_path); }
 
+  // The GL texture the Rig window's preview draws the character's mesh with (0: none yet, or
+  // the mesh has no texture and is drawn grey). For tests.
+  unsigned rig_preview_texture() const { return rig_preview_texture_ ? rig_preview_texture_->id() : 0u; }
+
   // Screen position (ImGui pixels) of a key of the spline canvas as drawn in the last frame
   // (nullopt before the first frame or when the window is hidden). For tests and tooling.
   std::optional<glm::vec2> spline_key_screen_px(SplineVersion version, int key) const;
@@ -177,6 +183,11 @@ class EditorSuite {
   std::unique_ptr<CreaturePanelModel> creature_;
   std::unique_ptr<TuningModel> tuning_;
   std::unique_ptr<RigEditorModel> rig_;
+  // The Rig window's preview geometry: the character's mesh as batch geometry, rebuilt when
+  // the character changes.
+  const Character* rig_preview_key_ = nullptr;
+  SpriteMesh rig_preview_mesh_;
+  std::optional<Texture> rig_preview_texture_;  // the mesh's texture (none: drawn grey)
 
   // Viewport state.
   bool mouse_was_down_ = false;
