@@ -588,6 +588,33 @@ TEST_CASE("a GIF leaves the HUD out: with and without the HUD the same frames", 
   CHECK(with->rgba != without->rgba);
 }
 
+TEST_CASE("ossa-render --level draws the level: its look, its art, and its boxes when an image is missing", "[app]") {
+  const std::string dir = temp_dir();
+  const auto render = [&](const std::string& level, const std::string& png, std::string* err) {
+    return run_command(bin_dir() + "/ossa-render --example horse --width 320 --height 180 --level " + level + " --png " + png, err);
+  };
+  std::string err;
+  REQUIRE(render(resolve_data_path("levels/drops.json"), dir + "/drops.png", &err) == 0);
+  REQUIRE(render(resolve_data_path("levels/stairs.json"), dir + "/stairs.png", &err) == 0);
+  REQUIRE(render(resolve_data_path("tests/level/data/art/meadow.tmx"), dir + "/meadow.png", &err) == 0);
+  CHECK(err.find("ossa render:") == std::string::npos);
+  // The map without its images, next to its tilesets: warnings name the map and each image.
+  const std::string bare = dir + "/bare";
+  std::filesystem::create_directories(bare);
+  for (const char* f : {"meadow.tmx", "meadow.tsx", "props.tsj"}) {
+    std::filesystem::copy_file(resolve_data_path(std::string("tests/level/data/art/") + f), bare + "/" + f,
+                               std::filesystem::copy_options::overwrite_existing);
+  }
+  REQUIRE(render(bare + "/meadow.tmx", dir + "/bare.png", &err) == 0);
+  CHECK_THAT(err, Catch::Contains(bare + "/meadow.tmx: image " + bare + "/meadow.png"));
+  CHECK_THAT(err, Catch::Contains("drawing the level's boxes"));
+  auto drops = load_image(dir + "/drops.png"), stairs = load_image(dir + "/stairs.png");
+  auto meadow = load_image(dir + "/meadow.png"), fallback = load_image(dir + "/bare.png");
+  REQUIRE((drops.ok() && stairs.ok() && meadow.ok() && fallback.ok()));
+  CHECK(drops->rgba != stairs->rgba);
+  CHECK(meadow->rgba != fallback->rgba);
+}
+
 TEST_CASE("ossa rejects bad arguments and files with a message", "[app]") {
   const std::string ossa = bin_dir() + "/ossa";
   const std::string dir = temp_dir();

@@ -318,7 +318,7 @@ int run(const Args& a) {
     if (!lv.ok()) fail(lv.message());
     level_view.emplace(std::move(lv.value()));
     level_view->draw_back(*renderer, *level, *a.level);
-    for (const std::string& w : level_view->take_warnings()) std::fprintf(stderr, "warning: %s\n", w.c_str());
+    (void)level_view->take_warnings();  // already on stderr (render_log: "ossa render: ...")
   } else {
     renderer->draw_debug(debug);
   }
