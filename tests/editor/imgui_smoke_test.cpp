@@ -222,6 +222,24 @@ TEST_CASE("imgui smoke: every window draws, with screenshots on request", "[edit
   REQUIRE(ImGui::IsPopupOpen("", ImGuiPopupFlags_AnyPopupId | ImGuiPopupFlags_AnyPopupLevel));
 }
 
+TEST_CASE("imgui smoke: a level drawn with its art shows its boxes' outlines while editing", "[editor][imgui]") {
+  Scene s;
+  s.frame({640.0f, 700.0f}, false);
+  DebugDraw plain;
+  s.suite->draw_viewport(plain);
+  auto art = std::make_shared<LevelArt>();
+  ArtLayer layer;
+  layer.kind = ArtLayer::Kind::kImage;
+  art->layers.push_back(layer);
+  s.world.level().art = art;
+  DebugDraw with_art;
+  s.suite->draw_viewport(with_art);
+  std::vector<int> in_view;
+  s.world.level().overlapping(s.camera.visible_box(), in_view);
+  REQUIRE_FALSE(in_view.empty());
+  CHECK(with_art.lines().size() == plain.lines().size() + 8 * in_view.size());  // 4 lines of 2 vertices each
+}
+
 TEST_CASE("imgui smoke: the rig window shows the character walking, edits undo, apply makes the player it", "[editor][imgui]") {
   Scene s;
   s.suite->show_level = false;

@@ -188,6 +188,13 @@ void EditorSuite::draw_viewport(DebugDraw& debug) const {
     for (float y = std::floor(view.min_ws.y / g) * g; y <= view.max_ws.y; y += g)
       debug.add_line({view.min_ws.x, y}, {view.max_ws.x, y}, c);
   }
+  // A Tiled map or an LDtk level is drawn with its art, not its boxes (level_view.h): outline
+  // the boxes in view, so what collides can be seen and picked.
+  if (level.art && !level.art->empty()) {
+    std::vector<int> in_view;
+    level.overlapping(view, in_view);
+    for (int i : in_view) debug.add_box(level.box(i), {1.0f, 1.0f, 1.0f, 0.45f});
+  }
   if (hovered_box_ && *hovered_box_ < level.size() && hovered_box_ != level_->selected())
     debug.add_box(level.box(*hovered_box_), {1.0f, 1.0f, 0.6f, 0.9f});
   if (auto s = level_->selected(); s && *s < level.size()) {
