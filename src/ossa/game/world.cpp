@@ -124,7 +124,9 @@ void World::step(const Controls& player_controls) {
       const int blocker = blocker_ahead(*player_, c.move_x);
       if (blocker >= 0) {
         Npc& n = npcs_[static_cast<size_t>(blocker)];
-        n.controls.move_x = (c.move_x > 0.0f ? 1.0f : -1.0f) * std::max(0.6f, std::abs(n.controls.move_x));
+        // At least as fast as the player asks to go (and at least 0.6: a brisk walk).
+        n.controls.move_x =
+            (c.move_x > 0.0f ? 1.0f : -1.0f) * std::max({0.6f, std::abs(n.controls.move_x), std::abs(c.move_x)});
         n.controls.run = c.run;
         n.timer = std::max(n.timer, 1.5f);
       }

@@ -14,7 +14,8 @@
 //   * an NPC turns back and holds its new heading at least 1.5 s (hemmed in on both sides it
 //     waits);
 //   * the player stops (moving away is free), and an NPC it walks up to gives way: it walks
-//     off ahead of the player, at least at 0.6 of its walk, running when the player runs.
+//     off ahead of the player, at least as fast as the player's stick asks (and at least at
+//     0.6, a brisk walk), running when the player runs.
 
 #include <cstdint>
 #include <memory>
