@@ -223,7 +223,7 @@ Status Game::init(const GameOptions& o) {
   if (auto s = m.open_window(o); !s.ok()) return s;
   gamepad_ = std::make_unique<Gamepad>(resolve_data_path("assets/gamecontrollerdb.txt"));
   keyboard_ = std::make_unique<MouseKeyboardInput>();
-  m.hud.visible = o.hud;
+  m.hud.mode = o.hud ? HudMode::kPlayer : HudMode::kOff;
   m.look = o.look;
   m.capture_all_frames = false;
   if (!o.gif.empty()) {
@@ -272,13 +272,17 @@ void Game::next_character() {
   }
 }
 
+HudMode Game::hud_mode() const { return impl_->hud.mode; }
+
 Status Game::set_player_character(const std::string& rig_path) { return impl_->switch_character(*world_, rig_path, true); }
 
 bool Game::frame(double dt_seconds) {
   Impl& m = *impl_;
   ActionPresses presses;
   SDL_Event e;
+  key_presses_.clear();
   while (SDL_PollEvent(&e)) {
+    if (auto chord = key_chord(e)) key_presses_.push_back(*chord);
     m.process_imgui_event(e);
     keyboard_->handle_event(e, presses);
     gamepad_->handle_event(e, presses);
@@ -297,7 +301,10 @@ bool Game::frame(double dt_seconds) {
   if (presses[Action::kNextCreature]) next_example();
   if (presses[Action::kRandomCreature]) random_creature();
   if (presses[Action::kNextCharacter]) next_character();
-  if (presses[Action::kToggleHud]) m.hud.visible = !m.hud.visible;
+  if (presses[Action::kToggleHud]) {
+    m.hud.cycle();
+    if (m.hud.mode != HudMode::kOff) m.say(std::string("HUD: ") + hud_mode_name(m.hud.mode));
+  }
   if (presses[Action::kNextLook]) {
     m.look = static_cast<CreatureLook>((static_cast<int>(m.look) + 1) % kCreatureLookCount);
     m.batch_dirty = true;
@@ -339,9 +346,13 @@ bool Game::frame(double dt_seconds) {
       m.input_name = keyboard_->active() || !gamepad_->connected() ? "keyboard" : gamepad_->name();
     }
     m.snapshot_all(*world_, false);
+    // A replay's controls already had the player's meetings applied when they were recorded.
+    world_->player_meets_creatures = m.input_name != "replay";
     world_->step(c);
     m.after_step(*world_);
-    if (m.recording) m.record.push(c);
+    // The controls the world applied (a move into a creature dropped): the replay then plays
+    // back the same, whatever creatures are around.
+    if (m.recording) m.record.push(world_->applied_player_controls());
     last_controls_ = c;
     m.accumulator -= tick;
     ++steps;

@@ -19,6 +19,7 @@
 #include <functional>
 #include <memory>
 #include <optional>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -26,7 +27,9 @@
 #include "ossa/game/controls.h"
 #include "ossa/game/replay.h"
 #include "ossa/game/world.h"
+#include "ossa/editor/hud.h"
 #include "ossa/io/result.h"
+#include "ossa/platform/input.h"
 
 namespace ossa {
 
@@ -117,8 +120,15 @@ class Game {
   // saved it since); on an error the player stays as it was and the error names the file.
   Status set_player_character(const std::string& rig_path);
   bool replay_finished() const;
+  // What the HUD shows (H cycles it: player, developer, off).
+  HudMode hud_mode() const;
+  // Whether the HUD is drawn: its mode is not off and hide_hud (the editors) does not hide it.
+  bool hud_shown() const { return hud_mode() != HudMode::kOff && !(hide_hud && hide_hud()); }
   // The camera of the last rendered frame (world metres; for mouse picking).
   const Camera2D& camera() const;
+  // The keys pressed during this frame's events, in order (a press and its release within one
+  // frame included): the editors' shortcuts read them in on_ui.
+  std::span<const KeyChord> key_presses() const { return key_presses_; }
 
   // ---- Hooks for the editors (DESIGN.md §10) -----------------------------------------------
   // Called every frame inside the ImGui frame, after the HUD (dt = the frame's seconds).
@@ -131,12 +141,16 @@ class Game {
   std::function<bool()> on_quit;
   // Polled every frame: true ends the game (e.g. the editors' "discard" was confirmed).
   std::function<bool()> should_quit;
+  // Polled every frame: true hides the HUD (the editors are shown: their windows and menu bar
+  // take the screen's edges).
+  std::function<bool()> hide_hud;
 
  private:
   struct Impl;
   std::unique_ptr<Impl> impl_;
   GameOptions options_;
   std::unique_ptr<World> world_;
+  std::vector<KeyChord> key_presses_;
   std::unique_ptr<Gamepad> gamepad_;
   std::unique_ptr<MouseKeyboardInput> keyboard_;
   Controls last_controls_;

@@ -19,6 +19,8 @@
 #include "ossa/render/capture.h"
 #include "ossa/render/character_mesh.h"
 #include "ossa/render/creature_batch.h"
+#include "app/camera_follow.h"
+#include "ossa/render/level_view.h"
 #include "ossa/render/renderer.h"
 #include "ossa/render/texture.h"
 
@@ -46,7 +48,7 @@ struct Game::Impl {
   CreatureLook look = CreatureLook::kBody;                 // key B cycles
   // Per entity (0 = player, 1.. NPCs) its batch instances (sprites and/or body).
   std::vector<std::vector<int>> instances;
-  std::unordered_map<std::string, Texture> images;         // level background images
+  std::optional<LevelView> level_view;                     // the level as designed (art, look, sky)
   std::vector<const void*> batch_creatures;                // what the batch was built from (Creature or Character)
 
   // Rigged characters loaded so far, by rig path, each with its texture once GL is up.
@@ -65,8 +67,8 @@ struct Game::Impl {
   double accumulator = 0.0;      // seconds not yet simulated
 
   // Camera.
-  glm::vec2 camera_ws{0.0f};
-  float look_ahead = 0.0f;       // metres, smoothed
+  CameraFollow follow;           // camera_follow.h
+  glm::vec2 camera_ws{0.0f};     // follow's centre, drawn with
   float zoom = 1.0f;             // wheel factor on the base view height
   float base_half_height = 2.5f; // metres, from the player's size
 
@@ -84,6 +86,7 @@ struct Game::Impl {
   std::string gif_path;
   float gif_remaining = 0.0f;    // seconds
   float gif_clock = 0.0f;        // seconds since the last GIF frame
+  std::optional<Image> gif_frame;  // the next GIF frame, read before the HUD was drawn
   bool capture_all_frames = false;
   bool recording = false;
   bool last_record_failed = false;
@@ -94,6 +97,8 @@ struct Game::Impl {
   void release_gl();
   void shutdown_imgui();
   void process_imgui_event(const SDL_Event& e);
+  CameraSubject camera_subject(const World& world, float alpha) const;
+  float window_aspect() const;
   void reset_camera(const World& world);
   void update_camera(const World& world, float alpha, float dt);
   void render(Game& game, float alpha);

@@ -82,6 +82,9 @@ Status Game::Impl::open_window(const GameOptions& o) {
   auto r = Renderer::create(default_shader_dir());
   if (!r.ok()) return r.error();
   renderer.emplace(std::move(r.value()));
+  auto view = LevelView::create(default_shader_dir());
+  if (!view.ok()) return view.error();
+  level_view.emplace(std::move(view.value()));
   const std::string sprite_dir = resolve_data_path("assets/sprites/bones");
   SpriteSet sprites = default_sprite_set();
   if (auto s = load_sprite_set(sprite_dir + "/sprites.json"); s.ok()) {
@@ -121,7 +124,7 @@ void Game::Impl::shutdown_imgui() {
 
 void Game::Impl::release_gl() {
   gif.reset();
-  images.clear();
+  level_view.reset();
   batch.reset();
   atlas.reset();
   renderer.reset();
@@ -217,33 +220,28 @@ Status Game::Impl::switch_character(World& world, const std::string& path, bool 
 
 // ---- Camera ---------------------------------------------------------------------------------
 
+CameraSubject Game::Impl::camera_subject(const World& world, float alpha) const {
+  const Animator& a = world.player()->animator();
+  CameraSubject s;
+  s.root_ws = player_root(alpha);
+  s.hip_height = a.hip_height();
+  s.velocity_x = a.velocity();
+  s.airborne = a.airborne();
+  return s;
+}
+
+float Game::Impl::window_aspect() const {
+  return static_cast<float>(window.width()) / static_cast<float>(std::max(1, window.height()));
+}
+
 void Game::Impl::reset_camera(const World& world) {
   base_half_height = framing_half_height(world.player()->animator().hip_height());
-  const glm::vec2 root = player_root(1.0f);
-  const float ground = root.y - world.player()->animator().hip_height();
-  camera_ws = {root.x, ground + 0.55f * base_half_height * zoom};
-  look_ahead = 0.0f;
+  follow.reset(world.level(), camera_subject(world, 1.0f), base_half_height * zoom, window_aspect());
+  camera_ws = follow.center_ws();
 }
 
 void Game::Impl::update_camera(const World& world, float alpha, float dt) {
-  const Animator& a = world.player()->animator();
-  const float half_height = base_half_height * zoom;
-  const float aspect = static_cast<float>(window.width()) / static_cast<float>(std::max(1, window.height()));
-  // Look ahead in the walking direction: up to a third of the half-width, reached in ~1 s.
-  const float max_ahead = 0.35f * half_height * aspect;
-  const float want_ahead = std::clamp(a.velocity() * 0.8f, -max_ahead, max_ahead);
-  look_ahead += (want_ahead - look_ahead) * (1.0f - std::exp(-1.5f * dt));
-  const glm::vec2 root = player_root(alpha);
-  const float ground = root.y - a.hip_height();
-  // The ground sits in the lower third of the screen.
-  const glm::vec2 target{root.x + look_ahead, ground + 0.55f * half_height};
-  // Critically damped-ish follow: fast horizontally so the creature never leaves the view,
-  // slower vertically so steps do not shake the picture.
-  camera_ws.x += (target.x - camera_ws.x) * (1.0f - std::exp(-5.0f * dt));
-  camera_ws.y += (target.y - camera_ws.y) * (1.0f - std::exp(-3.0f * dt));
-  // Never let the player leave the inner 80 % of the view.
-  const float limit = 0.8f * half_height * aspect;
-  camera_ws.x = std::clamp(camera_ws.x, root.x - limit, root.x + limit);
+  camera_ws = follow.update(world.level(), camera_subject(world, alpha), base_half_height * zoom, window_aspect(), dt);
 }
 
 // ---- Drawing --------------------------------------------------------------------------------
@@ -253,42 +251,14 @@ void Game::Impl::render(Game& game, float alpha) {
   Renderer& r = *renderer;
   r.reload_shaders_if_changed();  // edited shader files take effect while the game runs
   r.camera.center_ws = camera_ws;
-  r.camera.half_height = base_half_height * zoom;
+  r.camera.half_height = follow.half_height(base_half_height * zoom);
 
   const Level& level = world.level();
-  BackgroundStyle style;
-  if (level.background) {
-    style.sky_bottom = level.background->colour;
-    style.sky_top = level.background->colour * glm::vec3(0.62f, 0.75f, 0.95f);
-    style.parallax = level.background->parallax;
-  }
-  style.horizon_ws = level.spawn_ws.y;
-  r.begin_frame(window.width(), window.height(), style.sky_bottom);
-  DebugDraw scene;
-  add_background(scene, r.camera, style);
-  r.draw_debug(scene);
-  if (level.background && !level.background->image.empty()) {
-    // The level's image behind the hills' place, repeated and scrolled by its parallax in one
-    // draw (background.h).
-    const std::string key = level_path + "\n" + level.background->image;
-    auto it = images.find(key);
-    if (it == images.end()) {
-      // Relative to the level's folder (level_load.h resolve_level_resource), else assets/.
-      Result<std::string> file = resolve_level_resource(resolve_data_path(level_path), "background.image",
-                                                        level.background->image, data_path("assets"));
-      Texture texture;
-      if (file) {
-        texture = Texture::load(*file, Texture::Wrap::kRepeat);
-      } else {
-        render_log(file.message() + " (no background image)");
-      }
-      it = images.emplace(key, std::move(texture)).first;
-    }
-    draw_background_image(r, it->second, level.background->parallax);
-  }
-  DebugDraw ground;
-  add_level_scenery(ground, level, r.camera.visible_box());
-  r.draw_debug(ground);
+  level_view->reload_shaders_if_changed();
+  // The sky, the art behind the creatures and the ground (level_view.h); the clear colour is
+  // covered by the sky.
+  r.begin_frame(window.width(), window.height(), level.background ? level.background->colour : glm::vec3(0.55f, 0.70f, 0.85f));
+  level_view->draw_back(r, level, resolve_data_path(level_path));
 
   // Creatures: rebuild the batch when the cast changed, then one palette upload per frame.
   // Someone else (the editors' creature panel) may have replaced a creature: compare.
@@ -369,11 +339,16 @@ void Game::Impl::render(Game& game, float alpha) {
   }
   batch->upload_palettes();
   r.draw_creatures(*batch, textures, look);
+  level_view->draw_front(r, level);
   if (game.on_viewport) {
     DebugDraw overlay;
     game.on_viewport(overlay);
     r.draw_debug(overlay);
   }
+
+  // A GIF frame due this frame is the scene without the HUD and the editors' windows (at the
+  // GIF's half size their text would be unreadable).
+  if (gif && gif_clock + frame_dt >= 0.04f - 1e-4f) gif_frame = half_size(read_framebuffer(window.width(), window.height()));
 
   // HUD.
   if (imgui) {
@@ -398,7 +373,7 @@ void Game::Impl::render(Game& game, float alpha) {
     info.status = status;
     info.recording = recording;
     info.gif = gif.has_value();
-    hud.draw(info);
+    if (!(game.hide_hud && game.hide_hud())) hud.draw(info);
     if (game.on_ui) game.on_ui(frame_dt);
     ImGui::Render();
     ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
@@ -426,7 +401,8 @@ void Game::Impl::capture_gif_frame(float dt) {
   gif_clock += dt;
   if (gif_clock >= 0.04f - 1e-4f) {  // 25 frames per second, the GIF's 4 cs delay
     gif_clock = std::fmod(gif_clock, 0.04f);
-    const Status s = gif->add_frame(half_size(read_framebuffer(window.width(), window.height())));
+    const Status s = gif->add_frame(gif_frame ? *gif_frame : half_size(read_framebuffer(window.width(), window.height())));
+    gif_frame.reset();
     if (!s.ok()) {
       say(s.message());
       gif.reset();

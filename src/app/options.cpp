@@ -29,14 +29,15 @@ Walk a generated creature over a box level with a gamepad or the keyboard.
                     demo script driving the player (unless --replay)
   --frames N        stop after N frames (headless default: 600, or the replay's end)
   --png F           write the last frame as PNG on exit
-  --gif F           record a GIF (headless: the whole run; else the first --gif-seconds)
+  --gif F           record a GIF (headless: the whole run; else the first --gif-seconds),
+                    half size, without the HUD
   --gif-seconds S   length of a GIF, 0.5-60 seconds (default 5)
   --state F         write JSON on exit: frames, player {x, y, speed, creature}, spawn {x, y}
   --hz N            simulation ticks per second, 30-480 (default 120)
   --no-vsync        do not wait for the display's refresh
   --fps-cap N       frames per second limit without vsync, 0-1000 (0 = none)
   --size WxH        window size in pixels (default 1280x720)
-  --no-hud          start with the HUD hidden
+  --no-hud          start with the HUD off (default: the player HUD: name, km/h, gait)
   --look L          how creatures are drawn: body (default: flesh, skin and coat), xray
                     (the body translucent over the bones) or bones (bone sprites); key B
                     cycles them
@@ -44,8 +45,11 @@ Walk a generated creature over a box level with a gamepad or the keyboard.
   --help            this text
 
 keys: A/D or Left/Right walk, Shift runs, Space/W/Up jumps, N next example, M random
-      creature, C next character, B next look (body, x-ray, bones), H HUD, F12/P
-      screenshot, G GIF of the next seconds, R start/stop a replay, wheel zoom, Esc quits
+      creature, C next character (humanoid, dog), B next look (body, x-ray, bones),
+      H HUD (player, developer, off), F12/P screenshot, G GIF of the next seconds,
+      R start/stop a replay, wheel zoom, F2 editors, Esc quits
+editors: Ctrl+Z undo, Ctrl+Y (or Ctrl+Shift+Z) redo, Ctrl+S save the level, Delete removes
+      the selected box
 gamepad: left stick walks (half throw = walk speed, full = run), RB/RT run, A jumps,
       Y next example, X random creature, LB next character, Back HUD, Start replay
 )";

@@ -11,17 +11,24 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <random>
 #include <sstream>
 #include <sys/wait.h>
 #include <unistd.h>
 #include <string>
+#include <vector>
+
+#include <glm/geometric.hpp>
 
 #include "app/game.h"
+#include "app/game_editors.h"
 #include "app/options.h"
 #include "ossa/io/json.h"
+#include "ossa/level/level_load.h"
 #include "ossa/platform/image.h"
 #include "ossa/platform/input.h"
+#include "ossa/render/renderer.h"
 
 namespace {
 
@@ -52,8 +59,9 @@ void run_frames(Game& game, int n) {
   for (int i = 0; i < n; ++i) REQUIRE(game.frame(kFrame));
 }
 
-void push_key(SDL_Scancode code, bool down) {
+void push_key(SDL_Scancode code, bool down, Uint16 mod = KMOD_NONE) {
   SDL_Event e{};
+  e.key.keysym.mod = mod;
   e.type = down ? SDL_KEYDOWN : SDL_KEYUP;
   e.key.state = down ? SDL_PRESSED : SDL_RELEASED;
   e.key.keysym.scancode = code;
@@ -206,9 +214,152 @@ TEST_CASE("keyboard events pushed through SDL walk and run the player", "[app]")
     CHECK(a.locomotion() == Locomotion::kGrounded);
   }
 
+  // H cycles the HUD: player (the default), developer, off, player.
+  CHECK(game.hud_mode() == HudMode::kPlayer);
+  for (HudMode want : {HudMode::kDeveloper, HudMode::kOff, HudMode::kPlayer}) {
+    push_key(SDL_SCANCODE_H, true);
+    push_key(SDL_SCANCODE_H, false);
+    run_frames(game, 1);
+    CHECK(game.hud_mode() == want);
+  }
+
   // Escape quits.
   push_key(SDL_SCANCODE_ESCAPE, true);
   CHECK_FALSE(game.frame(kFrame));
+}
+
+TEST_CASE("F2 pressed and released within one frame shows and hides the editors, Ctrl+Z, Ctrl+Y and Ctrl+S too",
+          "[app]") {
+  use_offscreen();
+  GameOptions o = quiet_options();
+  // A copy of the default level: Ctrl+S writes it.
+  o.level = temp_dir() + "/keys_level.json";
+  std::filesystem::copy_file(resolve_data_path("levels/default.json"), o.level,
+                             std::filesystem::copy_options::overwrite_existing);
+  Game game;
+  REQUIRE(game.init(o).ok());
+  GameEditors editors(game, o);
+  EditorSuite& suite = editors.suite();
+  suite.enabled = false;
+  run_frames(game, 2);
+  // Four taps, each a press and its release in the same frame's events (ImGui 1.86's key
+  // state drops these): open, close, open, close.
+  CHECK(game.hud_shown());
+  for (int tap = 0; tap < 4; ++tap) {
+    push_key(SDL_SCANCODE_F2, true);
+    push_key(SDL_SCANCODE_F2, false);
+    run_frames(game, 1);
+    INFO("tap " << tap);
+    CHECK(suite.enabled == (tap % 2 == 0));
+    CHECK(game.hud_shown() == !suite.enabled);  // the HUD is hidden while the editors are shown
+  }
+  REQUIRE_FALSE(suite.enabled);
+
+  // Editors shown: a box added, Ctrl+Z tapped within a frame removes it, Ctrl+Y brings it back.
+  push_key(SDL_SCANCODE_F2, true);
+  push_key(SDL_SCANCODE_F2, false);
+  run_frames(game, 1);
+  REQUIRE(suite.enabled);
+  const size_t boxes = game.world().level().colliders().size();
+  suite.level_editor().add_box({2.0f, 6.0f}, {1.0f, 1.0f});
+  REQUIRE(game.world().level().colliders().size() == boxes + 1);
+  const auto tap_ctrl = [&](SDL_Scancode key) {
+    push_key(SDL_SCANCODE_LCTRL, true, KMOD_LCTRL);
+    push_key(key, true, KMOD_LCTRL);
+    push_key(key, false, KMOD_LCTRL);
+    push_key(SDL_SCANCODE_LCTRL, false);
+    run_frames(game, 1);
+  };
+  tap_ctrl(SDL_SCANCODE_Z);
+  CHECK(game.world().level().colliders().size() == boxes);
+  tap_ctrl(SDL_SCANCODE_Y);
+  CHECK(game.world().level().colliders().size() == boxes + 1);
+  // Ctrl+S saves the level to its file.
+  CHECK(suite.level_editor().dirty());
+  tap_ctrl(SDL_SCANCODE_S);
+  CHECK_FALSE(suite.level_editor().dirty());
+  auto saved = load_level(o.level, LevelLoadOptions{});
+  REQUIRE(saved.ok());
+  CHECK(saved->colliders().size() == boxes + 1);
+}
+
+TEST_CASE("the camera shows the landing of every ledge of drops.json 0.3 s before touch-down and rests still",
+          "[app]") {
+  use_offscreen();
+  for (const bool run : {false, true}) {
+    INFO((run ? "running" : "walking"));
+    GameOptions o = quiet_options();
+    o.level = resolve_data_path("levels/drops.json");
+    Game game;
+    REQUIRE(game.init(o).ok());
+    const Animator& a = game.world().player()->animator();
+    const Level& level = game.world().level();
+    struct Sample {
+      double t;
+      Box view;
+      bool airborne;
+      float x, feet;
+    };
+    std::vector<Sample> samples;
+    push_key(SDL_SCANCODE_D, true);
+    if (run) push_key(SDL_SCANCODE_LSHIFT, true, KMOD_LSHIFT);
+    double t = 0.0;
+    // Over the 0.3, 1, 2 and 4 m ledges (x = 6, 12, 18, 26) to the gap at x = 38.
+    while (a.x() < 36.5f && t < 60.0) {
+      REQUIRE(game.frame(kFrame));
+      t += kFrame;
+      samples.push_back({t, game.camera().visible_box(), a.airborne(), a.x(), a.root_y() - a.hip_height()});
+    }
+    REQUIRE(a.x() >= 36.5f);
+    if (run) push_key(SDL_SCANCODE_LSHIFT, false);
+    push_key(SDL_SCANCODE_D, false);
+    // The ledges: a box's right edge where the next box starts lower.
+    struct Ledge {
+      float x, upper, lower;
+    };
+    std::vector<Ledge> ledges;
+    for (const Box& b : level.colliders()) {
+      for (const Box& c : level.colliders()) {
+        if (std::abs(c.min_ws.x - b.max_ws.x) < 1e-3f && c.max_ws.y < b.max_ws.y - 0.2f && b.max_ws.x > level.spawn_ws.x &&
+            b.max_ws.x < 36.5f) {
+          ledges.push_back({b.max_ws.x, b.max_ws.y, c.max_ws.y});
+        }
+      }
+    }
+    REQUIRE(ledges.size() == 4);
+    bool fell_in_the_air = false;
+    for (const Ledge& ledge : ledges) {
+      // Touch-down: the first frame past the edge with the feet down on the lower box.
+      size_t i = 0;
+      while (i < samples.size() && !(samples[i].x > ledge.x && samples[i].feet < ledge.lower + 0.1f)) ++i;
+      REQUIRE(i < samples.size());
+      for (size_t j = i; j > 0 && samples[j - 1].x > ledge.x - 1.0f; --j) fell_in_the_air |= samples[j - 1].airborne;
+      const glm::vec2 landing{samples[i].x, ledge.lower};
+      for (size_t j = i + 1; j-- > 0 && samples[j].t >= samples[i].t - 0.3 - 1e-9;) {
+        INFO("ledge at x " << ledge.x << ", " << ledge.upper - ledge.lower << " m: landing at (" << landing.x << ", "
+                           << landing.y << ") at t = " << samples[i].t << " s; frame at t = " << samples[j].t
+                           << " s, view y " << samples[j].view.min_ws.y << " .. " << samples[j].view.max_ws.y << ", x "
+                           << samples[j].view.min_ws.x << " .. " << samples[j].view.max_ws.x);
+        const Box& v = samples[j].view;
+        CHECK(landing.x > v.min_ws.x + 0.05f);
+        CHECK(landing.x < v.max_ws.x - 0.05f);
+        CHECK(landing.y > v.min_ws.y + 0.05f);
+        CHECK(landing.y < v.max_ws.y - 0.05f);
+      }
+    }
+    CHECK(fell_in_the_air);  // the 4 m ledge at least is a fall
+
+    // At rest the camera comes to a stop: no jitter.
+    run_frames(game, 240);
+    glm::vec2 last = game.camera().center_ws;
+    float moved = 0.0f;
+    for (int i = 0; i < 60; ++i) {
+      run_frames(game, 1);
+      moved = std::max(moved, glm::length(game.camera().center_ws - last));
+      last = game.camera().center_ws;
+    }
+    CHECK(moved < 5e-4f);
+  }
 }
 
 TEST_CASE("unplugging the gamepad mid-game keeps running and hands control to the keyboard", "[app]") {
@@ -338,18 +489,21 @@ TEST_CASE("a rigged character plays, cycles with C, walks among character NPCs a
     CHECK(game.world().player()->animator().x() == x_recorded);
     CHECK(pose_hash(game.world().player()->animator().world_matrices()) == hash_recorded);
   }
-  // C cycles the shipped characters (dog, humanoid); N goes back to the examples.
+  // C cycles the shipped characters in the README's order (humanoid, dog); N goes back to the
+  // examples.
   Game game;
   REQUIRE(game.init(quiet_options()).ok());
   push_key(SDL_SCANCODE_C, true);
   push_key(SDL_SCANCODE_C, false);
   run_frames(game, 5);
-  const std::string first = game.creature_name();
-  CHECK((first == "dog" || first == "humanoid"));
+  CHECK(game.creature_name() == "humanoid");
   CHECK(game.world().player()->is_character());
   game.next_character();
   run_frames(game, 5);
-  CHECK(game.creature_name() != first);
+  CHECK(game.creature_name() == "dog");
+  game.next_character();
+  run_frames(game, 5);
+  CHECK(game.creature_name() == "humanoid");
   CHECK(game.set_player_character("assets/characters/dog.rig.json").ok());
   CHECK(game.creature_name() == "dog");
   const Status bad = game.set_player_character("tests/tools/data/missing_bone.rig.json");
@@ -437,6 +591,63 @@ TEST_CASE("ossa --headless draws bodies by default: the pig wears its pink coat 
   CHECK(coat > 3000);
   CHECK(grounded_columns > 100);
   CHECK(bones < 50);  // the body look draws no bone sprites
+}
+
+TEST_CASE("a GIF leaves the HUD out: with and without the HUD the same frames", "[app]") {
+  const std::string dir = temp_dir();
+  std::string gifs[2];
+  for (int hud = 0; hud < 2; ++hud) {
+    gifs[hud] = dir + "/hud" + std::to_string(hud) + ".gif";
+    std::string err;
+    const int rc = run_command(bin_dir() + "/ossa --headless --frames 20 --npcs 0 --size 320x180 --gif " + gifs[hud] +
+                                   (hud ? "" : " --no-hud"),
+                               &err);
+    INFO(err);
+    REQUIRE(rc == 0);
+  }
+  std::ifstream a(gifs[0], std::ios::binary), b(gifs[1], std::ios::binary);
+  const std::string bytes_a((std::istreambuf_iterator<char>(a)), {}), bytes_b((std::istreambuf_iterator<char>(b)), {});
+  REQUIRE(bytes_a.size() > 100);
+  CHECK(bytes_a == bytes_b);
+  // The same run's last frame as PNG keeps the HUD (screenshots show what the window shows).
+  std::string err;
+  const std::string png[2] = {dir + "/hud0.png", dir + "/hud1.png"};
+  for (int hud = 0; hud < 2; ++hud) {
+    REQUIRE(run_command(bin_dir() + "/ossa --headless --frames 20 --npcs 0 --size 320x180 --png " + png[hud] +
+                            (hud ? "" : " --no-hud"),
+                        &err) == 0);
+  }
+  auto with = load_image(png[1]), without = load_image(png[0]);
+  REQUIRE(with.ok());
+  REQUIRE(without.ok());
+  CHECK(with->rgba != without->rgba);
+}
+
+TEST_CASE("ossa-render --level draws the level: its look, its art, and its boxes when an image is missing", "[app]") {
+  const std::string dir = temp_dir();
+  const auto render = [&](const std::string& level, const std::string& png, std::string* err) {
+    return run_command(bin_dir() + "/ossa-render --example horse --width 320 --height 180 --level " + level + " --png " + png, err);
+  };
+  std::string err;
+  REQUIRE(render(resolve_data_path("levels/drops.json"), dir + "/drops.png", &err) == 0);
+  REQUIRE(render(resolve_data_path("levels/stairs.json"), dir + "/stairs.png", &err) == 0);
+  REQUIRE(render(resolve_data_path("tests/level/data/art/meadow.tmx"), dir + "/meadow.png", &err) == 0);
+  CHECK(err.find("ossa render:") == std::string::npos);
+  // The map without its images, next to its tilesets: warnings name the map and each image.
+  const std::string bare = dir + "/bare";
+  std::filesystem::create_directories(bare);
+  for (const char* f : {"meadow.tmx", "meadow.tsx", "props.tsj"}) {
+    std::filesystem::copy_file(resolve_data_path(std::string("tests/level/data/art/") + f), bare + "/" + f,
+                               std::filesystem::copy_options::overwrite_existing);
+  }
+  REQUIRE(render(bare + "/meadow.tmx", dir + "/bare.png", &err) == 0);
+  CHECK_THAT(err, Catch::Contains(bare + "/meadow.tmx: image " + bare + "/meadow.png"));
+  CHECK_THAT(err, Catch::Contains("drawing the level's boxes"));
+  auto drops = load_image(dir + "/drops.png"), stairs = load_image(dir + "/stairs.png");
+  auto meadow = load_image(dir + "/meadow.png"), fallback = load_image(dir + "/bare.png");
+  REQUIRE((drops.ok() && stairs.ok() && meadow.ok() && fallback.ok()));
+  CHECK(drops->rgba != stairs->rgba);
+  CHECK(meadow->rgba != fallback->rgba);
 }
 
 TEST_CASE("ossa rejects bad arguments and files with a message", "[app]") {

@@ -15,6 +15,30 @@ namespace fs = std::filesystem;
 
 std::string genome_text(const Genome& g) { return genome_to_json(g).dump(); }
 
+TEST_CASE("creature panel: an edited genome is named custom, an example by its name", "[editor]") {
+  UndoStack undo;
+  CreaturePanelModel m(scenes::generator(), undo, "horse");
+  REQUIRE(m.creature());
+  CHECK(m.creature()->name == "horse");
+  m.set_sigma(0, 1.0);
+  REQUIRE(m.creature());
+  CHECK(m.creature()->name == "custom");
+  undo.undo();
+  CHECK(m.creature()->name == "horse");
+  m.variation(0.5);
+  CHECK(m.creature()->name == "custom");
+  REQUIRE(m.pick_example("kangaroo").ok());
+  CHECK(m.creature()->name == "kangaroo");
+  m.regenerate(CreaturePart::kTail);
+  CHECK(m.creature()->name == "custom");
+  // Applied to a player: the player is named so too (the HUD's first line).
+  std::shared_ptr<const Creature> applied;
+  m.on_apply_to_player = [&](std::shared_ptr<const Creature> c) { applied = std::move(c); };
+  m.apply_to_player();
+  REQUIRE(applied);
+  CHECK(applied->name == "custom");
+}
+
 TEST_CASE("creature panel: examples, random, conditions and undo steps", "[editor]") {
   UndoStack undo;
   CreaturePanelModel m(scenes::generator(), undo, "horse");

@@ -222,6 +222,24 @@ TEST_CASE("imgui smoke: every window draws, with screenshots on request", "[edit
   REQUIRE(ImGui::IsPopupOpen("", ImGuiPopupFlags_AnyPopupId | ImGuiPopupFlags_AnyPopupLevel));
 }
 
+TEST_CASE("imgui smoke: a level drawn with its art shows its boxes' outlines while editing", "[editor][imgui]") {
+  Scene s;
+  s.frame({640.0f, 700.0f}, false);
+  DebugDraw plain;
+  s.suite->draw_viewport(plain);
+  auto art = std::make_shared<LevelArt>();
+  ArtLayer layer;
+  layer.kind = ArtLayer::Kind::kImage;
+  art->layers.push_back(layer);
+  s.world.level().art = art;
+  DebugDraw with_art;
+  s.suite->draw_viewport(with_art);
+  std::vector<int> in_view;
+  s.world.level().overlapping(s.camera.visible_box(), in_view);
+  REQUIRE_FALSE(in_view.empty());
+  CHECK(with_art.lines().size() == plain.lines().size() + 8 * in_view.size());  // 4 lines of 2 vertices each
+}
+
 TEST_CASE("imgui smoke: the rig window shows the character walking, edits undo, apply makes the player it", "[editor][imgui]") {
   Scene s;
   s.suite->show_level = false;
@@ -233,6 +251,18 @@ TEST_CASE("imgui smoke: the rig window shows the character walking, edits undo, 
   rig.preview_stick = 0.5f;
   for (int i = 0; i < 60; ++i) s.frame({640.0f, 700.0f}, false);
   CHECK(rig.preview()->x() > 1.0f);
+  // The preview draws the skinned mesh with its texture: triangles from that texture, as many
+  // as the mesh has.
+  const unsigned texture = s.suite->rig_preview_texture();
+  REQUIRE(texture != 0u);
+  unsigned textured_indices = 0;
+  const ImDrawData* draw = ImGui::GetDrawData();
+  for (int l = 0; l < draw->CmdListsCount; ++l) {
+    for (const ImDrawCmd& cmd : draw->CmdLists[l]->CmdBuffer) {
+      if (cmd.TextureId == reinterpret_cast<ImTextureID>(static_cast<intptr_t>(texture))) textured_indices += cmd.ElemCount;
+    }
+  }
+  CHECK(textured_indices >= 3u * 20u);
   rig.select({RigSlotKind::kLegFoot, 0});
   s.frame({640.0f, 700.0f}, false, "rig");
   rig.clear({RigSlotKind::kLegFoot, 0});

@@ -23,6 +23,7 @@
 #include "ossa/gen/skeleton_builder.h"
 #include "ossa/level/level.h"
 #include "ossa/platform/window.h"
+#include "ossa/render/level_view.h"
 #include "ossa/render/capture.h"
 #include "ossa/render/character_mesh.h"
 #include "ossa/render/creature_batch.h"
@@ -149,13 +150,17 @@ TEST_CASE("every shader compiles and links", "[render]") {
     glGetProgramiv(p->id(), GL_LINK_STATUS, &linked);
     CHECK(linked == GL_TRUE);
   }
-  // Every shader file in shaders/ belongs to a program the renderer loads.
+  // The tile program (level_view.h).
+  auto level_view = LevelView::create(Gl::shader_dir());
+  INFO((level_view.ok() ? std::string() : level_view.message()));
+  CHECK(level_view.ok());
+  // Every shader file in shaders/ belongs to a program the renderer or the level view loads.
   int files = 0;
   for (const auto& e : std::filesystem::directory_iterator(Gl::shader_dir())) {
     const auto ext = e.path().extension();
     if (ext == ".vert" || ext == ".frag") ++files;
   }
-  CHECK(files == 11);
+  CHECK(files == 13);
 }
 
 TEST_CASE("a shader with a syntax error reports file and line", "[render]") {

@@ -32,6 +32,12 @@ float dir(vec2 a, vec2 b) { return std::atan2(b.y - a.y, b.x - a.x); }
 
 Mat2x3 far_place(bool hind) { return hind ? rotation_about(kHip, -0.09f) : rotation_about(kShoulder, 0.09f); }
 
+// Rump, back and chest. The neck's sprite draws the part of it inside its own rectangle again,
+// under one outline with the neck, so the back's line runs on into the neck's (the neck cut
+// off at its rectangle's edge left a vertical seam and a step in the outline).
+Sdf body_shape() { return unite(capsule({-0.27f, 0.50f}, {0.14f, 0.47f}, 0.115f, 0.14f), circle({-0.29f, 0.52f}, 0.11f)); }
+Sdf chest_patch() { return intersect(ellipse_turned({0.2f, 0.43f}, 0.07f, 0.13f, 0.35f), body_shape()); }
+
 }  // namespace
 
 CharacterDef dog() {
@@ -67,10 +73,10 @@ CharacterDef dog() {
     p.rows = {{-0.42f, W{{"pelvis", 1}}}, {-0.26f, W{{"pelvis", 1}}}, {-0.16f, W{{"pelvis", 0.5f}, {"spine", 0.5f}}},
               {-0.06f, W{{"spine", 1}}}, {0.04f, W{{"spine", 0.5f}, {"chest", 0.5f}}}, {0.14f, W{{"chest", 1}}},
               {0.32f, W{{"chest", 1}}}};
-    const Sdf body = unite(capsule({-0.27f, 0.50f}, {0.14f, 0.47f}, 0.115f, 0.14f), circle({-0.29f, 0.52f}, 0.11f));
+    const Sdf body = body_shape();
     p.layers = {
         {body, kFur},
-        {intersect(ellipse_turned({0.2f, 0.43f}, 0.07f, 0.13f, 0.35f), body), kFurLight, 0.0f, false},  // chest
+        {chest_patch(), kFurLight, 0.0f, false},  // chest
         {intersect(ellipse({-0.02f, 0.33f}, 0.2f, 0.045f), body), kFurLight, 0.0f, false},              // belly
     };
     def.parts.push_back(p);
@@ -96,7 +102,8 @@ CharacterDef dog() {
               {0.32f, W{{"neck", 0.5f}, {"head", 0.5f}}}, {0.40f, W{{"head", 1}}}};
     const vec2 n = glm::normalize(kHead - kNeck), across(-n.y, n.x), c = kNeck + 0.3f * (kHead - kNeck);
     p.layers = {
-        {capsule(kChest + vec2(0.02f, -0.02f), kHead, 0.09f, 0.07f), kFur},
+        {unite(capsule(kChest + vec2(0.02f, -0.02f), kHead, 0.09f, 0.07f), body_shape()), kFur},
+        {chest_patch(), kFurLight, 0.0f, false},
         {capsule(c + 0.08f * across, c - 0.085f * across, 0.018f, 0.018f), kCollar, 0.008f},
         {circle(c - 0.095f * across + vec2(0.0f, -0.012f), 0.018f), kTag, 0.008f, false},
     };

@@ -20,6 +20,7 @@
 #include "ossa/io/file.h"
 #include "ossa/io/parse_arg.h"
 #include "ossa/level/level_io.h"
+#include "ossa/render/level_view.h"
 #include "ossa/platform/window.h"
 #include "ossa/render/capture.h"
 #include "ossa/render/creature_batch.h"
@@ -49,7 +50,9 @@ source (one of):
 options:
   --seed N                seed of the random choices (default 1)
   --level F               stand on this level's ground under its spawn point (an ossa level,
-                          a Tiled .tmj/.tmx map or an LDtk project, F#LevelName)
+                          a Tiled .tmj/.tmx map or an LDtk project, F#LevelName), drawn
+                          as the game draws it (its tile art, its look or its boxes) at
+                          least 6 m high
   --pixels-per-metre P    scale of Tiled/LDtk maps without a pixels_per_metre property or
                           a tile size (default 32)
   --png OUT               write the frame as PNG
@@ -325,15 +328,16 @@ int run(const Args& a) {
   }
   batch.upload_palettes();
 
-  // The ground: the level's colliders, or a plain strip under the creatures.
+  // The ground: the level as the game draws it (its art, its look or its boxes: level_view.h),
+  // or a plain strip under the creatures.
   DebugDraw debug;
   const glm::vec4 ground_fill{0.42f, 0.36f, 0.27f, 1.0f}, ground_edge{0.25f, 0.20f, 0.14f, 1.0f};
+  // On a level, show at least 6 m of it in height (its steps and ledges around the creatures).
+  if (level) camera.half_height = std::max(camera.half_height, 3.0f);
   // Keep the ground near the bottom edge (a long row would otherwise float mid-frame).
   camera.center_ws.y = view.min_ws.y - 0.2f * camera.half_height + camera.half_height;
   const Box visible = camera.visible_box();
-  if (level) {
-    debug.add_level(*level, ground_fill, ground_edge);
-  } else {
+  if (!level) {
     debug.add_box({{visible.min_ws.x - 1.0f, visible.min_ws.y - 1.0f}, {visible.max_ws.x + 1.0f, start.y}},
                   ground_fill, true);
     debug.add_line({visible.min_ws.x - 1.0f, start.y}, {visible.max_ws.x + 1.0f, start.y}, ground_edge);
@@ -342,11 +346,21 @@ int run(const Args& a) {
   const glm::vec3 sky = level && level->background ? level->background->colour
                                                    : glm::vec3(0.55f, 0.70f, 0.85f);
   renderer->begin_frame(window->width(), window->height(), sky);
-  renderer->draw_debug(debug);
+  std::optional<LevelView> level_view;
+  if (level) {
+    auto lv = LevelView::create(default_shader_dir());
+    if (!lv.ok()) fail(lv.message());
+    level_view.emplace(std::move(lv.value()));
+    level_view->draw_back(*renderer, *level, *a.level);
+    (void)level_view->take_warnings();  // already on stderr (render_log: "ossa render: ...")
+  } else {
+    renderer->draw_debug(debug);
+  }
   const int calls_before = renderer->stats.draw_calls;
   const Texture* textures[1] = {&texture};
   renderer->draw_creatures(batch, textures, look);
   const int creature_calls = renderer->stats.draw_calls - calls_before;
+  if (level_view) level_view->draw_front(*renderer, *level);
   if (a.bones) renderer->draw_bones(batch, {0.9f, 0.1f, 0.1f, 1.0f});
   if (!check_gl("ossa-render")) fail("OpenGL reported an error while drawing (see above)");
 

@@ -83,7 +83,9 @@ void CreaturePanelModel::set_smooth_skinning(bool on) {
 }
 
 void CreaturePanelModel::variation(double sigma) {
-  set_genome(generator_->variation(genome_, seed, sigma), "variation");
+  Genome g = generator_->variation(genome_, seed, sigma);
+  g.name = kCustomName;
+  set_genome(std::move(g), "variation");
 }
 
 void CreaturePanelModel::regenerate(CreaturePart part) {
@@ -103,6 +105,7 @@ void CreaturePanelModel::regenerate(CreaturePart part) {
     case CreaturePart::kTail: g.tail_vertebrae = fresh.tail_vertebrae; break;
     case CreaturePart::kSkull: g.skull_variant = fresh.skull_variant; break;
   }
+  g.name = kCustomName;
   set_genome(g, std::string("regenerate ") + creature_part_name(part));
 }
 
@@ -167,6 +170,7 @@ void CreaturePanelModel::set_sigma(int i, double value) {
     g.pca[d] = raw[d];
   }
   recompute_rest_angles(g);
+  g.name = kCustomName;
   set_genome(g, "PC" + std::to_string(i + 1));
 }
 

@@ -36,6 +36,11 @@ namespace ossa {
 enum class CreaturePart : int { kLimbs, kRibs, kTail, kSkull };
 const char* creature_part_name(CreaturePart part);
 
+// The name of a genome the panel changed (a variation, a regenerated part, a moved slider): the
+// creature is no longer the example or random creature it started as; the HUD and saved
+// genomes show it.
+inline constexpr const char* kCustomName = "custom";
+
 class CreaturePanelModel {
  public:
   static constexpr int kSliderCount = 8;      // principal components shown as sliders

@@ -67,9 +67,7 @@ void EditorSuite::draw_creature_window() {
   const std::string dirty = creature_ && creature_->dirty() ? " *" : "";
   const std::string title = "Creature: " + (creature_ ? creature_->genome().name : std::string("-")) +
                             dirty + "###creature";
-  const ImVec2 display = ImGui::GetIO().DisplaySize;
-  ImGui::SetNextWindowPos(ImVec2(std::max(340.0f, display.x - 370.0f), 30), ImGuiCond_FirstUseEver);
-  ImGui::SetNextWindowSize(ImVec2(360, 660), ImGuiCond_FirstUseEver);
+  place_next_window(EditorWindow::kCreature);
   if (!ImGui::Begin(title.c_str(), &show_creature)) {
     ImGui::End();
     return;

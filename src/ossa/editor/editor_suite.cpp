@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include <SDL.h>
+
 #include "ossa/editor/editor_suite_internal.h"
 #include "ossa/game/world.h"
 #include "ossa/render/character_mesh.h"
@@ -186,6 +188,13 @@ void EditorSuite::draw_viewport(DebugDraw& debug) const {
     for (float y = std::floor(view.min_ws.y / g) * g; y <= view.max_ws.y; y += g)
       debug.add_line({view.min_ws.x, y}, {view.max_ws.x, y}, c);
   }
+  // A Tiled map or an LDtk level is drawn with its art, not its boxes (level_view.h): outline
+  // the boxes in view, so what collides can be seen and picked.
+  if (level.art && !level.art->empty()) {
+    std::vector<int> in_view;
+    level.overlapping(view, in_view);
+    for (int i : in_view) debug.add_box(level.box(i), {1.0f, 1.0f, 1.0f, 0.45f});
+  }
   if (hovered_box_ && *hovered_box_ < level.size() && hovered_box_ != level_->selected())
     debug.add_box(level.box(*hovered_box_), {1.0f, 1.0f, 0.6f, 0.9f});
   if (auto s = level_->selected(); s && *s < level.size()) {
@@ -219,26 +228,49 @@ void EditorSuite::draw_viewport(DebugDraw& debug) const {
   }
 }
 
-void EditorSuite::handle_shortcuts() {
-  const ImGuiIO& io = ImGui::GetIO();
-  if (io.WantTextInput) return;
-  if (io.KeyCtrl && ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Z), false)) {
-    if (io.KeyShift) undo_.redo(); else undo_.undo();
+void EditorSuite::handle_keys(std::span<const KeyChord> keys) {
+  for (const KeyChord& k : keys) {
+    if (k.key == SDLK_F2 && !k.ctrl && !k.alt) {
+      enabled = !enabled;
+      continue;
+    }
+    if (!enabled) continue;
+    const bool context = ImGui::GetCurrentContext() != nullptr;
+    if (context && ImGui::GetIO().WantTextInput) continue;  // the text field's own undo and keys
+    if (k.ctrl && !k.alt && k.key == SDLK_z) {
+      if (k.shift) undo_.redo(); else undo_.undo();
+    } else if (k.ctrl && !k.alt && k.key == SDLK_y) {
+      undo_.redo();
+    } else if (k.ctrl && !k.alt && k.key == SDLK_s) {
+      save_level();
+    } else if (k.key == SDLK_DELETE && !k.ctrl && level_edit_mode && !(context && ImGui::GetIO().WantCaptureKeyboard)) {
+      level_->delete_selected();
+    }
   }
-  if (io.KeyCtrl && ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Y), false)) undo_.redo();
-  if (!io.WantCaptureKeyboard && level_edit_mode &&
-      ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Delete), false))
-    level_->delete_selected();
+}
+
+void EditorSuite::place_next_window(EditorWindow window) {
+  const ImVec2 display = ImGui::GetIO().DisplaySize;
+  const WindowRect r = editor_layout({display.x, display.y})[static_cast<size_t>(window)];
+  const ImGuiCond cond = reset_layout_ ? ImGuiCond_Always : ImGuiCond_FirstUseEver;
+  ImGui::SetNextWindowPos(ImVec2(r.pos.x, r.pos.y), cond);
+  ImGui::SetNextWindowSize(ImVec2(r.size.x, r.size.y), cond);
+}
+
+void EditorSuite::save_level() {
+  LevelEditorModel& m = *level_;
+  if (m.path().empty()) (void)m.save_as(level_path_buf_); else (void)m.save();
+  refresh_level_files();
 }
 
 void EditorSuite::draw_ui() {
   if (!enabled) return;
-  handle_shortcuts();
   if (ImGui::BeginMainMenuBar()) {
     if (ImGui::BeginMenu("Edit")) {
       const std::string u = "Undo " + undo_.undo_label(), r = "Redo " + undo_.redo_label();
       if (ImGui::MenuItem(u.c_str(), "Ctrl+Z", false, undo_.can_undo())) undo_.undo();
       if (ImGui::MenuItem(r.c_str(), "Ctrl+Y", false, undo_.can_redo())) undo_.redo();
+      if (ImGui::MenuItem("Save level", "Ctrl+S")) save_level();
       ImGui::EndMenu();
     }
     if (ImGui::BeginMenu("Windows")) {
@@ -248,6 +280,8 @@ void EditorSuite::draw_ui() {
       ImGui::MenuItem("Tuning", nullptr, &show_tuning);
       ImGui::MenuItem("Rig", nullptr, &show_rig);
       ImGui::MenuItem("Edit level in viewport", nullptr, &level_edit_mode);
+      ImGui::Separator();
+      if (ImGui::MenuItem("Reset layout")) reset_layout_ = true;
       ImGui::EndMenu();
     }
     if (has_unsaved_changes()) ImGui::TextColored(ImVec4(1.0f, 0.8f, 0.3f, 1.0f), "  unsaved changes");
@@ -258,6 +292,7 @@ void EditorSuite::draw_ui() {
   if (show_creature) draw_creature_window();
   if (show_tuning) draw_tuning_window();
   if (show_rig) draw_rig_window();
+  reset_layout_ = false;
   draw_popups();
 }
 

@@ -13,6 +13,7 @@
 //   ...
 //   editors.update(frame_dt);                           // footfall sampling, hot reload
 //   ImGui_ImplOpenGL3_NewFrame(); ImGui_ImplSDL2_NewFrame(); ImGui::NewFrame();
+//   editors.handle_keys(key_presses);                   // F2, Ctrl+Z/Y/S, Delete (SDL events)
 //   bool used = editors.handle_mouse(mouse_px, left_down, wheel, camera, viewport_px);
 //   if (!used && !ImGui::GetIO().WantCaptureMouse) { /* game mouse: pan, zoom */ }
 //   if (!editors.wants_keyboard()) { /* game keys */ }
@@ -31,18 +32,23 @@
 #include <functional>
 #include <memory>
 #include <optional>
+#include <span>
 #include <string>
 #include <vector>
 
 #include <glm/vec2.hpp>
 
 #include "ossa/editor/creature_panel_model.h"
+#include "ossa/editor/editor_layout.h"
 #include "ossa/editor/level_editor_model.h"
 #include "ossa/editor/rig_editor_model.h"
 #include "ossa/editor/spline_editor_model.h"
 #include "ossa/editor/tuning_model.h"
 #include "ossa/editor/undo_stack.h"
+#include "ossa/platform/input.h"
 #include "ossa/render/renderer.h"
+#include "ossa/render/sprite_mesh.h"
+#include "ossa/render/texture.h"
 
 namespace ossa {
 
@@ -88,8 +94,15 @@ class EditorSuite {
   // current state and shows the error). dt in seconds.
   void update(float dt);
 
-  // Draws every editor window and the popups; handles Ctrl+Z / Ctrl+Y (and Delete for the
-  // selected box) when no text field has the keyboard. Call between ImGui::NewFrame() and
+  // The keyboard shortcuts, from the frame's key presses (Game::key_presses(): SDL events, so a
+  // tap shorter than a frame is never lost): F2 shows / hides the editors (`enabled`); while
+  // shown and no text field has the keyboard, Ctrl+Z undoes (Ctrl+Shift+Z redoes), Ctrl+Y
+  // redoes, Ctrl+S saves the level (the Level window's Save) and Delete removes the selected
+  // box (viewport editing on, no window has the keyboard). Call once per frame, inside the
+  // ImGui frame, before draw_ui().
+  void handle_keys(std::span<const KeyChord> keys);
+
+  // Draws every editor window and the popups. Call between ImGui::NewFrame() and
   // ImGui::Render().
   void draw_ui();
 
@@ -131,6 +144,10 @@ class EditorSuite {
   // suite's own loading without it).
   Status apply_character_to_player_for_tests(const std::string& rig_path) { return apply_character_to_player(rig_path); }
 
+  // The GL texture the Rig window's preview draws the character's mesh with (0: none yet, or
+  // the mesh has no texture and is drawn grey). For tests.
+  unsigned rig_preview_texture() const { return rig_preview_texture_ ? rig_preview_texture_->id() : 0u; }
+
   // Screen position (ImGui pixels) of a key of the spline canvas as drawn in the last frame
   // (nullopt before the first frame or when the window is hidden). For tests and tooling.
   std::optional<glm::vec2> spline_key_screen_px(SplineVersion version, int key) const;
@@ -150,7 +167,10 @@ class EditorSuite {
   void draw_rig_preview(float width, float height);
   Status apply_character_to_player(const std::string& rig_path);
   void draw_popups();
-  void handle_shortcuts();
+  void save_level();
+  // Sets the next window's position and size from editor_layout() (first use, or always in
+  // the frame after Windows > Reset layout).
+  void place_next_window(EditorWindow window);
   void draw_spline_canvas(int slot, SplineVersion version, float width, float height);
   void draw_preview_canvas(float width, float height);
   void refresh_level_files();
@@ -164,6 +184,11 @@ class EditorSuite {
   std::unique_ptr<CreaturePanelModel> creature_;
   std::unique_ptr<TuningModel> tuning_;
   std::unique_ptr<RigEditorModel> rig_;
+  // The Rig window's preview geometry: the character's mesh as batch geometry, rebuilt when
+  // the character changes.
+  const Character* rig_preview_key_ = nullptr;
+  SpriteMesh rig_preview_mesh_;
+  std::optional<Texture> rig_preview_texture_;  // the mesh's texture (none: drawn grey)
 
   // Viewport state.
   bool mouse_was_down_ = false;
@@ -182,6 +207,7 @@ class EditorSuite {
   float level_files_age_ = 1e9f;
   float poll_timer_ = 0.0f;
   char level_path_buf_[512] = {};
+  bool reset_layout_ = false;  // Windows > Reset layout: place every window anew this frame
   char tiled_path_buf_[512] = {};
   char proto_path_buf_[512] = {};
   char genome_path_buf_[512] = {};

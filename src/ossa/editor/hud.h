@@ -1,10 +1,13 @@
 #pragma once
-// Hud — the playtester's overlay (Dear ImGui, DESIGN.md §8): the player's speed, gait and
-// Froude number, the frame rate and a graph of recent frame times, plus the key help.
+// Hud — the overlay (Dear ImGui, DESIGN.md §8) in three modes, cycled by H (off, player,
+// developer): for players the creature's name, its speed in km/h and its gait, with a line of
+// key help; for developers also the speed in m/s with the walk and run speeds, the gait bands,
+// the Froude number, the frame rate, a graph of recent frame times, the input and all the keys.
 // Needs a current ImGui frame (NewFrame called); draws one small window in a corner.
 
 #include <array>
 #include <string>
+#include <vector>
 
 namespace ossa {
 
@@ -27,6 +30,16 @@ struct HudInfo {
   bool gif = false;            // a GIF is being captured
 };
 
+enum class HudMode { kOff, kPlayer, kDeveloper };
+
+// H's order: player -> developer -> off -> player.
+HudMode next_hud_mode(HudMode mode);
+const char* hud_mode_name(HudMode mode);  // "off", "player", "developer"
+
+// The text lines the HUD shows in `mode` (the developer mode also draws the frame-time graph
+// after its FPS line). Empty for kOff.
+std::vector<std::string> hud_lines(const HudInfo& info, HudMode mode, float fps);
+
 class Hud {
  public:
   static constexpr int kHistory = 240;  // frame times kept for the graph
@@ -35,10 +48,11 @@ class Hud {
   void add_frame_time(float seconds);
   // Frames per second over the kept history (0 before the first frame).
   float fps() const;
-  // Draws the overlay when visible.
+  // Draws the overlay in its mode.
   void draw(const HudInfo& info);
+  void cycle() { mode = next_hud_mode(mode); }
 
-  bool visible = true;
+  HudMode mode = HudMode::kPlayer;
 
  private:
   std::array<float, kHistory> frame_millis_{};  // ring buffer, milliseconds

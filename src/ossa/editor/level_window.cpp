@@ -26,8 +26,7 @@ void EditorSuite::draw_level_window() {
   const std::string name = m.path().empty() ? std::string("(unsaved level)")
                                             : std::filesystem::path(m.path()).filename().string();
   const std::string title = "Level: " + name + (m.dirty() ? " *" : "") + "###level";
-  ImGui::SetNextWindowPos(ImVec2(10, 30), ImGuiCond_FirstUseEver);
-  ImGui::SetNextWindowSize(ImVec2(320, 450), ImGuiCond_FirstUseEver);
+  place_next_window(EditorWindow::kLevel);
   if (!ImGui::Begin(title.c_str(), &show_level)) {
     ImGui::End();
     return;
@@ -57,10 +56,7 @@ void EditorSuite::draw_level_window() {
   }
   ImGui::SetNextItemWidth(-1);
   ImGui::InputText("##path", level_path_buf_, sizeof level_path_buf_);
-  if (ImGui::Button("Save")) {
-    if (m.path().empty()) (void)m.save_as(level_path_buf_); else (void)m.save();
-    refresh_level_files();
-  }
+  if (ImGui::Button("Save")) save_level();
   ImGui::SameLine();
   if (ImGui::Button("Save as")) {
     (void)m.save_as(level_path_buf_);

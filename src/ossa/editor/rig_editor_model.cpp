@@ -96,6 +96,7 @@ Status RigEditorModel::open_mapping(const std::string& rig_path) {
     file_error_ = rig_path + ": mesh: " + mesh.message();
     return Error{file_error_};
   }
+  (void)load_rigged_texture(mesh.value());  // the preview's colours; without one it is grey
   open(std::move(mesh.value()), *m, rig_path);
   return {};
 }
@@ -106,6 +107,7 @@ Status RigEditorModel::open_mesh(const std::string& mesh_path, const std::string
     file_error_ = mesh.message();
     return mesh.error();
   }
+  (void)load_rigged_texture(mesh.value());  // the preview's colours; without one it is grey
   namespace fs = std::filesystem;
   std::string path = rig_path;
   if (path.empty()) path = (fs::path(mesh_path).parent_path() / (fs::path(mesh_path).stem().string() + ".rig.json")).string();

@@ -57,6 +57,8 @@ class RigEditorModel {
   // The same from a mesh already loaded (tests).
   void open(RiggedMesh mesh, RigMapping mapping, const std::string& rig_path);
   bool is_open() const { return mesh_ != nullptr; }
+  // The open mesh (null when none).
+  const RiggedMesh* mesh() const { return mesh_.get(); }
 
   // ---- The bone tree ------------------------------------------------------------------------
   const ImportedSkeleton& skeleton() const { return skeleton_; }

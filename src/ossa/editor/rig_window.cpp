@@ -9,6 +9,7 @@
 
 #include "ossa/editor/editor_suite.h"
 #include "ossa/editor/editor_suite_internal.h"
+#include "ossa/render/character_mesh.h"
 #include "ossa/skeleton/pose.h"
 
 namespace ossa {
@@ -102,20 +103,60 @@ void EditorSuite::draw_rig_preview(float width, float height) {
   }
   const int selected_mesh_bone = m.bone_of(m.slot());
   const Character* c = m.character().get();
+  // The skinned mesh as the game draws it (skinned on the CPU, textured with the mesh's
+  // texture through ImGui), the bones over it.
+  if (c && m.mesh()) {
+    if (rig_preview_key_ != c) {
+      rig_preview_key_ = c;
+      rig_preview_mesh_ = character_sprite_mesh(*c, *m.mesh());
+      const RiggedMesh& mesh = *m.mesh();
+      rig_preview_texture_.reset();
+      if (!mesh.texture_rgba.empty()) {
+        rig_preview_texture_ = Texture::from_image(Image{mesh.texture_width, mesh.texture_height, mesh.texture_rgba});
+      }
+    }
+    const SpriteMesh& sm = rig_preview_mesh_;
+    const size_t bones = std::min(sm.inverse_bind.size(), w.size());
+    std::vector<Mat2x3> palette(bones);
+    for (size_t b = 0; b < bones; ++b) palette[b] = w[b] * sm.inverse_bind[b];
+    std::vector<ImVec2> skinned(sm.vertices.size());
+    for (size_t i = 0; i < sm.vertices.size(); ++i) {
+      const SpriteVertex& v = sm.vertices[i];
+      glm::vec2 p(0.0f);
+      for (size_t k = 0; k < 4; ++k) {
+        if (v.weights[k] <= 0.0f || v.bones[k] >= bones) continue;
+        p += v.weights[k] * palette[v.bones[k]].apply(v.position_ms);
+      }
+      skinned[i] = px(p);
+    }
+    const bool textured = rig_preview_texture_ && rig_preview_texture_->is_valid();
+    // The texture's coordinates are GL's, as the texture was uploaded (texture.h).
+    if (textured) dl->PushTextureID(reinterpret_cast<ImTextureID>(static_cast<intptr_t>(rig_preview_texture_->id())));
+    const ImVec2 white = ImGui::GetFontTexUvWhitePixel();
+    for (size_t t = 0; t + 2 < sm.indices.size(); t += 3) {
+      dl->PrimReserve(3, 3);
+      for (size_t k = 0; k < 3; ++k) {
+        const SpriteVertex& v = sm.vertices[sm.indices[t + k]];
+        dl->PrimVtx(skinned[sm.indices[t + k]], textured ? ImVec2(v.uv.x, v.uv.y) : white,
+                    textured ? IM_COL32_WHITE : IM_COL32(200, 195, 185, 255));
+      }
+    }
+    if (textured) dl->PopTextureID();
+  }
   for (int b = 0; b < sk.bone_count(); ++b) {
     const bool hot = c && c->mesh_bone[static_cast<size_t>(b)] == selected_mesh_bone;
     const ImU32 col = hot ? IM_COL32(255, 150, 40, 255)
                       : sk.layer(b) == Layer::kFar ? IM_COL32(150, 140, 120, 255)
                                                    : IM_COL32(235, 225, 200, 255);
-    dl->AddLine(px(bone_start(w[static_cast<size_t>(b)])), px(bone_end(w[static_cast<size_t>(b)], sk.length(b))), col, hot ? 3.0f : 2.0f);
+    dl->AddLine(px(bone_start(w[static_cast<size_t>(b)])), px(bone_end(w[static_cast<size_t>(b)], sk.length(b))), col,
+                hot ? 3.0f : 1.0f);
   }
   for (int i = 0; i < a->leg_count(); ++i) dl->AddCircleFilled(px(a->foot_ws(i)), 3.0f, IM_COL32(90, 220, 110, 255));
 }
 
 void EditorSuite::draw_rig_window() {
   RigEditorModel& m = *rig_;
-  ImGui::SetNextWindowPos(ImVec2(420, 40), ImGuiCond_FirstUseEver);
-  ImGui::SetNextWindowSize(ImVec2(560, 720), ImGuiCond_FirstUseEver);
+  place_next_window(EditorWindow::kRig);
   const std::string title = std::string("Rig") + (m.dirty() ? " *" : "") + "###rig";
   if (!ImGui::Begin(title.c_str(), &show_rig)) {
     ImGui::End();

@@ -148,10 +148,8 @@ void EditorSuite::draw_spline_window() {
   const std::string name = m.path().empty() ? std::string("(unsaved)")
                                             : std::filesystem::path(m.path()).filename().string();
   const std::string title = "Spline prototypes: " + name + (m.dirty() ? " *" : "") + "###splines";
-  // Top right, leaving the middle of the viewport free.
-  const ImVec2 display = ImGui::GetIO().DisplaySize;
-  ImGui::SetNextWindowPos(ImVec2(std::max(340.0f, display.x - 510.0f), 30), ImGuiCond_FirstUseEver);
-  ImGui::SetNextWindowSize(ImVec2(500, 520), ImGuiCond_FirstUseEver);
+  // Top right, leaving the middle of the viewport free (editor_layout.h).
+  place_next_window(EditorWindow::kSplines);
   // A permanent scrollbar: the canvases must not change width (and keys jump under the
   // mouse) when the numeric fields of a selected key make the content taller.
   if (!ImGui::Begin(title.c_str(), &show_splines, ImGuiWindowFlags_AlwaysVerticalScrollbar)) {
@@ -170,7 +168,9 @@ void EditorSuite::draw_spline_window() {
     ImGui::EndCombo();
   }
   ImGui::SameLine();
+  ImGui::PushTextWrapPos(0.0f);
   ImGui::TextDisabled("double-click: add key, right-click: remove");
+  ImGui::PopTextWrapPos();
 
   const float avail = ImGui::GetContentRegionAvail().x;
   const float w = std::max(120.0f, (avail - ImGui::GetStyle().ItemSpacing.x) * 0.5f);

@@ -54,8 +54,7 @@ void draw_footfalls(const TuningModel& t, float width) {
 
 void EditorSuite::draw_tuning_window() {
   TuningModel& m = *tuning_;
-  ImGui::SetNextWindowPos(ImVec2(340, 30), ImGuiCond_FirstUseEver);
-  ImGui::SetNextWindowSize(ImVec2(440, 640), ImGuiCond_FirstUseEver);
+  place_next_window(EditorWindow::kTuning);
   const std::string title = std::string("Tuning") + (m.dirty() ? " *" : "") + "###tuning";
   if (!ImGui::Begin(title.c_str(), &show_tuning)) {
     ImGui::End();

@@ -1,6 +1,7 @@
 #include "ossa/game/world.h"
 
 #include <algorithm>
+#include <cmath>
 #include <cstring>
 
 namespace ossa {
@@ -69,9 +70,71 @@ void World::set_params(const AnimatorParams& params) {
   for (Npc& n : npcs_) n.entity->animator().params() = params;
 }
 
+namespace {
+
+// A creature's body for the meeting rule: its x-extent, feet height and hip height.
+struct Body {
+  float lo = 0.0f, hi = 0.0f, feet = 0.0f, hip = 1.0f, velocity = 0.0f;
+};
+
+// The x-extent is symmetric about the root (its larger reach, head or tail, both ways), so it
+// does not jump when a creature turns around.
+Body body_of(const Entity& e) {
+  const Animator& a = e.animator();
+  const AnimRig& rig = a.rig();
+  const float reach = std::max(rig.body_front, -rig.body_back);
+  return {a.x() - reach, a.x() + reach, a.root_y() - a.hip_height(), a.hip_height(), a.velocity()};
+}
+
+}  // namespace
+
+bool creatures_in_each_others_way(float hip_a, float feet_a, float hip_b, float feet_b) {
+  const float small = std::min(hip_a, hip_b), large = std::max(hip_a, hip_b);
+  if (small < kPassUnderRatio * large) return false;  // the small one passes under
+  return std::abs(feet_a - feet_b) < small;
+}
+
+int World::blocker_ahead(const Entity& self, float dir) const {
+  const Body me = body_of(self);
+  // At least the walk's speed: a creature at rest that starts walking must not start into
+  // one it would have to stop for at once.
+  const float speed = std::max(std::abs(me.velocity), self.animator().walk_speed());
+  const float reach = kMeetGap + kMeetLookAhead * speed;
+  int found = -2;  // -2: none; -1: the player; i: NPC i
+  const auto check = [&](const Entity& other, int id) {
+    if (&other == &self || found != -2) return;
+    const Body b = body_of(other);
+    if (!creatures_in_each_others_way(me.hip, me.feet, b.hip, b.feet)) return;
+    // The gap between the bodies in the direction of motion (negative: they overlap).
+    const float gap = dir > 0.0f ? b.lo - me.hi : me.lo - b.hi;
+    const float centre_ahead = dir > 0.0f ? (b.lo + b.hi) - (me.lo + me.hi) : (me.lo + me.hi) - (b.lo + b.hi);
+    if (gap < reach && centre_ahead > 0.0f) found = id;
+  };
+  if (player_) check(*player_, -1);
+  for (size_t i = 0; i < npcs_.size(); ++i) check(*npcs_[i].entity, static_cast<int>(i));
+  return found;
+}
+
 void World::step(const Controls& player_controls) {
   const float h = dt();
-  if (player_) player_->step(h, player_controls, level_);
+  if (player_) {
+    // The player stops at a creature in its way; an NPC it walks up to gives way (below).
+    Controls c = player_controls;
+    if (c.move_x != 0.0f && player_meets_creatures) {
+      const int blocker = blocker_ahead(*player_, c.move_x);
+      if (blocker >= 0) {
+        Npc& n = npcs_[static_cast<size_t>(blocker)];
+        // At least as fast as the player asks to go (and at least 0.6: a brisk walk).
+        n.controls.move_x =
+            (c.move_x > 0.0f ? 1.0f : -1.0f) * std::max({0.6f, std::abs(n.controls.move_x), std::abs(c.move_x)});
+        n.controls.run = c.run;
+        n.timer = std::max(n.timer, 1.5f);
+      }
+      if (blocker != -2) c.move_x = 0.0f;
+    }
+    player_->step(h, c, level_);
+    applied_ = c;
+  }
   for (Npc& n : npcs_) {
     // Wander: hold a heading and a pace for a while; pause sometimes; turn when blocked.
     n.timer -= h;
@@ -85,9 +148,24 @@ void World::step(const Controls& player_controls) {
         n.controls.run = n.rng.chance(0.15);
       }
     }
-    if (n.entity->animator().blocked() && n.controls.move_x != 0.0f) {
-      n.controls.move_x = -n.controls.move_x;
-      n.timer = std::max(n.timer, 1.5f);
+    // Blocked by the level or meeting a creature in its way: turn back — or wait, when the
+    // way back is taken by a creature too (hemmed in) or the creature ahead is the player
+    // walking on the same way.
+    if (n.controls.move_x != 0.0f) {
+      const float dir = n.controls.move_x;
+      const bool wall = n.entity->animator().blocked();
+      const int blocker = blocker_ahead(*n.entity, dir);
+      if (wall || blocker != -2) {
+        const bool follow_player = !wall && blocker == -1 && applied_.move_x * dir > 0.0f;
+        const bool back_free = blocker_ahead(*n.entity, -dir) == -2;
+        if (!follow_player && back_free) {
+          n.controls.move_x = -dir;
+          n.timer = std::max(n.timer, 1.5f);
+        } else {
+          n.controls.move_x = 0.0f;
+          n.timer = std::max(n.timer, 0.5f);
+        }
+      }
     }
     n.entity->step(h, n.controls, level_);
   }

@@ -3,6 +3,19 @@
 // (default 120 Hz, up to 480 Hz; DESIGN.md §2). NPCs wander: they pick a direction and a
 // speed for a few seconds, pause now and then, and turn around when blocked. Stepping is
 // deterministic: the same level, creatures, seeds and player controls give the same poses.
+//
+// Creatures meet (they never walk through each other): two creatures are in each other's way
+// when their feet are at about the same height (closer than the smaller hip height) and
+// neither is less than kPassUnderRatio as tall at the hip as the other — a creature that small
+// passes under the larger one's belly. A creature moving towards one in its way whose body
+// (its rest pose's longer reach from the root, head or tail, taken both ways, so turning
+// around does not change it) is closer than kMeetGap plus kMeetLookAhead seconds of its speed
+// (at least its walk's):
+//   * an NPC turns back and holds its new heading at least 1.5 s (hemmed in on both sides it
+//     waits);
+//   * the player stops (moving away is free), and an NPC it walks up to gives way: it walks
+//     off ahead of the player, at least as fast as the player's stick asks (and at least at
+//     0.6, a brisk walk), running when the player runs.
 
 #include <cstdint>
 #include <memory>
@@ -12,6 +25,13 @@
 #include "ossa/math/rng.h"
 
 namespace ossa {
+
+inline constexpr float kPassUnderRatio = 0.5f;  // hip heights: under this ratio, the small one passes under
+inline constexpr float kMeetGap = 0.15f;        // metres between bodies
+inline constexpr float kMeetLookAhead = 0.5f;   // seconds of speed added to the gap
+
+// The rule above: creatures with these hip heights and feet heights (metres) block each other.
+bool creatures_in_each_others_way(float hip_a, float feet_a, float hip_b, float feet_b);
 
 class World {
  public:
@@ -29,6 +49,12 @@ class World {
 
   // One fixed tick of 1 / tick_hz seconds.
   void step(const Controls& player_controls);
+  // The player's controls the last step applied: the given ones, with the move towards a
+  // creature in its way dropped (what a replay records, so it plays back without the NPCs).
+  const Controls& applied_player_controls() const { return applied_; }
+  // Off: the player is not stopped by creatures (a replay's controls already were) and NPCs
+  // do not give way to it; NPCs still turn back from it.
+  bool player_meets_creatures = true;
 
   const Level& level() const { return level_; }
   Level& level() { return level_; }
@@ -60,10 +86,14 @@ class World {
   uint64_t tick_ = 0;
   std::unique_ptr<Player> player_;
   std::vector<Npc> npcs_;
+  Controls applied_;
 
   Player& place_player(std::unique_ptr<Player> player, glm::vec2 at_ws, int facing);
   Entity& place_npc(std::unique_ptr<Entity> entity, glm::vec2 at_ws, uint64_t seed);
   glm::vec2 player_stand() const;  // where a replacement player is spawned
+  // The creature in `self`'s way moving in direction `dir` (sign): -1 the player, i >= 0 NPC i,
+  // -2 none.
+  int blocker_ahead(const Entity& self, float dir) const;
 };
 
 // FNV-1a over the bits of every matrix: equal poses hash equal, bit for bit.

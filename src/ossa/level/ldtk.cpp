@@ -7,6 +7,7 @@
 #include <map>
 #include <optional>
 
+#include "ossa/level/ldtk_art.h"
 #include "ossa/level/level_io.h"
 #include "ossa/level/tile_merge.h"
 
@@ -255,7 +256,11 @@ Result<Level> import_ldtk_json(const Json& project, std::string_view file, const
     }
   }
 
-  // The layers: in the project, or in an external level file.
+  // The layers: in the project, or in an external level file. The art from the same JSON.
+  LevelArt art;
+  art.file = std::string(file) + (id.empty() ? "" : "#" + id);
+  std::vector<std::string> warnings;
+  const ldtk_detail::ArtFrame frame{im.ppm, im.world_x, im.world_y};
   const bool external = !level_json.contains("layerInstances") || level_json["layerInstances"].is_null();
   if (external) {
     const std::string rel = r.string(level_json, level_path, "externalRelPath");
@@ -273,21 +278,26 @@ Result<Level> import_ldtk_json(const Json& project, std::string_view file, const
     inner.r = JsonReader{ext_path};
     if (!inner.r.expect_object(*doc, "")) return inner.r.error();
     inner.layers(*doc, "", id);
+    if (!inner.r.failed()) ldtk_detail::read_art(project, *doc, "", std::string(file), frame, inner.r, art, warnings);
     if (inner.r.failed()) return inner.r.error();
     im = std::move(inner);
   } else {
     im.layers(level_json, level_path, id);
+    if (!r.failed()) ldtk_detail::read_art(project, level_json, level_path, std::string(file), frame, r, art, warnings);
     if (r.failed()) return r.error();
   }
 
   Level level(std::move(im.boxes));
   level.name = id;
+  if (art.background) level.background = Background{"", 0.5f, glm::vec3(*art.background)};
+  if (!art.empty()) level.art = std::make_shared<const LevelArt>(std::move(art));
   if (im.spawn) {
     level.spawn_ws = *im.spawn;
   } else {
     level.spawn_ws = default_map_spawn(level);
   }
   if (report) {
+    for (std::string& w : warnings) report->warnings.push_back(std::move(w));
     report->level_name = id;
     report->pixels_per_metre = static_cast<float>(im.ppm);
     report->scale_from = scale_from;

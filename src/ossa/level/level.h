@@ -21,12 +21,14 @@
 #include <glm/vec3.hpp>
 
 #include <cstdint>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
 
 #include "ossa/level/box.h"
 #include "ossa/level/box_tree.h"
+#include "ossa/level/level_art.h"
 
 namespace ossa {
 
@@ -43,12 +45,37 @@ struct Background {
   }
 };
 
+// How an ossa level's boxes look (DESIGN.md §6: "ossa's own levels may name a tileset for box
+// tops, sides and fill"): tiles of one tileset image laid on a world grid of tile_m metres,
+// clipped to each box. The fill covers the box; a side column runs down each side no other box
+// covers, the top row along the top no other box covers (its corners where the top meets an
+// exposed side). Tiles are numbered in row order from the image's top-left, 0-based.
+struct LevelLook {
+  std::string tileset;      // image path relative to the level's folder, else assets/
+  int tile_px = 32;         // a tile's width and height in the image, pixels, > 0
+  float tile_m = 0.5f;      // a tile's width and height in the world, metres, > 0
+  int top = 0;              // the top row (grass), >= 0
+  int top_left = -1;        // the top row's corners; -1: `top`
+  int top_right = -1;
+  int left = -1;            // the side columns; -1: no side column (the fill reaches the edge)
+  int right = -1;
+  int fill = 0;             // everything else, >= 0
+
+  friend bool operator==(const LevelLook&, const LevelLook&) = default;
+};
+
 class Level {
  public:
   // Free to edit; no invariant ties them to the colliders.
   std::string name;                     // shown in the editor; may be empty
   glm::vec2 spawn_ws{0.0f};             // where the player's creature starts (on the ground)
   std::optional<Background> background;
+  // An ossa level's box tiles (saved with the level), or none: plain earth-coloured boxes.
+  std::optional<LevelLook> look;
+  // A Tiled map's or an LDtk level's art (level_art.h), shared by copies of the level; null for
+  // ossa levels. Not saved by save_level (an ossa level has no tile layers) and not compared
+  // by operator== (collision and spawn are what a level is; the art is how it looks).
+  std::shared_ptr<const LevelArt> art;
   // A creature that falls to this height (world y, metres: where its feet would stand under
   // its root) has left the level and starts again at the spawn; a pit's floor may be it.
   // Unset: kill_y()'s default.
@@ -123,9 +150,9 @@ class Level {
   // Is there ground below the spawn point, above the kill height?
   bool spawn_has_ground() const;
 
-  // Same name, spawn, background, kill height and colliders (in order).
+  // Same name, spawn, background, look, kill height and colliders (in order).
   friend bool operator==(const Level& a, const Level& b) {
-    return a.name == b.name && a.spawn_ws == b.spawn_ws && a.background == b.background &&
+    return a.name == b.name && a.spawn_ws == b.spawn_ws && a.background == b.background && a.look == b.look &&
            a.kill_height_ws == b.kill_height_ws && a.colliders_ == b.colliders_;
   }
 

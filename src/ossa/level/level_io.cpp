@@ -62,6 +62,24 @@ std::optional<Background> read_background(JsonReader& r, const Json& doc) {
   return b;
 }
 
+std::optional<LevelLook> read_look(JsonReader& r, const Json& doc) {
+  if (!r.has(doc, "look")) return std::nullopt;
+  const Json* o = r.object(doc, "", "look");
+  if (!o) return std::nullopt;
+  LevelLook look;
+  look.tileset = r.string(*o, "look", "tileset");
+  if (!r.failed() && look.tileset.empty()) r.fail("look.tileset", "expected an image file name, got an empty string");
+  look.tile_px = static_cast<int>(r.integer_or(*o, "look", "tile_px", 32, 1, 4096));
+  look.tile_m = static_cast<float>(r.number_or(*o, "look", "tile_m", 0.5, 0.01, 100.0));
+  look.top = static_cast<int>(r.integer_or(*o, "look", "top", 0, 0, 1 << 20));
+  look.fill = static_cast<int>(r.integer_or(*o, "look", "fill", 0, 0, 1 << 20));
+  look.top_left = static_cast<int>(r.integer_or(*o, "look", "top_left", -1, -1, 1 << 20));
+  look.top_right = static_cast<int>(r.integer_or(*o, "look", "top_right", -1, -1, 1 << 20));
+  look.left = static_cast<int>(r.integer_or(*o, "look", "left", -1, -1, 1 << 20));
+  look.right = static_cast<int>(r.integer_or(*o, "look", "right", -1, -1, 1 << 20));
+  return look;
+}
+
 }  // namespace
 
 Result<Level> level_from_json(const Json& doc, std::string_view file) {
@@ -87,6 +105,7 @@ Result<Level> level_from_json(const Json& doc, std::string_view file) {
     level.spawn_ws.y = r.number_f(*spawn, "spawn", "y", -kMaxLevelCoordinate, kMaxLevelCoordinate);
   }
   level.background = read_background(r, doc);
+  level.look = read_look(r, doc);
   if (r.has(doc, "kill_height")) {
     level.kill_height_ws = r.number_f(doc, "", "kill_height", -kMaxLevelCoordinate, kMaxLevelCoordinate);
   }
@@ -222,6 +241,16 @@ Json level_to_json(const Level& level) {
                          {"colour", {shortest_decimal(b.colour.r), shortest_decimal(b.colour.g),
                                      shortest_decimal(b.colour.b)}}};
   }
+  if (level.look) {
+    const LevelLook& l = *level.look;
+    Json look = {{"tileset", l.tileset}, {"tile_px", l.tile_px}, {"tile_m", shortest_decimal(l.tile_m)},
+                 {"top", l.top}, {"fill", l.fill}};
+    for (const auto& [key, value] : {std::pair{"top_left", l.top_left}, std::pair{"top_right", l.top_right},
+                                     std::pair{"left", l.left}, std::pair{"right", l.right}}) {
+      if (value >= 0) look[key] = value;
+    }
+    doc["look"] = std::move(look);
+  }
   if (level.kill_height_ws) doc["kill_height"] = shortest_decimal(*level.kill_height_ws);
   Json colliders = Json::array();
   for (const Box& box : level.colliders()) {
@@ -239,13 +268,14 @@ std::string level_to_text(const Level& level) {
   // line, so shipped levels read well and diff line by line.
   const Json doc = level_to_json(level);
   std::string out = "{\n";
-  for (const char* key : {"format", "version", "name", "spawn", "background", "kill_height"}) {
+  for (const char* key : {"format", "version", "name", "spawn", "background", "look", "kill_height"}) {
     if (!doc.contains(key)) continue;
     out += "  \"" + std::string(key) + "\": ";
     if (doc[key].is_object()) {
       // Keep the documented field order inside spawn and background too.
       nlohmann::ordered_json o;
-      for (const char* k : {"x", "y", "image", "parallax", "colour"}) {
+      for (const char* k : {"x", "y", "image", "parallax", "colour", "tileset", "tile_px", "tile_m", "top", "top_left",
+                            "top_right", "left", "right", "fill"}) {
         if (doc[key].contains(k)) o[k] = doc[key][k];
       }
       out += o.dump(-1, ' ', false, nlohmann::ordered_json::error_handler_t::replace);

@@ -14,6 +14,16 @@
 //       "parallax": 0.5,                    scroll factor in [0, 1], default 0.5
 //       "colour": [0.55, 0.70, 0.85]        linear RGB, three numbers in [0, 1]
 //     },
+//     "look": {                          optional object: the boxes drawn with tiles (level.h
+//                                        LevelLook); without it, plain earth-coloured boxes
+//       "tileset": "tiles/meadow.png",      required: image path relative to the level's folder,
+//                                           else assets/ (resolve_level_resource)
+//       "tile_px": 32,                      a tile's side in the image, pixels, 1-4096 (default 32)
+//       "tile_m": 0.5,                      a tile's side in the world, metres, 0.01-100 (0.5)
+//       "top": 0, "top_left": 1, "top_right": 2, "left": 3, "right": 4, "fill": 5
+//                                           tile numbers in row order from the image's top-left;
+//                                           top and fill >= 0 (default 0), the others -1 (none)
+//     },
 //     "kill_height": -12.0,              optional number below the spawn's y: a creature whose
 //                                        root falls below this y has left the level and starts
 //                                        again at the spawn; default 2 m (or the creature's hip

@@ -123,7 +123,8 @@ void Importer::object(const Json& o, const std::string& path, double offx, doubl
   boxes.push_back(box);
 }
 
-void Importer::layers(const Json& parent, const std::string& parent_path, double offx, double offy, int depth) {
+void Importer::layers(const Json& parent, const std::string& parent_path, double offx, double offy, int depth,
+                      const LayerStyle& parent_style) {
   const Json* list = r.array(parent, parent_path, "layers");
   if (!list) return;
   const std::string list_path = json_path(parent_path, "layers");
@@ -135,6 +136,8 @@ void Importer::layers(const Json& parent, const std::string& parent_path, double
     const double lx = offx + r.number_or(layer, path, "offsetx", 0.0);
     const double ly = offy + r.number_or(layer, path, "offsety", 0.0);
     if (r.failed()) return;
+    const LayerStyle style = layer_style(layer, path, parent_style);
+    if (r.failed()) return;
     if (type == "objectgroup") {
       const Json* objects = r.array(layer, path, "objects");
       if (!objects) return;
@@ -142,18 +145,21 @@ void Importer::layers(const Json& parent, const std::string& parent_path, double
         object((*objects)[k], json_path(json_path(path, "objects"), k), lx, ly);
       }
     } else if (type == "tilelayer") {
-      tile_layer(layer, path, lx, ly);
+      tile_layer(layer, path, lx, ly, style);
     } else if (type == "group") {
       if (depth >= kMaxGroupDepth) {
         r.fail(path, "group layers nested more than " + std::to_string(kMaxGroupDepth) + " deep");
         return;
       }
-      layers(layer, path, lx, ly, depth + 1);
-    } else if (type == "imagelayer" && !have_image) {
-      have_image = true;
-      if (!background) background = Background{};
-      background->image = r.string_or(layer, path, "image", "");
-      background->parallax = static_cast<float>(r.number_or(layer, path, "parallaxx", 1.0, 0.0, 1.0));
+      layers(layer, path, lx, ly, depth + 1, style);
+    } else if (type == "imagelayer") {
+      art_image_layer(layer, path, lx, ly, style);
+      if (!have_image) {
+        have_image = true;
+        if (!background) background = Background{};
+        background->image = r.string_or(layer, path, "image", "");
+        background->parallax = static_cast<float>(r.number_or(layer, path, "parallaxx", 1.0, 0.0, 1.0));
+      }
     }
   }
 }
@@ -195,6 +201,7 @@ const Json* find_property(const Json& map, const char* name) {
 
 using tiled_detail::find_property_ci;
 using tiled_detail::Importer;
+using tiled_detail::LayerStyle;
 
 // ---- [SECTION] Entry points --------------------------------------------------------------------
 
@@ -240,8 +247,12 @@ Result<Level> import_tiled_json(const Json& map, std::string_view file, const Ti
     const auto c = parse_colour(s);
     if (!r.failed() && !c) r.fail("backgroundcolor", "expected \"#RRGGBB\" or \"#AARRGGBB\", got " + describe_json(map["backgroundcolor"]));
     if (c) im.background = Background{"", 0.5f, *c};
+    im.art.background = parse_hex_colour(s);
   }
-  im.layers(map, "", 0.0, 0.0, 0);
+  im.art.file = std::string(file);
+  im.art.parallax_origin_ws = {static_cast<float>(r.number_or(map, "", "parallaxoriginx", 0.0) / im.ppm),
+                               static_cast<float>((im.map_h_px - r.number_or(map, "", "parallaxoriginy", 0.0)) / im.ppm)};
+  im.layers(map, "", 0.0, 0.0, 0, LayerStyle{});
   if (r.failed()) return r.error();
 
   Level level(std::move(im.boxes));
@@ -263,7 +274,9 @@ Result<Level> import_tiled_json(const Json& map, std::string_view file, const Ti
   } else {
     level.spawn_ws = default_map_spawn(level);
   }
+  if (!im.art.empty()) level.art = std::make_shared<const LevelArt>(std::move(im.art));
   if (report) {
+    for (std::string& w : im.warnings) report->warnings.push_back(std::move(w));
     report->pixels_per_metre = static_cast<float>(im.ppm);
     report->scale_from = scale_from;
     report->solid_cells += im.solid_cells;

@@ -124,6 +124,7 @@ void Importer::read_tilesets(const Json& map) {
       JsonReader inner{ts_path.string()};
       std::swap(r, inner);
       tileset_tiles(*doc, "", set);
+      if (!r.failed()) art_tileset(*doc, "", ts_path.string(), set);
       std::swap(r, inner);
       if (inner.failed()) {
         r.fail(where, "external tileset: " + inner.error().message);
@@ -131,6 +132,7 @@ void Importer::read_tilesets(const Json& map) {
       }
     } else {
       tileset_tiles(ts, path, set);
+      if (!r.failed()) art_tileset(ts, path, r.file(), set);
     }
     tilesets.push_back(std::move(set));
   }
@@ -226,7 +228,7 @@ bool Importer::read_gids(const Json& holder, const std::string& path, const std:
   return true;
 }
 
-void Importer::tile_layer(const Json& layer, const std::string& path, double offx, double offy) {
+void Importer::tile_layer(const Json& layer, const std::string& path, double offx, double offy, const LayerStyle& style) {
   layer_what = "tile layer \"" + (layer.contains("name") && layer["name"].is_string() ? layer["name"].get<std::string>() : std::string()) + "\": ";
   if (!(tile_w_px > 0.0) || !(tile_h_px > 0.0)) {
     r.fail(path, layer_what + "needs the map's tilewidth and tileheight > 0");
@@ -240,6 +242,9 @@ void Importer::tile_layer(const Json& layer, const std::string& path, double off
   const bool all_solid = cls == "collision" || cls == "colliders" || name == "collision" || name == "colliders";
   std::vector<Cell> cells;
   std::vector<uint32_t> gids;
+  // The art of a visible layer (a hidden one still collides).
+  std::optional<ArtLayer> drawn;
+  if (style.visible) drawn = art_layer(layer, style);
   auto collect = [&](long long x0, long long y0, long long w, long long h) {
     for (long long y = 0; y < h; ++y) {
       for (long long x = 0; x < w; ++x) {
@@ -247,6 +252,7 @@ void Importer::tile_layer(const Json& layer, const std::string& path, double off
         if (all_solid ? (g & ~kGidFlags) != 0 : gid_solid(g)) cells.push_back({x0 + x, y0 + y});
       }
     }
+    if (drawn) art_tiles(gids, x0, y0, w, h, offx, offy, path, *drawn);
   };
   long long w = 0, h = 0;
   if (r.has(layer, "chunks")) {
@@ -265,6 +271,7 @@ void Importer::tile_layer(const Json& layer, const std::string& path, double off
     if (!read_gids(layer, path, encoding, compression, gids, w, h)) return;
     collect(0, 0, w, h);
   }
+  if (drawn && !drawn->batches.empty()) art.layers.push_back(std::move(*drawn));
   MergedCells merged = merge_cells(cells);
   solid_cells += merged.cells;
   boxes_from_cells += static_cast<int64_t>(merged.rects.size());

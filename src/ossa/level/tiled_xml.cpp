@@ -1,8 +1,9 @@
 // Tiled XML (.tmx maps, .tsx tilesets) to the JSON document Tiled writes for the same map
 // (https://doc.mapeditor.org/en/stable/reference/tmx-map-format/ and json-map-format/), so
 // one importer (tiled.cpp) reads both. Only what the importer uses is converted: map and
-// layer attributes, properties, tilesets and their tiles' properties and collision objects,
-// tile data (CSV becomes an array, base64 stays a string with its encoding and compression,
+// layer attributes (offsets, opacity, visibility, tint, parallax, image layers' images and
+// repeats), properties, tilesets (their image or their tiles' images, margin, spacing,
+// tileoffset) and their tiles' properties and collision objects, tile data (CSV becomes an array, base64 stays a string with its encoding and compression,
 // <tile gid> children become an array, <chunk>s become "chunks"), objects and their shape.
 // Errors name the file and the element path in the JSON form ("layers[2].width").
 
@@ -161,12 +162,33 @@ struct Converter {
     return list;
   }
 
+  // An element's <image source width height> as Tiled's JSON fields image, imagewidth, imageheight.
+  void image(const pugi::xml_node& n, const std::string& path, Json& out) {
+    const pugi::xml_node img = n.child("image");
+    if (!img) return;
+    out["image"] = img.attribute("source").as_string();
+    number(img, path, "width", out, "imagewidth");
+    number(img, path, "height", out, "imageheight");
+  }
+
+  // A 0/1 attribute as a JSON bool, when present.
+  static void flag(const pugi::xml_node& n, const char* attr, Json& out) {
+    if (const pugi::xml_attribute a = n.attribute(attr)) out[attr] = a.as_int(1) != 0;
+  }
+
   Json tileset(const pugi::xml_node& ts, const std::string& path) {
     Json out = Json::object();
     number(ts, path, "firstgid", out);
     for (const char* a : {"source", "name"}) text_attr(ts, a, out);
-    for (const char* a : {"tilewidth", "tileheight", "tilecount", "columns"}) number(ts, path, a, out);
+    for (const char* a : {"tilewidth", "tileheight", "tilecount", "columns", "margin", "spacing"}) number(ts, path, a, out);
+    text_attr(ts, "tilerendersize", out);
     properties(ts, path, out);
+    image(ts, path, out);
+    if (const pugi::xml_node o = ts.child("tileoffset")) {
+      Json offset = Json::object();
+      for (const char* a : {"x", "y"}) number(o, json_path(path, "tileoffset"), a, offset);
+      out["tileoffset"] = std::move(offset);
+    }
     Json tiles = Json::array();
     size_t i = 0;
     for (const pugi::xml_node& t : ts.children("tile")) {
@@ -175,6 +197,7 @@ struct Converter {
       number(t, tpath, "id", tile);
       for (const char* a : {"type", "class"}) text_attr(t, a, tile);
       properties(t, tpath, tile);
+      image(t, tpath, tile);
       if (const pugi::xml_node og = t.child("objectgroup")) {
         tile["objectgroup"] = {{"type", "objectgroup"}, {"objects", objects(og, json_path(tpath, "objectgroup"))}};
       }
@@ -198,7 +221,9 @@ struct Converter {
       Json layer = Json::object();
       layer["type"] = name == "layer" ? "tilelayer" : name;
       for (const char* a : {"name", "class"}) text_attr(n, a, layer);
-      for (const char* a : {"id", "width", "height", "offsetx", "offsety", "parallaxx", "parallaxy"}) number(n, path, a, layer);
+      for (const char* a : {"id", "width", "height", "offsetx", "offsety", "parallaxx", "parallaxy", "opacity"}) number(n, path, a, layer);
+      text_attr(n, "tintcolor", layer);
+      flag(n, "visible", layer);
       properties(n, path, layer);
       if (name == "layer") {
         const pugi::xml_node d = n.child("data");
@@ -227,7 +252,9 @@ struct Converter {
       } else if (name == "objectgroup") {
         layer["objects"] = objects(n, path);
       } else if (name == "imagelayer") {
-        if (const pugi::xml_node img = n.child("image")) layer["image"] = img.attribute("source").as_string();
+        image(n, path, layer);
+        flag(n, "repeatx", layer);
+        flag(n, "repeaty", layer);
       } else {
         layer["layers"] = layers(n, path, depth + 1);
       }
@@ -268,7 +295,7 @@ Result<Json> tmx_to_json(std::string_view text, std::string_view file) {
   Json out = Json::object();
   out["type"] = "map";
   for (const char* a : {"orientation", "backgroundcolor", "version", "tiledversion"}) Converter::text_attr(map, a, out);
-  for (const char* a : {"width", "height", "tilewidth", "tileheight"}) c.number(map, "", a, out);
+  for (const char* a : {"width", "height", "tilewidth", "tileheight", "parallaxoriginx", "parallaxoriginy"}) c.number(map, "", a, out);
   out["infinite"] = map.attribute("infinite").as_int(0) != 0;
   c.properties(map, "", out);
   Json tilesets = Json::array();

@@ -119,6 +119,13 @@ bool Gamepad::active() const {
 
 // ---- Mouse and keyboard -------------------------------------------------------------------
 
+std::optional<KeyChord> key_chord(const SDL_Event& e) {
+  if (e.type != SDL_KEYDOWN || e.key.repeat != 0) return std::nullopt;
+  const Uint16 mod = e.key.keysym.mod;
+  return KeyChord{static_cast<int32_t>(e.key.keysym.sym), (mod & KMOD_CTRL) != 0, (mod & KMOD_SHIFT) != 0,
+                  (mod & KMOD_ALT) != 0};
+}
+
 void MouseKeyboardInput::handle_event(const SDL_Event& e, ActionPresses& presses) {
   switch (e.type) {
     case SDL_QUIT: quit_ = true; break;

@@ -14,6 +14,7 @@
 // SDL appears only in platform/ and app/ (STYLE.md); this header needs only SDL_Event's name.
 
 #include <array>
+#include <optional>
 #include <cstdint>
 #include <string>
 
@@ -52,6 +53,18 @@ struct ActionPresses {
   bool operator[](Action a) const { return pressed[static_cast<size_t>(a)]; }
   void set(Action a) { pressed[static_cast<size_t>(a)] = true; }
 };
+
+// A key press as the editors' shortcuts read it: the key (an SDL keycode, so Ctrl+Z is where
+// the layout puts Z) and the modifiers held. Taken from SDL_KEYDOWN events, so a press and
+// its release within one frame still count (ImGui 1.86's key state drops those).
+struct KeyChord {
+  int32_t key = 0;  // SDL_Keycode (SDLK_F2, SDLK_z, ...)
+  bool ctrl = false, shift = false, alt = false;
+  friend bool operator==(const KeyChord&, const KeyChord&) = default;
+};
+
+// The chord of a key press (SDL_KEYDOWN, not an auto-repeat); nothing for any other event.
+std::optional<KeyChord> key_chord(const SDL_Event& event);
 
 class Gamepad {
  public:

@@ -73,7 +73,12 @@ std::vector<std::string> shipped_characters() {
     const std::string name = e.path().filename().string();
     if (name.size() > 9 && name.compare(name.size() - 9, 9, ".rig.json") == 0) out.push_back(e.path().string());
   }
-  std::sort(out.begin(), out.end());
+  // The humanoid first (the README's order: humanoid, dog), the others by name.
+  const auto humanoid = [](const std::string& path) { return std::filesystem::path(path).filename() == "humanoid.rig.json"; };
+  std::sort(out.begin(), out.end(), [&](const std::string& a, const std::string& b) {
+    if (humanoid(a) != humanoid(b)) return humanoid(a);
+    return a < b;
+  });
   return out;
 }
 

@@ -45,8 +45,8 @@ Result<LoadedCharacter> load_character(const std::string& rig_path);
 // character exported to glTF, DAE and FBX).
 Result<LoadedCharacter> make_loaded_character(RiggedMesh mesh, const RigMapping& mapping, const std::string& rig_path);
 
-// The rig files of the shipped characters (assets/characters/*.rig.json, data_path()),
-// sorted by name.
+// The rig files of the shipped characters (assets/characters/*.rig.json, data_path()): the
+// humanoid first, then the others by name (the order C cycles them in).
 std::vector<std::string> shipped_characters();
 
 }  // namespace ossa

@@ -1,0 +1,70 @@
+// The HUD's modes: what a player sees by default (name, km/h, gait), what the developer mode
+// adds (m/s, bands, Froude, frame times), and H's order.
+
+#include <catch2/catch.hpp>
+
+#include <algorithm>
+#include <string>
+
+#include "ossa/editor/hud.h"
+
+using namespace ossa;
+
+namespace {
+
+bool has(const std::vector<std::string>& lines, const std::string& text) {
+  return std::any_of(lines.begin(), lines.end(), [&](const std::string& l) { return l.find(text) != std::string::npos; });
+}
+
+HudInfo horse_trotting() {
+  HudInfo info;
+  info.creature = "horse";
+  info.speed = -3.0f;  // m/s, to the left
+  info.walk_speed = 1.99f;
+  info.run_speed = 4.45f;
+  info.trot_speed = 1.99f;
+  info.gallop_speed = 4.17f;
+  info.gait = "trot";
+  info.locomotion = "grounded";
+  info.froude = 0.83f;
+  info.input = "keyboard";
+  return info;
+}
+
+}  // namespace
+
+TEST_CASE("the player HUD shows the name, the speed in km/h and the gait, developer figures only in developer mode", "[editor]") {
+  const HudInfo info = horse_trotting();
+  const auto player = hud_lines(info, HudMode::kPlayer, 60.0f);
+  REQUIRE(player.size() >= 2);
+  CHECK(player[0] == "horse");
+  CHECK(player[1] == "10.8 km/h  trot");
+  CHECK_FALSE(has(player, "Froude"));
+  CHECK_FALSE(has(player, "bands"));
+  CHECK_FALSE(has(player, "FPS"));
+  CHECK(has(player, "F2"));
+
+  HudInfo air = info;
+  air.locomotion = "airborne";
+  CHECK(hud_lines(air, HudMode::kPlayer, 60.0f)[1] == "10.8 km/h  trot (airborne)");
+
+  const auto dev = hud_lines(info, HudMode::kDeveloper, 60.0f);
+  CHECK(dev[0] == "horse");
+  CHECK(has(dev, "Froude    0.83"));
+  CHECK(has(dev, "walk < 1.99 < trot < 4.17 < gallop"));
+  CHECK(has(dev, "FPS"));
+  CHECK(has(dev, "-3.00 m/s"));
+  CHECK(hud_lines(info, HudMode::kOff, 60.0f).empty());
+}
+
+TEST_CASE("H cycles the HUD: player, developer, off", "[editor]") {
+  Hud hud;
+  CHECK(hud.mode == HudMode::kPlayer);
+  hud.cycle();
+  CHECK(hud.mode == HudMode::kDeveloper);
+  hud.cycle();
+  CHECK(hud.mode == HudMode::kOff);
+  hud.cycle();
+  CHECK(hud.mode == HudMode::kPlayer);
+  CHECK(std::string(hud_mode_name(HudMode::kDeveloper)) == "developer");
+}
