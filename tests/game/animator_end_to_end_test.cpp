@@ -49,7 +49,7 @@ SimResult run_example(const char* name, const Level& level, const char* text) {
 // No foot on the ground slid, no limb went into a collider by more than 1 mm, no NaN.
 void check_planted_and_clear(const SimResult& r) {
   CHECK(r.probe.max_stance_slip_m <= 0.001f);
-  CHECK(r.probe.max_penetration_m <= 0.001f);
+  CHECK(r.probe.max_limb_penetration_m <= 0.001f);
   CHECK(r.probe.nan_count == 0);
 }
 
@@ -276,7 +276,7 @@ TEST_CASE("legless swimmers crawl with their fins and spine out of the ground", 
     REQUIRE(speed > 0.1f);
     CHECK(r.x_max_m - rough.spawn_ws.x >= 0.9f * speed * 10.0f);
     CHECK(r.x_max_m - r.x_reached >= 0.9f * speed * 5.0f);
-    CHECK(r.probe.max_penetration_m <= 0.001f);  // fins are limbs: the probe measures them
+    CHECK(r.probe.max_limb_penetration_m <= 0.001f);  // fins are limbs: the probe measures them
     CHECK(r.probe.nan_count == 0);
   }
 }
@@ -374,7 +374,7 @@ TEST_CASE("a wall stops the walker at its face, at a gap too wide it steps off a
   CHECK(w.player->animator().blocked());
   CHECK(r.x_reached < 12.0f);
   CHECK(r.x_reached > 9.0f);
-  CHECK(r.probe.max_penetration_m <= 0.001f);
+  CHECK(r.probe.max_limb_penetration_m <= 0.001f);
 
   // A drop is not a wall (DESIGN.md §7): the biped walks off the edge of a 4 m gap, falls to
   // the kill height (below the lowest box) and starts again at the spawn point.
@@ -392,7 +392,7 @@ TEST_CASE("a wall stops the walker at its face, at a gap too wide it steps off a
   CHECK(r.locomotion.falls >= 1);
   CHECK(r.locomotion.respawns >= 1);
   CHECK_FALSE(a.blocked());
-  CHECK(r.probe.max_penetration_m <= 0.001f);
+  CHECK(r.probe.max_limb_penetration_m <= 0.001f);
   CHECK(r.probe.nan_count == 0);
 }
 
@@ -479,7 +479,7 @@ TEST_CASE("an hour of random input on random levels: finite poses, no limb in a 
     INFO("seed " << seed);
     const RandomRun r = random_run(seed, seconds_each);
     CHECK(r.probe.nan_count == 0);
-    CHECK(r.probe.max_penetration_m <= 0.001f);
+    CHECK(r.probe.max_limb_penetration_m <= 0.001f);
     CHECK(r.x_max - r.x_min > 1.0f);  // it did get around
     CHECK(r.x_min > -2.0f);
     CHECK(r.x_max < 200.0f);
@@ -491,7 +491,7 @@ TEST_CASE("a legless creature trailing a wing below its spine keeps it out of th
   // standing heights. It went into a ledge within four seconds and stayed there.
   const RandomRun r = random_run(55, 60);
   CHECK(r.probe.nan_count == 0);
-  CHECK(r.probe.max_penetration_m <= 0.001f);
+  CHECK(r.probe.max_limb_penetration_m <= 0.001f);
 }
 
 TEST_CASE("prototypes at the loader's limits keep the stance feet planted", "[game][anim][prototypes]") {
