@@ -75,7 +75,8 @@ TEST_CASE("every example animal walks off each ledge of drops.json and lands cle
         grounded = a.locomotion() == Locomotion::kGrounded ? grounded + 1 : 0;
         return a.x() > past && a.root_y() - a.rig().root_rest_y < tops[e] - 0.2f && grounded > 60;
       });
-      INFO(name << " over the ledge at x " << edges[e] << ": x " << a.x() << ", root y " << a.root_y());
+      INFO(name << " over the ledge at x " << edges[e] << ": x " << a.x() << ", root y " << a.root_y() << "; deepest "
+                << probe.deepest_bone << " at " << probe.deepest_at_s << " s");
       CHECK(done);
       CHECK(probe.max_limb_penetration_m <= 0.001f);
       CHECK(probe.nan_count == 0);

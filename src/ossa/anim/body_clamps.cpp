@@ -201,7 +201,11 @@ float stance_reach_excess(const Placement& p) {
 void keep_knees_off_ground(Placement& p, std::vector<float>& stance_up, std::vector<float>& swing_up, std::vector<float>& room) {
   const AnimRig& rig = p.ctx.rig;
   const Level& level = p.ctx.level;
+  // How far each stance leg's thigh or shin still crossed the edge of a step on the last pass
+  // (vertically, metres).
+  thread_local std::vector<float> crossed;
   for (int pass = 0; pass < kKneePasses; ++pass) {
+    crossed.assign(rig.legs.size(), 0.0f);
     std::fill(stance_up.begin(), stance_up.end(), 0.0f);
     std::fill(swing_up.begin(), swing_up.end(), 0.0f);
     GirdleJointFs joints;
@@ -242,6 +246,7 @@ void keep_knees_off_ground(Placement& p, std::vector<float>& stance_up, std::vec
         const float cross = std::max(raise_to_clear(hip, knee, level, p.ctx.hits), raise_to_clear(knee, heel, level, p.ctx.hits));
         float& cross_up = corner_near && knee.y >= f.pos_ws.y + margin ? swing_up[info.girdle] : up;
         cross_up = std::max(cross_up, cross);
+        if (stance) crossed[i] = cross;
       }
     }
     bool moved = false;
@@ -270,6 +275,14 @@ void keep_knees_off_ground(Placement& p, std::vector<float>& stance_up, std::vec
       moved = true;
     }
     if (!moved) break;
+  }
+  // A stance leg the raises left across an edge (a raise turns the body about its other end
+  // and lifts the knee by less than itself; the other feet hold the body down: a hind foot left
+  // on the edge of a ledge the body steps down from, its shin across the edge) lifts at the
+  // next chance rather than stand in the step (clamp 6's hand-off).
+  if (p.release == nullptr) return;
+  for (size_t i = 0; i < rig.legs.size(); ++i) {
+    if (crossed[i] > kStanceCrossRelease) (*p.release)[p.feet.foot_of_leg[i]] = 1;
   }
 }
 
