@@ -535,3 +535,27 @@ TEST_CASE("a spawn inside a box stands on the ground above it", "[game][anim]") 
   CHECK(r.steps > 4);
   CHECK(r.x_reached > 2.0f);
 }
+
+TEST_CASE("a creature blocked at a step jumps onto it", "[game][anim][locomotion]") {
+  // Random creature 42 walks into default.json's stairs and is held at the riser of the third
+  // step (x 11.2, 0.45 m) standing on the second (0.25 m); the jump button: the take-off rises
+  // (a body already against the step used to meet it as a ceiling and rise 0 m) and goes on
+  // forwards once it has risen above the step (the wall sweep used to stop the jump for good),
+  // and the creature lands on the step and walks on up.
+  const Level level = shipped("default.json");
+  Walker w = make_walker(build_creature(scenes::generator().random(42)).value(), level, level.spawn_ws + glm::vec2(0.0f, 1.0f));
+  const Animator& a = w.player->animator();
+  const SimResult before = run_script(*w.player, level, script("walk:0.5:10"), 120);
+  REQUIRE(a.blocked());
+  const float start_x = a.x();
+  const SimResult r = run_script(*w.player, level, script("jump,walk:0.5:3"), 120);
+  INFO("blocked at x " << start_x << "; jump height " << a.locomotion_stats().max_jump_height_m << ", x " << a.x()
+                       << ", root y " << a.root_y());
+  CHECK(a.locomotion_stats().jumps == 1);
+  CHECK(a.locomotion_stats().max_jump_height_m > 0.2f);
+  CHECK(a.x() > 11.2f);  // past the riser it was held at
+  CHECK(a.root_y() - a.rig().root_rest_y > 0.4f);  // standing on the step (0.45 m) or higher
+  CHECK(r.probe.max_limb_penetration_m <= 0.001f);
+  CHECK(r.probe.nan_count == 0);
+  CHECK(before.probe.nan_count == 0);
+}
