@@ -235,7 +235,13 @@ void keep_knees_off_ground(Placement& p, std::vector<float>& stance_up, std::vec
       if (const float ground = keep_out_height(level, knee.x, kKneeHalfWidth, margin, info.reach, knee.y + info.reach,
                                                2.0f * info.reach, p.ctx.hits);
           ground > -1e29f) {
-        up = std::max(up, ground - knee.y);
+        // Into the ground: out at once. Only within the margin of the ground its foot stands
+        // on (no step near): eased at the root's own rate, so that a knee coming near the
+        // ground at a touch-down does not step the body up.
+        const float need = ground - knee.y;
+        const bool flat = !steps_near && !corner_near && ground - margin <= f.pos_ws.y + 1e-3f;
+        const float ease = flat && p.in.dt > 0.0f && !p.in.snap ? 1.0f - p.in.keep_root : 1.0f;
+        up = std::max(up, std::max(need - margin, need * ease));
       }
       // On steps a thigh or shin may cross the edge of a step beside the knee (a swinging leg
       // far back down a flight, say), as may a shin coming up to a foot on the edge of a ledge

@@ -9,7 +9,8 @@
 //                                  that no stance leg over-extends; hard, not smoothed;
 //   2. keep_stance_legs_unfolded   raise the body so no stance leg folds tighter than it can;
 //   3. keep_knees_off_ground       raise a girdle until each knee clears the ground (a
-//                                  swinging leg's knee only as far as 1. leaves room); a
+//                                  swinging leg's knee only as far as 1. leaves room; a
+//                                  knee only within its margin of flat ground eased); a
 //                                  stance leg it leaves across an edge lifts at the next
 //                                  chance (TickHandoff::release_next);
 //   4. pitch_for_front_shoulder    a single girdle's shoulder far ahead turns the body up;
