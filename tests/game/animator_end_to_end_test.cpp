@@ -49,7 +49,7 @@ SimResult run_example(const char* name, const Level& level, const char* text) {
 // No foot on the ground slid, no limb went into a collider by more than 1 mm, no NaN.
 void check_planted_and_clear(const SimResult& r) {
   CHECK(r.probe.max_stance_slip_m <= 0.001f);
-  CHECK(r.probe.max_penetration_m <= 0.001f);
+  CHECK(r.probe.max_limb_penetration_m <= 0.001f);
   CHECK(r.probe.nan_count == 0);
 }
 
@@ -276,7 +276,7 @@ TEST_CASE("legless swimmers crawl with their fins and spine out of the ground", 
     REQUIRE(speed > 0.1f);
     CHECK(r.x_max_m - rough.spawn_ws.x >= 0.9f * speed * 10.0f);
     CHECK(r.x_max_m - r.x_reached >= 0.9f * speed * 5.0f);
-    CHECK(r.probe.max_penetration_m <= 0.001f);  // fins are limbs: the probe measures them
+    CHECK(r.probe.max_limb_penetration_m <= 0.001f);  // fins are limbs: the probe measures them
     CHECK(r.probe.nan_count == 0);
   }
 }
@@ -374,7 +374,7 @@ TEST_CASE("a wall stops the walker at its face, at a gap too wide it steps off a
   CHECK(w.player->animator().blocked());
   CHECK(r.x_reached < 12.0f);
   CHECK(r.x_reached > 9.0f);
-  CHECK(r.probe.max_penetration_m <= 0.001f);
+  CHECK(r.probe.max_limb_penetration_m <= 0.001f);
 
   // A drop is not a wall (DESIGN.md §7): the biped walks off the edge of a 4 m gap, falls to
   // the kill height (below the lowest box) and starts again at the spawn point.
@@ -392,7 +392,7 @@ TEST_CASE("a wall stops the walker at its face, at a gap too wide it steps off a
   CHECK(r.locomotion.falls >= 1);
   CHECK(r.locomotion.respawns >= 1);
   CHECK_FALSE(a.blocked());
-  CHECK(r.probe.max_penetration_m <= 0.001f);
+  CHECK(r.probe.max_limb_penetration_m <= 0.001f);
   CHECK(r.probe.nan_count == 0);
 }
 
@@ -479,7 +479,7 @@ TEST_CASE("an hour of random input on random levels: finite poses, no limb in a 
     INFO("seed " << seed);
     const RandomRun r = random_run(seed, seconds_each);
     CHECK(r.probe.nan_count == 0);
-    CHECK(r.probe.max_penetration_m <= 0.001f);
+    CHECK(r.probe.max_limb_penetration_m <= 0.001f);
     CHECK(r.x_max - r.x_min > 1.0f);  // it did get around
     CHECK(r.x_min > -2.0f);
     CHECK(r.x_max < 200.0f);
@@ -491,7 +491,7 @@ TEST_CASE("a legless creature trailing a wing below its spine keeps it out of th
   // standing heights. It went into a ledge within four seconds and stayed there.
   const RandomRun r = random_run(55, 60);
   CHECK(r.probe.nan_count == 0);
-  CHECK(r.probe.max_penetration_m <= 0.001f);
+  CHECK(r.probe.max_limb_penetration_m <= 0.001f);
 }
 
 TEST_CASE("prototypes at the loader's limits keep the stance feet planted", "[game][anim][prototypes]") {
@@ -534,4 +534,44 @@ TEST_CASE("a spawn inside a box stands on the ground above it", "[game][anim]") 
   check_planted_and_clear(r);
   CHECK(r.steps > 4);
   CHECK(r.x_reached > 2.0f);
+}
+
+TEST_CASE("a creature blocked at a step jumps onto it", "[game][anim][locomotion]") {
+  // Random creature 42 walks into default.json's stairs and is held at the riser of the third
+  // step (x 11.2, 0.45 m) standing on the second (0.25 m); the jump button: the take-off rises
+  // (a body already against the step used to meet it as a ceiling and rise 0 m) and goes on
+  // forwards once it has risen above the step (the wall sweep used to stop the jump for good),
+  // and the creature lands on the step and walks on up.
+  const Level level = shipped("default.json");
+  Walker w = make_walker(build_creature(scenes::generator().random(42)).value(), level, level.spawn_ws + glm::vec2(0.0f, 1.0f));
+  const Animator& a = w.player->animator();
+  const SimResult before = run_script(*w.player, level, script("walk:0.5:10"), 120);
+  REQUIRE(a.blocked());
+  const float start_x = a.x();
+  const SimResult r = run_script(*w.player, level, script("jump,walk:0.5:3"), 120);
+  INFO("blocked at x " << start_x << "; jump height " << a.locomotion_stats().max_jump_height_m << ", x " << a.x()
+                       << ", root y " << a.root_y());
+  CHECK(a.locomotion_stats().jumps == 1);
+  CHECK(a.locomotion_stats().max_jump_height_m > 0.2f);
+  CHECK(a.x() > 11.2f);  // past the riser it was held at
+  CHECK(a.root_y() - a.rig().root_rest_y > 0.4f);  // standing on the step (0.45 m) or higher
+  CHECK(r.probe.max_limb_penetration_m <= 0.001f);
+  CHECK(r.probe.nan_count == 0);
+  CHECK(before.probe.nan_count == 0);
+}
+
+TEST_CASE("the rabbit's and the thrinaxodon's trunks run on flat ground without jolts", "[game][anim]") {
+  // Once up to speed (2 s), running at full stick: no vertical jolt of the root above 1.5 g.
+  // A folded hind knee coming within its margin of the ground at each touch-down used to raise
+  // the body at once, 3-4 mm a tick (1.78 g for the rabbit); the margin is now eased in.
+  const Level flat = scenes::flat_level(200.0f);
+  for (const char* name : {"rabbit", "thrinaxodon"}) {
+    Walker w = make_walker(build_creature(scenes::generator().example(name).value()).value(), flat, {2.0f, 1.0f});
+    run_script(*w.player, flat, script("run:1:2"), 120);
+    const SimResult r = run_script(*w.player, flat, script("run:1:6"), 120);
+    INFO(name << ": max_body_jolt_g " << r.probe.max_body_jolt_g);
+    CHECK(r.probe.max_body_jolt_g <= 1.5f);
+    CHECK(r.probe.max_limb_penetration_m <= 0.001f);
+    CHECK(r.probe.max_stance_slip_m <= 0.001f);
+  }
 }

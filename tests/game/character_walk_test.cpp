@@ -24,7 +24,7 @@ TEST_CASE("a built character walks, runs, stops and turns on flat ground like a 
   player.animator().reset(flat.spawn_ws + glm::vec2(0.0f, 1.0f), flat);
   const SimResult r = run_script(player, flat, parse_script("walk:0.5:6,run:1:6,stop:1,walk:-0.5:6").value(), 120);
   CHECK(r.probe.max_stance_slip_m <= 0.001f);
-  CHECK(r.probe.max_penetration_m <= 0.001f);
+  CHECK(r.probe.max_limb_penetration_m <= 0.001f);
   CHECK(r.probe.nan_count == 0);
   for (const SegmentMetrics& s : r.segments) {
     INFO(s.command);

@@ -75,9 +75,10 @@ TEST_CASE("every example animal walks off each ledge of drops.json and lands cle
         grounded = a.locomotion() == Locomotion::kGrounded ? grounded + 1 : 0;
         return a.x() > past && a.root_y() - a.rig().root_rest_y < tops[e] - 0.2f && grounded > 60;
       });
-      INFO(name << " over the ledge at x " << edges[e] << ": x " << a.x() << ", root y " << a.root_y());
+      INFO(name << " over the ledge at x " << edges[e] << ": x " << a.x() << ", root y " << a.root_y() << "; deepest "
+                << probe.deepest_bone << " at " << probe.deepest_at_s << " s");
       CHECK(done);
-      CHECK(probe.max_penetration_m <= 0.001f);
+      CHECK(probe.max_limb_penetration_m <= 0.001f);
       CHECK(probe.nan_count == 0);
       CHECK(a.locomotion_stats().respawns == 0);
     }
@@ -94,7 +95,7 @@ TEST_CASE("every example animal turns back at drops.json's 1 m ledge with its fe
     const SimResult r = run_from_spawn(name, level, "walk:0.5:6,stop:1,walk:-0.6:6");
     INFO(name << ": furthest x " << r.x_max_m << ", back to x " << r.x_reached);
     CHECK(r.probe.max_stance_slip_m <= 0.001f);
-    CHECK(r.probe.max_penetration_m <= 0.001f);
+    CHECK(r.probe.max_limb_penetration_m <= 0.001f);
     CHECK(r.probe.nan_count == 0);
   }
 }
@@ -145,7 +146,7 @@ TEST_CASE("a horse at full run (galloping) covers drops.json's gap with a runnin
   CHECK(lowest > -0.5f);
   CHECK(a.x() > 42.5f);
   CHECK(a.root_y() > 0.0f);  // on the far side's top, not in the pit
-  CHECK(probe.max_penetration_m <= 0.001f);
+  CHECK(probe.max_limb_penetration_m <= 0.001f);
   CHECK(probe.nan_count == 0);
 }
 
@@ -170,7 +171,7 @@ TEST_CASE("a creature spawned 5 m up falls and stands planted within 2 s", "[gam
       CHECK(a.leg_state(i) == LegState::kStance);
       CHECK(a.foot_target_ws(i).y == Approx(0.0f).margin(1e-3));
     }
-    CHECK(probe.max_penetration_m <= 0.001f);
+    CHECK(probe.max_limb_penetration_m <= 0.001f);
     CHECK(probe.nan_count == 0);
   }
 }
@@ -201,7 +202,7 @@ TEST_CASE("a jump's apex matches the ballistic path and the designer's height", 
     CHECK(apex - take_off_y == Approx(ballistic - take_off_y).epsilon(0.02));
     CHECK(a.locomotion_stats().max_jump_height_m == Approx(a.params().jump_height * a.hip_height()).epsilon(0.02));
     CHECK(a.locomotion_stats().jumps == 1);
-    CHECK(probe.max_penetration_m <= 0.001f);
+    CHECK(probe.max_limb_penetration_m <= 0.001f);
     CHECK(probe.max_stance_slip_m <= 0.001f);
   }
 }
@@ -221,7 +222,7 @@ TEST_CASE("a step too tall to climb stops a walk, a running jump lands on it", "
     CHECK(a.blocked());
     CHECK(a.x() < 48.0f);
     for (int i = 0; i < a.leg_count(); ++i) CHECK(a.foot_ws(i).x < 48.0f);
-    CHECK(probe.max_penetration_m <= 0.001f);
+    CHECK(probe.max_limb_penetration_m <= 0.001f);
   }
   // From a run-up at full stick, a jump 3.5 m before the face lands all four feet on top and
   // the horse goes on.
@@ -239,7 +240,7 @@ TEST_CASE("a step too tall to climb stops a walk, a running jump lands on it", "
   for (int i = 0; i < a.leg_count(); ++i) {
     if (a.leg_state(i) == LegState::kStance) CHECK(a.foot_ws(i).y == Approx(0.7f).margin(2e-3));
   }
-  CHECK(probe.max_penetration_m <= 0.001f);
+  CHECK(probe.max_limb_penetration_m <= 0.001f);
   CHECK(probe.max_stance_slip_m <= 0.001f);
   CHECK(probe.nan_count == 0);
 }
@@ -267,7 +268,7 @@ TEST_CASE("a jump into a wall stops horizontally at it without entering it", "[g
   CHECK(a.locomotion_stats().jumps == 1);
   CHECK(a.locomotion() == Locomotion::kGrounded);
   CHECK(x_min > x_blocked - 0.1f);  // stopped horizontally at the wall
-  CHECK(probe.max_penetration_m <= 0.001f);
+  CHECK(probe.max_limb_penetration_m <= 0.001f);
   CHECK(probe.nan_count == 0);
 }
 
@@ -289,7 +290,7 @@ TEST_CASE("every example animal with legs jumps its jump height from a standstil
     CHECK(a.locomotion_stats().jumps == 1);
     CHECK(a.locomotion_stats().max_jump_height_m == Approx(a.params().jump_height * a.hip_height()).epsilon(0.02));
     CHECK(a.locomotion() == Locomotion::kGrounded);
-    CHECK(probe.max_penetration_m <= 0.001f);
+    CHECK(probe.max_limb_penetration_m <= 0.001f);
     CHECK(probe.max_stance_slip_m <= 0.001f);
     CHECK(probe.nan_count == 0);
   }

@@ -145,7 +145,7 @@ TEST_CASE("the horse walks over every converted fixture within 1 mm", "[level][t
       max_x = std::max(max_x, player.animator().x());
     });
     CHECK(result.probe.max_stance_slip_m <= 0.001f);
-    CHECK(result.probe.max_penetration_m <= 0.001f);
+    CHECK(result.probe.max_limb_penetration_m <= 0.001f);
     CHECK(result.probe.nan_count == 0);
     CHECK(max_x > level.spawn_ws.x + 6.0f);  // it got somewhere, over the steps where there are any
   }

@@ -107,7 +107,7 @@ TEST_CASE("both characters walk, run, stop, turn and climb every shipped level, 
         INFO(name << " on " << level_name << ", " << text << ": slip " << r.probe.max_stance_slip_m << " m, penetration "
                   << r.probe.max_penetration_m << " m, reached x " << r.x_max_m);
         CHECK(r.probe.max_stance_slip_m <= 0.001f);
-        CHECK(r.probe.max_penetration_m <= 0.001f);
+        CHECK(r.probe.max_limb_penetration_m <= 0.001f);
         CHECK(r.probe.nan_count == 0);
         CHECK(r.x_max_m > level.spawn_ws.x + 8.0f);
         CHECK(r.steps > 10);
@@ -132,7 +132,7 @@ TEST_CASE("both characters keep the commanded speed on flat ground and over slop
         CHECK(s.speed_error <= (level == &flat ? 0.02f : 0.10f));
       }
       CHECK(r.probe.max_stance_slip_m <= 0.001f);
-      CHECK(r.probe.max_penetration_m <= 0.001f);
+      CHECK(r.probe.max_limb_penetration_m <= 0.001f);
     }
   }
   // A biped's run has a flight phase; the dog, a quadruped, gallops at full run.
@@ -223,7 +223,7 @@ TEST_CASE("both characters walk off each ledge of drops.json, land clean and jum
       }
       INFO(name << " over the ledge at x " << edges[e] << ": x " << a.x() << ", root y " << a.root_y());
       CHECK(done);
-      CHECK(probe.max_penetration_m <= 0.001f);
+      CHECK(probe.max_limb_penetration_m <= 0.001f);
       CHECK(probe.nan_count == 0);
       CHECK(a.locomotion_stats().respawns == 0);
       // A standing jump on the ground below: it rises its jump height and lands again.
@@ -235,7 +235,7 @@ TEST_CASE("both characters walk off each ledge of drops.json, land clean and jum
         CHECK(a.locomotion_stats().jumps == 1);
         CHECK(a.locomotion_stats().max_jump_height_m == Approx(a.params().jump_height * a.hip_height()).epsilon(0.02));
         CHECK(a.locomotion() == Locomotion::kGrounded);
-        CHECK(probe.max_penetration_m <= 0.001f);
+        CHECK(probe.max_limb_penetration_m <= 0.001f);
       }
     }
   }

@@ -39,7 +39,8 @@ namespace {
 
 const char* kUsage = R"(usage: ossa-sim (--example NAME | --creature F.creature.json | --character F.rig.json | --random --seed N)
                 [--level F] --script "mode:stick:seconds,..." [--hz 120] [--count N]
-                [--prototypes F] [--json] [--trace F.csv] [--svg F.svg [--svg-window FROM:TO[:EVERY]]]
+                [--prototypes F] [--json] [--trace F.csv] [--trace-joints F.csv]
+                [--svg F.svg [--svg-window FROM:TO[:EVERY]]]
   --example NAME   one of the 44 example animals (English or German name)
   --creature F     a saved genome (.creature.json)
   --character F    a rigged character: its rig mapping (.rig.json) and the mesh it names
@@ -55,6 +56,10 @@ const char* kUsage = R"(usage: ossa-sim (--example NAME | --creature F.creature.
   --prototypes F   spline prototypes (default: assets/animation/prototypes.json)
   --json           print the metrics as JSON
   --trace F.csv    per-tick foot and girdle positions
+  --trace-joints F.csv  per tick the world position of every joint of the skeleton: t, then
+                   x and y of each bone's joint (BONE_x, BONE_y) and of each bone's far end
+                   that no other bone starts at (BONE.end_x, BONE.end_y), metres; to check a
+                   pose against the level with no trust in ossa's own metrics
   --svg F.svg      a strobe of the creature over the level (a pose every 0.4 s)
   --svg-window FROM:TO[:EVERY]  the strobe's poses from FROM to TO seconds, one every EVERY
                    seconds (default 0.4): a close look at a moment
@@ -62,6 +67,7 @@ const char* kUsage = R"(usage: ossa-sim (--example NAME | --creature F.creature.
 
 // Output bounds (see main): at most this many trace rows (ticks) and SVG poses.
 constexpr long long kMaxTraceTicks = 1000000;
+constexpr long long kMaxJointTraceTicks = 100000;
 constexpr long long kMaxSvgPoses = 2000;
 
 [[noreturn]] void fail(const std::string& message) {
@@ -70,7 +76,7 @@ constexpr long long kMaxSvgPoses = 2000;
 }
 
 struct Args {
-  std::optional<std::string> example, creature, character, level, script, prototypes, trace, svg;
+  std::optional<std::string> example, creature, character, level, script, prototypes, trace, trace_joints, svg;
   bool random = false, json = false;
   uint64_t seed = 1;
   int hz = 120, count = 1;
@@ -147,6 +153,7 @@ Args parse_args(int argc, char** argv) {
     else if (f == "--prototypes") a.prototypes = value();
     else if (f == "--json") a.json = true;
     else if (f == "--trace") a.trace = value();
+    else if (f == "--trace-joints") a.trace_joints = value();
     else if (f == "--svg") a.svg = value();
     else if (f == "--svg-window") parse_svg_window(f, value(), a);
     else fail("unknown option " + f + " (see --help)");
@@ -231,6 +238,9 @@ int main(int argc, char** argv) {
     if (args.trace) {
       if (Status st = check_output_path("--trace", *args.trace, inputs); !st) fail(st.message());
     }
+    if (args.trace_joints) {
+      if (Status st = check_output_path("--trace-joints", *args.trace_joints, inputs); !st) fail(st.message());
+    }
     if (args.svg) {
       if (Status st = check_output_path("--svg", *args.svg, inputs); !st) fail(st.message());
     }
@@ -302,6 +312,11 @@ int main(int argc, char** argv) {
            " Hz; a trace holds at most " + std::to_string(kMaxTraceTicks) + " (one row per tick, about 100 bytes per leg); "
            "shorten the script or lower --hz");
     }
+    if (args.trace_joints && ticks > kMaxJointTraceTicks) {
+      fail("--trace-joints: the script runs " + std::to_string(ticks) + " ticks at " + std::to_string(args.hz) +
+           " Hz; a joint trace holds at most " + std::to_string(kMaxJointTraceTicks) +
+           " (one row per tick, about 20 bytes per joint); shorten the script or lower --hz");
+    }
     if (args.svg) {
       const double seconds = static_cast<double>(ticks) / args.hz;
       const double window = std::max(0.0, std::min<double>(args.svg_to, seconds) - args.svg_from);
@@ -326,6 +341,25 @@ int main(int argc, char** argv) {
       trace << ",foot" << i << "_x,foot" << i << "_y,foot" << i << "_stance,target" << i << "_x,target" << i << "_y";
     }
     trace << "\n";
+  }
+  // The joint trace: every bone's joint, and the far end of every bone no other bone starts at
+  // (a leaf: the skull's tip, the tail's, a toe's), in world space.
+  std::ofstream joints;
+  std::vector<uint8_t> leaf;
+  if (args.trace_joints) {
+    joints.open(*args.trace_joints);
+    if (!joints) fail(*args.trace_joints + ": cannot open for writing");
+    const Skeleton& sk = player.animator().rig().skeleton;
+    leaf.assign(static_cast<size_t>(sk.bone_count()), 1);
+    for (int b = 0; b < sk.bone_count(); ++b) {
+      if (sk.parent(b) >= 0) leaf[static_cast<size_t>(sk.parent(b))] = 0;
+    }
+    joints << "t";
+    for (int b = 0; b < sk.bone_count(); ++b) joints << "," << sk.name(b) << "_x," << sk.name(b) << "_y";
+    for (int b = 0; b < sk.bone_count(); ++b) {
+      if (leaf[static_cast<size_t>(b)]) joints << "," << sk.name(b) << ".end_x," << sk.name(b) << ".end_y";
+    }
+    joints << "\n";
   }
   const long long total_ticks = script_ticks(*script, args.hz);
   const long long shot_every = std::max(1LL, std::llround(static_cast<double>(args.svg_every) * args.hz));
@@ -352,6 +386,18 @@ int main(int argc, char** argv) {
       }
       trace << "\n";
     }
+    if (joints.is_open()) {
+      const std::vector<Mat2x3>& w = a.world_matrices();
+      const Skeleton& sk = a.rig().skeleton;
+      joints << (tick + 1) * dt;
+      for (int b = 0; b < sk.bone_count(); ++b) joints << "," << w[b].m[4] << "," << w[b].m[5];
+      for (int b = 0; b < sk.bone_count(); ++b) {
+        if (!leaf[static_cast<size_t>(b)]) continue;
+        const glm::vec2 e = bone_end(w[b], sk.length(b));
+        joints << "," << e.x << "," << e.y;
+      }
+      joints << "\n";
+    }
     const float t = static_cast<float>(tick) * dt;
     if (args.svg && t >= args.svg_from && t <= args.svg_to && tick % shot_every == 0) shots.push_back({a.world_matrices()});
   });
@@ -376,11 +422,16 @@ int main(int argc, char** argv) {
                       {"stride_length", m.stride_length}, {"cycle_frequency", m.cycle_frequency},
                       {"duty_factor", m.duty_factor}, {"froude", m.froude},
                       {"gait", m.gait},             {"flight_phase", m.flight_phase},
-                      {"airborne_s", m.airborne_s}});
+                      {"airborne_s", m.airborne_s}, {"max_body_jolt_g", m.max_body_jolt_g}});
     }
     out["segments"] = segs;
     out["max_stance_slip_m"] = probe.max_stance_slip_m;
-    out["max_penetration_m"] = probe.max_penetration_m;
+    out["max_penetration_m"] = probe.max_penetration_m;  // every bone (limbs and body)
+    out["max_limb_penetration_m"] = probe.max_limb_penetration_m;
+    out["max_body_penetration_m"] = probe.max_body_penetration_m;
+    out["deepest_bone"] = probe.deepest_bone;
+    out["deepest_at_s"] = probe.deepest_at_s;
+    out["max_body_jolt_g"] = probe.max_body_jolt_g;
     out["min_swing_clearance_m"] = probe.min_swing_clearance_m > 1e8f ? 0.0f : probe.min_swing_clearance_m;
     out["steps"] = a.steps();
     out["x_reached"] = result.x_reached;  // the final x (SimResult::x_reached)

@@ -198,6 +198,11 @@ OJson record_json(const RunRecord& r) {
           {"script", r.script},
           {"max_stance_slip_m", json_float(r.sim.probe.max_stance_slip_m)},
           {"max_penetration_m", json_float(r.sim.probe.max_penetration_m)},
+          {"max_limb_penetration_m", json_float(r.sim.probe.max_limb_penetration_m)},
+          {"max_body_penetration_m", json_float(r.sim.probe.max_body_penetration_m)},
+          {"deepest_bone", r.sim.probe.deepest_bone},
+          {"deepest_at_s", json_float(r.sim.probe.deepest_at_s)},
+          {"max_body_jolt_g", json_float(r.sim.probe.max_body_jolt_g)},
           {"worst_limb", r.worst_limb},
           {"worst_limb_m", json_float(r.worst_limb_m)},
           {"tail_penetration_m", r.has_tail ? OJson(json_float(r.tail_penetration_m)) : OJson(nullptr)},
@@ -295,10 +300,13 @@ int run_sweep(const Args& args, const Setup& setup) {
   std::printf("ossa-sweep: %d animals x %d levels x %d scripts = %d runs in %.1f s (%d jobs)\n\n", na, nl, ns, count, wall,
               args.jobs);
   std::printf("| figure | value |\n| --- | --- |\n");
-  std::printf("| runs with a limb > 1 mm in a collider or a foot sliding > 1 mm | %zu of %d |\n", over.size(), count);
+  int limbs_over = 0;
+  for (const RunRecord& r : runs) limbs_over += r.sim.probe.max_stance_slip_m > kLimit || r.sim.probe.max_limb_penetration_m > kLimit;
+  std::printf("| runs with a bone > 1 mm in a collider or a foot sliding > 1 mm | %zu of %d |\n", over.size(), count);
+  std::printf("| the same, limbs only (the metric before every bone was measured) | %d of %d |\n", limbs_over, count);
   if (deepest) {
-    std::printf("| of these, the deepest limb | %s (%s, %s, %s) |\n", mm(deepest->sim.probe.max_penetration_m).c_str(),
-                deepest->animal.c_str(), deepest->level.c_str(), deepest->worst_limb.c_str());
+    std::printf("| of these, the deepest bone | %s (%s, %s, %s) |\n", mm(deepest->sim.probe.max_penetration_m).c_str(),
+                deepest->animal.c_str(), deepest->level.c_str(), deepest->sim.probe.deepest_bone.c_str());
     std::printf("| of these, the worst slide | %s (%s, %s) |\n", mm(slid->sim.probe.max_stance_slip_m).c_str(),
                 slid->animal.c_str(), slid->level.c_str());
   }
@@ -307,12 +315,12 @@ int run_sweep(const Args& args, const Setup& setup) {
   if (worst_tail) std::printf(" (deepest %s, %s on %s)", mm(worst_tail->tail_penetration_m).c_str(), worst_tail->animal.c_str(), worst_tail->level.c_str());
   std::printf(" |\n| the same, sampling the tail's joints only | %d of %d |\n", tail_joints, walks);
 
-  std::printf("\nruns over 1 mm (slide, deepest limb):\n");
+  std::printf("\nruns over 1 mm (slide, deepest bone):\n");
   for (const RunRecord* r : over) {
-    const bool named = r->worst_limb_m > 0.1f * kLimit;  // name the limb when it went in at all
-    std::printf("  %-18s %-12s %-32s slide %-8s limb %s%s%s\n", r->animal.c_str(), r->level.c_str(), r->script.c_str(),
+    const bool named = r->sim.probe.max_penetration_m > 0.1f * kLimit;  // name the bone when it went in at all
+    std::printf("  %-18s %-12s %-32s slide %-8s bone %s%s%s at %.1f s\n", r->animal.c_str(), r->level.c_str(), r->script.c_str(),
                 mm(r->sim.probe.max_stance_slip_m).c_str(), mm(r->sim.probe.max_penetration_m).c_str(), named ? " " : "",
-                named ? r->worst_limb.c_str() : "");
+                named ? r->sim.probe.deepest_bone.c_str() : "", r->sim.probe.deepest_at_s);
   }
   std::printf("\nstopped at a step (furthest x):\n");
   for (const RunRecord* r : stopped) {

@@ -153,8 +153,9 @@ struct TickHandoff {
   // lifts at its next chance. Writer: body motion (limit_by_legs). Reader: the step stage's
   // lift decision, later on this tick.
   std::vector<uint8_t> lift_now;
-  // Per foot: a stance leg the body placement stretched past its reach (clamps 1 and 6) lifts
-  // at its next chance instead of sliding. Lasts to the next tick: written wholly by body
+  // Per foot: a stance leg the body placement stretched past its reach (clamps 1 and 6), or
+  // left with its thigh or shin across an edge (clamp 3), lifts at its next chance instead of
+  // sliding or standing in the step. Lasts to the next tick: written wholly by body
   // placement (cleared at its start, on every call); read by the step stage's lift decision
   // and its re-step of a standing creature on the next tick.
   std::vector<uint8_t> release_next;

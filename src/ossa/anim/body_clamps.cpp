@@ -201,7 +201,11 @@ float stance_reach_excess(const Placement& p) {
 void keep_knees_off_ground(Placement& p, std::vector<float>& stance_up, std::vector<float>& swing_up, std::vector<float>& room) {
   const AnimRig& rig = p.ctx.rig;
   const Level& level = p.ctx.level;
+  // How far each stance leg's thigh or shin still crossed the edge of a step on the last pass
+  // (vertically, metres).
+  thread_local std::vector<float> crossed;
   for (int pass = 0; pass < kKneePasses; ++pass) {
+    crossed.assign(rig.legs.size(), 0.0f);
     std::fill(stance_up.begin(), stance_up.end(), 0.0f);
     std::fill(swing_up.begin(), swing_up.end(), 0.0f);
     GirdleJointFs joints;
@@ -231,7 +235,13 @@ void keep_knees_off_ground(Placement& p, std::vector<float>& stance_up, std::vec
       if (const float ground = keep_out_height(level, knee.x, kKneeHalfWidth, margin, info.reach, knee.y + info.reach,
                                                2.0f * info.reach, p.ctx.hits);
           ground > -1e29f) {
-        up = std::max(up, ground - knee.y);
+        // Into the ground: out at once. Only within the margin of the ground its foot stands
+        // on (no step near): eased at the root's own rate, so that a knee coming near the
+        // ground at a touch-down does not step the body up.
+        const float need = ground - knee.y;
+        const bool flat = !steps_near && !corner_near && ground - margin <= f.pos_ws.y + 1e-3f;
+        const float ease = flat && p.in.dt > 0.0f && !p.in.snap ? 1.0f - p.in.keep_root : 1.0f;
+        up = std::max(up, std::max(need - margin, need * ease));
       }
       // On steps a thigh or shin may cross the edge of a step beside the knee (a swinging leg
       // far back down a flight, say), as may a shin coming up to a foot on the edge of a ledge
@@ -242,6 +252,7 @@ void keep_knees_off_ground(Placement& p, std::vector<float>& stance_up, std::vec
         const float cross = std::max(raise_to_clear(hip, knee, level, p.ctx.hits), raise_to_clear(knee, heel, level, p.ctx.hits));
         float& cross_up = corner_near && knee.y >= f.pos_ws.y + margin ? swing_up[info.girdle] : up;
         cross_up = std::max(cross_up, cross);
+        if (stance) crossed[i] = cross;
       }
     }
     bool moved = false;
@@ -270,6 +281,14 @@ void keep_knees_off_ground(Placement& p, std::vector<float>& stance_up, std::vec
       moved = true;
     }
     if (!moved) break;
+  }
+  // A stance leg the raises left across an edge (a raise turns the body about its other end
+  // and lifts the knee by less than itself; the other feet hold the body down: a hind foot left
+  // on the edge of a ledge the body steps down from, its shin across the edge) lifts at the
+  // next chance rather than stand in the step (clamp 6's hand-off).
+  if (p.release == nullptr) return;
+  for (size_t i = 0; i < rig.legs.size(); ++i) {
+    if (crossed[i] > kStanceCrossRelease) (*p.release)[p.feet.foot_of_leg[i]] = 1;
   }
 }
 

@@ -9,7 +9,10 @@
 //                                  that no stance leg over-extends; hard, not smoothed;
 //   2. keep_stance_legs_unfolded   raise the body so no stance leg folds tighter than it can;
 //   3. keep_knees_off_ground       raise a girdle until each knee clears the ground (a
-//                                  swinging leg's knee only as far as 1. leaves room);
+//                                  swinging leg's knee only as far as 1. leaves room; a
+//                                  knee only within its margin of flat ground eased); a
+//                                  stance leg it leaves across an edge lifts at the next
+//                                  chance (TickHandoff::release_next);
 //   4. pitch_for_front_shoulder    a single girdle's shoulder far ahead turns the body up;
 //   5. keep_body_out_of_ground     girdles, shoulders and folded wings stay above the ground;
 //   6. release_overstretched_feet  a stance leg the raising clamps stretched past its reach

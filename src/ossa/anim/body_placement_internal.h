@@ -42,6 +42,9 @@ inline constexpr float kLeglessLookAhead = 0.2f;
 // One tick raises no girdle by more than this many hip heights to clear a knee, in at most
 // kKneePasses passes.
 inline constexpr float kMaxKneeRaiseOfHip = 0.5f;
+// A stance leg whose thigh or shin clamp 3 leaves across an edge by more than this (metres,
+// vertically) lifts at the next chance: below the probe's millimetre however it grows in a tick.
+inline constexpr float kStanceCrossRelease = 0.0004f;
 inline constexpr int kKneePasses = 6;
 // A swinging knee's raise that would take a stance foot out of reach is halved up to this many
 // times (then dropped: the swing tucks the leg instead).

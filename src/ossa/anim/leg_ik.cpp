@@ -16,6 +16,9 @@ constexpr int kTuckBisections = 6;
 constexpr float kLiftBelowJointOfLeg = 0.3f;
 constexpr float kTuckBelowJointOfLeg = 0.45f;
 constexpr float kDrawBackOfLeg = 0.02f;
+// A stance leg whose ankle lies further from the joint than the leg's length by more than this
+// fraction of it is stretched (the leg IK cannot reach the foot).
+constexpr float kStretchedOfLeg = 0.01f;
 
 
 }  // namespace
@@ -77,7 +80,14 @@ bool LegIkJob::run() const {
       return solve_two_bone_ik_directions(joint, info.upper, info.lower, target, info.bend);
     };
     TwoBoneIkResult ik = leg_ik(ankle);
-    if (f.state == LegState::kSwing) {
+    // A stance leg the body placement stretched past its reach (its clamps 3 and 5 may, and
+    // clamp 6 then releases the foot to lift on the next tick) does not reach its ankle: its
+    // foot hangs from where the leg ends and may cut the step it stood by. While the creature
+    // walks, such a leg, too, lifts out of the level as a swinging one does.
+    const float upper_lower = info.upper + info.lower;
+    const float stretch = upper_lower * (1.0f + kStretchedOfLeg);
+    const bool stretched = moving && f.state == LegState::kStance && glm::dot(ankle - joint, ankle - joint) > stretch * stretch;
+    if (f.state == LegState::kSwing || stretched) {
       // A knee, shin or foot swinging into a step lifts the foot until the whole leg clears.
       const float F = info.foot_length;  // ankle to toe (to the contact point, or along a flat foot)
       glm::vec2 dir = foot_dir;  // the foot's direction for the candidate being tested

@@ -3,7 +3,8 @@
 // leg's pose from its contact point and girdle joint — the foot rolled about its contact point
 // as far as the leg's reach needs (hooves and toes, leg_geometry.h leg_ankle), then analytic
 // two-bone IK on upper + lower. A swinging leg that would cut a box lifts its foot, then tucks
-// it, until the whole leg clears.
+// it, until the whole leg clears; so does a walking creature's stance leg that the body
+// placement stretched past its reach (LegIkJob::moving).
 //
 // Works in facing space (_fs, see anim_state.h): the creature faces +x there, so knees bend
 // the right way whichever way it faces. Lengths in metres.
@@ -32,6 +33,10 @@ struct LegIkJob {
   const Pose* pose = nullptr;                // input: joint offsets of the leg bones
   std::vector<Mat2x3>* model_fs = nullptr;   // in: girdle matrices; out: leg bone matrices
   std::vector<std::array<glm::vec2, 3>>* leg_dirs = nullptr;  // out: upper, lower, foot directions
+  // Input: the gait clock runs (GaitState::moving). A stance leg the body placement stretched
+  // past its reach then lifts out of any box it cuts, as a swinging leg does (its foot lifts
+  // on the next tick anyway, clamp 6); a standing creature's feet stay where they are drawn.
+  bool moving = false;
 
   bool validate() const;
   bool run() const;

@@ -142,9 +142,10 @@ bool fly_along(const AnimContext& ctx, float dt, const BodyFrame& body, const st
   loco.time += dt;
   loco.stats.airborne_s += dt;
   if (loco.vx == 0.0f) return false;
-  // Horizontally the wall sweep: a jump into a wall stops at its face.
+  // Horizontally the wall sweep: a jump into a wall stops at its face. Still rising, it only
+  // waits there (a jump from against a step goes on over it once it has risen above it).
   const BodyMotionResult swept = sweep_body(ctx, body, model_fs, loco.vx * dt, boxes, true);
-  if (swept.hit_wall) loco.vx = 0.0f;
+  if (swept.hit_wall && loco.vy <= 0.0f) loco.vx = 0.0f;
   *dx = swept.dx;
   return true;
 }
@@ -159,9 +160,20 @@ float path_height(const AnimContext& ctx, const BodyFrame& body, const std::vect
   if (y > body.root_y_ws) {
     body_boxes(ctx.rig, body, model_fs, false, &boxes);
     if (!boxes.empty()) {
-      const Box top{{boxes[0].min_ws.x, boxes[0].max_ws.y - 0.01f}, boxes[0].max_ws};
-      if (auto hit = ctx.level.sweep_box(top, {0.0f, y - body.root_y_ws}); hit && hit->t < 1.0f) {
-        y = body.root_y_ws + std::max(hit->t * (y - body.root_y_ws) - 1e-4f, 0.0f);
+      // A ceiling is a box above the body's top (the top centimetre of its box swept up); a
+      // box beside the body or around part of it (the step a creature blocked at a stair
+      // jumps from, its head already over the tread) is not: the rise goes on past it.
+      const Box& b = boxes[0];
+      const float rise = y - body.root_y_ws, strip = b.max_ws.y - 0.01f;
+      ctx.hits.clear();
+      ctx.level.overlapping(Box{{b.min_ws.x, strip}, {b.max_ws.x, b.max_ws.y + rise}}, ctx.hits);
+      float room = rise;
+      for (int h : ctx.hits) {
+        const Box& c = ctx.level.box(h);
+        if (c.min_ws.y >= strip) room = std::min(room, c.min_ws.y - b.max_ws.y);
+      }
+      if (room < rise) {
+        y = body.root_y_ws + std::max(room - 1e-4f, 0.0f);
         loco.origin_y = y;
         loco.vy0 = loco.vy = 0.0f;
         loco.time = 0.0f;

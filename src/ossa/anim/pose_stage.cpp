@@ -62,7 +62,7 @@ void pose_limbs(const AnimContext& ctx, const SplinePrototypes& prototypes, cons
   Pose& pose = state.pose;
   std::vector<Mat2x3>& model = state.facing;
   if (rig.tail_length > 0.0f) keep_tail_clear(ctx, body, model, pose);
-  const LegIkJob ik{&ctx, &body, &feet, &pose, &model, &state.leg_dirs};
+  const LegIkJob ik{&ctx, &body, &feet, &pose, &model, &state.leg_dirs, gait.moving};
   ik.run();
   // Arms swing counter to the same-side leg; fins trail with a slow beat; wings stay folded.
   for (const RigLimb& arm : rig.arms) {

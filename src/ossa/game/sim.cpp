@@ -1,6 +1,7 @@
 #include "ossa/game/sim.h"
 
 #include <algorithm>
+#include <array>
 #include <chrono>
 #include <map>
 #include <cmath>
@@ -91,6 +92,7 @@ SimResult run_script(Entity& entity, const Level& level, const std::vector<Scrip
   long long tick = 0;
   result.x_max_m = entity.animator().x();
   int blocked_ticks = 0;
+  result.probe.dt = dt;
   Controls previous;
   for (const ScriptSegment& seg : script) {
     const Controls controls = seg.controls(previous);
@@ -119,6 +121,7 @@ SimResult run_script(Entity& entity, const Level& level, const std::vector<Scrip
       result.update_seconds += std::chrono::duration<float>(std::chrono::steady_clock::now() - start).count();
       const Animator& a = entity.animator();
       result.probe.observe(a, level);
+      m.max_body_jolt_g = std::max(m.max_body_jolt_g, result.probe.jolt_g);
       result.x_max_m = std::max(result.x_max_m, a.x());
       blocked_ticks += a.blocked() ? 1 : 0;
       m.airborne_s += a.airborne() ? dt : 0.0f;
@@ -175,6 +178,33 @@ float penetration_depth(const Level& level, glm::vec2 p) {
   return depth;
 }
 
+float segment_penetration(const Level& level, glm::vec2 a, glm::vec2 b, const std::vector<int>& boxes) {
+  float depth = 0.0f;
+  for (int h : boxes) {
+    const Box& box = level.box(h);
+    // depth(t) = min of four linear functions of t along a + t (b - a): its maximum over
+    // [0, 1] is at 0, 1, or where two of them are equal.
+    const glm::vec2 d = b - a;
+    const float c0[4] = {a.x - box.min_ws.x, box.max_ws.x - a.x, a.y - box.min_ws.y, box.max_ws.y - a.y};
+    const float c1[4] = {d.x, -d.x, d.y, -d.y};
+    auto at = [&](float t) {
+      float m = 1e30f;
+      for (int k = 0; k < 4; ++k) m = std::min(m, c0[k] + c1[k] * t);
+      return m;
+    };
+    depth = std::max({depth, at(0.0f), at(1.0f)});
+    for (int i = 0; i < 4; ++i) {
+      for (int k = i + 1; k < 4; ++k) {
+        const float slope = c1[i] - c1[k];
+        if (std::fabs(slope) < 1e-12f) continue;
+        const float t = (c0[k] - c0[i]) / slope;
+        if (t > 0.0f && t < 1.0f) depth = std::max(depth, at(t));
+      }
+    }
+  }
+  return depth;
+}
+
 void SimProbe::observe(const Animator& a, const Level& level) {
   const AnimRig& rig = a.rig();
   const Skeleton& sk = rig.skeleton;
@@ -183,19 +213,62 @@ void SimProbe::observe(const Animator& a, const Level& level) {
   for (const Mat2x3& m : world) {
     for (float v : m.m) nan_count += std::isfinite(v) ? 0 : 1;
   }
-  // Limb bones must stay out of colliders (sampled along each bone). A rigged character's
-  // foot bone ends at its own contact point (character.h), so its feet are measured there.
-  auto sample = [&](const std::array<int, 3>& bones) {
-    for (int b : bones) {
-      const glm::vec2 p = bone_start(world[b]), q = bone_end(world[b], sk.length(b));
-      for (int k = 0; k <= 4; ++k) {
-        max_penetration_m = std::max(max_penetration_m, penetration_depth(level, p + (q - p) * (k / 4.0f)));
+  // Every bone stays out of the colliders, the whole segment from its joint to its end. A
+  // rigged character's foot bone ends at its own contact point (character.h), so its feet are
+  // measured there.
+  if (limb_rig_ != &rig) {
+    limb_rig_ = &rig;
+    limb_bone_.assign(static_cast<size_t>(sk.bone_count()), 0);
+    for (const RigLeg& leg : rig.legs) {
+      for (int b : leg.bones) limb_bone_[static_cast<size_t>(b)] = 1;
+    }
+    for (const std::vector<RigLimb>* limbs : {&rig.arms, &rig.fins, &rig.wings}) {
+      for (const RigLimb& limb : *limbs) {
+        for (int b : limb.bones) limb_bone_[static_cast<size_t>(b)] = 1;
       }
     }
-  };
-  for (const RigLeg& leg : rig.legs) sample(leg.bones);
-  for (const std::vector<RigLimb>* limbs : {&rig.arms, &rig.fins, &rig.wings}) {
-    for (const RigLimb& limb : *limbs) sample(limb.bones);
+  }
+  Box all{glm::vec2(1e30f), glm::vec2(-1e30f)};
+  for (int b = 0; b < sk.bone_count(); ++b) {
+    all = all.united(Box{glm::min(bone_start(world[b]), bone_end(world[b], sk.length(b))),
+                         glm::max(bone_start(world[b]), bone_end(world[b], sk.length(b)))});
+  }
+  hits_.clear();
+  if (std::isfinite(all.min_ws.x) && std::isfinite(all.max_ws.y)) level.overlapping(all, hits_);
+  if (!hits_.empty()) {
+    for (int b = 0; b < sk.bone_count(); ++b) {
+      const float d = segment_penetration(level, bone_start(world[b]), bone_end(world[b], sk.length(b)), hits_);
+      float& worst = limb_bone_[static_cast<size_t>(b)] ? max_limb_penetration_m : max_body_penetration_m;
+      worst = std::max(worst, d);
+      if (d > max_penetration_m) {
+        max_penetration_m = d;
+        deepest_bone = sk.name(b);
+        deepest_at_s = static_cast<float>(ticks_ + 1) * dt;
+      }
+    }
+  }
+  // The trunk's jolt: (y(t) - 2 y(t - w) + y(t - 2w)) / w² over a 50 ms window (w = 25 ms),
+  // over ticks that are all grounded (not in the air, landing or crouching), in g. (A step of
+  // the body within a tick or two shows; the bob of a gait, tenths of a g, does not dominate.)
+  const int w = std::max(1, static_cast<int>(std::lround(0.025f / dt)));
+  const Locomotion mode = a.locomotion();
+  const bool steady = mode == Locomotion::kGrounded;
+  if (a.locomotion_stats().respawns != last_respawns_) {  // a start again at the spawn is no jolt
+    root_y_.clear();
+    steady_.clear();
+  }
+  root_y_.push_back(a.root_y());
+  steady_.push_back(steady ? 1 : 0);
+  if (static_cast<int>(root_y_.size()) > 2 * w + 1) {
+    root_y_.erase(root_y_.begin());
+    steady_.erase(steady_.begin());
+  }
+  jolt_g = 0.0f;
+  if (static_cast<int>(root_y_.size()) == 2 * w + 1 && std::all_of(steady_.begin(), steady_.end(), [](uint8_t v) { return v != 0; })) {
+    const float sw = static_cast<float>(w) * dt;
+    const float accel = (root_y_[2 * w] - 2.0f * root_y_[w] + root_y_[0]) / (sw * sw);
+    jolt_g = std::fabs(accel) / a.params().gravity;
+    max_body_jolt_g = std::max(max_body_jolt_g, jolt_g);
   }
   const int legs = a.leg_count();
   if (static_cast<int>(stance_anchor_.size()) != legs) {

@@ -68,25 +68,48 @@ struct SegmentMetrics {
   float cycle_frequency = 0;  // Hz
   float duty_factor = 0;
   float froude = 0;
+  float max_body_jolt_g = 0;  // the largest SimProbe::jolt_g in the segment
   std::string gait;           // most frequent gait in the window
   bool flight_phase = false;  // a tick with every foot in the air (moving segments)
   float airborne_s = 0;       // s in the air (Animator::airborne(): jumps and falls)
 };
 
-// Watches an animator tick by tick.
+// Watches an animator tick by tick: every bone against the level, the feet, the trunk's
+// vertical acceleration, non-finite values and the pose hash.
 class SimProbe {
  public:
+  // `dt`: seconds per tick (for times and accelerations; run_script sets it).
   void observe(const Animator& animator, const Level& level);
+  float dt = 1.0f / 120.0f;
 
   float max_stance_slip_m = 0.0f;
+  // Penetration: how deep any point of a bone (the segment from its joint to its end, the
+  // whole of it, exactly: segment_penetration) lies inside a collider, metres. Every bone of
+  // the skeleton: the worst (max_penetration_m), the legs, arms, fins and wings
+  // (max_limb_penetration_m), every other bone (max_body_penetration_m: spine, neck, skull,
+  // tail, ribs, girdles), and the bone that went deepest with when (seconds since the start).
   float max_penetration_m = 0.0f;
+  float max_limb_penetration_m = 0.0f;
+  float max_body_penetration_m = 0.0f;
+  std::string deepest_bone;
+  float deepest_at_s = 0.0f;
   float min_swing_clearance_m = 1e9f;
+  // The trunk's vertical jolt: the root's vertical acceleration over 50 ms windows (the second
+  // difference of its height at 25 ms spacing), in g, outside the air, landings and the crouch
+  // before a jump (those are meant to jolt): the largest so far and on the last tick.
+  float max_body_jolt_g = 0.0f;
+  float jolt_g = 0.0f;
   int nan_count = 0;
   uint64_t pose_hash = 1469598103934665603ull;
 
  private:
   std::vector<glm::vec2> stance_anchor_;
   std::vector<int> stance_since_;
+  std::vector<uint8_t> limb_bone_;    // per bone: a leg's, arm's, fin's or wing's
+  const AnimRig* limb_rig_ = nullptr;
+  std::vector<float> root_y_;         // the root's height, the last window's ticks
+  std::vector<uint8_t> steady_;       // per tick there: not in the air, landing or crouching
+  std::vector<int> hits_;
   int last_facing_ = 0;
   int last_respawns_ = 0;
   uint64_t ticks_ = 0;
@@ -118,5 +141,10 @@ SimResult run_script(Entity& entity, const Level& level, const std::vector<Scrip
 
 // Deepest a point lies inside any collider (0 when outside or on a surface), metres.
 float penetration_depth(const Level& level, glm::vec2 p_ws);
+// Deepest any point of the segment a-b lies inside the colliders `boxes` (indices into the
+// level), metres: exact, not sampled (inside a box the depth is the least distance to its four
+// sides, concave along a segment, so its largest value lies at an end of the part of the
+// segment inside the box or where two sides' distances meet).
+float segment_penetration(const Level& level, glm::vec2 a_ws, glm::vec2 b_ws, const std::vector<int>& boxes);
 
 }  // namespace ossa
