@@ -6,17 +6,19 @@
 //                            naive acos/atan2 two-bone IK per leg
 //   anim_ik_fk_1000:ossa     our share of the update spent in IK and FK alone (the root, the
 //                            girdles and the leg chains, as the update computes them)
-//   anim_ik_fk_1000:reference  the naive IK + FK again (for the ratio of the shares)
+//   anim_ik_fk_1000:reference  the same matrices the naive way (glm::mat3 with trig, acos IK)
 #include <benchmark/benchmark.h>
 
 #define GLM_ENABLE_EXPERIMENTAL
 #include <glm/gtx/matrix_transform_2d.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <memory>
 #include <vector>
 
 #include "ossa/anim/animator.h"
+#include "ossa/math/angle.h"
 #include "ossa/math/two_bone_ik.h"
 #include "shared/level_scenes.h"
 #include "shared/scenes.h"
@@ -89,6 +91,7 @@ float naive_kinematics(const Creature& c, const std::vector<BoneLocal>& locals, 
 
 void animator_reference(benchmark::State& state) {
   Herd& h = herd();
+  state.SetLabel("naive FK twice and IK only: less work than an update");
   std::vector<glm::mat3> model(h.creature->skeleton.bone_count());
   for (auto _ : state) {
     for (auto& a : h.animators) benchmark::DoNotOptimize(naive_kinematics(*h.creature, a->pose().locals, model, true, true));
@@ -139,11 +142,53 @@ void ik_fk_ossa(benchmark::State& state) {
 }
 BENCHMARK(ik_fk_ossa)->Name("anim_ik_fk_1000:ossa")->Unit(benchmark::kMicrosecond);
 
+// The same IK + FK as ik_fk_ossa, the naive way: glm::mat3 with trig per matrix, each girdle
+// from the root's matrix, an acos/atan2 two-bone IK per leg, its three bones' matrices from the
+// angles.
 void ik_fk_reference(benchmark::State& state) {
   Herd& h = herd();
-  std::vector<glm::mat3> model(h.creature->skeleton.bone_count());
+  const Creature& c = *h.creature;
+  const Skeleton& sk = c.skeleton;
+  auto to_mat3 = [](const Mat2x3& m) {
+    return glm::mat3(m.m[0], m.m[1], 0.0f, m.m[2], m.m[3], 0.0f, m.m[4], m.m[5], 1.0f);
+  };
+  const std::vector<Mat2x3> rest = model_matrices(sk, c.rest_pose.locals);
+  const glm::mat3 root_inv = glm::inverse(to_mat3(rest[c.root]));
+  std::vector<glm::mat3> model(sk.bone_count());
+  std::vector<const Limb*> legs;
+  std::vector<glm::mat3> girdle_rel;
+  for (const Limb& limb : c.limbs) {
+    if (limb.kind != LimbKind::kLeg) continue;
+    legs.push_back(&limb);
+    girdle_rel.push_back(root_inv * to_mat3(rest[limb.girdle_bone]));
+  }
+  auto place = [](glm::vec2 at, float angle) { return glm::rotate(glm::translate(glm::mat3(1.0f), at), angle); };
   for (auto _ : state) {
-    for (auto& a : h.animators) benchmark::DoNotOptimize(naive_kinematics(*h.creature, a->pose().locals, model, true, true));
+    for (auto& a : h.animators) {
+      const std::vector<BoneLocal>& locals = a->pose().locals;
+      model[c.root] = place(locals[c.root].offset_ls, locals[c.root].angle_ls);
+      for (size_t i = 0; i < legs.size(); ++i) {
+        const Limb& limb = *legs[i];
+        const glm::mat3 girdle = model[c.root] * girdle_rel[i];
+        model[limb.girdle_bone] = girdle;
+        const glm::vec2 joint(girdle * glm::vec3(locals[limb.bones[0]].offset_ls, 1.0f));
+        const glm::vec2 d = glm::vec2(0.1f, -0.6f);
+        const float l1 = sk.length(limb.bones[0]), l2 = sk.length(limb.bones[1]);
+        const float r = std::clamp(std::sqrt(d.x * d.x + d.y * d.y), std::fabs(l1 - l2) + 1e-6f, l1 + l2);
+        const float hip = std::acos(std::clamp((l1 * l1 + r * r - l2 * l2) / (2.0f * l1 * r), -1.0f, 1.0f));
+        const float knee = std::acos(std::clamp((l1 * l1 + l2 * l2 - r * r) / (2.0f * l1 * l2), -1.0f, 1.0f));
+        const float bend = static_cast<float>(limb.bend_sign);
+        const float upper_angle = std::atan2(d.y, d.x) + bend * hip;
+        const glm::mat3 upper = place(joint, upper_angle);
+        const glm::mat3 lower = upper * place(locals[limb.bones[1]].offset_ls, -bend * (kPi - knee));
+        const glm::vec2 ankle(lower * glm::vec3(locals[limb.bones[2]].offset_ls, 1.0f));
+        model[limb.bones[0]] = upper;
+        model[limb.bones[1]] = lower;
+        model[limb.bones[2]] = place(ankle, -0.5f * kPi);
+      }
+      benchmark::DoNotOptimize(model.data());
+    }
+    benchmark::ClobberMemory();
   }
   state.SetItemsProcessed(state.iterations() * kCreatures);
 }

@@ -1,6 +1,8 @@
 // main() for ossa-bench: runs every benchmark, then prints, for each benchmark named
 // "<group>:ossa<args>" with a partner "<group>:reference<args>", the ratio of their CPU times.
-// A ratio below 1 means ossa is faster than the reference.
+// A ratio below 1 means ossa is faster than the reference. A reference that does not do the
+// same work as its contender says what it does instead in its label (state.SetLabel), and the
+// table prints that label after the ratio.
 //
 // With --benchmark_repetitions=N the table uses each benchmark's median over the repetitions
 // (Google Benchmark's "_median" aggregate row), so it works with
@@ -23,6 +25,7 @@ struct Timing {
   double mean_ns = -1.0;
   double run_sum_ns = 0.0;
   int runs = 0;
+  std::string label;  // the benchmark's report label (a reference: what it does differently)
 
   bool known() const { return median_ns >= 0.0 || mean_ns >= 0.0 || runs > 0; }
   double cpu_ns() const { return median_ns >= 0.0 ? median_ns : mean_ns >= 0.0 ? mean_ns : run_sum_ns / runs; }
@@ -56,6 +59,7 @@ class RatioReporter : public benchmark::ConsoleReporter {
                          : r.time_unit == benchmark::kMillisecond ? 1e6
                                                                   : 1e9);
       Timing& t = timings_[key][variant];
+      if (!r.report_label.empty()) t.label = r.report_label;
       if (!aggregate) {
         t.run_sum_ns += ns;
         ++t.runs;
@@ -69,14 +73,16 @@ class RatioReporter : public benchmark::ConsoleReporter {
   }
 
   void PrintRatios() const {
-    std::printf("\n%-48s %14s %14s %9s  %s\n", "benchmark", "ossa", "reference", "ratio", "of");
+    std::printf("\n%-48s %14s %14s %9s  %-6s  %s\n", "benchmark", "ossa", "reference", "ratio", "of",
+                "the reference, where it does other work");
     for (const std::string& key : order_) {
       const auto& variants = timings_.at(key);
       auto ours = variants.find("ossa");
       auto ref = variants.find("reference");
       if (ours == variants.end() || ref == variants.end() || !ours->second.known() || !ref->second.known()) continue;
-      std::printf("%-48s %11.1f ns %11.1f ns %9.3f  %s\n", key.c_str(), ours->second.cpu_ns(),
-                  ref->second.cpu_ns(), ours->second.cpu_ns() / ref->second.cpu_ns(), ours->second.source());
+      std::printf("%-48s %11.1f ns %11.1f ns %9.3f  %-6s  %s\n", key.c_str(), ours->second.cpu_ns(),
+                  ref->second.cpu_ns(), ours->second.cpu_ns() / ref->second.cpu_ns(), ours->second.source(),
+                  ref->second.label.c_str());
     }
   }
 

@@ -46,6 +46,7 @@ BENCHMARK(body_build_ossa)->Name("body_build:ossa")->Unit(benchmark::kMillisecon
 void body_build_reference(benchmark::State& state) {
   const std::vector<Genome>& genomes = example_genomes();
   size_t i = 0;
+  state.SetLabel("generates the creatures the bodies dress: other work");
   for (auto _ : state) {
     Result<Creature> c = build_creature(genomes[i++ % genomes.size()]);
     benchmark::DoNotOptimize(c.ok());

@@ -177,6 +177,7 @@ void smooth_skinning_frame_ossa(benchmark::State& state) {
 void smooth_skinning_frame_reference(benchmark::State& state) {
   Scene& s = scene();
   if (!s.ok) return state.SkipWithError("no GL context / data");
+  state.SetLabel("rigid sprites: the frame without smooth skinning");
   for (auto _ : state) {
     s.build_rigid_palettes();
     s.rigid_batch->upload_palettes();
@@ -210,6 +211,7 @@ void bodies_frame_ossa(benchmark::State& state) {
 void bodies_frame_reference(benchmark::State& state) {
   Scene& s = scene();
   if (!s.ok) return state.SkipWithError("no GL context / data");
+  state.SetLabel("the same creatures' bone-sprite frame");
   const Texture* textures[] = {&s.atlas->texture};
   for (auto _ : state) {
     s.build_palettes();
