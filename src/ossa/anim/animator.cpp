@@ -199,6 +199,7 @@ PlacementInputs Animator::placement_inputs(float dt) const {
   PlacementInputs in;
   in.dt = dt;
   in.speed = motion_.speed;
+  in.stepping = gait_.moving;
   in.bob = body_bob(*rig_, params_, spline_prototypes_, gait_, gait_.idle_time);
   in.snap = handoff_.turned;
   in.turning = handoff_.turned;

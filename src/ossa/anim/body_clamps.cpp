@@ -252,7 +252,9 @@ void keep_knees_off_ground(Placement& p, std::vector<float>& stance_up, std::vec
         const float cross = std::max(raise_to_clear(hip, knee, level, p.ctx.hits), raise_to_clear(knee, heel, level, p.ctx.hits));
         float& cross_up = corner_near && knee.y >= f.pos_ws.y + margin ? swing_up[info.girdle] : up;
         cross_up = std::max(cross_up, cross);
-        if (stance) crossed[i] = cross;
+        // Only a foot left behind its girdle (it lifts soon anyway): a leading foot released
+        // leaves the body to the feet behind, which the next raise stretches.
+        if (stance && p.body.to_fs(f.pos_ws).x < joint.x) crossed[i] = cross;
       }
     }
     bool moved = false;
@@ -285,8 +287,9 @@ void keep_knees_off_ground(Placement& p, std::vector<float>& stance_up, std::vec
   // A stance leg the raises left across an edge (a raise turns the body about its other end
   // and lifts the knee by less than itself; the other feet hold the body down: a hind foot left
   // on the edge of a ledge the body steps down from, its shin across the edge) lifts at the
-  // next chance rather than stand in the step (clamp 6's hand-off).
-  if (p.release == nullptr) return;
+  // next chance rather than stand in the step (clamp 6's hand-off). Only while the feet step:
+  // a standing (or blocked) creature's released foot would restep at once, a slide.
+  if (p.release == nullptr || !p.in.stepping) return;
   for (size_t i = 0; i < rig.legs.size(); ++i) {
     if (crossed[i] > kStanceCrossRelease) (*p.release)[p.feet.foot_of_leg[i]] = 1;
   }

@@ -49,6 +49,7 @@ struct BodyState {
 struct PlacementInputs {
   float dt = 0.0f;            // seconds; 0 places at once (reset)
   float speed = 0.0f;         // m/s along the facing
+  bool stepping = false;      // the gait clock runs this tick (a released foot lifts, not resteps)
   float bob = 0.0f;           // pelvis bob (or idle breathing), metres
   bool snap = false;          // take the new height and pitch at once (a turn)
   bool turning = false;       // this tick mirrored the creature (swinging feet count as stance)
