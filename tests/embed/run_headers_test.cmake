@@ -82,11 +82,17 @@ int main(int argc, char** argv) {
 }
 ]=])
 file(WRITE ${src}/main.cpp "${main}")
-file(WRITE ${src}/CMakeLists.txt [=[
-cmake_minimum_required(VERSION 3.22)
+# With ossa::render installed, it is asked for by name (COMPONENTS render).
+set(components "")
+if(render_installed)
+  set(components "COMPONENTS render")
+endif()
+file(WRITE ${src}/CMakeLists.txt "cmake_minimum_required(VERSION 3.22)
 project(ossa_every_header LANGUAGES CXX)
 set(CMAKE_CXX_STANDARD 20)
-find_package(ossa 0.1 REQUIRED)
+find_package(ossa 0.1 REQUIRED ${components})
+")
+file(APPEND ${src}/CMakeLists.txt [=[
 get_directory_property(imported IMPORTED_TARGETS)
 list(FILTER imported INCLUDE REGEX "^ossa::")
 list(SORT imported)
