@@ -91,6 +91,7 @@
 
 // game: Controls, Player, World, Replay, headless simulation
 #include "ossa/game/controls.h"
+#include "ossa/game/herd.h"
 #include "ossa/game/player.h"
 #include "ossa/game/replay.h"
 #include "ossa/game/sim.h"
