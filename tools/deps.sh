@@ -7,7 +7,7 @@ OSSA_JOBS="${OSSA_JOBS:-$(nproc 2>/dev/null || echo 2)}"
 
 OSSA_PACKAGES=(
   build-essential cmake ninja-build pkg-config
-  libglm-dev libeigen3-dev nlohmann-json3-dev libpugixml-dev zlib1g-dev
+  libglm-dev libeigen3-dev nlohmann-json3-dev libpugixml-dev zlib1g-dev libtbb-dev
   catch2 libbenchmark-dev
   libsdl2-dev libsdl2-image-dev libepoxy-dev libassimp-dev libimgui-dev libstb-dev libgif-dev
   xvfb xdotool librsvg2-bin

@@ -175,6 +175,7 @@ Status Game::init(const GameOptions& o) {
   m.random_seed = o.seed ? *o.seed + 1 : 1000;
 
   world_ = std::make_unique<World>(std::move(level.value()), std::move(prototypes.value()), AnimatorParams{}, tick_hz);
+  world_->set_threads(o.threads);
   glm::vec2 spawn = world_->level().spawn_ws + glm::vec2(0.0f, 0.5f);
   int facing = 1;
   if (m.playback) {

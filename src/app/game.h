@@ -60,6 +60,7 @@ struct GameOptions {
   std::string gif;              // GIF of the whole run (headless) or the first gif_seconds
   std::string state;            // JSON state written on exit
   int tick_hz = 120;            // [30, 480]
+  int threads = 0;              // threads stepping the world (World::set_threads): 0 = every core
   bool vsync = true;
   int fps_cap = 0;              // frames per second when vsync is off (0 = uncapped); [0, 1000]
   int width = 1280, height = 720;

@@ -8,7 +8,7 @@ namespace ossa {
 
 const char* const kGameUsage = R"(usage: ossa [--level F] [--creature F | --example NAME | --seed N | --character F] [--npcs N]
             [--replay F] [--record F] [--headless --frames N] [--png F] [--gif F]
-            [--state F] [--hz N] [options]
+            [--state F] [--hz N] [--threads N] [options]
 
 Walk a generated creature over a box level with a gamepad or the keyboard.
 
@@ -34,6 +34,8 @@ Walk a generated creature over a box level with a gamepad or the keyboard.
   --gif-seconds S   length of a GIF, 0.5-60 seconds (default 5)
   --state F         write JSON on exit: frames, player {x, y, speed, creature}, spawn {x, y}
   --hz N            simulation ticks per second, 30-480 (default 120)
+  --threads N       threads stepping the creatures, 0-1024 (0 = every core, the default;
+                    the poses are the same on any number)
   --no-vsync        do not wait for the display's refresh
   --fps-cap N       frames per second limit without vsync, 0-1000 (0 = none)
   --size WxH        window size in pixels (default 1280x720)
@@ -136,6 +138,8 @@ Result<ParsedArgs> parse_game_args(const std::vector<std::string>& args) {
       s = text(o.state);
     } else if (flag == "--hz") {
       s = number(30, 480, o.tick_hz);
+    } else if (flag == "--threads") {
+      s = number(0, 1024, o.threads);
     } else if (flag == "--no-vsync") {
       o.vsync = false;
     } else if (flag == "--fps-cap") {

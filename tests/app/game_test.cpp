@@ -663,6 +663,7 @@ TEST_CASE("ossa rejects bad arguments and files with a message", "[app]") {
       {"--frames abc --headless", "--frames"},
       {"--hz 1000 --headless", "--hz"},
       {"--npcs -1 --headless", "--npcs"},
+      {"--threads -2 --headless", "--threads"},
       {"--bogus", "unknown argument"},
       {"--level", "missing value"},
       {"--headless --level /nonexistent/level.json", "nonexistent"},
@@ -689,7 +690,7 @@ TEST_CASE("ossa rejects bad arguments and files with a message", "[app]") {
 }
 
 TEST_CASE("command line parsing", "[app]") {
-  auto p = parse_game_args({"--headless", "--example", "dromedary", "--npcs", "5", "--hz", "240"});
+  auto p = parse_game_args({"--headless", "--example", "dromedary", "--npcs", "5", "--hz", "240", "--threads", "2"});
   REQUIRE(p.ok());
   CHECK(p->options.headless);
   CHECK(p->options.demo);
@@ -697,6 +698,7 @@ TEST_CASE("command line parsing", "[app]") {
   CHECK(p->options.example == "dromedary");
   CHECK(p->options.npcs == 5);
   CHECK(p->options.tick_hz == 240);
+  CHECK(p->options.threads == 2);
   auto r = parse_game_args({"--headless", "--replay", "x.json"});
   REQUIRE(r.ok());
   CHECK_FALSE(r->options.demo);

@@ -1,5 +1,7 @@
 // main() for ossa-bench: runs every benchmark, then prints, for each benchmark named
-// "<group>:ossa<args>" with a partner "<group>:reference<args>", the ratio of their CPU times.
+// "<group>:ossa<args>" with a partner "<group>:reference<args>", the ratio of their CPU times
+// (of their wall-clock times for benchmarks registered with UseRealTime, "/real_time" in the
+// name: the multi-threaded herds, whose work is done on other threads than the timed one).
 // A ratio below 1 means ossa is faster than the reference. A reference that does not do the
 // same work as its contender says what it does instead in its label (state.SetLabel), and the
 // table prints that label after the ratio.
@@ -53,7 +55,8 @@ class RatioReporter : public benchmark::ConsoleReporter {
                                                              : variant_end - colon - 1);
       const std::string key = name.substr(0, colon) +
                               (variant_end == std::string::npos ? "" : name.substr(variant_end));
-      const double ns = r.GetAdjustedCPUTime() *
+      const bool real_time = r.run_name.time_type == "real_time";
+      const double ns = (real_time ? r.GetAdjustedRealTime() : r.GetAdjustedCPUTime()) *
                         (r.time_unit == benchmark::kNanosecond    ? 1.0
                          : r.time_unit == benchmark::kMicrosecond ? 1e3
                          : r.time_unit == benchmark::kMillisecond ? 1e6

@@ -93,8 +93,10 @@ void run(benchmark::State& state, Crowd* crowd) {
     benchmark::ClobberMemory();
   }
   state.SetItemsProcessed(state.iterations() * kCount);
-  state.counters["us_per_creature"] = benchmark::Counter(static_cast<double>(state.iterations()) * kCount * 1e-6,
-                                                         benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
+  // Seconds per creature: an inverted rate is printed in seconds with an SI prefix ("410us",
+  // "3.2ms"); a value already in microseconds would be printed as "410s" or "1.2ks".
+  state.counters["time_per_creature"] = benchmark::Counter(static_cast<double>(state.iterations()) * kCount,
+                                                   benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
 }
 
 void humanoids(benchmark::State& state) { run(state, characters("humanoid")); }

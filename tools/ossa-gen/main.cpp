@@ -72,7 +72,7 @@ model:
   --sheet-random N      with --sheet: N random creatures (seeds 1..N) after the examples
   --look L              how --sheet, --svg and --gltf show creatures: body (default), xray
                         (the body translucent over the bones) or bones
-  --dataset F           examples file (default: $OSSA_SOURCE_DIR/assets/creatures/examples.json)
+  --dataset F           examples file (default: assets/creatures/examples.json of the data folder)
   --help                this text
 )";
 

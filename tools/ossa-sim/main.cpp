@@ -6,6 +6,7 @@
 //
 // Every failure prints one line naming what was wrong and exits with status 1.
 
+#include <algorithm>
 #include <cerrno>
 #include <chrono>
 #include <cmath>
@@ -22,6 +23,7 @@
 #include "ossa/anim/spline_prototypes.h"
 #include "ossa/gen/generator.h"
 #include "ossa/gen/skeleton_builder.h"
+#include "ossa/game/herd.h"
 #include "ossa/game/sim.h"
 #include "ossa/game/player.h"
 #include "ossa/game/world.h"
@@ -38,7 +40,7 @@ using namespace ossa;
 namespace {
 
 const char* kUsage = R"(usage: ossa-sim (--example NAME | --creature F.creature.json | --character F.rig.json | --random --seed N)
-                [--level F] --script "mode:stick:seconds,..." [--hz 120] [--count N]
+                [--level F] --script "mode:stick:seconds,..." [--hz 120] [--count N [--threads N]]
                 [--prototypes F] [--json] [--trace F.csv] [--trace-joints F.csv]
                 [--svg F.svg [--svg-window FROM:TO[:EVERY]]]
   --example NAME   one of the 44 example animals (English or German name)
@@ -52,7 +54,10 @@ const char* kUsage = R"(usage: ossa-sim (--example NAME | --creature F.creature.
   --script S       segments: walk:STICK:SECONDS, run:STICK:SECONDS, stop:SECONDS, jump (the
                    jump button for one tick) and jump:SECONDS (held), keeping the stick
   --hz N           simulation rate, 30..480 (default 120)
-  --count N        N creatures at once (reports update_us_per_creature)
+  --count N        N creatures at once, sharing one rig (reports update_us_per_creature,
+                   and herd_pose_hash over the extra creatures' final poses)
+  --threads N      threads stepping the extra creatures of --count (step_all): 0 = every
+                   core (default), 1 = one; the poses do not depend on it
   --prototypes F   spline prototypes (default: assets/animation/prototypes.json)
   --json           print the metrics as JSON
   --trace F.csv    per-tick foot and girdle positions
@@ -79,7 +84,7 @@ struct Args {
   std::optional<std::string> example, creature, character, level, script, prototypes, trace, trace_joints, svg;
   bool random = false, json = false;
   uint64_t seed = 1;
-  int hz = 120, count = 1;
+  int hz = 120, count = 1, threads = 0;
   float pixels_per_metre = 32.0f;  // LevelLoadOptions::pixels_per_metre
   float svg_from = 0.0f, svg_to = 1e30f, svg_every = 0.4f;  // seconds (--svg-window)
 };
@@ -150,6 +155,7 @@ Args parse_args(int argc, char** argv) {
     else if (f == "--script") a.script = value();
     else if (f == "--hz") a.hz = static_cast<int>(parse_int(f, value(), 30, 480));
     else if (f == "--count") a.count = static_cast<int>(parse_int(f, value(), 1, 100000));
+    else if (f == "--threads") a.threads = static_cast<int>(parse_int(f, value(), 0, 1024));
     else if (f == "--prototypes") a.prototypes = value();
     else if (f == "--json") a.json = true;
     else if (f == "--trace") a.trace = value();
@@ -287,9 +293,11 @@ int main(int argc, char** argv) {
     if (!built) fail((args.creature ? *args.creature + ": " : std::string()) + built.message());
     creature = std::make_shared<const Creature>(std::move(*built));
   }
+  // Every creature of --count shares one rig (a character's rig is shared already).
+  RigCache rigs;
   auto make_entity = [&]() -> std::unique_ptr<Entity> {
     if (character) return std::make_unique<Player>(character, prototypes);
-    return std::make_unique<Player>(creature, prototypes);
+    return std::make_unique<Player>(creature, rigs.rig(creature), prototypes);
   };
 
   std::unique_ptr<Entity> player_ptr = make_entity();
@@ -298,10 +306,13 @@ int main(int argc, char** argv) {
   player.animator().reset(spawn, *level);
   // Extra creatures for --count walk the same script in lock-step beside the first.
   std::vector<std::unique_ptr<Entity>> extra;
+  std::vector<Entity*> extra_list;
   for (int i = 1; i < args.count; ++i) {
     extra.push_back(make_entity());
     extra.back()->animator().reset(spawn, *level);
+    extra_list.push_back(extra.back().get());
   }
+  std::vector<Controls> extra_step_controls(extra.size());
 
   // Outputs stay bounded: a trace row per tick and an SVG pose per strobe step are counted
   // before the run, and a run that would write more is refused with what to change.
@@ -374,7 +385,8 @@ int main(int argc, char** argv) {
     if (!extra.empty()) {
       const Controls c = extra_controls.next();
       const auto start = std::chrono::steady_clock::now();
-      for (auto& e : extra) e->step(dt, c, *level);
+      std::fill(extra_step_controls.begin(), extra_step_controls.end(), c);
+      step_all(extra_list, extra_step_controls, dt, *level, args.threads);
       extra_seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     }
     if (trace.is_open()) {
@@ -452,6 +464,11 @@ int main(int argc, char** argv) {
     out["pose_hash"] = hash;
     if (args.count > 1) {
       out["count"] = args.count;
+      out["threads"] = resolve_threads(args.threads);
+      uint64_t herd = pose_hash({});
+      for (const auto& e : extra) herd = pose_hash(e->animator().world_matrices(), herd);
+      std::snprintf(hash, sizeof hash, "%016llx", static_cast<unsigned long long>(herd));
+      out["herd_pose_hash"] = hash;
       out["update_us_per_creature"] = 1e6 * update_seconds / static_cast<double>(updates);
     }
     std::printf("%s\n", json_text(out, 2).c_str());

@@ -60,7 +60,9 @@ const char* kUsage = R"(usage: ossa-sweep [--slopes-check] [--level F]... [--exa
   --example NAME   an example animal (repeatable; default: all 44)
   --script S       an ossa-sim script (repeatable; default: "walk:0.6:30", "run:1:15",
                    "walk:0.5:6,stop:1,walk:-0.6:6")
-  --jobs N         worker threads (default: one per hardware thread)
+  --jobs N         worker threads (default: one per hardware thread); --threads N is the
+                   same flag, named as on ossa and ossa-sim (each run is one creature, so the
+                   runs, not the creatures, are spread over the threads)
   --hz N           simulation rate, 30..480 (default 120)
   --json OUT.json  every run's figures
 )";
@@ -101,7 +103,7 @@ Args parse_args(int argc, char** argv) {
     else if (f == "--level") a.levels.push_back(value());
     else if (f == "--example") a.examples.push_back(value());
     else if (f == "--script") a.scripts.push_back(value());
-    else if (f == "--jobs") a.jobs = static_cast<int>(parse_int(f, value(), 1, 1024));
+    else if (f == "--jobs" || f == "--threads") a.jobs = static_cast<int>(parse_int(f, value(), 1, 1024));
     else if (f == "--hz") a.hz = static_cast<int>(parse_int(f, value(), 30, 480));
     else if (f == "--json") a.json = value();
     else if (f == "--known-failures") a.known_failures = value();

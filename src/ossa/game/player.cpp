@@ -11,6 +11,10 @@ Entity::Entity(std::shared_ptr<const Creature> creature, const SplinePrototypes&
                const AnimatorParams& params)
     : creature_(std::move(creature)), animator_(*creature_, prototypes, params) {}
 
+Entity::Entity(std::shared_ptr<const Creature> creature, std::shared_ptr<const AnimRig> rig,
+               const SplinePrototypes& prototypes, const AnimatorParams& params)
+    : creature_(std::move(creature)), animator_(*creature_, std::move(rig), prototypes, params) {}
+
 Entity::Entity(std::shared_ptr<const Character> character, const SplinePrototypes& prototypes,
                const AnimatorParams& params)
     : character_(std::move(character)), animator_(character_->rig, prototypes, params) {}

@@ -19,6 +19,9 @@ class Entity {
  public:
   Entity(std::shared_ptr<const Creature> creature, const SplinePrototypes& prototypes,
          const AnimatorParams& params = {});
+  // Shares `rig`, built once for every entity of this creature (build_anim_rig, RigCache).
+  Entity(std::shared_ptr<const Creature> creature, std::shared_ptr<const AnimRig> rig,
+         const SplinePrototypes& prototypes, const AnimatorParams& params = {});
   // A rigged character: its shared AnimRig drives the animator.
   Entity(std::shared_ptr<const Character> character, const SplinePrototypes& prototypes,
          const AnimatorParams& params = {});

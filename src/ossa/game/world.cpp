@@ -17,7 +17,8 @@ Player& World::place_player(std::unique_ptr<Player> player, glm::vec2 at_ws, int
 }
 
 Player& World::spawn_player(std::shared_ptr<const Creature> creature, glm::vec2 at_ws, int facing) {
-  return place_player(std::make_unique<Player>(std::move(creature), prototypes_, params_), at_ws, facing);
+  std::shared_ptr<const AnimRig> rig = rigs_.rig(creature);
+  return place_player(std::make_unique<Player>(std::move(creature), std::move(rig), prototypes_, params_), at_ws, facing);
 }
 
 Player& World::spawn_player(std::shared_ptr<const Character> character, glm::vec2 at_ws, int facing) {
@@ -32,7 +33,8 @@ Entity& World::place_npc(std::unique_ptr<Entity> entity, glm::vec2 at_ws, uint64
 }
 
 Entity& World::spawn_npc(std::shared_ptr<const Creature> creature, glm::vec2 at_ws, uint64_t seed) {
-  return place_npc(std::make_unique<Entity>(std::move(creature), prototypes_, params_), at_ws, seed);
+  std::shared_ptr<const AnimRig> rig = rigs_.rig(creature);
+  return place_npc(std::make_unique<Entity>(std::move(creature), std::move(rig), prototypes_, params_), at_ws, seed);
 }
 
 Entity& World::spawn_npc(std::shared_ptr<const Character> character, glm::vec2 at_ws, uint64_t seed) {
@@ -117,6 +119,8 @@ int World::blocker_ahead(const Entity& self, float dir) const {
 
 void World::step(const Controls& player_controls) {
   const float h = dt();
+  step_entities_.clear();
+  step_controls_.clear();
   if (player_) {
     // The player stops at a creature in its way; an NPC it walks up to gives way (below).
     Controls c = player_controls;
@@ -132,8 +136,9 @@ void World::step(const Controls& player_controls) {
       }
       if (blocker != -2) c.move_x = 0.0f;
     }
-    player_->step(h, c, level_);
     applied_ = c;
+    step_entities_.push_back(player_.get());
+    step_controls_.push_back(c);
   }
   for (Npc& n : npcs_) {
     // Wander: hold a heading and a pace for a while; pause sometimes; turn when blocked.
@@ -167,8 +172,10 @@ void World::step(const Controls& player_controls) {
         }
       }
     }
-    n.entity->step(h, n.controls, level_);
+    step_entities_.push_back(n.entity.get());
+    step_controls_.push_back(n.controls);
   }
+  step_all(step_entities_, step_controls_, h, level_, threads_);
   ++tick_;
 }
 

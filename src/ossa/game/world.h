@@ -2,7 +2,9 @@
 // World — the level, the player and NPC walkers, stepped together at one fixed rate
 // (default 120 Hz, up to 480 Hz; DESIGN.md §2). NPCs wander: they pick a direction and a
 // speed for a few seconds, pause now and then, and turn around when blocked. Stepping is
-// deterministic: the same level, creatures, seeds and player controls give the same poses.
+// deterministic: the same level, creatures, seeds and player controls give the same poses,
+// on any number of threads (set_threads; the creatures are stepped with step_all, herd.h).
+// Every creature spawned from the same Creature shares one rig (RigCache).
 //
 // Creatures meet (they never walk through each other): two creatures are in each other's way
 // when their feet are at about the same height (closer than the smaller hip height) and
@@ -21,6 +23,7 @@
 #include <memory>
 #include <vector>
 
+#include "ossa/game/herd.h"
 #include "ossa/game/player.h"
 #include "ossa/math/rng.h"
 
@@ -47,7 +50,8 @@ class World {
   void set_player_creature(std::shared_ptr<const Creature> creature);
   void set_player_character(std::shared_ptr<const Character> character);
 
-  // One fixed tick of 1 / tick_hz seconds.
+  // One fixed tick of 1 / tick_hz seconds: the NPCs choose their controls (in order, one
+  // random stream each), then every creature steps, in parallel on up to threads() threads.
   void step(const Controls& player_controls);
   // The player's controls the last step applied: the given ones, with the move towards a
   // creature in its way dropped (what a replay records, so it plays back without the NPCs).
@@ -55,6 +59,11 @@ class World {
   // Off: the player is not stopped by creatures (a replay's controls already were) and NPCs
   // do not give way to it; NPCs still turn back from it.
   bool player_meets_creatures = true;
+  // Threads for step: 0 = every core (the default), 1 = this thread only. Poses do not depend on it.
+  void set_threads(int threads) { threads_ = threads; }
+  int threads() const { return threads_; }
+  // The shared rigs of the creatures spawned so far.
+  const RigCache& rigs() const { return rigs_; }
 
   const Level& level() const { return level_; }
   Level& level() { return level_; }
@@ -87,6 +96,10 @@ class World {
   std::unique_ptr<Player> player_;
   std::vector<Npc> npcs_;
   Controls applied_;
+  RigCache rigs_;
+  int threads_ = 0;
+  std::vector<Entity*> step_entities_;  // step's scratch lists, kept to spare the allocations
+  std::vector<Controls> step_controls_;
 
   Player& place_player(std::unique_ptr<Player> player, glm::vec2 at_ws, int facing);
   Entity& place_npc(std::unique_ptr<Entity> entity, glm::vec2 at_ws, uint64_t seed);

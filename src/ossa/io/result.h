@@ -8,6 +8,7 @@
 // error or show it and keep their previous state.
 
 #include <string>
+#include <string_view>
 #include <utility>
 #include <variant>
 
@@ -22,6 +23,12 @@ struct Error {
   static Error at(std::string_view file, std::string_view field, std::string_view what);
 };
 
+namespace detail {
+// Result::value() on an error: prints "Result::value() on an error: <the error's message>"
+// to stderr (so an embedder sees which file, field and expectation failed) and aborts.
+[[noreturn]] void value_on_error(const Error& error);
+}  // namespace detail
+
 template <class T>
 class [[nodiscard]] Result {
  public:
@@ -31,9 +38,11 @@ class [[nodiscard]] Result {
   bool ok() const { return v_.index() == 0; }
   explicit operator bool() const { return ok(); }
 
-  T& value() & { OSSA_ASSERT(ok(), "Result::value() on an error"); return std::get<0>(v_); }
-  const T& value() const& { OSSA_ASSERT(ok(), "Result::value() on an error"); return std::get<0>(v_); }
-  T&& value() && { OSSA_ASSERT(ok(), "Result::value() on an error"); return std::get<0>(std::move(v_)); }
+  // The value; on an error, prints the error's message and aborts (detail::value_on_error).
+  // Check ok() first where bad data is possible.
+  T& value() & { check_value(); return std::get<0>(v_); }
+  const T& value() const& { check_value(); return std::get<0>(v_); }
+  T&& value() && { check_value(); return std::get<0>(std::move(v_)); }
   T* operator->() { return &value(); }
   const T* operator->() const { return &value(); }
   T& operator*() & { return value(); }
@@ -43,6 +52,10 @@ class [[nodiscard]] Result {
   const std::string& message() const { return error().message; }
 
  private:
+  void check_value() const {
+    if (!ok()) detail::value_on_error(std::get<1>(v_));
+  }
+
   std::variant<T, Error> v_;
 };
 
