@@ -93,15 +93,7 @@ void plan_axial(const BodyRig& rig, BodyParts& plan) {
   for (int b = 0; b < sk.bone_count(); ++b) {
     if (sk.kind(b) != BoneKind::kRib || sk.layer(b) != Layer::kNear) continue;
     const glm::vec2 base = rig.bone_start(b), tip = rig.bone_end(b);
-    // The nearest chain point to the rib's base.
-    float best = 1e30f, best_s = 0.0f;
-    for (size_t k = 0; k + 1 < ch.points.size(); ++k) {
-      const glm::vec2 a = ch.points[k], d = ch.points[k + 1] - a;
-      const float len2 = glm::dot(d, d);
-      const float t = len2 > 0.0f ? std::clamp(glm::dot(base - a, d) / len2, 0.0f, 1.0f) : 0.0f;
-      const float dist = glm::length(a + t * d - base);
-      if (dist < best) best = dist, best_s = ch.start_s[k] + t * (ch.start_s[k + 1] - ch.start_s[k]);
-    }
+    const float best_s = ch.nearest_s(base);  // the nearest chain point to the rib's base
     const float depth = glm::dot(ch.point_at(best_s) - tip, dorsal_of(ch.tangent_at(best_s)));
     if (depth > 0.0f) ribs.emplace_back(best_s, std::max(depth, 0.7f * sk.length(b)));
   }
@@ -268,15 +260,7 @@ void plan_axial(const BodyRig& rig, BodyParts& plan) {
   for (const Limb& l : c.limbs) {
     if (l.kind == LimbKind::kFin || l.bones[0] < 0) continue;
     const glm::vec2 joint = rig.bone_start(l.bones[0]);
-    // The nearest chain point.
-    float best = 1e30f, gs = 0.0f;
-    for (size_t k = 0; k + 1 < ch.points.size(); ++k) {
-      const glm::vec2 a = ch.points[k], d = ch.points[k + 1] - a;
-      const float len2 = glm::dot(d, d);
-      const float t = len2 > 0.0f ? std::clamp(glm::dot(joint - a, d) / len2, 0.0f, 1.0f) : 0.0f;
-      const float dist = glm::length(a + t * d - joint);
-      if (dist < best) best = dist, gs = ch.start_s[k] + t * (ch.start_s[k + 1] - ch.start_s[k]);
-    }
+    const float gs = ch.nearest_s(joint);  // the nearest chain point
     for (size_t i = 0; i < at.size(); ++i) {
       Section& sec = tube.sections[i];
       const float below = glm::dot(sec.centre - joint, sec.dorsal) + 0.03f * B;

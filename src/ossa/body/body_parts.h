@@ -47,6 +47,7 @@ struct Chain {
   int segment_at(float s) const;
   glm::vec2 point_at(float s) const;
   glm::vec2 tangent_at(float s) const;  // unit, the segment's direction
+  float nearest_s(glm::vec2 p) const;   // arc length of the chain point nearest p
 };
 
 // A joint where smooth skinning blends two palette sequences (parent … mid frames … child).

@@ -36,6 +36,18 @@ glm::vec2 Chain::tangent_at(float s) const {
   return len > 0.0f ? d / len : glm::vec2(1.0f, 0.0f);
 }
 
+float Chain::nearest_s(glm::vec2 p) const {
+  float best = 1e30f, best_s = 0.0f;
+  for (size_t k = 0; k + 1 < points.size(); ++k) {
+    const glm::vec2 a = points[k], d = points[k + 1] - a;
+    const float len2 = glm::dot(d, d);
+    const float t = len2 > 0.0f ? std::clamp(glm::dot(p - a, d) / len2, 0.0f, 1.0f) : 0.0f;
+    const float dist = glm::length(a + t * d - p);
+    if (dist < best) best = dist, best_s = start_s[k] + t * (start_s[k + 1] - start_s[k]);
+  }
+  return best_s;
+}
+
 glm::vec2 BodyRig::bone_end(int b) const {
   return rest[static_cast<size_t>(b)].apply({creature->skeleton.length(b), 0.0f});
 }

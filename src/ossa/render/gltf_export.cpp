@@ -137,6 +137,18 @@ ExportMesh rigid_quads(const Creature& creature, const std::vector<Mat2x3>& mode
 // weights. A mid-joint frame, which a glTF skin cannot compute, is folded into its two bones
 // by its turn (a frame turned t of the way: 1 - t to the parent, t to the child); at rest
 // every palette entry is the identity, so the rest pose is exact whatever the weights.
+// Adds `w` of `bone` to a vertex's weights (merging a bone already there).
+void add_weight(ExportMesh::Vertex& v, int& used, int bone, float w) {
+  if (!(w > 0.0f)) return;
+  for (int k = 0; k < used; ++k) {
+    if (v.weights[static_cast<size_t>(k)].first == bone) {
+      v.weights[static_cast<size_t>(k)].second += w;
+      return;
+    }
+  }
+  if (used < 4) v.weights[static_cast<size_t>(used++)] = {bone, w};
+}
+
 Result<ExportMesh> smooth_sprites(const Creature& creature, const SpriteSet& sprites) {
   Result<SpriteMesh> built = try_build_sprite_mesh(creature, sprites);
   if (!built.ok()) return built.error();
@@ -152,16 +164,7 @@ Result<ExportMesh> smooth_sprites(const Creature& creature, const SpriteSet& spr
     v.z = depth(s, sv.bones[0]);
     v.uv = sv.uv;  // t up in both (sprite_mesh.h SpriteInfo::uv_min, Assimp)
     int used = 0;
-    const auto add = [&](int bone, float w) {
-      if (!(w > 0.0f)) return;
-      for (int k = 0; k < used; ++k) {
-        if (v.weights[static_cast<size_t>(k)].first == bone) {
-          v.weights[static_cast<size_t>(k)].second += w;
-          return;
-        }
-      }
-      if (used < 4) v.weights[static_cast<size_t>(used++)] = {bone, w};
-    };
+    const auto add = [&](int bone, float w) { add_weight(v, used, bone, w); };
     for (size_t k = 0; k < 4; ++k) {
       const int b = sv.bones[k];
       if (b < n) {
@@ -181,17 +184,6 @@ Result<ExportMesh> smooth_sprites(const Creature& creature, const SpriteSet& spr
   return out;
 }
 
-// Adds `w` of `bone` to a vertex's weights (merging a bone already there).
-void add_weight(ExportMesh::Vertex& v, int& used, int bone, float w) {
-  if (!(w > 0.0f)) return;
-  for (int k = 0; k < used; ++k) {
-    if (v.weights[static_cast<size_t>(k)].first == bone) {
-      v.weights[static_cast<size_t>(k)].second += w;
-      return;
-    }
-  }
-  if (used < 4) v.weights[static_cast<size_t>(used++)] = {bone, w};
-}
 
 float linear(float srgb) { return srgb <= 0.04045f ? srgb / 12.92f : std::pow((srgb + 0.055f) / 1.055f, 2.4f); }
 
