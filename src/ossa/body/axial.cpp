@@ -25,6 +25,9 @@ namespace ossa::body {
 
 namespace {
 
+// At most this many cross-sections along the head-to-tail chain (the examples use 40 to 90).
+constexpr int kMaxSectionsOfChain = 400;
+
 float smooth01(float e0, float e1, float x) {
   const float t = std::clamp((x - e0) / (e1 - e0), 0.0f, 1.0f);
   return t * t * (3.0f - 2.0f * t);
@@ -200,11 +203,15 @@ void plan_axial(const BodyRig& rig, BodyParts& plan) {
   // (Section::cut_to_top: all of what the ground cuts off its belly goes onto its back.)
   const auto legless_profile = [&](float s) { return profile(s); };
 
-  // Section positions: dense at the snout, about B/20 apart elsewhere.
+  // Section positions: dense at the snout, about B/20 apart elsewhere, and never more than
+  // kMaxSectionsOfChain along the whole chain (a genome with a back far shorter than its neck
+  // or tail asked for millions).
   std::vector<float> at;
   const int head_n = rig.snout_s > 0.0f ? 12 : 0;
   for (int i = 0; i < head_n; ++i) at.push_back(rig.snout_s * std::pow(static_cast<float>(i) / head_n, 1.3f));
+  const float min_step = L / static_cast<float>(kMaxSectionsOfChain);
   const auto fill = [&](float from, float to, float step) {
+    step = std::max(step, min_step);
     const int n = std::max(1, static_cast<int>(std::ceil((to - from) / step)));
     for (int i = 0; i < n; ++i) at.push_back(from + (to - from) * static_cast<float>(i) / n);
   };
