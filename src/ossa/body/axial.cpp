@@ -28,11 +28,6 @@ namespace {
 // At most this many cross-sections along the head-to-tail chain (the examples use 40 to 90).
 constexpr int kMaxSectionsOfChain = 400;
 
-float smooth01(float e0, float e1, float x) {
-  const float t = std::clamp((x - e0) / (e1 - e0), 0.0f, 1.0f);
-  return t * t * (3.0f - 2.0f * t);
-}
-
 struct Profile {
   float top_fixed, top_soft, bottom_fixed, bottom_soft;
 };

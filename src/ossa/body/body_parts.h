@@ -50,6 +50,14 @@ struct Chain {
   float nearest_s(glm::vec2 p) const;   // arc length of the chain point nearest p
 };
 
+// Smoothstep of x from e0 (0) to e1 (1); a step at e0 when the edges meet (a trunk with no
+// flank, a body with no tail: 0 / 0 gave NaN sections).
+inline float smooth01(float e0, float e1, float x) {
+  if (!(e1 > e0)) return x >= e0 ? 1.0f : 0.0f;
+  const float t = std::clamp((x - e0) / (e1 - e0), 0.0f, 1.0f);
+  return t * t * (3.0f - 2.0f * t);
+}
+
 // A joint where smooth skinning blends two palette sequences (parent … mid frames … child).
 struct JointBlend {
   float s = 0.0f;            // arc length of the joint on its chain

@@ -153,11 +153,6 @@ void crease(const LimbChain& lc, std::vector<Section>& sections) {
   }
 }
 
-float smooth01(float e0, float e1, float x) {
-  const float t = std::clamp((x - e0) / (e1 - e0), 0.0f, 1.0f);
-  return t * t * (3.0f - 2.0f * t);
-}
-
 glm::vec4 hoof_colour() { return {0.16f, 0.13f, 0.11f, 1.0f}; }
 glm::vec4 claw_colour() { return {0.25f, 0.21f, 0.17f, 1.0f}; }
 glm::vec4 scale_colour() { return {0.72f, 0.6f, 0.36f, 1.0f}; }
