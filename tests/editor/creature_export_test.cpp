@@ -26,18 +26,14 @@
 #include "ossa/io/file.h"
 #include "ossa/platform/window.h"
 #include "shared/scenes.h"
+#include "shared/scratch_files.h"
 
 namespace ossa {
 namespace {
 
 namespace fs = std::filesystem;
 
-fs::path fresh_dir(const std::string& name) {
-  const fs::path dir = fs::temp_directory_path() / name;
-  fs::remove_all(dir);
-  fs::create_directories(dir);
-  return dir;
-}
+using test::fresh_dir;
 
 // The panel draws with whatever GL context is current (the game's); tests make one with SDL's
 // offscreen driver unless another test of this process already did.

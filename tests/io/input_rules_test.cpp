@@ -13,27 +13,13 @@
 #include <chrono>
 #include <filesystem>
 
+#include "shared/scratch_files.h"
+
 using namespace ossa;
+using namespace ossa::test;
 namespace fs = std::filesystem;
 
 namespace {
-
-fs::path fresh_dir(const char* name) {
-  const fs::path dir = fs::temp_directory_path() / name;
-  fs::remove_all(dir);
-  fs::create_directories(dir);
-  return dir;
-}
-
-std::string png_header(uint32_t w, uint32_t h) {
-  std::string b("\x89PNG\r\n\x1a\n", 8);
-  b += std::string("\0\0\0\x0dIHDR", 8);
-  for (uint32_t v : {w, h}) {
-    for (int s = 24; s >= 0; s -= 8) b.push_back(static_cast<char>((v >> s) & 0xFF));
-  }
-  b += std::string("\x01\x00\x00\x00\x00", 5);  // 1-bit greyscale: a 55 KB file can declare 16384²
-  return b;
-}
 
 }  // namespace
 

@@ -16,17 +16,13 @@
 #include <cmath>
 #include <filesystem>
 
+#include "shared/scratch_files.h"
+
 using namespace ossa;
+using namespace ossa::test;
 namespace fs = std::filesystem;
 
 namespace {
-
-fs::path fresh_dir(const char* name) {
-  const fs::path dir = fs::temp_directory_path() / name;
-  fs::remove_all(dir);
-  fs::create_directories(dir);
-  return dir;
-}
 
 // A float within `spread` metres inside the ±1000 m bound, rounded nowhere in particular.
 float near_edge(Rng& rng, float spread, bool high) {

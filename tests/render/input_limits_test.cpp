@@ -19,27 +19,13 @@
 #include "ossa/render/capture.h"
 #include "ossa/render/rigged_mesh.h"
 
+#include "shared/scratch_files.h"
+
 using namespace ossa;
 using namespace ossa::test;
 namespace fs = std::filesystem;
 
 namespace {
-
-fs::path fresh_dir(const char* name) {
-  const fs::path dir = fs::temp_directory_path() / name;
-  fs::remove_all(dir);
-  fs::create_directories(dir);
-  return dir;
-}
-
-// A PNG's signature and header chunk: all a decoder needs to start allocating.
-std::string png_header(uint32_t w, uint32_t h) {
-  std::string b("\x89PNG\r\n\x1a\n\0\0\0\x0dIHDR", 16);
-  for (uint32_t v : {w, h}) {
-    for (int s = 24; s >= 0; s -= 8) b.push_back(static_cast<char>((v >> s) & 0xFF));
-  }
-  return b + std::string("\x01\x00\x00\x00\x00\x00\x00\x00\x00", 9);
-}
 
 std::string tiny_gltf() { return read_file(scenes::source_path("tests/fuzz/seeds/mesh/tiny_skin.gltf")).value(); }
 
