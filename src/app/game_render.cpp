@@ -364,9 +364,10 @@ void Game::Impl::render(Game& game, float alpha) {
     info.gait = gait_name(an.gait());
     info.locomotion = locomotion_name(an.locomotion());
     const anim::GaitBands bands = an.gait_bands();
-    info.trot_speed = bands.trot;
-    info.gallop_speed = bands.gallop;
-    info.biped_run_speed = bands.run;
+    info.family = gait_family_name(bands.family);
+    for (int k = 0; k < 3; ++k) info.gaits[k] = gait_name(bands.gaits[k]);
+    info.mid_speed = bands.mid;
+    info.fast_speed = bands.fast;
     info.froude = an.froude();
     info.tick_hz = world.tick_hz();
     info.input = input_name;

@@ -96,7 +96,7 @@ TEST_CASE("secondary motion: arms swing counter to their own side's leg, fins be
   anim::FootSet feet;
   feet.feet.resize(rig->legs.size());
   for (size_t i = 0; i < rig->legs.size(); ++i) feet.foot_of_leg.push_back(static_cast<int>(i));
-  anim::reset_offsets(*rig, feet, gait);
+  anim::reset_offsets(*rig, rig->gait_family, feet, gait);
   const RigLimb& arm = rig->arms.front();
   auto swing = [&](float phase, float motion) {
     gait.phase = phase;

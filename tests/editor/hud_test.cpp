@@ -22,8 +22,10 @@ HudInfo horse_trotting() {
   info.speed = -3.0f;  // m/s, to the left
   info.walk_speed = 1.99f;
   info.run_speed = 4.45f;
-  info.trot_speed = 1.99f;
-  info.gallop_speed = 4.17f;
+  info.family = "cursorial";
+  info.gaits = {"walk", "trot", "gallop"};
+  info.mid_speed = 1.99f;
+  info.fast_speed = 4.17f;
   info.gait = "trot";
   info.locomotion = "grounded";
   info.froude = 0.83f;
@@ -37,7 +39,7 @@ TEST_CASE("the player HUD shows the name, the speed in km/h and the gait, develo
   const HudInfo info = horse_trotting();
   const auto player = hud_lines(info, HudMode::kPlayer, 60.0f);
   REQUIRE(player.size() >= 2);
-  CHECK(player[0] == "horse");
+  CHECK(player[0] == "horse (cursorial)");
   CHECK(player[1] == "10.8 km/h  trot");
   CHECK_FALSE(has(player, "Froude"));
   CHECK_FALSE(has(player, "bands"));
@@ -49,7 +51,7 @@ TEST_CASE("the player HUD shows the name, the speed in km/h and the gait, develo
   CHECK(hud_lines(air, HudMode::kPlayer, 60.0f)[1] == "10.8 km/h  trot (airborne)");
 
   const auto dev = hud_lines(info, HudMode::kDeveloper, 60.0f);
-  CHECK(dev[0] == "horse");
+  CHECK(dev[0] == "horse (cursorial)");
   CHECK(has(dev, "Froude    0.83"));
   CHECK(has(dev, "walk < 1.99 < trot < 4.17 < gallop"));
   CHECK(has(dev, "FPS"));

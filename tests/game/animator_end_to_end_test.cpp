@@ -175,7 +175,7 @@ TEST_CASE("walkers stopped on the steep flight turn round and walk back down it"
 TEST_CASE("a trotting quadruped goes down the default level's stairs without stalling", "[game][anim]") {
   const Level level = shipped("default.json");
   Walker w = make_walker(scenes::quadruped(), level, level.spawn_ws + glm::vec2(0.0f, 1.0f));
-  const SimResult r = run_script(*w.player, level, script("walk:0.8:20"), 120);
+  const SimResult r = run_script(*w.player, level, script("walk:0.65:20"), 120);
   REQUIRE(r.segments.size() == 1);
   CHECK(r.segments[0].gait == "trot");
   CHECK(r.x_reached > 50.0f);

@@ -131,7 +131,7 @@ TEST_CASE("a horse at full run (galloping) covers drops.json's gap with a runnin
   SimProbe probe;
   REQUIRE(step_until(player, level, {1.0f, true, false}, 10.0f, probe, [&] { return a.x() > 35.5f; }));
   CHECK(a.gait() == Gait::kGallop);
-  CHECK(a.froude() > a.params().gallop_froude);
+  CHECK(a.froude() > anim::gait_family_traits(a.gait_family(), a.rig()).fast_froude);
   step_until(player, level, {1.0f, true, true}, kDt, probe, [] { return true; });
   // ... and galloping on, it is across: never below the gap's edges, never respawned.
   float lowest = 1e9f;

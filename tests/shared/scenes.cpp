@@ -41,7 +41,14 @@ const Generator& generator() {
 
 namespace ossa::scenes {
 
-Creature biped() { return build_creature(generator().example("kangaroo").value()).value(); }
+Creature biped() {
+  // The kangaroo's skeleton moving as a plain biped (its own family hops: kangaroo()).
+  Genome g = generator().example("kangaroo").value();
+  g.gait_family = GaitFamily::kBiped;
+  return build_creature(g).value();
+}
+
+Creature kangaroo() { return build_creature(generator().example("kangaroo").value()).value(); }
 
 Creature quadruped() { return build_creature(generator().example("horse").value()).value(); }
 

@@ -37,7 +37,8 @@ namespace ossa::scenes {
 // The walkers the animation tests, benchmarks and tools share: a biped (kangaroo), a
 // quadruped (horse) and a creature with three leg pairs (two at the shoulder, one at the hip,
 // built from a multi-limb genome).
-Creature biped();
+Creature biped();     // the kangaroo's skeleton in the biped gait family (legs alternate)
+Creature kangaroo();  // the kangaroo as it is (the hopper family)
 Creature quadruped();
 Creature three_leg_pairs();
 

@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "ossa/anim/anim_math.h"
+#include "ossa/anim/gait_family.h"
 #include "ossa/math/two_bone_ik.h"
 #include "ossa/skeleton/pose.h"
 
@@ -276,6 +277,9 @@ RigRoles rig_roles(const Creature& creature) {
   roles.neck = creature.neck;
   roles.tail = creature.tail;
   roles.flat_contact = creature.contact == ContactMode::kFlat;
+  roles.gait_family = creature.gait_family;
+  roles.weight_kg = creature.weight_kg;
+  roles.skull_variant = creature.skull_variant;
   for (const Limb& limb : creature.limbs) {
     roles.limbs.push_back({limb.kind, limb.girdle_bone, limb.bones, limb.side, limb.bend_sign,
                            2 * static_cast<int>(limb.girdle) + limb.slot});
@@ -350,6 +354,9 @@ std::shared_ptr<const AnimRig> build_anim_rig(const Skeleton& skeleton, const Po
     }
   }
   build_fk_plan(roles, *rig);
+  rig->weight_kg = roles.weight_kg;
+  rig->skull_variant = roles.skull_variant;
+  rig->gait_family = roles.gait_family == GaitFamily::kAuto ? anim::choose_gait_family(*rig) : roles.gait_family;
   return rig;
 }
 

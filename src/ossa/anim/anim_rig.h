@@ -135,6 +135,11 @@ struct AnimRig {
   std::vector<int> tail_between;
   Mat2x3 tail_between_rest;
   float tail_length = 0.0f;         // > 0: the tail is kept out of the level
+  // The body plan's gait (anim/gait_family.h): never kAuto here (the builder resolves it with
+  // choose_gait_family), and what the choice reads besides the bones.
+  GaitFamily gait_family = GaitFamily::kCursorial;
+  float weight_kg = 0.0f;           // 0: unknown
+  int skull_variant = 0;            // 0 mammal, 1 bird, 2 reptile, 3 fish (genome.h)
 };
 
 // Which bones play which part, for build_anim_rig: a generated creature's LimbLayout
@@ -154,6 +159,11 @@ struct RigRoles {
   std::vector<int> back, neck, tail;// spine chains, head end first (tail: base first)
   bool flat_contact = false;        // feet touch with the whole sole (else with the foot's tip)
   std::vector<RigLimbRole> limbs;   // legs, arms, fins and wings in any order
+  // How it moves: a gait family, or kAuto to choose from the body plan (the bones, the weight
+  // and the skull's class; weight 0: unknown).
+  GaitFamily gait_family = GaitFamily::kAuto;
+  float weight_kg = 0.0f;
+  int skull_variant = 0;
 };
 
 // The roles of a generated creature: its spine chains, skull and LimbLayout (legs grouped by

@@ -49,7 +49,7 @@ Animator::Animator(std::shared_ptr<const AnimRig> rig, SplinePrototypes prototyp
   step_.feet.feet.resize(legs);
   step_.feet.foot_of_leg.resize(legs);
   for (size_t i = 0; i < legs; ++i) step_.feet.foot_of_leg[i] = static_cast<int>(i);
-  reset_offsets(*rig_, step_.feet, gait_);
+  reset_offsets(*rig_, anim::gait_family(*rig_, params_), step_.feet, gait_);
   handoff_.resize(legs);
 }
 
@@ -83,7 +83,7 @@ void Animator::reset(glm::vec2 position_ws, const Level& level, int facing) {
   motion_ = {};
   gait_.phase = gait_.frequency = 0.0f;
   gait_.moving = false;
-  gait_.run_factor = gait_.trot_factor = gait_.gallop_factor = 0.0f;
+  gait_.run_factor = gait_.mid_factor = gait_.fast_factor = 0.0f;
   gait_.gait = rig.legs.empty() ? Gait::kCrawl : Gait::kIdle;
   gait_.idle_time = 0.0f;
   pose_.tail = {};
@@ -92,7 +92,7 @@ void Animator::reset(glm::vec2 position_ws, const Level& level, int facing) {
   refresh_ground_profile(level, rig, body_, gait_.stride, ground_);
   const AnimContext ctx = context(level);
   reset_feet(ctx, body_, gait_, position_ws.y, from, depth, falling, step_);
-  reset_offsets(rig, step_.feet, gait_);
+  reset_offsets(rig, anim::gait_family(rig, params_), step_.feet, gait_);
   if (falling) {
     take_off(ctx, body_, {0.0f, 0.0f}, false, step_.feet, loco_);  // counts a fall
     leave_ground(ctx, body_, false, loco_.floor, true, step_);
@@ -164,7 +164,7 @@ void Animator::update(float dt, const AnimatorIntent& intent, const Level& level
     tick_crawl(rig, motion_.speed, motion_.block.blocked, dt, gait_);
     halt_if_blocked(motion_);
   } else {                                                                      //  8 gait clock, step
-    tick_clock(rig, step_.feet, motion_.speed, motion_.block.blocked, dt, ism, gait_, handoff_.leg_phase);
+    tick_clock(rig, anim::gait_family(rig, params_), step_.feet, motion_.speed, motion_.block.blocked, dt, ism, gait_, handoff_.leg_phase);
     step_feet(ctx, spline_prototypes_, body_, gait_, motion_.speed, dt, handoff_, step_);
     update_block(handoff_, body_.facing, motion_);
     halt_if_blocked(motion_);

@@ -134,8 +134,10 @@ class Animator {
   bool blocked() const { return motion_.block.blocked; }
   int steps() const { return step_.steps; }            // touch-downs so far
   float hip_height() const { return rig_->hip_height; } // h of the Froude number, metres
-  // The walk's reference speed (Froude 0.5) and the full run's (Froude 2.5: a gallop for two
-  // or more leg pairs), m/s, and where the gaits change.
+  // The gait family it moves by (params().gait_family, else the rig's: never kAuto).
+  GaitFamily gait_family() const { return anim::gait_family(*rig_, params_); }
+  // The walk's reference speed (Froude 0.5, less for slow families) and the full run's (the
+  // family's top Froude), m/s, and where the family's gaits change.
   float walk_speed() const { return anim::walk_speed(*rig_, params_); }
   float run_speed() const { return anim::run_speed(*rig_, params_); }
   anim::GaitBands gait_bands() const { return anim::gait_bands(*rig_, params_); }

@@ -3,6 +3,8 @@
 // Definition struct with defaults (Box2D style): every field states its unit and range.
 // Names marked [T] are kept from the source thesis.
 
+#include "ossa/gen/gait_family.h"
+
 namespace ossa {
 
 enum class GaitOverride : int { kAuto = -1, kWalk = 0, kTrot = 1, kGallop = 2 };
@@ -23,11 +25,14 @@ struct AnimatorParams {
   // Froude numbers Fr = v²/(g·h) where the walk→run blend starts and ends. [0.05, 3].
   float run_froude_start = 0.35f;
   float run_froude_end = 1.4f;
-  // Froude numbers of the quadruped gait changes walk→trot and trot→gallop [DESIGN.md §7]; the
-  // gait blends over ±15% of the latter, so the full run (Fr 2.5, full stick with run) is a
-  // gallop (Alexander & Jayes: the trot–gallop transition lies near Fr 2–3).
-  float trot_froude = 0.5f;
-  float gallop_froude = 2.2f;
+  // The gait family (anim/gait_family.h): kAuto moves as the creature's rig says (its genome's
+  // choice or the body plan's); another family overrides it.
+  GaitFamily gait_family = GaitFamily::kAuto;
+  // Scales the Froude numbers where the family's gaits change (walk → trot near 0.5, trot →
+  // gallop near 2.5 for a cursorial quadruped: GAITS.md). Range [0.3, 3].
+  float gait_froude_scale = 1.0f;
+  // Walk, the family's middle gait ("trot": its trot, pace, half-bound, run) or its fast gait
+  // ("gallop": gallop, bound, aerial run) at every speed; auto chooses by Froude number.
   GaitOverride gait_override = GaitOverride::kAuto;
 
   // Highest step up and deepest step down a foot may take: the step up as a fraction of the
@@ -70,6 +75,8 @@ struct AnimatorParams {
 
   // Gravity for the Froude number and the airborne path, m/s².
   float gravity = 9.81f;
+
+  bool operator==(const AnimatorParams&) const = default;
 };
 
 }  // namespace ossa

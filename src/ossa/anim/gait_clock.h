@@ -1,8 +1,9 @@
 #pragma once
 // Gait clock (DESIGN.md §7; stage 6 of Animator::update, and stage 8 where the clock ticks):
 // one phase φ ∈ [0, 1) per creature advancing at f = v/λ,
-// the gait blend by Froude number Fr = v²/(g·h), the duty factor β, the stride λ and each
-// leg's phase offset. Needs no level.
+// the gait blend by Froude number Fr = v²/(g·h) between the gait family's walk, middle and
+// fast gaits (gait_family.h), the duty factor β, the stride λ and each leg's phase offset.
+// Needs no level.
 //
 // Inputs: the rig (girdles, legs, reach), AnimatorParams, the speed (m/s) and the per-tick
 // smoothing factors. Output: GaitState. Stride in metres, frequency in cycles per second,
@@ -15,12 +16,9 @@
 #include "ossa/anim/anim_rig.h"
 #include "ossa/anim/anim_state.h"
 #include "ossa/anim/animator_params.h"
+#include "ossa/anim/gait_family.h"
 
 namespace ossa {
-
-enum class Gait : uint8_t { kIdle, kWalk, kRun, kTrot, kGallop, kCrawl };
-const char* gait_name(Gait gait);
-
 namespace anim {
 
 // Owned by the gait clock (stage 6 of Animator::update): the clock's phase and blends, each
@@ -31,9 +29,9 @@ struct GaitState {
   float stride = 0.0f;         // metres per cycle
   float duty = 0.65f;          // fraction of a cycle a foot is on the ground
   float froude = 0.0f;
-  float run_factor = 0.0f;     // walk→run blend in [0, 1]
-  float trot_factor = 0.0f;    // walk→trot blend of the phase offsets
-  float gallop_factor = 0.0f;  // trot→gallop blend
+  float run_factor = 0.0f;     // walk→run blend in [0, 1] (swing shapes, duty factor)
+  float mid_factor = 0.0f;     // walk → the family's middle gait (trot, pace, half-bound …)
+  float fast_factor = 0.0f;    // middle → fast gait (gallop, bound, aerial run …)
   Gait gait = Gait::kIdle;
   bool moving = false;         // the clock runs (legs step)
   // Per foot (FootSet::feet, not per leg: a foot keeps its offset when a turn hands it to
@@ -43,29 +41,37 @@ struct GaitState {
   float idle_time = 0.0f;      // seconds the creature has stood (idle breathing)
   float crawl_phase = 0.0f;    // cycles of a legless creature's travelling wave
 
-  // Caches: the legs' target offsets at (offsets_trot, offsets_gallop), Fr^0.3 at
-  // stride_froude, the shortest stance reach at reach_stance_height.
+  // Caches: the family's traits (for `traits_family`), the legs' target offsets at
+  // (offsets_mid, offsets_fast) of offsets_family, Fr^0.3 at stride_froude, the shortest
+  // stance reach at reach_stance_height.
+  GaitFamilyTraits traits;
+  GaitFamily traits_family = GaitFamily::kAuto;
   std::vector<float> target_offset;
-  float offsets_trot = -1.0f, offsets_gallop = -1.0f;
+  float offsets_mid = -1.0f, offsets_fast = -1.0f;
+  GaitFamily offsets_family = GaitFamily::kAuto;
   float stride_froude = -1.0f, stride_pow = 0.0f;
   float reach_stance_height = NAN, min_reach_x = 0.0f;
 };
+
+// The gait family the animator uses: params.gait_family, or the rig's when that is kAuto.
+inline GaitFamily gait_family(const AnimRig& rig, const AnimatorParams& params) {
+  return params.gait_family == GaitFamily::kAuto ? rig.gait_family : params.gait_family;
+}
 
 // Froude, walk→run and gait blends, duty factor, stride, frequency and gait name for `speed`.
 // keep_run and keep_gait are the smoothing factors exp(-rate·dt) of the run and gait blends.
 void update_gait(const AnimRig& rig, const AnimatorParams& params, float speed, float keep_run, float keep_gait,
                  GaitState& gait);
 
-// Leg `leg`'s phase offset for the gait blend: bipeds alternate; two pairs blend the
-// lateral-sequence walk, the trot (diagonal pairs) and the transverse gallop; more pairs
-// make a metachronal wave.
-float leg_phase_offset(const AnimRig& rig, int leg, float trot_factor, float gallop_factor);
+// Leg `leg`'s phase offset for the gait blend of `family` (mid and fast factors): minus the
+// time its foot lands (footfall_time), so that a foot whose offset is larger lands earlier.
+float leg_phase_offset(const AnimRig& rig, GaitFamily family, int leg, float mid_factor, float fast_factor);
 
 // gait.target_offset of every leg, when the gait blend moved.
-void update_target_offsets(const AnimRig& rig, GaitState& gait);
+void update_target_offsets(const AnimRig& rig, GaitFamily family, GaitState& gait);
 
 // Every foot's offset at the start of the blend given (a reset: feet in leg order).
-void reset_offsets(const AnimRig& rig, const FootSet& feet, GaitState& gait);
+void reset_offsets(const AnimRig& rig, GaitFamily family, const FootSet& feet, GaitState& gait);
 
 // Starts the clock so that leg `lead`'s foot lifts now (its first step is half a stride).
 void start_clock(GaitState& gait, const FootSet& feet, int lead);
@@ -82,7 +88,7 @@ void tick_crawl(const AnimRig& rig, float speed, bool blocked, float dt, GaitSta
 // Stage 8: the clock ticks. While the creature moves (speed > 0, m/s) and is not blocked: the
 // clock starts if it stood (the lead leg lifts now; GaitState::moving), the phase advances by
 // f·dt, and every foot's phase and lift-off go to leg_phase (per leg). Else it rests.
-void tick_clock(const AnimRig& rig, const FootSet& feet, float speed, bool blocked, float dt, float ism, GaitState& gait,
+void tick_clock(const AnimRig& rig, GaitFamily family, const FootSet& feet, float speed, bool blocked, float dt, float ism, GaitState& gait,
                 std::vector<LegPhase>& leg_phase);
 
 // Advances foot `foot`'s phase by one tick of the running clock: its offset eases towards its
@@ -106,19 +112,20 @@ inline LegPhase advance_leg_phase(GaitState& gait, int foot, bool stance, float 
 }
 inline void end_leg_phase(GaitState& gait, int foot, const LegPhase& p) { gait.foot_phase_prev[foot] = p.phase; }
 
-// Walk and run reference speeds, m/s: the walk at Froude 0.5, the full run at 2.5 (for two or
-// more leg pairs inside the gallop band, params.gallop_froude).
+// Walk and run reference speeds, m/s: the walk at Froude 0.5 (or 0.4 of the family's top
+// Froude where that is less: a tortoise), the full run at the family's top Froude.
 float walk_speed(const AnimRig& rig, const AnimatorParams& params);
 float run_speed(const AnimRig& rig, const AnimatorParams& params);
 
-// Where the gaits change, m/s: walk → trot and trot → gallop for two or more leg pairs (the
-// middles of their blends; 0 for bipeds and the legless), walk → run for bipeds (the middle
-// of the walk→run blend), and the full run. For the HUD and the tuning window.
+// Where the family's gaits change, m/s (the middles of their blends; 0 where the family has
+// no such change or it lies beyond the full run), their names, and the full run. For the HUD
+// and the tuning window.
 struct GaitBands {
-  float trot = 0.0f;
-  float gallop = 0.0f;
-  float run = 0.0f;       // walk → run (bipeds); 0 for two or more leg pairs
+  float mid = 0.0f;       // walk → middle gait
+  float fast = 0.0f;      // middle → fast gait
   float full_run = 0.0f;  // run_speed()
+  GaitFamily family = GaitFamily::kCursorial;
+  std::array<Gait, 3> gaits{};
 };
 GaitBands gait_bands(const AnimRig& rig, const AnimatorParams& params);
 

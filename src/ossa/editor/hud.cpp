@@ -55,7 +55,7 @@ std::vector<std::string> hud_lines(const HudInfo& info, HudMode mode, float fps)
   if (mode == HudMode::kOff) return lines;
   if (mode == HudMode::kPlayer) {
     const bool grounded = info.locomotion.empty() || info.locomotion == "grounded";
-    lines.push_back(info.creature);
+    lines.push_back(info.family.empty() ? info.creature : info.creature + " (" + info.family + ")");
     lines.push_back(format("%.1f km/h  %s%s", std::abs(info.speed) * 3.6f, info.gait.c_str(),
                            grounded ? "" : (" (" + info.locomotion + ")").c_str()));
     if (info.recording) lines.push_back("REC replay");
@@ -64,14 +64,15 @@ std::vector<std::string> hud_lines(const HudInfo& info, HudMode mode, float fps)
     lines.push_back("H: more, F2: editors");
     return lines;
   }
-  lines.push_back(info.creature);
+  lines.push_back(info.family.empty() ? info.creature : info.creature + " (" + info.family + ")");
   lines.push_back(format("speed   %6.2f m/s  %.1f km/h  (walk %.2f, run %.2f)", info.speed, std::abs(info.speed) * 3.6f,
                          info.walk_speed, info.run_speed));
   lines.push_back(format("gait    %s  (%s)", info.gait.c_str(), info.locomotion.c_str()));
-  if (info.gallop_speed > 0.0f) {
-    lines.push_back(format("bands   walk < %.2f < trot < %.2f < gallop", info.trot_speed, info.gallop_speed));
-  } else if (info.biped_run_speed > 0.0f) {
-    lines.push_back(format("bands   walk < %.2f < run", info.biped_run_speed));
+  if (info.mid_speed > 0.0f || info.fast_speed > 0.0f) {
+    std::string bands = "bands   " + info.gaits[0];
+    if (info.mid_speed > 0.0f) bands += format(" < %.2f < ", info.mid_speed) + info.gaits[1];
+    if (info.fast_speed > 0.0f) bands += format(" < %.2f < ", info.fast_speed) + info.gaits[2];
+    lines.push_back(bands);
   }
   lines.push_back(format("Froude  %6.2f", info.froude));
   lines.push_back(format("FPS     %6.1f  (%.2f ms)  sim %d Hz", fps, fps > 0.0f ? 1000.0f / fps : 0.0f, info.tick_hz));

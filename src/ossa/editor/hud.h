@@ -17,9 +17,12 @@ struct HudInfo {
   float speed = 0.0f;          // m/s, signed (+ right)
   float walk_speed = 0.0f;     // m/s at Froude 0.5, for reference
   float run_speed = 0.0f;      // m/s of the full run (Animator::run_speed())
-  // Where the gaits change, m/s (Animator::gait_bands()): walk → trot → gallop for two or
-  // more leg pairs, walk → run for bipeds; 0 where a creature has no such change.
-  float trot_speed = 0.0f, gallop_speed = 0.0f, biped_run_speed = 0.0f;
+  // The gait family (gait_family_name) and where its gaits change, m/s (Animator::gait_bands()):
+  // its walk, middle and fast gaits' names and the speeds from walk to the middle gait and on
+  // to the fast one (0 where it has no such change).
+  std::string family;
+  std::array<std::string, 3> gaits;
+  float mid_speed = 0.0f, fast_speed = 0.0f;
   std::string gait;            // gait_name(animator.gait())
   std::string locomotion;      // locomotion_name(animator.locomotion()): grounded, airborne...
   float froude = 0.0f;         // v² / (g·h)

@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <cstring>
 
 #include "ossa/io/file.h"
 
@@ -13,7 +12,7 @@ std::span<const TuningField> tuning_fields() {
   using P = AnimatorParams;
   // Ranges as documented in animator_params.h; the tail and crawl fields have none there,
   // so these are wide bounds around the defaults.
-  static const std::array<TuningField, 26> kFields = {{
+  static const std::array<TuningField, 25> kFields = {{
       {"step_distance_multiplier", "x stride", 0.3f, 2.0f, &P::step_distance_multiplier, "[T] scales the stride λ = 2.3·h·Fr^0.3"},
       {"interpolation_speed_multiplier", "x", 0.1f, 5.0f, &P::interpolation_speed_multiplier, "[T] how fast lean, height and gait blend ease"},
       {"max_spine_rotation", "rad", 0.0f, 0.6f, &P::max_spine_rotation, "[T] largest forward lean at full run"},
@@ -21,8 +20,7 @@ std::span<const TuningField> tuning_fields() {
       {"duty_run", "of cycle", 0.2f, 0.6f, &P::duty_run, "same at a full run; < 0.5 gives a flight phase"},
       {"run_froude_start", "Fr", 0.05f, 3.0f, &P::run_froude_start, "Froude number where walk→run starts"},
       {"run_froude_end", "Fr", 0.05f, 3.0f, &P::run_froude_end, "Froude number where the blend reaches run"},
-      {"trot_froude", "Fr", 0.05f, 3.0f, &P::trot_froude, "quadrupeds: walk→trot"},
-      {"gallop_froude", "Fr", 0.05f, 5.0f, &P::gallop_froude, "quadrupeds: trot→gallop (the full run is at Fr 2.5)"},
+      {"gait_froude_scale", "x Fr", 0.3f, 3.0f, &P::gait_froude_scale, "scales the Froude numbers where the family's gaits change"},
       {"max_step_up", "x height", 0.05f, 1.0f, &P::max_step_up, "highest step up, of the shortest girdle's standing height (or 0.8 of a crouching leg's reach)"},
       {"max_step_down", "x height", 0.05f, 1.0f, &P::max_step_down, "deepest step down, of the standing height"},
       {"stance_height", "x rest", 0.7f, 1.05f, &P::stance_height, "girdle height, of its rest height"},
@@ -74,6 +72,14 @@ void TuningModel::set_gait_override(GaitOverride gait) {
   if (!editing_) push(before, "gait override");
 }
 
+void TuningModel::set_gait_family(GaitFamily family) {
+  if (params_.gait_family == family) return;
+  const AnimatorParams before = params_;
+  params_.gait_family = family;
+  if (on_change_) on_change_(params_);
+  if (!editing_) push(before, "gait family");
+}
+
 void TuningModel::reset() {
   const AnimatorParams before = params_;
   params_ = AnimatorParams{};
@@ -91,7 +97,7 @@ void TuningModel::begin_edit(const std::string& label) {
 void TuningModel::end_edit() {
   if (!editing_) return;
   editing_ = false;
-  if (std::memcmp(&edit_before_, &params_, sizeof params_) == 0) return;
+  if (edit_before_ == params_) return;
   const AnimatorParams before = edit_before_;
   const AnimatorParams after = params_;
   const std::string label = edit_label_;
@@ -131,6 +137,7 @@ Json params_to_json(const AnimatorParams& p) {
   doc["format"] = "ossa.tuning";
   doc["version"] = 1;
   doc["gait_override"] = kGaitNames[static_cast<int>(p.gait_override) + 1];
+  doc["gait_family"] = gait_family_name(p.gait_family);
   Json fields = Json::object();
   for (const TuningField& f : tuning_fields()) fields[f.name] = p.*(f.member);
   doc["params"] = fields;
@@ -153,6 +160,12 @@ Result<AnimatorParams> params_from_json(const Json& doc, std::string_view file) 
     }
   }
   if (!known) return Error::at(file, "gait_override", "expected auto, walk, trot or gallop, got \"" + gait + "\"");
+  const std::string family = r.string_or(doc, "", "gait_family", "auto");
+  if (r.failed()) return r.error();
+  if (!parse_gait_family(family, &p.gait_family)) {
+    return Error::at(file, "gait_family", "expected auto, cursorial, pacer, graviportal, bounder, hopper, sprawler, biped, bird, "
+                                          "multi_leg or legless, got \"" + family + "\"");
+  }
   if (r.has(doc, "params")) {
     const Json* fields = r.object(doc, "", "params");
     if (!fields) return r.error();

@@ -50,6 +50,8 @@ class TuningModel {
   // Sets field `field` (index into tuning_fields()), clamped to its range.
   void set_value(int field, float value);
   void set_gait_override(GaitOverride gait);
+  // The gait family the player moves by (kAuto: its creature's own), with undo.
+  void set_gait_family(GaitFamily family);
   // Back to AnimatorParams{} (one step).
   void reset();
   void begin_edit(const std::string& label);

@@ -64,16 +64,32 @@ void EditorSuite::draw_tuning_window() {
   const Player* player = world_->player();
   if (player) {
     const Animator& a = player->animator();
-    ImGui::Text("%s  v %.2f m/s  Fr %.2f  duty %.2f  run %.2f", gait_name(a.gait()), a.velocity(),
-                a.froude(), a.duty_factor(), a.run_factor());
+    ImGui::Text("%s (%s)  v %.2f m/s  Fr %.2f  duty %.2f  run %.2f", gait_name(a.gait()), gait_family_name(a.gait_family()),
+                a.velocity(), a.froude(), a.duty_factor(), a.run_factor());
   }
   ImGui::TextDisabled("footfalls, last %.0f s (bars = stance)", m.history_seconds);
   draw_footfalls(m, ImGui::GetContentRegionAvail().x);
 
-  static const char* kGaits[] = {"auto", "walk", "trot", "gallop"};
-  int gait = static_cast<int>(m.params().gait_override) + 1;
+  // The family (auto: the creature's own) and which of its gaits: walk, the middle gait, the
+  // fast gait, named by the family the player moves by.
+  int family = static_cast<int>(m.params().gait_family);
   ImGui::SetNextItemWidth(120);
-  if (ImGui::Combo("gait override", &gait, kGaits, 4)) m.set_gait_override(static_cast<GaitOverride>(gait - 1));
+  if (ImGui::Combo("gait family", &family, [](void*, int i, const char** out) {
+        *out = gait_family_name(static_cast<GaitFamily>(i));
+        return true;
+      }, nullptr, kGaitFamilyCount)) {
+    m.set_gait_family(static_cast<GaitFamily>(family));
+  }
+  std::array<std::string, 4> gait_labels{"auto", "walk", "middle gait", "fast gait"};
+  if (player) {
+    const anim::GaitBands bands = player->animator().gait_bands();
+    for (int k = 0; k < 3; ++k) gait_labels[k + 1] = gait_name(bands.gaits[k]);
+  }
+  const char* gaits[] = {gait_labels[0].c_str(), gait_labels[1].c_str(), gait_labels[2].c_str(), gait_labels[3].c_str()};
+  int gait = static_cast<int>(m.params().gait_override) + 1;
+  ImGui::SameLine();
+  ImGui::SetNextItemWidth(120);
+  if (ImGui::Combo("gait override", &gait, gaits, 4)) m.set_gait_override(static_cast<GaitOverride>(gait - 1));
   ImGui::SameLine();
   if (ImGui::Button("Defaults")) m.reset();
 

@@ -13,6 +13,7 @@
 
 #include <glm/vec2.hpp>
 
+#include "ossa/gen/gait_family.h"
 #include "ossa/gen/look.h"
 #include "ossa/skeleton/pose.h"
 #include "ossa/skeleton/skeleton.h"
@@ -55,6 +56,7 @@ struct Creature {
   float ground_y_ms = 0.0f;     // always 0 by construction; kept explicit for clarity
   std::string name;             // example name, or "random-<seed>"
   bool smooth_skinning = true;  // GenomeOptions::smooth_skinning: sprites blend across joints
+  GaitFamily gait_family = GaitFamily::kAuto;  // the genome's choice (kAuto: from the body plan)
 
   // The body (body/body_mesh.h): the genome's look and appendages, its weight, and the body
   // mass the weight asks for at this creature's size (gen/true_size.h:

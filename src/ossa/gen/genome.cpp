@@ -104,6 +104,7 @@ Json genome_to_json(const Genome& g) {
                 {"multi_limb", g.options.multi_limb},
                 {"true_size", g.options.true_size},
                 {"smooth_skinning", g.options.smooth_skinning}}},
+              {"gait_family", gait_family_name(g.gait_family)},
               {"look", look_to_json(g.look)},
               {"appendages", appendages_to_json(g.appendages)}};
 }
@@ -185,6 +186,12 @@ Result<Genome> genome_from_json(const Json& doc, std::string_view file) {
       g.options.true_size = r.boolean_or(*o, "options", "true_size", false);
       g.options.smooth_skinning = r.boolean_or(*o, "options", "smooth_skinning", true);
     }
+  }
+  const std::string family = r.string_or(doc, "", "gait_family", "auto");
+  if (!r.failed() && !parse_gait_family(family, &g.gait_family)) {
+    std::string names;
+    for (int i = 0; i < kGaitFamilyCount; ++i) names += std::string(i ? ", " : "") + gait_family_name(static_cast<GaitFamily>(i));
+    r.fail("gait_family", "expected one of " + names + ", got \"" + family + "\"");
   }
   // Version 2: the body's look and appendages. A version 1 file wears a look drawn from its
   // seed and no appendages (it was written before bodies existed).

@@ -12,8 +12,12 @@
 //     "contact": "tip", "skull": 0, "scale": 0.0021,
 //     "options": { "arc_length_vertebrae": true, "neck_girdle": false, "multi_limb": false,
 //                  "true_size": false, "smooth_skinning": true },
+//     "gait_family": "auto",
 //     "look": { "base": "#8a5a3c", "belly": "#d8c3a0", "pattern": "none", ... },
 //     "appendages": [ { "kind": "ears", "size": 1 }, { "kind": "mane", "size": 1 } ] }
+//
+// `gait_family` (gen/gait_family.h) is how the creature moves: "auto" (chosen from the body
+// plan when the animator's rig is built) or a family's name. Files without it get "auto".
 //
 // Version 2 added `look` and `appendages` (gen/look.h: the body's coat, fatness, wing cover and
 // optional parts; they change no bone). Version 1 files still load: their look is drawn from
@@ -75,6 +79,7 @@ struct Genome {
   SkullShape skull_shape;                    // its proportions (default: the variant's)
   float scale = 0.002f;                      // metres per frame unit
   GenomeOptions options;
+  GaitFamily gait_family = GaitFamily::kAuto;  // how it moves; kAuto: from the body plan
   Look look;                                 // the body's coat, fatness, wing cover (gen/look.h)
   std::vector<Appendage> appendages;         // ears, horns, mane … (at most one of each kind)
 };

@@ -33,6 +33,7 @@ class Assembler {
     c_.contact = g.contact;
     c_.skull_variant = g.skull_variant;
     c_.smooth_skinning = g.options.smooth_skinning;
+    c_.gait_family = g.gait_family;
     c_.skull_snout = g.skull_shape.snout;
     c_.look = g.look;
     c_.appendages = g.appendages;
