@@ -441,6 +441,7 @@ int main(int argc, char** argv) {
                       {"hind_pair_phase", m.measured.hind_pair_phase}, {"fore_pair_phase", m.measured.fore_pair_phase},
                       {"measured_duty_factor", m.measured.duty_factor}, {"strides", m.measured.strides},
                       {"suspensions_per_stride", m.measured.suspensions_per_stride},
+                      {"suspension_fraction", m.measured.suspension_fraction},
                       {"vertical_excursion", m.measured.vertical_excursion}, {"bobs_per_stride", m.measured.bobs_per_stride}});
     }
     out["segments"] = segs;

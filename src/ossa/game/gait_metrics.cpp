@@ -117,8 +117,6 @@ GaitMeasure measure_gait(const std::vector<GaitSample>& samples, const std::vect
       if (h >= 0 && f >= 0) add_phases(down[h], down[f], limb);
     }
     m.limb_phase = limb.mean();
-    if (m.limb_phase > 0.0f && m.limb_phase < 0.5f) m.footfall_sequence = "lateral";
-    if (m.limb_phase > 0.5f && m.limb_phase < 1.0f) m.footfall_sequence = "diagonal";
   }
   auto pair_phase = [&](int girdle) {
     const int near = leg_at(girdle, Side::kNear), far = leg_at(girdle, Side::kFar);
@@ -128,6 +126,13 @@ GaitMeasure measure_gait(const std::vector<GaitSample>& samples, const std::vect
   };
   m.hind_pair_phase = pair_phase(hind);
   if (girdles >= 2) m.fore_pair_phase = pair_phase(0);
+  // The sequence of a symmetric gait (NaN compares false throughout).
+  const bool symmetric = std::fabs(m.hind_pair_phase - 0.5f) <= GaitMeasure::kSymmetricPairTolerance &&
+                         std::fabs(m.fore_pair_phase - 0.5f) <= GaitMeasure::kSymmetricPairTolerance;
+  const float couplet = std::fmin(pair_phase_gap(m.limb_phase), std::fabs(m.limb_phase - 0.5f));
+  if (symmetric && couplet > GaitMeasure::kCoupletTolerance) {
+    m.footfall_sequence = m.limb_phase < 0.5f ? "lateral" : "diagonal";
+  }
 
   // Duty factor per leg over its whole cycles.
   double duty = 0.0;
@@ -144,13 +149,15 @@ GaitMeasure measure_gait(const std::vector<GaitSample>& samples, const std::vect
 
   // Suspensions: runs of ticks with every foot up that begin within the strides.
   const uint64_t mask = leg_count >= kMaxLegs ? ~uint64_t{0} : (uint64_t{1} << leg_count) - 1u;
-  int suspensions = 0;
+  int suspensions = 0, flight_ticks = 0;
   for (int t = t0; t < t1; ++t) {
     const bool flight = (samples[t].stance & mask) == 0;
     const bool flight_before = (samples[t - 1].stance & mask) == 0;  // t0 >= 1
     suspensions += flight && !flight_before ? 1 : 0;
+    flight_ticks += flight ? 1 : 0;
   }
   m.suspensions_per_stride = static_cast<float>(suspensions) / static_cast<float>(strides);
+  m.suspension_fraction = static_cast<float>(flight_ticks) / static_cast<float>(t1 - t0);
 
   // The root's bob per stride, detrended by the line through its touch-down heights.
   std::vector<std::vector<float>> bob(static_cast<size_t>(strides));

@@ -38,10 +38,15 @@ struct GaitSample {
 // What measure_gait finds. NaN (JSON null) where a value does not apply or could not be
 // measured: no leg pair for it, or fewer than one whole stride of the reference leg.
 struct GaitMeasure {
-  // "lateral" (limb_phase in (0, 0.5)) or "diagonal" (in (0.5, 1)) for creatures with exactly
-  // two leg pairs; "" otherwise (bipeds, legless, more pairs, no strides, phase exactly 0 or
-  // 0.5). The label follows Hildebrand's definition for any gait; it names a walk's sequence.
+  // The footfall sequence of a symmetric gait of a creature with exactly two leg pairs:
+  // "lateral" (limb_phase in (0, 0.5)) or "diagonal" (in (0.5, 1)). "" where it does not apply:
+  // bipeds, legless or many-legged creatures, no strides; asymmetric gaits (either pair's feet
+  // not alternating: a pair phase off 0.5 by more than kSymmetricPairTolerance, as in a gallop
+  // or a bound); couplets (limb_phase within kCoupletTolerance of 0 or 0.5: a pace or a trot,
+  // whose sequence is a tick's rounding).
   std::string footfall_sequence;
+  static constexpr float kSymmetricPairTolerance = 0.1f;  // cycles
+  static constexpr float kCoupletTolerance = 0.05f;       // cycles
   // Hildebrand's limb phase, cycles in [0, 1): the circular mean over hind strides and both
   // sides (two leg pairs only).
   float limb_phase = NAN;
@@ -59,6 +64,9 @@ struct GaitMeasure {
   // Distinct intervals with every foot off the ground that begin within the measured strides,
   // per stride (0 for a walk, 1 for a gallop or a hop, 2 for a trot with flight).
   float suspensions_per_stride = NAN;
+  // The share of those strides' time with every foot off the ground, in [0, 1]: tells a real
+  // suspension from a one-tick gap where one foot lifts a tick before another lands.
+  float suspension_fraction = NAN;
   // The root's peak-to-trough height per stride, detrended by the line through its heights at
   // the stride's two touch-downs (so a slope adds nothing), the mean over strides, as a
   // fraction of hip_height.
