@@ -137,7 +137,8 @@ SimResult run_script(Entity& entity, const Level& level, const std::vector<Scrip
     std::map<std::string, int> gaits, families;
     std::vector<GaitLeg> legs;
     for (const RigLeg& leg : entity.animator().rig().legs) legs.push_back({leg.girdle, leg.side});
-    std::vector<GaitSample> timeline;  // the window's ticks since its last turn
+    std::vector<GaitSample> timeline;  // the window's ticks since its last turn, at most gait_ticks
+    const long long gait_ticks = static_cast<long long>(SegmentMetrics::kGaitWindowS) * tick_hz;
     int timeline_facing = 0;
     for (int t = 0; t < ticks; ++t) {
       const auto start = std::chrono::steady_clock::now();
@@ -163,11 +164,13 @@ SimResult run_script(Entity& entity, const Level& level, const std::vector<Scrip
         m.flight_phase |= a.leg_count() > 0 && !any_down;
         if (a.facing() != timeline_facing) timeline.clear();
         timeline_facing = a.facing();
-        GaitSample sample{0, a.root_y()};
-        for (int i = 0; i < std::min(a.leg_count(), 64); ++i) {
-          sample.stance |= a.leg_state(i) == LegState::kStance ? uint64_t{1} << i : uint64_t{0};
+        if (static_cast<long long>(timeline.size()) < gait_ticks) {
+          GaitSample sample{0, a.root_y()};
+          for (int i = 0; i < std::min(a.leg_count(), 64); ++i) {
+            sample.stance |= a.leg_state(i) == LegState::kStance ? uint64_t{1} << i : uint64_t{0};
+          }
+          timeline.push_back(sample);
         }
-        timeline.push_back(sample);
       }
       if (on_tick) on_tick(tick);
       ++tick;

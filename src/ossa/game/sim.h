@@ -2,7 +2,8 @@
 // Headless simulation with the measurements ossa-sim reports and the animation tests check:
 // a script of control segments ("walk:0.5:10,run:1:6,stop:2,walk:-0.5:5") drives one or more
 // creatures over a level; a SimProbe watches every tick for stance slip, penetration of
-// limbs into colliders, swing clearance, non-finite values and the pose hash.
+// limbs into colliders, swing clearance, non-finite values and the pose hash, and each
+// segment's gait is measured from the feet and the trunk (measure_gait, gait_metrics.h).
 
 #include <cmath>
 #include <cstdint>
@@ -78,9 +79,11 @@ struct SegmentMetrics {
   // The gait measured from the feet (LegState::kStance per leg) and the root's height as
   // simulated, not from the animator's intended offsets (measure_gait, gait_metrics.h): footfall
   // sequence, limb phase, pair phases, duty factor, suspensions per stride, vertical excursion
-  // and bobs per stride, over the window after the segment's first second. When the creature
-  // turns in the window, from its last turn on (a turn hands feet between legs).
+  // and bobs per stride, over the window after the segment's first second, its first
+  // kGaitWindowS at most (a day-long segment keeps a bounded timeline). When the creature turns
+  // in the window, from its last turn on (a turn hands feet between legs).
   GaitMeasure measured;
+  static constexpr int kGaitWindowS = 120;  // s
 };
 
 // The gait family of the animator's current gait, for SegmentMetrics::gait_family: "" until the
