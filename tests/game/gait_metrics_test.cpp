@@ -237,3 +237,17 @@ TEST_CASE("run_script measures the horse's gait from its feet on flat ground", "
     CHECK(walk->measured.suspensions_per_stride == 0.0f);
   }
 }
+
+TEST_CASE("run_script measures at most kGaitWindowS of a long segment", "[game][gait]") {
+  const Level flat = scenes::flat_level(400.0f);
+  auto creature = std::make_shared<const Creature>(scenes::quadruped());
+  Player player(creature, SplinePrototypes::defaults());
+  player.animator().reset({2.0f, 1.0f}, flat);
+  const SimResult r = run_script(player, flat, parse_script("walk:0.3:140").value(), 120);
+  REQUIRE(r.segments.size() == 1);
+  const SegmentMetrics& s = r.segments[0];
+  const float window_strides = static_cast<float>(SegmentMetrics::kGaitWindowS) * s.cycle_frequency;
+  CHECK(s.measured.strides <= window_strides + 1.0f);
+  CHECK(s.measured.strides >= window_strides - 2.0f);
+  CHECK(s.measured.suspensions_per_stride == 0.0f);
+}
