@@ -93,8 +93,9 @@
 #include "ossa/rig/rig_guess.h"
 #include "ossa/rig/rig_mapping.h"
 
-// game: Controls, Player, World, Replay, headless simulation
+// game: Controls, Player, World, Replay, headless simulation and its gait measurement
 #include "ossa/game/controls.h"
+#include "ossa/game/gait_metrics.h"
 #include "ossa/game/herd.h"
 #include "ossa/game/player.h"
 #include "ossa/game/replay.h"

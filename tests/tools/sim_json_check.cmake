@@ -1,8 +1,9 @@
 # Runs ossa-sim with --json and checks numbers in its output (a CTest helper: regular
 # expressions cannot compare numbers).
 #   cmake -DSIM=path/to/ossa-sim -DARGS="--example|horse|..." -DCHECKS="x_max_m GREATER x_reached|blocked_s GREATER 1" -P sim_json_check.cmake
-# ARGS and CHECKS are separated by "|". Each check is "LHS OP RHS": LHS and RHS are top-level
-# numeric fields of the JSON or numbers, OP is LESS, GREATER, EQUAL, LESS_EQUAL or GREATER_EQUAL.
+# ARGS and CHECKS are separated by "|". Each check is "LHS OP RHS": LHS and RHS are numeric
+# fields of the JSON (top-level, or a path with dots: segments.0.limb_phase) or numbers, OP is
+# LESS, GREATER, EQUAL, LESS_EQUAL or GREATER_EQUAL. A null field compares false.
 string(REPLACE "|" ";" args "${ARGS}")
 execute_process(COMMAND ${SIM} ${args} --json RESULT_VARIABLE rc OUTPUT_VARIABLE json ERROR_VARIABLE err)
 if(NOT rc EQUAL 0)
@@ -12,7 +13,8 @@ function(value_of token out)
   if(token MATCHES "^-?[0-9.]+([eE][-+]?[0-9]+)?$")
     set(${out} ${token} PARENT_SCOPE)
   else()
-    string(JSON v ERROR_VARIABLE json_error GET "${json}" ${token})
+    string(REPLACE "." ";" path "${token}")
+    string(JSON v ERROR_VARIABLE json_error GET "${json}" ${path})
     if(json_error)
       message(FATAL_ERROR "ossa-sim --json has no field ${token}: ${json_error}\n${json}")
     endif()

@@ -434,7 +434,15 @@ int main(int argc, char** argv) {
                       {"stride_length", m.stride_length}, {"cycle_frequency", m.cycle_frequency},
                       {"duty_factor", m.duty_factor}, {"froude", m.froude},
                       {"gait", m.gait},             {"flight_phase", m.flight_phase},
-                      {"airborne_s", m.airborne_s}, {"max_body_jolt_g", m.max_body_jolt_g}});
+                      {"airborne_s", m.airborne_s}, {"max_body_jolt_g", m.max_body_jolt_g},
+                      {"gait_family", m.gait_family},  // "" until the gait families land (gait_family_label)
+                      // Measured from the feet and the root as simulated (GaitMeasure); null: not applicable
+                      {"footfall_sequence", m.measured.footfall_sequence}, {"limb_phase", m.measured.limb_phase},
+                      {"hind_pair_phase", m.measured.hind_pair_phase}, {"fore_pair_phase", m.measured.fore_pair_phase},
+                      {"measured_duty_factor", m.measured.duty_factor}, {"strides", m.measured.strides},
+                      {"suspensions_per_stride", m.measured.suspensions_per_stride},
+                      {"suspension_fraction", m.measured.suspension_fraction},
+                      {"vertical_excursion", m.measured.vertical_excursion}, {"bobs_per_stride", m.measured.bobs_per_stride}});
     }
     out["segments"] = segs;
     out["max_stance_slip_m"] = probe.max_stance_slip_m;

@@ -85,6 +85,26 @@ Controls ScriptCursor::next() {
   return current_;
 }
 
+std::string gait_family_label(const Animator& /*animator*/) {
+  return "";  // gait_family: filled in by the gait-family change of issue #28
+}
+
+namespace {
+
+std::string most_frequent(const std::map<std::string, int>& counts) {
+  std::string best;
+  int most = -1;
+  for (const auto& [name, n] : counts) {
+    if (n > most) {
+      most = n;
+      best = name;
+    }
+  }
+  return best;
+}
+
+}  // namespace
+
 SimResult run_script(Entity& entity, const Level& level, const std::vector<ScriptSegment>& script, int tick_hz,
                      const std::function<void(long long)>& on_tick) {
   SimResult result;
@@ -114,7 +134,12 @@ SimResult run_script(Entity& entity, const Level& level, const std::vector<Scrip
     float x_start = entity.animator().x();
     double stride = 0, freq = 0, duty = 0, froude = 0;
     int measured = 0;
-    std::map<std::string, int> gaits;
+    std::map<std::string, int> gaits, families;
+    std::vector<GaitLeg> legs;
+    for (const RigLeg& leg : entity.animator().rig().legs) legs.push_back({leg.girdle, leg.side});
+    std::vector<GaitSample> timeline;  // the window's ticks since its last turn, at most gait_ticks
+    const long long gait_ticks = static_cast<long long>(SegmentMetrics::kGaitWindowS) * tick_hz;
+    int timeline_facing = 0;
     for (int t = 0; t < ticks; ++t) {
       const auto start = std::chrono::steady_clock::now();
       entity.step(dt, controls, level);
@@ -132,10 +157,20 @@ SimResult run_script(Entity& entity, const Level& level, const std::vector<Scrip
         duty += a.duty_factor();
         froude += a.froude();
         ++gaits[gait_name(a.gait())];
+        ++families[gait_family_label(a)];
         ++measured;
         bool any_down = false;
         for (int i = 0; i < a.leg_count(); ++i) any_down |= a.leg_state(i) == LegState::kStance;
         m.flight_phase |= a.leg_count() > 0 && !any_down;
+        if (a.facing() != timeline_facing) timeline.clear();
+        timeline_facing = a.facing();
+        if (static_cast<long long>(timeline.size()) < gait_ticks) {
+          GaitSample sample{0, a.root_y()};
+          for (int i = 0; i < std::min(a.leg_count(), 64); ++i) {
+            sample.stance |= a.leg_state(i) == LegState::kStance ? uint64_t{1} << i : uint64_t{0};
+          }
+          timeline.push_back(sample);
+        }
       }
       if (on_tick) on_tick(tick);
       ++tick;
@@ -149,13 +184,9 @@ SimResult run_script(Entity& entity, const Level& level, const std::vector<Scrip
       m.cycle_frequency = static_cast<float>(freq / measured);
       m.duty_factor = static_cast<float>(duty / measured);
       m.froude = static_cast<float>(froude / measured);
-      int best = -1;
-      for (const auto& [name, n] : gaits) {
-        if (n > best) {
-          best = n;
-          m.gait = name;
-        }
-      }
+      m.gait = most_frequent(gaits);
+      m.gait_family = most_frequent(families);
+      m.measured = measure_gait(timeline, legs, dt, entity.animator().hip_height());
     }
     result.segments.push_back(m);
   }

@@ -2,7 +2,8 @@
 // Headless simulation with the measurements ossa-sim reports and the animation tests check:
 // a script of control segments ("walk:0.5:10,run:1:6,stop:2,walk:-0.5:5") drives one or more
 // creatures over a level; a SimProbe watches every tick for stance slip, penetration of
-// limbs into colliders, swing clearance, non-finite values and the pose hash.
+// limbs into colliders, swing clearance, non-finite values and the pose hash, and each
+// segment's gait is measured from the feet and the trunk (measure_gait, gait_metrics.h).
 
 #include <cmath>
 #include <cstdint>
@@ -13,6 +14,7 @@
 
 #include "ossa/anim/animator.h"
 #include "ossa/game/controls.h"
+#include "ossa/game/gait_metrics.h"
 #include "ossa/io/result.h"
 
 namespace ossa {
@@ -66,13 +68,27 @@ struct SegmentMetrics {
   float speed_error = 0;      // |mean - commanded| / |commanded| (0 for stops)
   float stride_length = 0;    // m, mean over the measured window
   float cycle_frequency = 0;  // Hz
-  float duty_factor = 0;
+  float duty_factor = 0;      // the animator's target (Animator::duty_factor()), mean over the window;
+                              // measured.duty_factor is what the feet did
   float froude = 0;
   float max_body_jolt_g = 0;  // the largest SimProbe::jolt_g in the segment
   std::string gait;           // most frequent gait in the window
+  std::string gait_family;    // most frequent gait_family_label() in the window ("" for now)
   bool flight_phase = false;  // a tick with every foot in the air (moving segments)
   float airborne_s = 0;       // s in the air (Animator::airborne(): jumps and falls)
+  // The gait measured from the feet (LegState::kStance per leg) and the root's height as
+  // simulated, not from the animator's intended offsets (measure_gait, gait_metrics.h): footfall
+  // sequence, limb phase, pair phases, duty factor, suspensions per stride, vertical excursion
+  // and bobs per stride, over the window after the segment's first second, its first
+  // kGaitWindowS at most (a day-long segment keeps a bounded timeline). When the creature turns
+  // in the window, from its last turn on (a turn hands feet between legs).
+  GaitMeasure measured;
+  static constexpr int kGaitWindowS = 120;  // s
 };
+
+// The gait family of the animator's current gait, for SegmentMetrics::gait_family: "" until the
+// gait families of issue #28 give the Animator an accessor (that change fills this in).
+std::string gait_family_label(const Animator& animator);
 
 // Watches an animator tick by tick: every bone against the level, the feet, the trunk's
 // vertical acceleration, non-finite values and the pose hash.
