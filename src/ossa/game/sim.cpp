@@ -85,9 +85,7 @@ Controls ScriptCursor::next() {
   return current_;
 }
 
-std::string gait_family_label(const Animator& /*animator*/) {
-  return "";  // gait_family: filled in by the gait-family change of issue #28
-}
+std::string gait_family_label(const Animator& animator) { return gait_family_name(animator.gait_family()); }
 
 namespace {
 

@@ -73,7 +73,7 @@ struct SegmentMetrics {
   float froude = 0;
   float max_body_jolt_g = 0;  // the largest SimProbe::jolt_g in the segment
   std::string gait;           // most frequent gait in the window
-  std::string gait_family;    // most frequent gait_family_label() in the window ("" for now)
+  std::string gait_family;    // most frequent gait_family_label() in the window
   bool flight_phase = false;  // a tick with every foot in the air (moving segments)
   float airborne_s = 0;       // s in the air (Animator::airborne(): jumps and falls)
   // The gait measured from the feet (LegState::kStance per leg) and the root's height as
