@@ -53,7 +53,7 @@ GaitFamilyTraits gait_family_traits(GaitFamily family, const AnimRig& rig);
 // The family the body plan asks for (never kAuto): no legs → legless; three or more leg pairs
 // → multi-leg; one pair: winged or bird-skulled → bird, a mammal with arms and a long tail →
 // hopper, else biped; two pairs: hind legs twice the fore → hopper; 1 t or more on short feet
-// (the foot under 0.45 of the leg: columnar limbs) → graviportal; reptile or fish skull →
+// (the foot under 0.3 of the leg: columnar limbs) → graviportal; reptile or fish skull →
 // sprawler; a mammal under 5 kg → bounder; long legs against the trunk (hip height over 0.8
 // of the girdles' distance) and 300 kg or more → pacer; else cursorial.
 GaitFamily choose_gait_family(const AnimRig& rig);
