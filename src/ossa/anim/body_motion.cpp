@@ -308,12 +308,17 @@ float limit_by_ledges(const AnimContext& ctx, const BodyFrame& body, const FootS
   float move = std::fabs(dx);
   for (size_t g = 0; g < rig.girdles.size(); ++g) {
     const RigGirdle& girdle = rig.girdles[g];
-    // The girdle's feet: the lowest on the ground (none: it stands where its joint says).
-    float feet_y = 1e30f;
+    // The girdle's feet: the lowest on the ground, or where its swinging feet land when none
+    // stands (a gallop's, a bound's or a hop's pair swing together; none at all: it stands
+    // where its joint says).
+    float feet_y = 1e30f, landing_y = 1e30f;
     for (int leg : girdle.legs) {
       const FootState& f = feet.of_leg(leg);
-      if (f.state == LegState::kStance && !f.air) feet_y = std::min(feet_y, f.pos_ws.y);
+      if (f.air) continue;
+      if (f.state == LegState::kStance) feet_y = std::min(feet_y, f.pos_ws.y);
+      else landing_y = std::min(landing_y, f.to_ws.y);
     }
+    if (feet_y > 1e29f) feet_y = landing_y;
     if (feet_y > 1e29f) continue;
     const glm::vec2 joint = body.girdle_ws(rig, static_cast<int>(g));
     const float x = joint.x;
