@@ -14,7 +14,7 @@ namespace {
 // The gait settled at `speed` (smoothing factors 0 jump to the targets).
 anim::GaitState settled(const AnimRig& rig, const AnimatorParams& params, float speed) {
   anim::GaitState gait;
-  for (int k = 0; k < 3; ++k) anim::update_gait(rig, params, speed, 0.0f, 0.0f, gait);
+  for (int k = 0; k < 3; ++k) anim::update_gait(rig, params, speed, false, 0.0f, 0.0f, gait);
   anim::update_target_offsets(rig, anim::gait_family(rig, params), gait);
   return gait;
 }

@@ -33,7 +33,7 @@ struct StageScene {
     body.facing = facing;
     const auto hit = level.ground_height_below(x - 0.01f, x + 0.01f, 50.0f, 100.0f);
     body.root_y_ws = (hit ? hit->height_ws : 0.0f) + rig->root_rest_y * params.stance_height;
-    for (int k = 0; k < 40; ++k) anim::update_gait(*rig, params, speed, 0.0f, 0.0f, gait);
+    for (int k = 0; k < 40; ++k) anim::update_gait(*rig, params, speed, false, 0.0f, 0.0f, gait);
     ground.build(level, x - 20.0f, x + 20.0f, body.root_y_ws + rig->hip_height, 5.0f * rig->hip_height, 0.01f);
   }
   anim::FootholdInputs inputs() const { return {ctx, body, gait.stride, gait.duty}; }

@@ -154,7 +154,8 @@ void Animator::update(float dt, const AnimatorIntent& intent, const Level& level
     turn_feet(ctx, spline_prototypes_, gait_, body_, step_.feet);
   }
   command_speed(planner(ctx, body_, gait_, step_.feet), intent.velocity, dt, landing, motion_);  //  5 body motion: speed
-  update_gait(rig, params_, motion_.speed, decay_.run, decay_.gait, gait_);     //  6 gait clock
+  motion_.on_steps = steps_ahead(ctx, body_, gait_.stride);                    //  5 body motion: steps ahead
+  update_gait(rig, params_, motion_.speed, motion_.on_steps, decay_.run, decay_.gait, gait_);  //  6 gait clock
   lean_body(-params_.max_spine_rotation * std::min(motion_.speed / run_speed(), 1.2f), decay_.lean, body_);  // 7 body motion
   const float dx = allowed_move(ctx, body_, pose_.facing, step_.feet, gait_.stride, body_.facing * motion_.speed * dt,
                                 body_boxes_, handoff_);

@@ -299,6 +299,16 @@ float limit_by_legs(const AnimContext& ctx, const BodyFrame& body, const FootSet
   return dx;
 }
 
+bool steps_ahead(const AnimContext& ctx, const BodyFrame& body, float stride) {
+  // A tenth of the hip height: a kerb, not a slope's tile.
+  constexpr float kStepOfHip = 0.1f;
+  const AnimRig& rig = ctx.rig;
+  if (ctx.ground.empty() || rig.girdles.empty()) return false;
+  const float lo = rig.body_lo_ws(body.x_ws, body.facing), hi = rig.body_hi_ws(body.x_ws, body.facing);
+  const float a = body.facing > 0 ? lo : lo - stride, b = body.facing > 0 ? hi + stride : hi;
+  return ctx.ground.largest_jump(a, b, girdle_slope_reading(ctx, static_cast<int>(rig.girdles.size()) - 1)) > kStepOfHip * rig.hip_height;
+}
+
 float limit_by_ledges(const AnimContext& ctx, const BodyFrame& body, const FootSet& feet, float stride, float dx) {
   const AnimRig& rig = ctx.rig;
   const GroundProfile& ground = ctx.ground;

@@ -31,6 +31,9 @@ struct MotionState {
     int leg = 0;                   // the leg that found no foothold
     float retry = 0.0f;            // seconds until the way ahead is tested again
   } block;
+  // Steps under or a stride ahead of the body (steps_ahead): the fast gait gives way to the
+  // middle one (gait clock).
+  bool on_steps = false;
 };
 
 // Stage 5: the speed for the stick. It sets the speed precisely [T 4.1]; starting and stopping
@@ -39,6 +42,12 @@ struct MotionState {
 // keeps its direction, and tests the way ahead again now and then (the level may have
 // changed; `in`: the planner as the feet stand).
 void command_speed(const FootholdInputs& in, float desired_velocity, float dt, bool landing, MotionState& motion);
+
+// Stage 5: is there a riser taller than a tenth of the hip height between the body's back end
+// and a stride (metres) ahead of its front? Animals take steps and stairs in their walk, trot
+// or half-bound rather than a gallop or a bound; the gait clock's fast gait waits for level
+// ground.
+bool steps_ahead(const AnimContext& ctx, const BodyFrame& body, float stride);
 
 // Stage 7: how far the body may move this tick, for a wish of dx (world metres, signed):
 // the wall sweep, the legs and the ledges (above). Sets handoff.wall_ahead when a wall or a

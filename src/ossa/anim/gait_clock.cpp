@@ -63,14 +63,14 @@ GaitBands gait_bands(const AnimRig& rig, const AnimatorParams& params) {
   return b;
 }
 
-void update_gait(const AnimRig& rig, const AnimatorParams& params, float speed, float keep_run, float keep_gait,
+void update_gait(const AnimRig& rig, const AnimatorParams& params, float speed, bool on_steps, float keep_run, float keep_gait,
                  GaitState& gait) {
   const GaitFamilyTraits& t = traits_of(rig, gait_family(rig, params), gait);
   gait.froude = speed * speed / (params.gravity * rig.hip_height);
   gait.run_factor = approach(gait.run_factor, smoothstep(params.run_froude_start, params.run_froude_end, gait.froude), keep_run);
   const float scale = params.gait_froude_scale;
   float mid = smoothstep(kTrotBandLow * t.mid_froude * scale, kTrotBandHigh * t.mid_froude * scale, gait.froude);
-  float fast = smoothstep(kGallopBandLow * t.fast_froude * scale, kGallopBandHigh * t.fast_froude * scale, gait.froude);
+  float fast = on_steps ? 0.0f : smoothstep(kGallopBandLow * t.fast_froude * scale, kGallopBandHigh * t.fast_froude * scale, gait.froude);
   if (params.gait_override != GaitOverride::kAuto) {
     mid = params.gait_override == GaitOverride::kWalk ? 0.0f : 1.0f;
     fast = params.gait_override == GaitOverride::kGallop ? 1.0f : 0.0f;

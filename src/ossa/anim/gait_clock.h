@@ -60,7 +60,8 @@ inline GaitFamily gait_family(const AnimRig& rig, const AnimatorParams& params) 
 
 // Froude, walk→run and gait blends, duty factor, stride, frequency and gait name for `speed`.
 // keep_run and keep_gait are the smoothing factors exp(-rate·dt) of the run and gait blends.
-void update_gait(const AnimRig& rig, const AnimatorParams& params, float speed, float keep_run, float keep_gait,
+// On steps (body motion's MotionState::on_steps) the fast gait eases back to the middle one.
+void update_gait(const AnimRig& rig, const AnimatorParams& params, float speed, bool on_steps, float keep_run, float keep_gait,
                  GaitState& gait);
 
 // Leg `leg`'s phase offset for the gait blend of `family` (mid and fast factors): minus the
