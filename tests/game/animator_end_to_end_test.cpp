@@ -28,9 +28,9 @@ struct Walker {
   std::unique_ptr<Player> player;
 };
 
-Walker make_walker(Creature c, const Level& level, glm::vec2 at) {
+Walker make_walker(Creature c, const Level& level, glm::vec2 at, const AnimatorParams& params = {}) {
   Walker w{std::make_shared<const Creature>(std::move(c)), nullptr};
-  w.player = std::make_unique<Player>(w.creature, SplinePrototypes::defaults());
+  w.player = std::make_unique<Player>(w.creature, SplinePrototypes::defaults(), params);
   w.player->animator().reset(at, level);
   return w;
 }
@@ -561,16 +561,29 @@ TEST_CASE("a creature blocked at a step jumps onto it", "[game][anim][locomotion
 }
 
 TEST_CASE("the rabbit's and the thrinaxodon's trunks run on flat ground without jolts", "[game][anim]") {
-  // Once up to speed (2 s), running at full stick: no vertical jolt of the root above 1.5 g.
-  // A folded hind knee coming within its margin of the ground at each touch-down used to raise
-  // the body at once, 3-4 mm a tick (1.78 g for the rabbit); the margin is now eased in.
+  // Once up to speed (2 s), running at full stick: no vertical jolt of the root above 1.5 g in
+  // a gait that keeps its feet under the trunk (the trot and gallop of their cursorial
+  // cousins). A folded hind knee coming within its margin of the ground at each touch-down used
+  // to raise the body at once, 3-4 mm a tick (1.78 g for the rabbit); the margin is now eased
+  // in. Their own gaits: the rabbit bounds — every stride lands its hind pair together from a
+  // suspension, a hop, which issue 28 exempts from the 1.5 g — and stays below 2.5 g (a pop of
+  // the body measures 20 g and more); the thrinaxodon sprawls and keeps the 1.5 g.
   const Level flat = scenes::flat_level(200.0f);
-  for (const char* name : {"rabbit", "thrinaxodon"}) {
-    Walker w = make_walker(build_creature(scenes::generator().example(name).value()).value(), flat, {2.0f, 1.0f});
+  struct Case {
+    const char* name;
+    GaitFamily family;
+    float limit_g;
+  };
+  for (const Case c : {Case{"rabbit", GaitFamily::kCursorial, 1.5f}, Case{"thrinaxodon", GaitFamily::kCursorial, 1.5f},
+                       Case{"rabbit", GaitFamily::kAuto, 2.5f}, Case{"thrinaxodon", GaitFamily::kAuto, 1.5f}}) {
+    AnimatorParams params;
+    params.gait_family = c.family;
+    Walker w = make_walker(build_creature(scenes::generator().example(c.name).value()).value(), flat, {2.0f, 1.0f}, params);
     run_script(*w.player, flat, script("run:1:2"), 120);
     const SimResult r = run_script(*w.player, flat, script("run:1:6"), 120);
-    INFO(name << ": max_body_jolt_g " << r.probe.max_body_jolt_g);
-    CHECK(r.probe.max_body_jolt_g <= 1.5f);
+    INFO(c.name << " (" << gait_family_name(w.player->animator().gait_family()) << ", " << r.segments[0].gait
+                << "): max_body_jolt_g " << r.probe.max_body_jolt_g);
+    CHECK(r.probe.max_body_jolt_g <= c.limit_g);
     CHECK(r.probe.max_limb_penetration_m <= 0.001f);
     CHECK(r.probe.max_stance_slip_m <= 0.001f);
   }

@@ -75,7 +75,15 @@ void turn_feet(const AnimContext& ctx, const SplinePrototypes& prototypes, const
       if (from) f.pos_ws = from->pos_ws;
     }
     glm::vec2 landing;
-    if (!find_landing(in, leg, f.pos_ws, joint_x, &landing)) landing = f.pos_ws;
+    const bool found = find_landing(in, leg, f.pos_ws, joint_x, &landing);
+    // A foot that hung over a drop and finds no ground its leg reaches from where the girdle
+    // stands (the girdle is still over the drop) hangs on: stepping down the drop would pull
+    // the body down after it.
+    if (was_air[feet.foot_of_leg[i]] && (!found || !reaches(in, leg, landing))) {
+      hang(ctx, body, leg, 1.0f, f);
+      continue;
+    }
+    if (!found) landing = f.pos_ws;
     begin_swing(ctx, body, leg, f, landing, step_shape(prototypes, gait.run_factor, kTurnStepLiftOfLeg * info.reach, 1.0f / kTurnStepSeconds, true));
   }
   // Feet now point the other way: one that would reach into a step takes a quick step to the
