@@ -1,4 +1,4 @@
-#include "ossa/render/sprite_mesh.h"
+#include "ossa/draw/sprite_mesh.h"
 
 // Smooth skinning's frames and weights, shared by whoever skins a sprite mesh: the chain joints
 // that blend (chain_children), the mid-joint frames and their palette entries, a vertex
