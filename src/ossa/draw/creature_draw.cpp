@@ -1,17 +1,16 @@
 #include "ossa/draw/creature_draw.h"
 
 // A creature's draw data on the CPU: the palette as CreatureBatch::set_world builds it
-// (PaletteJob, then the mid joints; for bodies body_palette, which adds the floor), every
+// (sprite_palette: PaletteJob, then the mid joints; for bodies body_palette), every
 // vertex skinned as the skinned and body shaders skin it, the triangles layer by layer.
+
+#include "ossa/assert.h"
+
+#include <glm/common.hpp>
 
 #include <algorithm>
 #include <cmath>
 #include <limits>
-
-#include "ossa/assert.h"
-#include "ossa/skeleton/pose.h"
-
-#include <glm/common.hpp>
 
 namespace ossa {
 namespace {
@@ -96,23 +95,14 @@ void append_creature(DrawList& list, const CreatureDrawable& drawable, std::span
                      const BodyFloor* floor) {
   OSSA_ASSERT(static_cast<int>(world.size()) == drawable.bone_count,
               "append_creature: one world matrix per bone");
-  const size_t bones = world.size();
   const bool sprites = !drawable.sprites.vertices.empty();
   const bool body = !drawable.body.vertices.empty();
 
   uint32_t sprite_base = 0, body_base = 0;
   if (sprites) {
-    // CreatureBatch::set_world: world · inverse_bind per bone, then the mid joints.
     const SpriteMesh& mesh = drawable.sprites;
     list.palette.assign(static_cast<size_t>(mesh.palette_size()), Mat2x3::identity());
-    PaletteJob job;
-    job.world = world;
-    job.inverse_bind = mesh.inverse_bind;
-    job.palette = std::span<Mat2x3>(list.palette).first(bones);
-    const bool ok = job.run();
-    OSSA_ASSERT(ok, "append_creature: palette job failed");
-    (void)ok;
-    if (!mesh.mid_joints.empty()) mid_joint_palette(mesh.mid_joints, world, list.palette);
+    sprite_palette(mesh, world, list.palette);
     sprite_base = append_sprite_vertices(list, mesh, list.palette);
   }
   if (body) {

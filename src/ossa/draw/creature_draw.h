@@ -27,6 +27,11 @@
 // colour; and a body's floor (body_floor.h: flesh lifted onto box tops under it) is applied
 // when append_creature is given one, per vertex as the shader does.
 //
+// A renderer that skins on the GPU takes the bind-pose meshes instead: CreatureDrawable's
+// sprites and body (vertices in model space with up to four bone indices and weights, indices
+// by layer, SpriteMesh::layer_begin / BodyMesh::layer_begin) and their palettes each frame
+// (sprite_palette, body_palette), as ossa::render's CreatureBatch does.
+//
 // Cost: one skinned vertex per mesh vertex per append — a horse's body 1 888 vertices and
 // 2 274 triangles, its bone sprites 2 042 and 2 356 — about 50 µs (body) or 65 µs (bones) per
 // horse on one core of the 2-core test machine while it was loaded; no allocation once the
