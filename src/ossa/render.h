@@ -2,8 +2,10 @@
 // ossa's drawing side in one include: src/ossa/platform (SDL2 window, input, images) and
 // src/ossa/render (the OpenGL 3.3 renderer through libepoxy, CreatureBatch's GPU skinning,
 // rigged meshes through Assimp, capture). Link ossa::render (find_package(ossa COMPONENTS
-// render)); it brings ossa::core, whose headers are <ossa/ossa.h>.
+// render)); it brings ossa::draw and ossa::core, whose headers are <ossa/draw.h> and
+// <ossa/ossa.h>.
 
+#include "ossa/draw.h"
 #include "ossa/ossa.h"
 
 // platform: SDL2 window, mouse/keyboard and gamepad input, images
@@ -28,7 +30,6 @@
 #include "ossa/render/rigged_batch.h"
 #include "ossa/render/rigged_mesh.h"
 #include "ossa/render/shader.h"
-#include "ossa/render/sprite_mesh.h"
 #include "ossa/render/texture.h"
 #include "ossa/render/tile_atlas.h"
 #include "ossa/render/vertex_array.h"

@@ -25,7 +25,7 @@
 #include "ossa/render/creature_batch.h"
 #include "ossa/render/gl.h"
 #include "ossa/render/renderer.h"
-#include "ossa/render/sprite_mesh.h"
+#include "ossa/draw/sprite_mesh.h"
 #include "ossa/render/texture.h"
 #include "ossa/skeleton/pose.h"
 

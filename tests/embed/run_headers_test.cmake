@@ -1,9 +1,9 @@
 # Run by CTest: one consumer of the scratch install PREFIX (install.cmake; consumer.cmake for
 # the other variables) that includes every installed header in one file and links every target
 # find_package(ossa) defines, calling into each library; then runs it. Also checks that
-# <ossa/ossa.h> includes every installed header of ossa::core and <ossa/render.h> every one of
-# ossa::render (a module's header left out of its umbrella, or an umbrella that names a header
-# that is not installed, fails here).
+# <ossa/ossa.h> includes every installed header of ossa::core, <ossa/draw.h> every one of
+# ossa::draw and <ossa/render.h> every one of ossa::render (a module's header left out of its
+# umbrella, or an umbrella that names a header that is not installed, fails here).
 include(${CMAKE_CURRENT_LIST_DIR}/consumer.cmake)
 
 set(include_dir ${PREFIX}/include)
@@ -18,14 +18,25 @@ set(render_installed FALSE)
 if(EXISTS ${include_dir}/ossa/render.h)
   set(render_installed TRUE)
 endif()
+set(draw_installed FALSE)
+if(EXISTS ${include_dir}/ossa/draw.h)
+  set(draw_installed TRUE)
+endif()
 file(READ ${include_dir}/ossa/ossa.h core_umbrella)
 set(render_umbrella "")
 if(render_installed)
   file(READ ${include_dir}/ossa/render.h render_umbrella)
 endif()
+set(draw_umbrella "")
+if(draw_installed)
+  file(READ ${include_dir}/ossa/draw.h draw_umbrella)
+endif()
 foreach(header ${headers})
-  if(header MATCHES "^ossa/(ossa|render)\\.h$")
+  if(header MATCHES "^ossa/(ossa|draw|render)\\.h$")
     continue()
+  elseif(header MATCHES "^ossa/draw/")
+    set(umbrella "${draw_umbrella}")
+    set(umbrella_name draw.h)
   elseif(header MATCHES "^ossa/(platform|render)/")
     set(umbrella "${render_umbrella}")
     set(umbrella_name render.h)
@@ -38,7 +49,7 @@ foreach(header ${headers})
     message(SEND_ERROR "ossa/${umbrella_name} does not include the installed ${header}")
   endif()
 endforeach()
-foreach(umbrella ossa.h render.h)
+foreach(umbrella ossa.h draw.h render.h)
   if(EXISTS ${include_dir}/ossa/${umbrella})
     file(STRINGS ${include_dir}/ossa/${umbrella} includes REGEX "^#include \"")
     foreach(line ${includes})
@@ -69,6 +80,15 @@ int main(int argc, char** argv) {
     return 1;
   }
   std::printf("ossa::core: %d colliders\n", level->size());
+#ifdef EVERY_HEADER_DRAW
+  // ossa::draw (stb_image; no SDL, no GL)
+  ossa::Result<ossa::Image> decoded = ossa::decode_image_file(argv[2]);
+  if (!decoded) {
+    std::fprintf(stderr, "%s\n", decoded.message().c_str());
+    return 1;
+  }
+  std::printf("ossa::draw: %dx%d\n", decoded->width, decoded->height);
+#endif
 #ifdef EVERY_HEADER_RENDER
   // ossa::render (SDL2_image; no display needed)
   ossa::Result<ossa::Image> image = ossa::load_image(argv[2]);
@@ -99,6 +119,9 @@ list(SORT imported)
 file(WRITE ${CMAKE_BINARY_DIR}/ossa_targets.txt "${imported}")
 add_executable(every_header main.cpp)
 target_link_libraries(every_header PRIVATE ${imported})
+if(TARGET ossa::draw)
+  target_compile_definitions(every_header PRIVATE EVERY_HEADER_DRAW=1)
+endif()
 if(TARGET ossa::render)
   target_compile_definitions(every_header PRIVATE EVERY_HEADER_RENDER=1)
 endif()
@@ -109,6 +132,9 @@ build_consumer(${src} ${WORK_DIR}/build)
 # gets its call.
 file(READ ${WORK_DIR}/build/ossa_targets.txt targets)
 set(expected ossa::core)
+if(draw_installed)
+  list(APPEND expected ossa::draw)
+endif()
 if(render_installed)
   list(APPEND expected ossa::render)
 endif()
@@ -117,6 +143,9 @@ if(NOT targets STREQUAL "${expected}")
 endif()
 run(${WORK_DIR}/build/every_header ${PREFIX}/share/ossa/levels/default.json
   ${PREFIX}/share/ossa/assets/sprites/bones/bird_foot.png)
+if(draw_installed AND NOT run_out MATCHES "ossa::draw: [1-9][0-9]*x[1-9]")
+  message(FATAL_ERROR "every_header did not decode the image through ossa::draw")
+endif()
 if(render_installed AND NOT run_out MATCHES "ossa::render: [1-9][0-9]*x[1-9]")
   message(FATAL_ERROR "every_header did not load the image through ossa::render")
 endif()

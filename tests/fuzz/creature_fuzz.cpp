@@ -24,7 +24,7 @@
 #include "ossa/gen/skeleton_builder.h"
 #include "ossa/level/level.h"
 #include "ossa/math/rng.h"
-#include "ossa/render/sprite_mesh.h"
+#include "ossa/draw/sprite_mesh.h"
 
 namespace {
 

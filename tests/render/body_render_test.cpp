@@ -17,7 +17,7 @@
 #include "ossa/render/capture.h"
 #include "ossa/render/creature_batch.h"
 #include "ossa/render/gl.h"
-#include "ossa/render/sprite_mesh.h"
+#include "ossa/draw/sprite_mesh.h"
 #include "ossa/skeleton/pose.h"
 
 using namespace ossa;

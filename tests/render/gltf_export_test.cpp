@@ -18,7 +18,7 @@
 #include "ossa/io/file.h"
 #include "ossa/render/gltf_export.h"
 #include "ossa/render/rigged_mesh.h"
-#include "ossa/render/sprite_mesh.h"
+#include "ossa/draw/sprite_mesh.h"
 #include "ossa/skeleton/pose.h"
 #include "shared/scenes.h"
 

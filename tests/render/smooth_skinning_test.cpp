@@ -24,7 +24,7 @@
 #include "ossa/render/capture.h"
 #include "ossa/render/creature_batch.h"
 #include "ossa/render/gl.h"
-#include "ossa/render/sprite_mesh.h"
+#include "ossa/draw/sprite_mesh.h"
 #include "ossa/render/texture.h"
 #include "render/gl_fixture.h"
 #include "shared/scenes.h"

@@ -19,7 +19,7 @@
 #include "ossa/game/player.h"
 #include "ossa/platform/image.h"
 #include "ossa/gen/skeleton_builder.h"
-#include "ossa/render/sprite_mesh.h"
+#include "ossa/draw/sprite_mesh.h"
 #include "ossa/skeleton/pose.h"
 #include "shared/level_scenes.h"
 #include "shared/scenes.h"

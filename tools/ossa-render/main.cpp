@@ -29,7 +29,7 @@
 #include "ossa/render/renderer.h"
 #include "ossa/render/character_mesh.h"
 #include "ossa/render/rigged_batch.h"
-#include "ossa/render/sprite_mesh.h"
+#include "ossa/draw/sprite_mesh.h"
 #include "ossa/render/texture.h"
 
 namespace {

@@ -22,7 +22,7 @@ namespace {
 
 enum class Foot { kHoof, kPaw, kFlat, kBird, kHand };
 
-// As the bone sprites choose theirs (render/sprite_choice.cpp).
+// As the bone sprites choose theirs (draw/sprite_choice.cpp).
 Foot foot_of(const BodyRig& rig, const Limb& limb) {
   const Creature& c = *rig.creature;
   if (limb.kind == LimbKind::kArm) return Foot::kHand;

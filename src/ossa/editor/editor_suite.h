@@ -47,7 +47,7 @@
 #include "ossa/editor/undo_stack.h"
 #include "ossa/platform/input.h"
 #include "ossa/render/renderer.h"
-#include "ossa/render/sprite_mesh.h"
+#include "ossa/draw/sprite_mesh.h"
 #include "ossa/render/texture.h"
 
 namespace ossa {

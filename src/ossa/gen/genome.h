@@ -49,7 +49,7 @@ struct GenomeOptions {
   bool multi_limb = false;           // two limb slots per girdle (pegasus) [Z 7.2.3]
   bool true_size = false;            // scale from the weight (length ∝ mass^(1/3)), else 2 m frame
   bool smooth_skinning = true;       // bone sprites blend parent and child near each joint, so a
-                                     // bent knee keeps one outline (render/sprite_mesh.h); false:
+                                     // bent knee keeps one outline (draw/sprite_mesh.h); false:
                                      // every sprite follows its own bone rigidly. Files without
                                      // the key (older ones) get true. Changes no bone.
 };

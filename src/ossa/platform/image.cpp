@@ -40,22 +40,4 @@ Result<Image> load_image(const std::string& path) {
   return image;
 }
 
-Image checker_image(int width, int height, int cell) {
-  Image image;
-  image.width = width;
-  image.height = height;
-  image.rgba.resize(static_cast<size_t>(width) * height * 4);
-  for (int y = 0; y < height; ++y) {
-    for (int x = 0; x < width; ++x) {
-      const bool on = ((x / cell) + (y / cell)) % 2 == 0;
-      uint8_t* p = image.pixel(x, y);
-      p[0] = on ? 255 : 40;
-      p[1] = on ? 0 : 40;
-      p[2] = on ? 255 : 40;
-      p[3] = 255;
-    }
-  }
-  return image;
-}
-
 }  // namespace ossa

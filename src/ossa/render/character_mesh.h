@@ -19,7 +19,7 @@
 #include "ossa/rig/character.h"
 #include "ossa/io/result.h"
 #include "ossa/render/rigged_mesh.h"
-#include "ossa/render/sprite_mesh.h"
+#include "ossa/draw/sprite_mesh.h"
 
 namespace ossa {
 

@@ -36,7 +36,7 @@
 
 #include "ossa/body/body_mesh.h"
 #include "ossa/math/transform2d.h"
-#include "ossa/render/sprite_mesh.h"
+#include "ossa/draw/sprite_mesh.h"
 #include "ossa/render/vertex_array.h"
 #include "ossa/skeleton/skeleton.h"
 

@@ -14,7 +14,7 @@
 #include "ossa/render/debug_draw.h"
 #include "ossa/render/gl.h"
 #include "ossa/render/render_target.h"
-#include "ossa/render/sprite_mesh.h"
+#include "ossa/draw/sprite_mesh.h"
 
 namespace ossa {
 namespace {

@@ -19,7 +19,7 @@
 #include "ossa/body/body_mesh.h"
 #include "ossa/body/coat.h"
 #include "ossa/io/file.h"
-#include "ossa/render/sprite_mesh.h"
+#include "ossa/draw/sprite_mesh.h"
 #include "ossa/skeleton/pose.h"
 
 namespace ossa {

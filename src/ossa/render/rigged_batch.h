@@ -4,7 +4,7 @@
 // shader draws both.
 
 #include "ossa/render/rigged_mesh.h"
-#include "ossa/render/sprite_mesh.h"
+#include "ossa/draw/sprite_mesh.h"
 #include "ossa/skeleton/skeleton.h"
 
 namespace ossa {

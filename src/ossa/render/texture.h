@@ -9,8 +9,8 @@
 
 #include <string>
 
+#include "ossa/draw/sprite_atlas.h"
 #include "ossa/platform/image.h"
-#include "ossa/render/sprite_mesh.h"
 
 namespace ossa {
 
@@ -46,8 +46,9 @@ class Texture {
   bool fallback_ = false;
 };
 
-// All sprites of a SpriteSet packed into one texture. Each sprite's PNG is
-// `<sprite_dir>/<name>.png`; a missing one is logged and packed as a checker tile.
+// All sprites of a SpriteSet packed into one texture: draw/sprite_atlas.h's SpriteAtlas (the
+// same packing for every renderer) uploaded. Each sprite's PNG is `<sprite_dir>/<name>.png`;
+// a missing one is logged and packed as a checker tile.
 struct Atlas {
   Texture texture;
   SpriteSet sprites;        // the input set with uv_min / uv_max and the joint reaches
@@ -60,15 +61,8 @@ struct Atlas {
   // The bone sprites of `sprite_dir`: its sprites.json (when that fails to load, the message is
   // logged and the built-in anchors are used) packed by build().
   static Atlas load(const std::string& sprite_dir);
+  // Uploads a packed atlas (its problems logged).
+  static Atlas from_sprite_atlas(SpriteAtlas packed);
 };
-
-// Measures `info`'s parent_reach and child_reach (SpriteInfo) from its image's alpha: over
-// u in [0, 2 × parent anchor u] and [2 × child anchor u - 1, 1], how far opaque pixels
-// (alpha ≥ 128) reach below and above each anchor's v. Atlas::build calls it for every sprite
-// whose image loaded.
-void measure_joint_reach(SpriteInfo& info, const Image& image);
-
-// The bone sprite folder: data_path("assets/sprites/bones") (ossa/io/data_dir.h).
-std::string default_sprite_dir();
 
 }  // namespace ossa

@@ -1,6 +1,6 @@
 #pragma once
 // Mid-joint frames: the skinning frames smooth skinning blends through across a limb joint
-// (render/sprite_mesh.h for bone sprites, body/body_mesh.h for bodies). A mid-joint frame sits
+// (draw/sprite_mesh.h for bone sprites, body/body_mesh.h for bodies). A mid-joint frame sits
 // at the child bone's start, its axes turned a quarter, half or three quarters of the way from
 // the parent's axes to the child's; blending a vertex between neighbouring frames in turn
 // never spans more than that step of the joint's turn, so a bent joint keeps its thickness

@@ -1,4 +1,4 @@
-#include "ossa/render/sprite_mesh.h"
+#include "ossa/draw/sprite_mesh.h"
 
 // Smooth skinning's frames and weights, shared by whoever skins a sprite mesh: the chain joints
 // that blend (chain_children), the mid-joint frames and their palette entries, a vertex
@@ -7,7 +7,9 @@
 #include <algorithm>
 #include <cmath>
 
+#include "ossa/assert.h"
 #include "ossa/math/angle.h"
+#include "ossa/skeleton/pose.h"
 
 #include <glm/geometric.hpp>
 
@@ -39,6 +41,19 @@ glm::vec2 skin_vertex(const SpriteVertex& v, std::span<const Mat2x3> palette) {
     if (v.weights[k] != 0.0f) p += v.weights[k] * palette[v.bones[k]].apply(v.position_ms);
   }
   return p;
+}
+
+void sprite_palette(const SpriteMesh& mesh, std::span<const Mat2x3> world, std::span<Mat2x3> palette) {
+  OSSA_ASSERT(palette.size() == static_cast<size_t>(mesh.palette_size()) && world.size() == mesh.inverse_bind.size(),
+              "sprite_palette: one world matrix per bone, palette_size() entries");
+  PaletteJob job;
+  job.world = world;
+  job.inverse_bind = mesh.inverse_bind;
+  job.palette = palette.first(world.size());
+  const bool ok = job.run();
+  OSSA_ASSERT(ok, "sprite_palette: palette job failed");
+  (void)ok;
+  if (!mesh.mid_joints.empty()) mid_joint_palette(mesh.mid_joints, world, palette);
 }
 
 int max_weights_per_vertex(const SpriteMesh& mesh) {

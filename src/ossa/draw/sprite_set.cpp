@@ -1,4 +1,4 @@
-#include "ossa/render/sprite_mesh.h"
+#include "ossa/draw/sprite_mesh.h"
 
 // The bone sprite set: sprite names, the built-in anchors, the sprites.json loader and the
 // measured joint reach (sprite_mesh.h).

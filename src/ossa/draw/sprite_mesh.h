@@ -214,6 +214,11 @@ int max_weights_per_vertex(const SpriteMesh& mesh);
 // what the skinned shader computes.
 glm::vec2 skin_vertex(const SpriteVertex& v, std::span<const Mat2x3> palette);
 
+// The palette of a pose (palette_size() entries): world · inverse_bind per bone (PaletteJob),
+// then the mid joints (mid_joint_palette) — what CreatureBatch::set_world uploads; `world` has
+// one matrix per bone (bone frame → world). body_palette (body/body_mesh.h) is the bodies' twin.
+void sprite_palette(const SpriteMesh& mesh, std::span<const Mat2x3> world, std::span<Mat2x3> palette);
+
 // The model-space box around every vertex in the rest pose as drawn (rest_positions, else
 // position_ms: whole sprites, not only the joints). An empty mesh gives a zero box at the origin.
 Box sprite_mesh_bounds(const SpriteMesh& mesh);

@@ -1,4 +1,4 @@
-#include "ossa/render/sprite_mesh.h"
+#include "ossa/draw/sprite_mesh.h"
 
 // The sprite mesh builder: anchor mapping [Z 7.4], strips, smooth weights across chain
 // joints, layers (sprite_mesh.h). The sprite set is in sprite_set.cpp, the sprite choice in

@@ -1,4 +1,4 @@
-#include "ossa/render/sprite_mesh.h"
+#include "ossa/draw/sprite_mesh.h"
 
 #include <catch2/catch.hpp>
 
@@ -95,7 +95,7 @@ std::string write_temp(const std::string& name, const std::string& text) {
 
 }  // namespace
 
-TEST_CASE("the shipped sprites.json loads and agrees with the built-in defaults", "[render]") {
+TEST_CASE("the shipped sprites.json loads and agrees with the built-in defaults", "[draw]") {
   const std::string path = scenes::source_path("assets/sprites/bones/sprites.json");
   Result<SpriteSet> loaded = load_sprite_set(path);
   REQUIRE(loaded.ok());
@@ -123,7 +123,7 @@ TEST_CASE("the shipped sprites.json loads and agrees with the built-in defaults"
   CHECK(sprite_id_from_name("nope") == SpriteId::kCount);
 }
 
-TEST_CASE("bad sprite files give errors naming the file and field", "[render]") {
+TEST_CASE("bad sprite files give errors naming the file and field", "[draw]") {
   const std::string good = read_file(scenes::source_path("assets/sprites/bones/sprites.json")).value();
   struct Case {
     std::string from, to, expect;
@@ -178,7 +178,7 @@ TEST_CASE("bad sprite files give errors naming the file and field", "[render]") 
   }
 }
 
-TEST_CASE("sprite choice follows kind, limb, contact and skull variant", "[render]") {
+TEST_CASE("sprite choice follows kind, limb, contact and skull variant", "[draw]") {
   const Creature& horse = example("horse");
   const Creature& kangaroo = example("kangaroo");
   for (const Creature* c : {&horse, &kangaroo}) {
@@ -218,7 +218,7 @@ TEST_CASE("sprite choice follows kind, limb, contact and skull variant", "[rende
   }
 }
 
-TEST_CASE("every example's sprite anchors land on its bone starts and ends", "[render]") {
+TEST_CASE("every example's sprite anchors land on its bone starts and ends", "[draw]") {
   const SpriteSet sprites = default_sprite_set();
   REQUIRE(examples().size() == 44);
   for (const Creature& c : examples()) {
@@ -263,7 +263,7 @@ TEST_CASE("every example's sprite anchors land on its bone starts and ends", "[r
   }
 }
 
-TEST_CASE("sprite meshes: skinning the rest pose gives the rest pose, weights sum to 1, layers", "[render]") {
+TEST_CASE("sprite meshes: skinning the rest pose gives the rest pose, weights sum to 1, layers", "[draw]") {
   const SpriteSet sprites = default_sprite_set();
   for (bool smooth : {false, true}) {
     for (const Creature& c : examples()) {
@@ -341,7 +341,7 @@ TEST_CASE("sprite meshes: skinning the rest pose gives the rest pose, weights su
   }
 }
 
-TEST_CASE("a bone's sprite moves with it and its joints stay together", "[render]") {
+TEST_CASE("a bone's sprite moves with it and its joints stay together", "[draw]") {
   const SpriteSet sprites = default_sprite_set();
   for (const char* name : {"horse", "kangaroo"}) {
     const Creature& c = example(name);
@@ -382,7 +382,7 @@ TEST_CASE("a bone's sprite moves with it and its joints stay together", "[render
   }
 }
 
-TEST_CASE("sprite meshes refuse more bones than uint8 indices hold", "[render]") {
+TEST_CASE("sprite meshes refuse more bones than uint8 indices hold", "[draw]") {
   Creature c;
   c.skeleton = scenes::chain_skeleton(300, 0.01f);
   c.rest_pose = Pose::rest(c.skeleton);
@@ -400,7 +400,7 @@ TEST_CASE("sprite meshes refuse more bones than uint8 indices hold", "[render]")
   CHECK(max_bone == 254);
 }
 
-TEST_CASE("mid-joint frames turn a quarter, half and three quarters of the child's turn", "[render]") {
+TEST_CASE("mid-joint frames turn a quarter, half and three quarters of the child's turn", "[draw]") {
   // frame(t, a, k): translate t, rotate a, scale k.
   const auto frame = [](glm::vec2 t, float a, float k) {
     Mat2x3 m;
@@ -427,7 +427,7 @@ TEST_CASE("mid-joint frames turn a quarter, half and three quarters of the child
   }
 }
 
-TEST_CASE("atlas rectangles map the sprite's unit box", "[render]") {
+TEST_CASE("atlas rectangles map the sprite's unit box", "[draw]") {
   SpriteSet sprites = default_sprite_set();
   for (SpriteInfo& info : sprites.sprites) {
     info.uv_min = {0.25f, 0.5f};

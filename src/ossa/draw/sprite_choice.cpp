@@ -1,4 +1,4 @@
-#include "ossa/render/sprite_mesh.h"
+#include "ossa/draw/sprite_mesh.h"
 
 // Sprite choice: which sprite a bone gets — BoneKind + limb + contact + skull variant →
 // SpriteId (the rule is documented at sprite_for_bone in sprite_mesh.h).
