@@ -34,11 +34,11 @@ struct ExpectedHash {
 };
 
 constexpr ExpectedHash kExpected[] = {
-    {"default.json", 0xb3ebc3cd086f1ffaull},
-    {"rough.json", 0x78fcd3c2ab2d7be5ull},
-    {"stairs.json", 0x12e98e3b85808f2eull},
-    {"slopes.json", 0x9b0f23b47c3ade92ull},
-    {"drops.json", 0xfc50bd3d138b68a9ull},
+    {"default.json", 0xc40d1c9ed9891128ull},
+    {"rough.json", 0xad69f9af0fca3fe1ull},
+    {"stairs.json", 0x416f5732da368a40ull},
+    {"slopes.json", 0x21f249271b6aecebull},
+    {"drops.json", 0x9d8da9c92f11d4d4ull},
 };
 
 std::string hex(uint64_t v) {
