@@ -77,10 +77,11 @@ void turn_feet(const AnimContext& ctx, const SplinePrototypes& prototypes, const
     glm::vec2 landing;
     const bool found = find_landing(in, leg, f.pos_ws, joint_x, &landing);
     // A foot that hung over a drop and finds no ground its leg reaches from where the girdle
-    // stands (the girdle is still over the drop) hangs on: stepping down the drop would pull
-    // the body down after it.
+    // stands (the girdle is still over the drop) hangs on, tucked: stepping down the drop would
+    // pull the body down after it, and a leg hanging stretched would drag its foot through the
+    // ledge's face as the body walks back.
     if (was_air[feet.foot_of_leg[i]] && (!found || !reaches(in, leg, landing))) {
-      hang(ctx, body, leg, 1.0f, f);
+      hang(ctx, body, leg, 0.0f, f);  // tucked: the girdle goes back over the ledge it hangs from
       continue;
     }
     if (!found) landing = f.pos_ws;
