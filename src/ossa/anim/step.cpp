@@ -219,6 +219,17 @@ void advance_feet(const AnimContext& ctx, const BodyFrame& body, const GaitState
 
 // [SECTION] leaving the ground, the air, landing ---------------------------------------------------
 
+namespace {
+// Would leg `leg` reach a contact at p_ws as a stance leg (body placement's clamp 1: the contact,
+// or the ankle where the level holds the foot, within kFootReach of its radius)?
+bool stance_reaches(const AnimContext& ctx, const BodyFrame& body, int leg, glm::vec2 p_ws) {
+  float r;
+  const glm::vec2 joint_fs = body.to_fs(body.girdle_ws(ctx.rig, ctx.rig.legs[leg].girdle));
+  const glm::vec2 anchor = leg_anchor(ctx, body, leg, body.to_fs(p_ws), joint_fs, Clearance{}, &r);
+  return glm::length(anchor - joint_fs) <= kFootReach * r;
+}
+}  // namespace
+
 int update_air_feet(const AnimContext& ctx, const BodyFrame& body, float extension, float dt, bool reach_ground, FootSet& feet,
                     bool may_land) {
   if (std::none_of(feet.feet.begin(), feet.feet.end(), [](const FootState& f) { return f.air; })) return 0;
@@ -244,8 +255,12 @@ int update_air_feet(const AnimContext& ctx, const BodyFrame& body, float extensi
       const float r = kFootReach * info.contact_reach, dx = next.x - j.x;
       if (std::fabs(dx) < r) {
         const float lowest = j.y - reach_across(r, dx);
-        if (auto hit = ground_below(ctx.level, next.x + span.lo, next.x + span.hi, std::min(f.pos_ws.y, f.floor), f.pos_ws.y - lowest);
-            hit && hit->height_ws < next.y) {
+        auto hit = ground_below(ctx.level, next.x + span.lo, next.x + span.hi, std::min(f.pos_ws.y, f.floor), f.pos_ws.y - lowest);
+        // Only ground the leg reaches as a stance leg would (body placement's clamp 1: the
+        // contact, or the ankle where the level holds the foot): a foot planted beyond that
+        // pulled the body down after it in one tick.
+        if (hit && !stance_reaches(ctx, body, leg, {next.x, hit->height_ws})) hit.reset();
+        if (hit && hit->height_ws < next.y) {
           // Down to it at the rate the air offset eases (no jump), planted on arrival.
           const float ground = hit->height_ws - 1e-3f;
           next.y = std::max(ground, f.pos_ws.y + (ground - f.pos_ws.y) * (1.0f - keep) - kReachDownOfRestPerSecond *
@@ -262,7 +277,7 @@ int update_air_feet(const AnimContext& ctx, const BodyFrame& body, float extensi
           !std::isnan(f.hang_beyond) && (next.x - f.hang_beyond) * static_cast<float>(body.facing) > info.foot_length;
       if (auto hit = ground_below(ctx.level, next.x + span.lo, next.x + span.hi, from, from - next.y + 1e-3f);
           hit && hit->height_ws >= next.y - 1e-3f) {
-        if ((hit->height_ws < f.floor || across) && may_land) {
+        if ((hit->height_ws < f.floor || across) && may_land && stance_reaches(ctx, body, leg, {next.x, hit->height_ws})) {
           plant(ctx, f, {next.x, hit->height_ws});
           ++planted;
           continue;
