@@ -248,6 +248,28 @@ bool advance_swing(const FootholdInputs& in, const SwingTick& tick, int leg, Foo
       return false;
     }
   }
+  if (f.progress >= 1.0f && !f.easing) {
+    // A trailing foot about to land where its leg, standing, would cut a box (the lip of a
+    // ledge its body has stepped down from meanwhile) sets down on the nearest place below
+    // its joint that it reaches instead.
+    // (Only down a ledge deeper than a step down: on stairs the step stage keeps such legs.)
+    const RigGirdle& girdle = ctx.rig.girdles[ctx.rig.legs[leg].girdle];
+    const glm::vec2 joint_ws = body.girdle_ws(ctx.rig, ctx.rig.legs[leg].girdle);
+    const glm::vec2 joint_fs = body.to_fs(joint_ws);
+    const auto under = ground_below(ctx.level, joint_ws.x - 1e-3f, joint_ws.x + 1e-3f, joint_ws.y, 2.0f * girdle.rest_height);
+    const bool ledge = under && f.to_ws.y - under->height_ws > ctx.params.max_step_down * girdle.rest_height;
+    if (ledge && body.to_fs(f.to_ws).x < joint_fs.x) {
+      FootState standing;
+      standing.pos_ws = standing.from_ws = standing.to_ws = f.to_ws;
+      glm::vec2 spot;
+      if (stance_leg_hits(ctx, body, leg, standing, joint_fs) &&
+          nearest_fit(in, leg, body.to_ws({joint_fs.x, f.to_ws.y}), &spot) && reaches(in, leg, spot) &&
+          glm::length(spot - f.to_ws) > 1e-3f) {
+        start_ease(in, leg, f, &spot);
+        return false;
+      }
+    }
+  }
   if (f.progress >= 1.0f && !f.easing && tick.moving) {
     // A foot stepping down further than the leg reaches from the still-high body waits above
     // its landing point while the body comes down to it (body placement lowers the girdle).
