@@ -99,16 +99,11 @@ GaitFamilyTraits gait_family_traits(GaitFamily family, const AnimRig& rig) {
   switch (family) {
     case GaitFamily::kAuto:
     case GaitFamily::kCursorial:
-      // Walk → trot near Fr 0.5, trot → gallop near Fr 2–3 (Alexander 1989); the full run at
-      // Fr 3 (faster gallops are not tested on the shipped levels yet: slips at steps).
-      t.gaits = {Gait::kWalk, Gait::kTrot, Gait::kGallop};
-      t.mid_froude = 0.5f;
-      t.fast_froude = 2.0f;
-      t.top_froude = 3.0f;
-      break;
     case GaitFamily::kPacer:
-      // Camels pace where horses trot (Dagg 1974); both gallop when fast.
-      t.gaits = {Gait::kWalk, Gait::kPace, Gait::kGallop};
+      // Walk → trot near Fr 0.5, trot → gallop near Fr 2–3 (Alexander 1989); camels pace where
+      // horses trot (Dagg 1974). The full run at Fr 3 (faster gallops are not tested on the
+      // shipped levels yet).
+      t.gaits = {Gait::kWalk, family == GaitFamily::kPacer ? Gait::kPace : Gait::kTrot, Gait::kGallop};
       t.mid_froude = 0.5f;
       t.fast_froude = 2.0f;
       t.top_froude = 3.0f;

@@ -3,8 +3,8 @@
 #include "ossa/io/file.h"
 #include "ossa/io/image_info.h"
 
-// stb_image, static so that it cannot clash with another copy (ossa::render's rigged meshes
-// compile their own, also static).
+// stb_image, the one copy ossa compiles (static: it cannot clash with an embedder's own or
+// Assimp's).
 #define STB_IMAGE_STATIC
 #define STB_IMAGE_IMPLEMENTATION
 #define STBI_ONLY_PNG
@@ -19,21 +19,25 @@
 
 namespace ossa {
 
-Result<Image> decode_image_file(const std::string& path) {
-  Result<std::string> bytes = read_file(path, kMaxImageFileBytes);
-  if (!bytes) return bytes.error();
-  if (Result<ImageInfo> info = check_image(*bytes, path); !info) return info.error();
+Result<Image> decode_image(std::string_view bytes, const std::string& name) {
+  if (Result<ImageInfo> info = check_image(bytes, name); !info) return info.error();
   int w = 0, h = 0, channels = 0;
-  stbi_uc* pixels = stbi_load_from_memory(reinterpret_cast<const stbi_uc*>(bytes->data()),
-                                          static_cast<int>(bytes->size()), &w, &h, &channels, 4);
-  if (!pixels) return Error{path + ": cannot load image: " + stbi_failure_reason()};
+  stbi_uc* pixels = stbi_load_from_memory(reinterpret_cast<const stbi_uc*>(bytes.data()), static_cast<int>(bytes.size()),
+                                          &w, &h, &channels, 4);
+  if (!pixels) return Error{name + ": cannot load image: " + stbi_failure_reason()};
   Image image;
   image.width = w;
   image.height = h;
   image.rgba.assign(pixels, pixels + static_cast<size_t>(w) * h * 4);
   stbi_image_free(pixels);
-  if (image.empty()) return Error{path + ": image has no pixels"};
+  if (image.empty()) return Error{name + ": image has no pixels"};
   return image;
+}
+
+Result<Image> decode_image_file(const std::string& path) {
+  Result<std::string> bytes = read_file(path, kMaxImageFileBytes);
+  if (!bytes) return bytes.error();
+  return decode_image(*bytes, path);
 }
 
 Image checker_image(int width, int height, int cell) {

@@ -5,6 +5,7 @@
 
 #include <cstdint>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "ossa/io/result.h"
@@ -28,6 +29,8 @@ struct Image {
 // (io/image_info.h) — the same input rule as platform/image.h's load_image (SDL2_image), which
 // ossa::render uses; this one needs neither SDL nor GL. Errors name the file and the reason.
 Result<Image> decode_image_file(const std::string& path);
+// The same for an image already in memory (an embedded texture); `name` heads the errors.
+Result<Image> decode_image(std::string_view bytes, const std::string& name);
 
 // A magenta/dark-grey checkerboard of `cell`-pixel squares: the visible fallback for a
 // missing or broken texture (DESIGN.md §11).

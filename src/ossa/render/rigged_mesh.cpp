@@ -14,20 +14,10 @@
 #include <cstring>
 #include <filesystem>
 
+#include "ossa/draw/image.h"
 #include "ossa/io/file.h"
 #include "ossa/io/image_info.h"
 #include "ossa/render/rigged_mesh_internal.h"
-
-// stb_image, static so that it cannot clash with another translation unit of ossa::render (or
-// Assimp) compiling its own copy.
-#define STB_IMAGE_STATIC
-#define STB_IMAGE_IMPLEMENTATION
-#pragma GCC diagnostic push
-#pragma GCC diagnostic ignored "-Wunused-function"
-#pragma GCC diagnostic ignored "-Wmissing-field-initializers"
-#pragma GCC diagnostic ignored "-Wsign-compare"
-#include <stb_image.h>
-#pragma GCC diagnostic pop
 
 namespace ossa {
 
@@ -37,20 +27,12 @@ Status decode_embedded(const aiTexture& t, const std::string& file, RiggedMesh& 
   if (!t.pcData) return Error::at(file, "embedded texture", "has no data");
   if (t.mHeight == 0) {  // compressed (PNG, JPEG, ...): mWidth bytes
     if (t.mWidth == 0 || t.mWidth > (1u << 30)) return Error::at(file, "embedded texture", "is empty");
-    // Its size from the header before stb_image allocates it (io/image_info.h).
-    const std::string_view bytes(reinterpret_cast<const char*>(t.pcData), t.mWidth);
-    if (Result<ImageInfo> info = check_image(bytes, file + ": embedded texture"); !info) return info.error();
-    int w = 0, h = 0, n = 0;
-    stbi_uc* px = stbi_load_from_memory(reinterpret_cast<const stbi_uc*>(t.pcData),
-                                        static_cast<int>(t.mWidth), &w, &h, &n, 4);
-    if (!px) {
-      return Error::at(file, "embedded texture",
-                       std::string("cannot be decoded: ") + stbi_failure_reason());
-    }
-    out.texture_rgba.assign(px, px + static_cast<size_t>(w) * static_cast<size_t>(h) * 4);
-    stbi_image_free(px);
-    out.texture_width = w;
-    out.texture_height = h;
+    // Its size from the header before stb_image allocates it (draw/image.h).
+    Result<Image> image = decode_image({reinterpret_cast<const char*>(t.pcData), t.mWidth}, file + ": embedded texture");
+    if (!image) return image.error();
+    out.texture_width = image->width;
+    out.texture_height = image->height;
+    out.texture_rgba = std::move(image->rgba);
     return {};
   }
   if (t.mWidth > kMaxImageSide || t.mHeight > kMaxImageSide ||
@@ -190,18 +172,12 @@ Result<RiggedMesh> load_rigged_mesh_from_memory(std::span<const uint8_t> bytes,
 Status load_rigged_texture(RiggedMesh& mesh) {
   if (!mesh.texture_rgba.empty()) return {};
   if (mesh.texture_path.empty()) return Error::at(mesh.source, "texture", "the mesh has none");
-  Result<std::string> bytes = read_file(mesh.texture_path, kMaxImageFileBytes);
-  if (!bytes.ok()) return bytes.error();
   // The size from the header before decoding (a 55 KB PNG may declare 16384 × 16384).
-  if (Result<ImageInfo> info = check_image(*bytes, mesh.texture_path); !info) return info.error();
-  int w = 0, h = 0, n = 0;
-  stbi_uc* px = stbi_load_from_memory(reinterpret_cast<const stbi_uc*>(bytes->data()),
-                                      static_cast<int>(bytes->size()), &w, &h, &n, 4);
-  if (!px) return Error::at(mesh.texture_path, "", std::string("cannot decode: ") + stbi_failure_reason());
-  mesh.texture_rgba.assign(px, px + static_cast<size_t>(w) * static_cast<size_t>(h) * 4);
-  stbi_image_free(px);
-  mesh.texture_width = w;
-  mesh.texture_height = h;
+  Result<Image> image = decode_image_file(mesh.texture_path);
+  if (!image) return image.error();
+  mesh.texture_width = image->width;
+  mesh.texture_height = image->height;
+  mesh.texture_rgba = std::move(image->rgba);
   return {};
 }
 
