@@ -149,3 +149,81 @@ TEST_CASE("ground profile: knows when it must be sampled again", "[anim][profile
   const Level other = scenes::flat_level(20.0f);
   CHECK_FALSE(profile.covers(other, 2.0f, 8.0f, -0.5f, 0.5f));
 }
+
+TEST_CASE("ground profile: keeps treads, two bytes per column, and at most kMaxColumns columns", "[anim][profile]") {
+  // Issue 31: a height and two run ends per column made the profile 16 KB of a walking
+  // horse's 23 KB. Flat ground is one tread; a window too wide for kMaxColumns columns of the
+  // asked width gets coarser columns that still cover it and still read the level.
+  const Level flat = scenes::flat_level(400.0f);
+  GroundProfile profile;
+  profile.build(flat, 10.0f, 36.0f, 1.0f, 3.0f, 0.02f);  // a horse's window: 1 300 columns
+  CHECK(profile.size() == 1300);
+  CHECK(profile.tread_count() == 1);
+  CHECK(profile.bytes() <= 2 * 1300 + 64);
+  profile.build(flat, 0.0f, 390.0f, 1.0f, 3.0f, 0.001f);  // 390 000 columns asked
+  CHECK(profile.size() <= GroundProfile::kMaxColumns);
+  CHECK(profile.covers(flat, 1.0f, 389.0f, -1.0f, 0.5f));
+  CHECK(profile.column(profile.column_of(200.0f)) == 0.0f);
+
+  const Level level = scenes::random_level(7, 200);
+  const Box bounds = level.bounds();
+  const float top = 0.5f * (bounds.min_ws.y + bounds.max_ws.y);
+  profile.build(level, bounds.min_ws.x, bounds.max_ws.x, top, 3.0f, 0.0001f);
+  REQUIRE(profile.size() <= GroundProfile::kMaxColumns);
+  REQUIRE(profile.covers(level, bounds.min_ws.x, bounds.max_ws.x, top - 3.0f, top));
+  for (int i = 0; i < profile.size(); i += 97) {
+    const float lo = profile.x0() + static_cast<float>(i) * profile.step(), hi = lo + profile.step();
+    const auto hit = level.ground_height_below(lo, hi, top, 3.0f);
+    CHECK((hit ? profile.column(i) == hit->height_ws : std::isnan(profile.column(i))));
+  }
+}
+
+TEST_CASE("ground profile: largest_jump and slope_top read every column's surface line", "[anim][profile]") {
+  // They pass the inside of a wide tread in one step (flat_until); a column-by-column walk of
+  // surface_line is the reference, on random levels, tile slopes and stairs, for readings
+  // from a mouse's to a horse's, over spans either way round.
+  std::vector<Level> levels;
+  for (uint64_t seed = 1; seed <= 6; ++seed) levels.push_back(scenes::random_level(seed, 120));
+  levels.push_back(test::tile_slope_level(2.0f, 40, 0.05f, 0.016f));
+  levels.push_back(scenes::stairs_level(6, 0.15f, 0.3f));
+  const SlopeReading readings[] = {{0.1f, 0.05f, 0.0f, 0.01f}, {0.36f, 0.072f, 0.4f, 0.036f}, {0.02f, 0.01f, 0.05f, 0.005f}};
+  int checked = 0;
+  for (const Level& level : levels) {
+    const Box bounds = level.bounds();
+    const float top = bounds.max_ws.y + 0.5f;
+    GroundProfile p;
+    p.build(level, bounds.min_ws.x, std::min(bounds.max_ws.x, bounds.min_ws.x + 40.0f), top, bounds.max_ws.y - bounds.min_ws.y + 1.0f, 0.01f);
+    auto line = [&](int i, const SlopeReading& r) { return p.surface_line(p.x0() + (static_cast<float>(i) + 0.5f) * p.step(), r); };
+    for (const SlopeReading& r : readings) {
+      for (int k = 0; k < 60; ++k) {
+        const float a = p.x0() + 0.3f + 0.61f * static_cast<float>(k % 50), b = a + 0.05f + 0.17f * static_cast<float>(k % 23);
+        float jump = 0.0f, prev = line(p.column_of(a), r);
+        for (int i = p.column_of(a) + 1; i <= p.column_of(b); ++i) {
+          const float y = line(i, r);
+          if (!std::isnan(y) && !std::isnan(prev)) jump = std::max(jump, std::fabs(y - prev));
+          prev = y;
+        }
+        CHECK(p.largest_jump(a, b, r) == jump);
+        const float from = a - 1.0f + 0.37f * static_cast<float>(k % 9);
+        if (from < p.x0() || b > p.x0() + static_cast<float>(p.size()) * p.step()) continue;
+        const int lo = p.column_of(a), hi = p.column_of(b), start = p.column_of(from);
+        float top_ref = start >= lo && start <= hi ? line(start, r) : NAN;
+        for (int dir : {-1, 1}) {
+          float last_y = line(start, r);
+          for (int i = start + dir; ((dir > 0 ? hi : lo) - i) * dir >= 0; i += dir) {
+            const float y = line(i, r);
+            if (std::isnan(y)) continue;
+            if (!std::isnan(last_y) && std::fabs(y - last_y) > r.ramp) break;
+            if (i >= lo && i <= hi && !(top_ref >= y)) top_ref = y;
+            last_y = y;
+          }
+        }
+        const float got = p.slope_top(from, a, b, r);
+        INFO("from " << from << " a " << a << " b " << b << " got " << got << " ref " << top_ref << " start " << start << " lo " << lo << " hi " << hi);
+        CHECK(((std::isnan(got) && std::isnan(top_ref)) || got == top_ref));
+        ++checked;
+      }
+    }
+  }
+  CHECK(checked > 500);
+}

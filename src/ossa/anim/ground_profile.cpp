@@ -12,13 +12,17 @@ constexpr float kNoGround = std::numeric_limits<float>::quiet_NaN();
 
 void GroundProfile::build(const Level& level, float x0_ws, float x1_ws, float top_ws, float depth, float step) {
   step_ = std::max(step, 1e-4f);
+  // At most kMaxColumns columns: a wider window gets coarser ones.
+  step_ = std::max(step_, (x1_ws - x0_ws) / static_cast<float>(kMaxColumns - 1));
   x0_ = x0_ws;
   top_ = top_ws;
   depth_ = std::max(depth, 0.0f);
   level_ = &level;
   revision_ = level.revision();
-  const int n = std::max(1, static_cast<int>(std::ceil((x1_ws - x0_ws) / step_)));
-  heights_.assign(n, kNoGround);
+  const int n = std::clamp(static_cast<int>(std::ceil((x1_ws - x0_ws) / step_)), 1, kMaxColumns);
+  // The columns' heights, in a scratch buffer (the profile keeps only the treads).
+  thread_local std::vector<float> heights;
+  heights.assign(n, kNoGround);
   thread_local std::vector<int> hits;
   hits.clear();
   const float x_end = x0_ + static_cast<float>(n) * step_;
@@ -35,22 +39,27 @@ void GroundProfile::build(const Level& level, float x0_ws, float x1_ws, float to
     for (int i = i0; i <= i1; ++i) {
       const float lo = x0_ + static_cast<float>(i) * step_, hi = x0_ + static_cast<float>(i + 1) * step_;
       if (box.max_ws.x < lo || box.min_ws.x > hi) continue;
-      if (!(heights_[i] >= y)) heights_[i] = y;
+      if (!(heights[i] >= y)) heights[i] = y;
     }
   }
-  // The treads: runs of columns at one height (a gap's columns are runs of one).
-  run_first_.resize(n);
-  run_last_.resize(n);
-  for (int i = 0; i < n; ++i) run_first_[i] = i > 0 && heights_[i - 1] == heights_[i] ? run_first_[i - 1] : i;
-  for (int i = n - 1; i >= 0; --i) run_last_[i] = i + 1 < n && heights_[i + 1] == heights_[i] ? run_last_[i + 1] : i;
+  // The treads: runs of columns at one height (a gap's columns are runs of one: NaN != NaN).
+  treads_.clear();
+  tread_of_.resize(n);
+  for (int i = 0; i < n; ++i) {
+    if (i == 0 || heights[i - 1] != heights[i]) treads_.push_back({i, i, heights[i]});
+    treads_.back().last = i;
+    tread_of_[i] = static_cast<std::uint16_t>(treads_.size() - 1);
+  }
+  treads_.shrink_to_fit();  // (kept until the next build; most profiles hold a few treads)
 }
 
-GroundProfile::Tread GroundProfile::tread_at(int i, int most) const {
+GroundProfile::Span GroundProfile::tread_at(int i, int most) const {
   // The columns either side of i at its height, no further than `most` columns to the left
   // and then `most` in all (as walking left first, then right, would find them).
-  Tread t;
-  t.first = std::max(run_first_[i], i - most);
-  t.last = std::min(run_last_[i], t.first + most);
+  const Tread& tread = treads_[tread_of_[i]];
+  Span t;
+  t.first = std::max(tread.first, i - most);
+  t.last = std::min(tread.last, t.first + most);
   return t;
 }
 
@@ -68,12 +77,12 @@ bool GroundProfile::joins(float y, float w, float yn, float wn, bool n_wide, con
 
 float GroundProfile::surface_line(float x_ws, const SlopeReading& reading) const {
   const int i = column_of(x_ws);
-  const float y = heights_[i];
+  const float y = column(i);
   if (std::isnan(y)) return y;
   const int most = static_cast<int>(reading.tread / step_) + 1;
-  const Tread own = tread_at(i, most);
+  const Span own = tread_at(i, most);
   const float width = static_cast<float>(own.last - own.first + 1) * step_;
-  auto middle = [&](const Tread& t) { return x0_ + (static_cast<float>(t.first + t.last + 1) * 0.5f) * step_; };
+  auto middle = [&](const Span& t) { return x0_ + (static_cast<float>(t.first + t.last + 1) * 0.5f) * step_; };
   if (width <= reading.tread) {
     // A narrow tread: the line from its middle to the knot on the side of x — the next
     // tread's middle, or, where that one is wide (the flat top of a hill, the floor of a
@@ -82,9 +91,9 @@ float GroundProfile::surface_line(float x_ws, const SlopeReading& reading) const
     const float mid = middle(own);
     const int dir = x_ws >= mid ? 1 : -1;
     const int j = dir > 0 ? own.last + 1 : own.first - 1;
-    if (j < 0 || j >= size() || std::isnan(heights_[j])) return y;
-    const float y2 = heights_[j];
-    const Tread next = tread_at(j, most);
+    if (j < 0 || j >= size() || std::isnan(column(j))) return y;
+    const float y2 = column(j);
+    const Span next = tread_at(j, most);
     const float next_width = static_cast<float>(next.last - next.first + 1) * step_;
     const bool next_wide = next_width > reading.tread;
     if (!joins(y, width, y2, next_width, next_wide, reading)) return y;
@@ -97,32 +106,48 @@ float GroundProfile::surface_line(float x_ws, const SlopeReading& reading) const
   const int near = static_cast<int>(0.5f * reading.tread / step_) + 1;
   for (int dir : {-1, 1}) {
     // The tread's end on this side, if it is within `near` columns.
-    const int end = dir > 0 ? run_last_[i] : run_first_[i];
+    const int end = dir > 0 ? treads_[tread_of_[i]].last : treads_[tread_of_[i]].first;
     if ((end - i) * dir >= near) continue;
     const int k = end;
     const int j = k + dir;
-    if (j < 0 || j >= size() || heights_[j] == y || std::isnan(heights_[j])) continue;
-    const Tread next = tread_at(j, most);
+    if (j < 0 || j >= size() || column(j) == y || std::isnan(column(j))) continue;
+    const Span next = tread_at(j, most);
     const float next_width = static_cast<float>(next.last - next.first + 1) * step_;
     if (next_width > reading.tread) continue;  // two wide treads: a riser between them
     const float edge = x0_ + static_cast<float>(dir > 0 ? j : k) * step_;
     const float knot = edge - static_cast<float>(dir) * 0.5f * next_width;
     if ((x_ws - knot) * static_cast<float>(dir) <= 0.0f) continue;  // further in: flat
-    const float y2 = heights_[j];
+    const float y2 = column(j);
     if (!joins(y2, next_width, y, width, true, reading)) continue;
     return y + (x_ws - knot) / (middle(next) - knot) * (y2 - y);
   }
   return y;
 }
 
+int GroundProfile::flat_until(int i, int dir, const SlopeReading& reading) const {
+  // As surface_line reads a wide tread: flat where both its ends are `near` columns or more
+  // away; wide when tread_at finds more than `most` columns.
+  const Tread& t = treads_[tread_of_[i]];
+  const int most = static_cast<int>(reading.tread / step_) + 1;
+  if (std::isnan(t.height) || t.last - t.first < most) return i;
+  const int near = static_cast<int>(0.5f * reading.tread / step_) + 1;
+  const int lo = t.first + near, hi = t.last - near;
+  if (i < lo || i > hi) return i;
+  return dir > 0 ? hi : lo;
+}
+
 float GroundProfile::largest_jump(float a_ws, float b_ws, const SlopeReading& reading) const {
   if (a_ws > b_ws) std::swap(a_ws, b_ws);
+  auto line = [&](int i) { return surface_line(x0_ + (static_cast<float>(i) + 0.5f) * step_, reading); };
   float most = 0.0f;
-  float prev = surface_line(x0_ + (static_cast<float>(column_of(a_ws)) + 0.5f) * step_, reading);
-  for (int i = column_of(a_ws) + 1, end = column_of(b_ws); i <= end; ++i) {
-    const float y = surface_line(x0_ + (static_cast<float>(i) + 0.5f) * step_, reading);
+  const int first = column_of(a_ws), end = column_of(b_ws);
+  float prev = line(first);
+  // (Columns up to flat_until read the same height: no jump among them.)
+  for (int i = std::min(flat_until(first, 1, reading), end) + 1; i <= end; ++i) {
+    const float y = line(i);
     if (!std::isnan(y) && !std::isnan(prev)) most = std::max(most, std::fabs(y - prev));
     prev = y;
+    i = std::min(flat_until(i, 1, reading), end);
   }
   return most;
 }
@@ -136,16 +161,25 @@ float GroundProfile::slope_top(float from_ws, float a_ws, float b_ws, const Slop
   auto line = [&](int i) { return surface_line(x0_ + (static_cast<float>(i) + 0.5f) * step_, reading); };
   const float first = line(start);
   float top = start >= lo && start <= hi ? first : kNoGround;
+  // Columns i .. j (towards dir) all reading y: y counts where they meet [lo, hi]; returns j
+  // (i for a gap, whose NaN counts nowhere).
+  auto pass_flat = [&](int i, int dir, int last, float y) {
+    const int j = dir > 0 ? std::min(flat_until(i, dir, reading), last) : std::max(flat_until(i, dir, reading), last);
+    if (j != i && std::max(std::min(i, j), lo) <= std::min(std::max(i, j), hi) && !(top >= y)) top = y;
+    return j;
+  };
   // Either way from the start as far as [lo, hi] reaches, each stopping at a real riser.
   for (int dir : {-1, 1}) {
     const int last = dir > 0 ? hi : lo;
     float prev = first;
-    for (int i = start + dir; (last - i) * dir >= 0; i += dir) {
+    if ((last - start) * dir < 0) continue;
+    for (int i = pass_flat(start, dir, last, first) + dir; (last - i) * dir >= 0; i += dir) {
       const float y = line(i);
       if (std::isnan(y)) continue;  // a gap is no jump
       if (!std::isnan(prev) && std::fabs(y - prev) > reading.ramp) break;
       if (i >= lo && i <= hi && !(top >= y)) top = y;
       prev = y;
+      i = pass_flat(i, dir, last, y);
     }
   }
   return top;

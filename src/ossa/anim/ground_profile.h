@@ -11,7 +11,14 @@
 // same as sampling it every tick, at a fraction of the cost. Later stages ask the profile about
 // the surface's shape; exact clearance checks (does a foot or a bone cut a box) still ask the
 // level. World space (_ws), metres.
+//
+// Storage: the profile keeps its treads (runs of columns at one height; each gap column is a
+// tread of its own) and, per column, the index of its tread in two bytes — about 2 bytes per
+// column on ground of few treads instead of a height and two run ends per column (12 bytes),
+// which made the profile most of a creature's memory (issue 31: 16 KB of a horse's 23 KB).
+// A profile holds at most kMaxColumns columns; a wider window gets coarser columns.
 
+#include <cstddef>
 #include <cstdint>
 #include <vector>
 
@@ -41,17 +48,22 @@ class GroundProfile {
   // Does the profile hold [x0_ws, x1_ws] with its vertical band around [lo_ws, hi_ws], sampled
   // from this revision of the level?
   bool covers(const Level& level, float x0_ws, float x1_ws, float lo_ws, float hi_ws) const {  // (inline: every tick)
-    return !heights_.empty() && level_ == &level && revision_ == level.revision() && x0_ws >= x0_ &&
+    return !tread_of_.empty() && level_ == &level && revision_ == level.revision() && x0_ws >= x0_ &&
            x1_ws <= x0_ + static_cast<float>(size()) * step_ && hi_ws <= top_ && lo_ws >= top_ - depth_;
   }
 
-  bool empty() const { return heights_.empty(); }
-  int size() const { return static_cast<int>(heights_.size()); }
+  static constexpr int kMaxColumns = 65535;  // (tread indices are 16 bits)
+
+  bool empty() const { return tread_of_.empty(); }
+  int size() const { return static_cast<int>(tread_of_.size()); }
+  int tread_count() const { return static_cast<int>(treads_.size()); }
+  // Heap bytes the profile holds.
+  std::size_t bytes() const { return treads_.capacity() * sizeof(Tread) + tread_of_.capacity() * sizeof(std::uint16_t); }
   float step() const { return step_; }
   float x0() const { return x0_; }
   float top() const { return top_; }
   // Column i's ground height, or NaN where there is none.
-  float column(int i) const { return heights_[i]; }
+  float column(int i) const { return treads_[tread_of_[i]].height; }
   // The column holding x (clamped to the profile).
   int column_of(float x_ws) const {
     // floor, then clamp to the columns: compared before the floor (t < 0 exactly when
@@ -69,10 +81,10 @@ class GroundProfile {
   // true).
   // (Inline: asked a few times per girdle and tick.)
   bool may_rise_above(float a_ws, float b_ws, float y, float up_to) const {
-    if (heights_.empty() || a_ws < x0_ || b_ws > x0_ + static_cast<float>(size() - 1) * step_ || up_to > top_) return true;
+    if (tread_of_.empty() || a_ws < x0_ || b_ws > x0_ + static_cast<float>(size() - 1) * step_ || up_to > top_) return true;
     const int last = column_of(b_ws);
-    for (int i = column_of(a_ws); i <= last; i = run_last_[i] + 1) {
-      if (heights_[i] > y) return true;  // (NaN, no ground, is not higher)
+    for (int t = tread_of_[column_of(a_ws)], end = tread_of_[last]; t <= end; ++t) {
+      if (treads_[t].height > y) return true;  // (NaN, no ground, is not higher)
     }
     return false;
   }
@@ -101,14 +113,23 @@ class GroundProfile {
   float slope_top(float from_ws, float a_ws, float b_ws, const SlopeReading& reading) const;
 
  private:
-  struct Tread {
+  struct Span {
     int first = 0, last = 0;  // columns
   };
-  Tread tread_at(int i, int most) const;
+  struct Tread {
+    int first = 0, last = 0;  // its columns
+    float height = 0.0f;      // NaN: a gap (one column)
+  };
+  Span tread_at(int i, int most) const;
+  // The furthest column from i towards dir (±1) up to which surface_line is column i's own
+  // height: i in the inside of a wide tread (more than half a narrow tread from its ends,
+  // where a neighbour's slope may bend the line) gives that inside's end; any other i gives i.
+  // Lets largest_jump and slope_top pass flat ground a tread at a time, not a column.
+  int flat_until(int i, int dir, const SlopeReading& reading) const;
   bool joins(float y, float w, float yn, float wn, bool n_wide, const SlopeReading& reading) const;
 
-  std::vector<float> heights_;
-  std::vector<int> run_first_, run_last_;  // per column: the first and last column of its tread
+  std::vector<Tread> treads_;            // left to right
+  std::vector<std::uint16_t> tread_of_;  // per column: its tread
   float x0_ = 0.0f, step_ = 1.0f, top_ = 0.0f, depth_ = 0.0f;
   std::uint64_t revision_ = 0;
   const Level* level_ = nullptr;
