@@ -9,6 +9,7 @@
 
 #include "ossa/anim/anim_math.h"
 #include "ossa/anim/secondary_motion.h"
+#include "ossa/anim/trunk_bob.h"
 #include "ossa/anim/turn.h"
 #include "ossa/assert.h"
 
@@ -172,6 +173,7 @@ void Animator::update(float dt, const AnimatorIntent& intent, const Level& level
     advance_feet(ctx, body_, gait_, motion_.speed, dt, handoff_, step_);
   }
   handoff_.crouch_done = tick_crouch(rig, params_, dt, loco_);                  //  9 locomotion: the crouch
+  trunk_bob(rig, params_, spline_prototypes_, gait_, step_.feet, gait_.girdle_bob);  // 10 the girdles' bob
   place_body(ctx, dt);                                                          // 10 body placement
   switch (mode_change(ctx, body_, step_.feet, landing, handoff_.crouch_done, loco_)) {  // 11 locomotion
     case ModeChange::kJump:  // forwards at the speed asked for, even from a standstill at a step
@@ -201,7 +203,7 @@ PlacementInputs Animator::placement_inputs(float dt) const {
   in.dt = dt;
   in.speed = motion_.speed;
   in.stepping = gait_.moving;
-  in.bob = body_bob(*rig_, params_, spline_prototypes_, gait_, gait_.idle_time);
+  in.bob = gait_.girdle_bob;
   in.snap = handoff_.turned;
   in.turning = handoff_.turned;
   in.keep_pitch = decay_.pitch;

@@ -40,6 +40,8 @@ struct GaitState {
   std::vector<float> foot_offset, foot_phase_prev;
   float idle_time = 0.0f;      // seconds the creature has stood (idle breathing)
   float crawl_phase = 0.0f;    // cycles of a legless creature's travelling wave
+  // Per girdle: how high it rides over its standing height this tick (trunk_bob.h), metres.
+  std::vector<float> girdle_bob;
 
   // Caches: the family's traits (for `traits_family`), the legs' target offsets at
   // (offsets_mid, offsets_fast) of offsets_family, Fr^0.3 at stride_froude, the shortest
