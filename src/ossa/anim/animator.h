@@ -176,7 +176,7 @@ class Animator {
  private:
   struct Decay {                     // exp(-rate·dt) of each smoothed quantity, per (dt, ism)
     float dt = -1.0f, ism = -1.0f;
-    float lean = 0.0f, run = 0.0f, gait = 0.0f, pitch = 0.0f, root = 0.0f;
+    float lean = 0.0f, run = 0.0f, gait = 0.0f, pitch = 0.0f, root = 0.0f, bob = 0.0f;
   };
 
   anim::AnimContext context(const Level& level) { return {*rig_, params_, level, ground_, hits_}; }

@@ -60,6 +60,7 @@ struct PlacementInputs {
   bool turning = false;       // this tick mirrored the creature (swinging feet count as stance)
   float keep_pitch = 0.0f;    // smoothing exp(-rate·dt) of the pitch and the root height
   float keep_root = 0.0f;
+  float keep_bob = 0.0f;      // smoothing of the bob's part (BodyState::bob_root, bob_pitch)
   float crouch = 0.0f;        // the girdles stand this much lower (a jump's crouch), metres
   float root = NAN;           // a landing's descent: the root's height this tick, not smoothed
 };

@@ -57,7 +57,7 @@ float footfall_bob(std::span<const float> stance_start, float duty, float b, flo
 }
 
 void trunk_bob(const AnimRig& rig, const AnimatorParams& params, const SplinePrototypes& prototypes, const GaitState& gait,
-               const FootSet& feet, std::vector<float>& bob) {
+               const FootSet& feet, float speed, std::vector<float>& bob) {
   bob.assign(rig.girdles.size(), 0.0f);
   if (!gait.moving) {
     const float t = frac(gait.idle_time / params.idle_period);
@@ -68,6 +68,7 @@ void trunk_bob(const AnimRig& rig, const AnimatorParams& params, const SplinePro
   const float extra = prototype_range(PrototypeId::kPelvisY).clamp(prototypes[PrototypeId::kPelvisY].value(frac(2.0f * gait.phase), gait.run_factor)) *
                       rig.hip_height;
   const float b = kWalkForceDip * (1.0f - gait.run_factor);
+  const float fade = std::min(1.0f, speed / std::max(0.5f * walk_speed(rig, params), 1e-4f));
   constexpr int kMaxLegsPerGirdle = 8;
   float starts[kMaxLegsPerGirdle];
   for (size_t g = 0; g < rig.girdles.size(); ++g) {
@@ -77,7 +78,7 @@ void trunk_bob(const AnimRig& rig, const AnimatorParams& params, const SplinePro
       // φ = −offset.
       if (n < kMaxLegsPerGirdle) starts[n++] = frac(-gait.foot_offset[feet.foot_of_leg[leg]]);
     }
-    bob[g] = extra + footfall_bob({starts, static_cast<size_t>(n)}, gait.duty, b, gait.phase, gait.frequency, gait.stride,
+    bob[g] = extra + fade * footfall_bob({starts, static_cast<size_t>(n)}, gait.duty, b, gait.phase, gait.frequency, gait.stride,
                                   rig.hip_height, params.gravity);
   }
 }

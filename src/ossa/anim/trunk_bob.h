@@ -41,9 +41,11 @@ inline constexpr float kWalkForceDip = 0.45f;
 
 // The bob of every girdle this tick at gait.phase, into `bob` (one per rig girdle): the
 // footfall bob above, plus the designer's pelvis_y prototype (twice per stride; none by
-// default); a creature standing still breathes (kIdleY over params.idle_period).
+// default); a creature standing still breathes (kIdleY over params.idle_period). The bob fades
+// in over the first half of the walk speed (`speed`, m/s): a creature setting off or stopping
+// has none (the stride the clock keeps at a crawl would otherwise keep a walk's bob).
 void trunk_bob(const AnimRig& rig, const AnimatorParams& params, const SplinePrototypes& prototypes, const GaitState& gait,
-               const FootSet& feet, std::vector<float>& bob);
+               const FootSet& feet, float speed, std::vector<float>& bob);
 
 // The footfall bob alone (metres) of a girdle whose legs' stances begin at `stance_start`
 // (cycles), each lasting `duty` cycles, with the walk's dip b, at `phase` of a cycle of
