@@ -51,7 +51,7 @@ std::string describe(const SegmentMetrics& s) {
 
 }  // namespace
 
-TEST_CASE("gait families: cursorial and pacer walks land in lateral sequence; gallops have one suspension", "[game][gait]") {
+TEST_CASE("gait families: cursorial and pacer walks land in lateral sequence, gallops one suspension a stride", "[game][gait]") {
   for (const char* name : {"horse", "red deer", "giraffe"}) {
     const Run r = run_family_script(name);
     INFO(name << "\n" << describe(r.walk) << "\n" << describe(r.half) << "\n" << describe(r.full));
@@ -126,7 +126,7 @@ TEST_CASE("gait families: sprawlers walk in diagonal couplets and never gallop",
   }
 }
 
-TEST_CASE("gait families: bipeds alternate; birds run grounded before they fly; heavy bipeds only walk", "[game][gait]") {
+TEST_CASE("gait families: bipeds alternate, birds run grounded before they fly, heavy bipeds only walk", "[game][gait]") {
   for (const char* name : {"ostrich", "pigeon", "tyrannosaurus"}) {
     const Run r = run_family_script(name);
     INFO(name << "\n" << describe(r.walk) << "\n" << describe(r.half) << "\n" << describe(r.full));
