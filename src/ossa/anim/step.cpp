@@ -201,6 +201,29 @@ void step_feet(const AnimContext& ctx, const SplinePrototypes& prototypes, const
   }
 }
 
+void lift_overstretched_feet(const AnimContext& ctx, const SplinePrototypes& prototypes, const BodyFrame& body,
+                             const GaitState& gait, float speed, const TickHandoff& handoff, StepState& step) {
+  FootSet& feet = step.feet;
+  const FootholdInputs in = planner(ctx, body, gait, feet);
+  for (size_t i = 0; i < ctx.rig.legs.size(); ++i) {
+    const int leg = static_cast<int>(i);
+    FootState& f = feet.of_leg(leg);
+    if (!handoff.release_next[feet.foot_of_leg[i]] || f.air || f.state != LegState::kStance) continue;
+    // Out of its leg's reach where the body now stands (body placement's clamp 1 measure)?
+    const RigLeg& info = ctx.rig.legs[i];
+    const glm::vec2 joint = body.to_fs(body.girdle_ws(ctx.rig, info.girdle));
+    float r;
+    const glm::vec2 anchor = leg_anchor(ctx, body, leg, body.to_fs(f.pos_ws), joint, f.stance_clear, &r);
+    if (!(glm::length(anchor - joint) > r)) continue;
+    if (!gait.moving) {
+      restep_in_reach(in, leg, f);
+      continue;
+    }
+    // (No foothold: it stays and lifts on the next tick, as any released foot.)
+    set_new_splines(in, prototypes, gait.run_factor, speed, leg, f, std::max(1.0f - handoff.leg_phase[i].phase, 0.05f));
+  }
+}
+
 void advance_feet(const AnimContext& ctx, const BodyFrame& body, const GaitState& gait, float speed, float dt,
                   TickHandoff& handoff, StepState& step) {
   FootSet& feet = step.feet;

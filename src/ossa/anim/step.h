@@ -80,6 +80,13 @@ void watch_level(const AnimContext& ctx, const BodyFrame& body, StepState& step)
 // is the speed asked for (m/s), dt seconds.
 void step_feet(const AnimContext& ctx, const SplinePrototypes& prototypes, const BodyFrame& body, const GaitState& gait,
                float speed, float dt, TickHandoff& handoff, StepState& step);
+// Stage 10b, after body placement: a stance foot the placement has just stretched out of its
+// leg's reach (handoff.release_next, clamp 6: a stance knee raised out of the ground, a body
+// held up by the ground under it) lifts — or, standing, re-steps — on this tick rather than
+// the next, so it is not dragged for a tick by a leg that cannot reach it (a slide). Other
+// released feet lift on the next tick (step_feet), as does one with no foothold ahead.
+void lift_overstretched_feet(const AnimContext& ctx, const SplinePrototypes& prototypes, const BodyFrame& body,
+                             const GaitState& gait, float speed, const TickHandoff& handoff, StepState& step);
 // The swings' progress after step_feet (the block may have stopped the creature meanwhile:
 // `speed` 0), then the hanging feet; fills handoff.waiting.
 void advance_feet(const AnimContext& ctx, const BodyFrame& body, const GaitState& gait, float speed, float dt,
