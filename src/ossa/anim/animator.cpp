@@ -176,7 +176,7 @@ void Animator::update(float dt, const AnimatorIntent& intent, const Level& level
     advance_feet(ctx, body_, gait_, motion_.speed, dt, handoff_, step_);
   }
   handoff_.crouch_done = tick_crouch(rig, params_, dt, loco_);                  //  9 locomotion: the crouch
-  trunk_bob(rig, params_, spline_prototypes_, gait_, step_.feet, motion_.speed, gait_.girdle_bob);  // 10 the girdles' bob
+  gait_.extra_bob = trunk_bob(rig, params_, spline_prototypes_, gait_, step_.feet, motion_.speed, gait_.girdle_bob);  // 10 the girdles' bob
   place_body(ctx, dt);                                                          // 10 body placement
   if (!rig.legs.empty()) lift_overstretched_feet(ctx, spline_prototypes_, body_, gait_, motion_.speed, handoff_, step_);  // 10b step
   switch (mode_change(ctx, body_, step_.feet, landing, handoff_.crouch_done, loco_)) {  // 11 locomotion
@@ -208,6 +208,7 @@ PlacementInputs Animator::placement_inputs(float dt) const {
   in.speed = motion_.speed;
   in.stepping = gait_.moving;
   in.bob = gait_.girdle_bob;
+  in.extra_bob = gait_.extra_bob;
   in.snap = handoff_.turned;
   in.turning = handoff_.turned;
   in.keep_pitch = decay_.pitch;

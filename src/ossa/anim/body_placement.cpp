@@ -66,7 +66,7 @@ void girdle_heights(Placement& p, std::vector<float>& height) {
       ground = std::max(ground, 0.5f * (ground + below->height_ws));
     }
     const float bob = g < p.in.bob.size() ? p.in.bob[g] : 0.0f;
-    const float standing = ground + girdle.rest_height * params.stance_height + bob - p.in.crouch;
+    const float standing = ground + girdle.rest_height * params.stance_height + bob + p.in.extra_bob - p.in.crouch;
     // A foot waiting above a lower step (see the swing) brings its girdle down to it, but not
     // so far that a leg on the ground folds up (its knee would reach into the ground).
     float floor = -1e30f, lowest = standing;

@@ -55,7 +55,8 @@ struct PlacementInputs {
   float dt = 0.0f;            // seconds; 0 places at once (reset)
   float speed = 0.0f;         // m/s along the facing
   bool stepping = false;      // the gait clock runs this tick (a released foot lifts, not resteps)
-  std::span<const float> bob;  // per girdle: its bob (trunk_bob.h; or idle breathing), metres
+  std::span<const float> bob;  // per girdle: the footfalls' bob (trunk_bob.h), metres, unsmoothed
+  float extra_bob = 0.0f;      // every girdle: the pelvis_y prototype's bob or idle breathing, metres
   bool snap = false;          // take the new height and pitch at once (a turn)
   bool turning = false;       // this tick mirrored the creature (swinging feet count as stance)
   float keep_pitch = 0.0f;    // smoothing exp(-rate·dt) of the pitch and the root height

@@ -21,7 +21,7 @@ constexpr int kHarmonics = 6;
 // λ ≈ 2.3·h·Fr^0.3, longer strides than a horse's at a trot) make the ballistic estimate
 // about 1.6 times the horse's measured trot (Buchner et al. 2000: 53 mm, 4 % of the hip
 // height, at about Fr 1); one share for every gait and creature.
-constexpr float kTrunkShare = 0.6f;
+constexpr float kTrunkShare = 0.5f;
 
 // ∫₀¹ sin(nπu)·e^{−iωu} du (n odd).
 Complex sine_transform(int n, float w) {
@@ -56,14 +56,13 @@ float footfall_bob(std::span<const float> stance_start, float duty, float b, flo
   return kTrunkShare * y * period2;
 }
 
-void trunk_bob(const AnimRig& rig, const AnimatorParams& params, const SplinePrototypes& prototypes, const GaitState& gait,
+float trunk_bob(const AnimRig& rig, const AnimatorParams& params, const SplinePrototypes& prototypes, const GaitState& gait,
                const FootSet& feet, float speed, std::vector<float>& bob) {
   bob.assign(rig.girdles.size(), 0.0f);
   if (!gait.moving) {
     const float t = frac(gait.idle_time / params.idle_period);
     const float idle = prototype_range(PrototypeId::kIdleY).clamp(prototypes[PrototypeId::kIdleY].value(t, gait.run_factor)) * rig.hip_height;
-    std::fill(bob.begin(), bob.end(), idle);
-    return;
+    return idle;
   }
   const float extra = prototype_range(PrototypeId::kPelvisY).clamp(prototypes[PrototypeId::kPelvisY].value(frac(2.0f * gait.phase), gait.run_factor)) *
                       rig.hip_height;
@@ -78,9 +77,10 @@ void trunk_bob(const AnimRig& rig, const AnimatorParams& params, const SplinePro
       // φ = −offset.
       if (n < kMaxLegsPerGirdle) starts[n++] = frac(-gait.foot_offset[feet.foot_of_leg[leg]]);
     }
-    bob[g] = extra + fade * footfall_bob({starts, static_cast<size_t>(n)}, gait.duty, b, gait.phase, gait.frequency, gait.stride,
+    bob[g] = fade * footfall_bob({starts, static_cast<size_t>(n)}, gait.duty, b, gait.phase, gait.frequency, gait.stride,
                                   rig.hip_height, params.gravity);
   }
+  return extra;
 }
 
 }  // namespace ossa::anim

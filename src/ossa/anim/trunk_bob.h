@@ -39,12 +39,14 @@ namespace ossa::anim {
 // plates; e.g. Biewener 2003, "Animal Locomotion", ch. 3).
 inline constexpr float kWalkForceDip = 0.45f;
 
-// The bob of every girdle this tick at gait.phase, into `bob` (one per rig girdle): the
-// footfall bob above, plus the designer's pelvis_y prototype (twice per stride; none by
-// default); a creature standing still breathes (kIdleY over params.idle_period). The bob fades
+// The footfall bob of every girdle this tick at gait.phase, into `bob` (one per rig girdle;
+// zeros while the creature stands). Returns what every girdle adds besides, which body
+// placement smooths with the root (steps, the designer's shapes may jump): the pelvis_y
+// prototype (twice per stride; none by default) while moving, the idle breathing (kIdleY over
+// params.idle_period) while standing. The bob fades
 // in over the first half of the walk speed (`speed`, m/s): a creature setting off or stopping
 // has none (the stride the clock keeps at a crawl would otherwise keep a walk's bob).
-void trunk_bob(const AnimRig& rig, const AnimatorParams& params, const SplinePrototypes& prototypes, const GaitState& gait,
+float trunk_bob(const AnimRig& rig, const AnimatorParams& params, const SplinePrototypes& prototypes, const GaitState& gait,
                const FootSet& feet, float speed, std::vector<float>& bob);
 
 // The footfall bob alone (metres) of a girdle whose legs' stances begin at `stance_start`
