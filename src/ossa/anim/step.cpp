@@ -216,11 +216,16 @@ void lift_overstretched_feet(const AnimContext& ctx, const SplinePrototypes& pro
     const glm::vec2 anchor = leg_anchor(ctx, body, leg, body.to_fs(f.pos_ws), joint, f.stance_clear, &r);
     if (!(glm::length(anchor - joint) > r)) continue;
     if (!gait.moving) {
-      restep_in_reach(in, leg, f);
+      // Standing: it re-steps to where it reaches; where there is no such place (the ground
+      // below a ledge the body stands above) it hangs rather than stay planted out of reach.
+      if (!restep_in_reach(in, leg, f)) hang(ctx, body, leg, 1.0f, f);
       continue;
     }
-    // (No foothold: it stays and lifts on the next tick, as any released foot.)
-    set_new_splines(in, prototypes, gait.run_factor, speed, leg, f, std::max(1.0f - handoff.leg_phase[i].phase, 0.05f));
+    // No foothold for a step: it hangs (reaching down for ground, update_air_feet) rather than
+    // stay planted out of reach.
+    if (!set_new_splines(in, prototypes, gait.run_factor, speed, leg, f, std::max(1.0f - handoff.leg_phase[i].phase, 0.05f))) {
+      hang(ctx, body, leg, 1.0f, f);
+    }
   }
 }
 

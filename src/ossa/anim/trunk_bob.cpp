@@ -57,7 +57,9 @@ float footfall_bob(std::span<const float> stance_start, float duty, float b, flo
 }
 
 float trunk_bob(const AnimRig& rig, const AnimatorParams& params, const SplinePrototypes& prototypes, const GaitState& gait,
-               const FootSet& feet, float speed, std::vector<float>& bob) {
+               const FootSet& feet, float speed, bool steady, float dt, std::vector<float>& bob, float& weight) {
+  constexpr float kBobEaseRate = 6.0f;  // 1/s
+  weight = approach(weight, steady ? 1.0f : 0.0f, std::exp(-kBobEaseRate * dt));
   bob.assign(rig.girdles.size(), 0.0f);
   if (!gait.moving) {
     const float t = frac(gait.idle_time / params.idle_period);
@@ -67,7 +69,7 @@ float trunk_bob(const AnimRig& rig, const AnimatorParams& params, const SplinePr
   const float extra = prototype_range(PrototypeId::kPelvisY).clamp(prototypes[PrototypeId::kPelvisY].value(frac(2.0f * gait.phase), gait.run_factor)) *
                       rig.hip_height;
   const float b = kWalkForceDip * (1.0f - gait.run_factor);
-  const float fade = std::min(1.0f, speed / std::max(0.5f * walk_speed(rig, params), 1e-4f));
+  const float fade = weight * std::min(1.0f, speed / std::max(0.5f * walk_speed(rig, params), 1e-4f));
   constexpr int kMaxLegsPerGirdle = 8;
   float starts[kMaxLegsPerGirdle];
   for (size_t g = 0; g < rig.girdles.size(); ++g) {

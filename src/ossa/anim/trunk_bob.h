@@ -43,11 +43,15 @@ inline constexpr float kWalkForceDip = 0.45f;
 // zeros while the creature stands). Returns what every girdle adds besides, which body
 // placement smooths with the root (steps, the designer's shapes may jump): the pelvis_y
 // prototype (twice per stride; none by default) while moving, the idle breathing (kIdleY over
-// params.idle_period) while standing. The bob fades
+// params.idle_period) while standing. `weight` (the caller keeps it) eases, at kBobEaseRate,
+// to 1 while the gait is `steady` — the feet step in rhythm on ground the legs walk like flat
+// ground — and to 0 on steps, at a ledge (a foot waiting for ground or hanging over a drop) or
+// blocked: there the feet keep no rhythm and the body placement's clamps hold the legs in
+// reach and out of the steps, which a bob would fight. The bob also fades
 // in over the first half of the walk speed (`speed`, m/s): a creature setting off or stopping
 // has none (the stride the clock keeps at a crawl would otherwise keep a walk's bob).
 float trunk_bob(const AnimRig& rig, const AnimatorParams& params, const SplinePrototypes& prototypes, const GaitState& gait,
-               const FootSet& feet, float speed, std::vector<float>& bob);
+               const FootSet& feet, float speed, bool steady, float dt, std::vector<float>& bob, float& weight);
 
 // The footfall bob alone (metres) of a girdle whose legs' stances begin at `stance_start`
 // (cycles), each lasting `duty` cycles, with the walk's dip b, at `phase` of a cycle of
