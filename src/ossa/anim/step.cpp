@@ -209,6 +209,7 @@ void lift_overstretched_feet(const AnimContext& ctx, const SplinePrototypes& pro
     const int leg = static_cast<int>(i);
     FootState& f = feet.of_leg(leg);
     if (!handoff.release_next[feet.foot_of_leg[i]] || f.air || f.state != LegState::kStance) continue;
+    if (handoff.turned) continue;  // the turn's tick: the feet were just handed over (stage 4)
     // Out of its leg's reach where the body now stands (body placement's clamp 1 measure)?
     const RigLeg& info = ctx.rig.legs[i];
     const glm::vec2 joint = body.to_fs(body.girdle_ws(ctx.rig, info.girdle));
@@ -216,9 +217,7 @@ void lift_overstretched_feet(const AnimContext& ctx, const SplinePrototypes& pro
     const glm::vec2 anchor = leg_anchor(ctx, body, leg, body.to_fs(f.pos_ws), joint, f.stance_clear, &r);
     if (!(glm::length(anchor - joint) > r)) continue;
     if (!gait.moving) {
-      // Standing: it re-steps to where it reaches; where there is no such place (the ground
-      // below a ledge the body stands above) it hangs rather than stay planted out of reach.
-      if (!restep_in_reach(in, leg, f)) hang(ctx, body, leg, 1.0f, f);
+      restep_in_reach(in, leg, f);
       continue;
     }
     // No foothold for a step: it hangs (reaching down for ground, update_air_feet) rather than
