@@ -85,6 +85,7 @@
 #include "ossa/anim/spline_prototypes.h"
 #include "ossa/anim/step.h"
 #include "ossa/anim/swing.h"
+#include "ossa/anim/trunk_bob.h"
 #include "ossa/anim/turn.h"
 
 // rig: rigged characters: mappings, guessing, building a Character

@@ -1,5 +1,4 @@
-// Secondary motion (secondary_motion.h) on its own: the bob and the idle breathing, the tail's
-// spring, the legless wave, the arms' swing and the fins' beat.
+// Secondary motion (secondary_motion.h) on its own: the tail's spring, the legless wave, the arms' swing and the fins' beat.
 
 #include "ossa/anim/secondary_motion.h"
 
@@ -25,28 +24,6 @@ const Creature& example(const char* name) {
 }
 
 }  // namespace
-
-TEST_CASE("secondary motion: the bob repeats twice a cycle, the idle breathing over its period", "[anim][secondary]") {
-  const auto rig = build_anim_rig(scenes::quadruped());
-  const AnimatorParams params;
-  const SplinePrototypes prototypes = SplinePrototypes::defaults();
-  anim::GaitState gait;
-  gait.moving = true;
-  float lo = 1e9f, hi = -1e9f;
-  for (float phase = 0.0f; phase < 0.5f; phase += 0.01f) {
-    gait.phase = phase;
-    const float a = anim::body_bob(*rig, params, prototypes, gait, 0.0f);
-    gait.phase = phase + 0.5f;
-    const float b = anim::body_bob(*rig, params, prototypes, gait, 0.0f);
-    CHECK(a == Approx(b).margin(1e-5));  // twice per cycle
-    lo = std::min(lo, a), hi = std::max(hi, a);
-  }
-  CHECK(hi > lo);                          // it does move
-  CHECK(hi - lo < 0.1f * rig->hip_height); // a bob, not a jump
-  gait.moving = false;
-  const float breath0 = anim::body_bob(*rig, params, prototypes, gait, 0.25f * params.idle_period);
-  CHECK(breath0 == Approx(anim::body_bob(*rig, params, prototypes, gait, 1.25f * params.idle_period)).margin(1e-5));
-}
 
 TEST_CASE("secondary motion: the tail's spring settles where the body leaves it, within its swing", "[anim][secondary]") {
   const Creature& horse = example("horse");

@@ -225,10 +225,13 @@ TEST_CASE("run_script measures the horse's gait from its feet on flat ground", "
     CHECK(s.measured.duty_factor == Approx(s.duty_factor).margin(0.05f));
     CHECK(s.measured.vertical_excursion > 0.0f);
     CHECK(s.measured.vertical_excursion < 0.2f);
-    CHECK(s.measured.bobs_per_stride >= 1.0f);
-    CHECK(s.measured.bobs_per_stride <= 3.0f);
     CHECK((s.measured.suspensions_per_stride > 0.0f) == s.flight_phase);
   }
+  // The walk's two girdles vault a quarter cycle apart and cancel at the root (trunk_bob.h:
+  // the trunk rocks instead); the run (a gallop) bobs once or twice a stride.
+  CHECK(r.segments[0].measured.vertical_excursion < 0.005f);
+  CHECK(r.segments[1].measured.bobs_per_stride >= 1.0f);
+  CHECK(r.segments[1].measured.bobs_per_stride <= 2.0f);
   // Walks alternate within each pair and have a sequence (which one is the gait's business).
   for (const SegmentMetrics* walk : {&r.segments[0], &r.segments[2]}) {
     CHECK(walk->measured.hind_pair_phase == Approx(0.5f).margin(0.05f));

@@ -34,11 +34,11 @@ struct ExpectedHash {
 };
 
 constexpr ExpectedHash kExpected[] = {
-    {"default.json", 0x4811918343b4a93eull},
-    {"rough.json", 0xc98c763f279e9a7bull},
-    {"stairs.json", 0x10ca707338e9ac65ull},
-    {"slopes.json", 0x21f249271b6aecebull},
-    {"drops.json", 0xe647ccf3e4bd9de6ull},
+    {"default.json", 0xdbd4e055b5bc7625ull},
+    {"rough.json", 0x477d38ceac291fb7ull},
+    {"stairs.json", 0xfaa0c09f8c8ff75eull},
+    {"slopes.json", 0x7116e987991787faull},
+    {"drops.json", 0x3f94e303f117df3full},
 };
 
 std::string hex(uint64_t v) {

@@ -9,6 +9,7 @@
 
 #include "ossa/anim/anim_math.h"
 #include "ossa/anim/secondary_motion.h"
+#include "ossa/anim/trunk_bob.h"
 #include "ossa/anim/turn.h"
 #include "ossa/assert.h"
 
@@ -21,6 +22,9 @@ namespace {
 // Smoothing rates (1/s, × interpolation_speed_multiplier) of the lean, the walk→run blend,
 // the gait blend, the pitch and the root height.
 constexpr float kLeanRate = 6.0f, kRunRate = 5.0f, kGaitRate = 4.0f, kPitchRate = 10.0f, kRootRate = 14.0f;
+// The girdles' bob is smoothed only against jumps (a start, a stop, a turn): its cut-off lies
+// above a trot's twice-per-stride bounce.
+constexpr float kBobRate = 40.0f;
 // A reset looks for ground from this many hip heights (and at least 1 m) above the position.
 constexpr float kResetSearchOfHip = 2.0f;
 
@@ -119,7 +123,7 @@ void Animator::update(float dt, const AnimatorIntent& intent, const Level& level
   const float ism = std::max(params_.interpolation_speed_multiplier, 0.01f);
   if (dt != decay_.dt || ism != decay_.ism) {
     decay_ = {dt, ism, std::exp(-kLeanRate * ism * dt), std::exp(-kRunRate * ism * dt), std::exp(-kGaitRate * ism * dt),
-              std::exp(-kPitchRate * ism * dt), std::exp(-kRootRate * ism * dt)};
+              std::exp(-kPitchRate * ism * dt), std::exp(-kRootRate * ism * dt), std::exp(-kBobRate * ism * dt)};
   }
   handoff_.begin_tick();
   refresh_ground_profile(level, rig, body_, gait_.stride, ground_);             //  1 ground profile
@@ -172,6 +176,13 @@ void Animator::update(float dt, const AnimatorIntent& intent, const Level& level
     advance_feet(ctx, body_, gait_, motion_.speed, dt, handoff_, step_);
   }
   handoff_.crouch_done = tick_crouch(rig, params_, dt, loco_);                  //  9 locomotion: the crouch
+  {
+    bool steady = !motion_.on_steps && !motion_.block.blocked;
+    for (const anim::FootState& f : step_.feet.feet) steady = steady && !f.air;
+    for (uint8_t w : handoff_.waiting) steady = steady && !w;
+    gait_.extra_bob = trunk_bob(rig, params_, spline_prototypes_, gait_, step_.feet, motion_.speed, steady, dt, gait_.girdle_bob,
+                                gait_.bob_weight);
+  }  // 10 the girdles' bob
   place_body(ctx, dt);                                                          // 10 body placement
   if (!rig.legs.empty()) lift_overstretched_feet(ctx, spline_prototypes_, body_, gait_, motion_.speed, handoff_, step_);  // 10b step
   switch (mode_change(ctx, body_, step_.feet, landing, handoff_.crouch_done, loco_)) {  // 11 locomotion
@@ -202,11 +213,13 @@ PlacementInputs Animator::placement_inputs(float dt) const {
   in.dt = dt;
   in.speed = motion_.speed;
   in.stepping = gait_.moving;
-  in.bob = body_bob(*rig_, params_, spline_prototypes_, gait_, gait_.idle_time);
+  in.bob = gait_.girdle_bob;
+  in.extra_bob = gait_.extra_bob;
   in.snap = handoff_.turned;
   in.turning = handoff_.turned;
   in.keep_pitch = decay_.pitch;
   in.keep_root = decay_.root;
+  in.keep_bob = decay_.bob;
   in.crouch = loco_.mode == Locomotion::kCrouch ? loco_.crouch : 0.0f;
   in.root = landing_root(loco_);
   return in;

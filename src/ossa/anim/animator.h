@@ -131,6 +131,9 @@ class Animator {
   float duty_factor() const { return gait_.duty; }
   float cycle_frequency() const { return gait_.frequency; } // cycles per second
   float run_factor() const { return gait_.run_factor; }     // walk→run blend in [0, 1]
+  // Per girdle (rig().girdles, front first): how high the footfalls make it ride over its
+  // standing height this tick (trunk_bob.h), metres.
+  const std::vector<float>& girdle_bob() const { return gait_.girdle_bob; }
   bool blocked() const { return motion_.block.blocked; }
   int steps() const { return step_.steps; }            // touch-downs so far
   float hip_height() const { return rig_->hip_height; } // h of the Froude number, metres
@@ -173,7 +176,7 @@ class Animator {
  private:
   struct Decay {                     // exp(-rate·dt) of each smoothed quantity, per (dt, ism)
     float dt = -1.0f, ism = -1.0f;
-    float lean = 0.0f, run = 0.0f, gait = 0.0f, pitch = 0.0f, root = 0.0f;
+    float lean = 0.0f, run = 0.0f, gait = 0.0f, pitch = 0.0f, root = 0.0f, bob = 0.0f;
   };
 
   anim::AnimContext context(const Level& level) { return {*rig_, params_, level, ground_, hits_}; }

@@ -65,7 +65,8 @@ void girdle_heights(Placement& p, std::vector<float>& height) {
                          : std::nullopt) {
       ground = std::max(ground, 0.5f * (ground + below->height_ws));
     }
-    const float standing = ground + girdle.rest_height * params.stance_height + p.in.bob - p.in.crouch;
+    const float bob = g < p.in.bob.size() ? p.in.bob[g] : 0.0f;
+    const float standing = ground + girdle.rest_height * params.stance_height + bob + p.in.extra_bob - p.in.crouch;
     // A foot waiting above a lower step (see the swing) brings its girdle down to it, but not
     // so far that a leg on the ground folds up (its knee would reach into the ground).
     float floor = -1e30f, lowest = standing;
@@ -160,10 +161,26 @@ void place_body(const AnimContext& ctx, const PlacementInputs& in, const FootSet
     girdle_heights(p, height);
     body_target(p, height, &target_root, &target_pitch);
   }
+  // The bob's part of the targets: the same targets without it.
+  float bob_root = 0.0f, bob_pitch = 0.0f;
+  if (!rig.girdles.empty() && !in.bob.empty()) {
+    for (size_t g = 0; g < n && g < in.bob.size(); ++g) height[g] -= in.bob[g];
+    float root0 = target_root, pitch0 = 0.0f;
+    body_target(p, height, &root0, &pitch0);
+    bob_root = target_root - root0, bob_pitch = target_pitch - pitch0;
+    target_root = root0, target_pitch = pitch0;
+  }
   const bool snap = in.snap || in.dt <= 0.0f;
-  body.pitch = approach(body.pitch, target_pitch, snap ? 0.0f : in.keep_pitch);
-  state.pitch_target = target_pitch;
-  body.root_y_ws = std::isnan(in.root) ? approach(body.root_y_ws, target_root, snap ? 0.0f : in.keep_root) : in.root;
+  bob_root = approach(state.bob_root, bob_root, snap ? 0.0f : in.keep_bob);
+  bob_pitch = approach(state.bob_pitch, bob_pitch, snap ? 0.0f : in.keep_bob);
+  body.pitch = approach(body.pitch - state.bob_pitch, target_pitch, snap ? 0.0f : in.keep_pitch) + bob_pitch;
+  state.pitch_target = target_pitch + bob_pitch;
+  if (std::isnan(in.root)) {
+    body.root_y_ws = approach(body.root_y_ws - state.bob_root, target_root, snap ? 0.0f : in.keep_root) + bob_root;
+  } else {
+    body.root_y_ws = in.root, bob_root = 0.0f;  // a landing's descent
+  }
+  state.bob_root = bob_root, state.bob_pitch = bob_pitch;
 
   keep_stance_legs_in_reach(p, need, room);
   keep_stance_legs_unfolded(p, fold, room);
@@ -202,6 +219,7 @@ void reset_body(float x, float root_y, int facing, BodyFrame& body, BodyState& s
   body.lean = body.pitch = 0.0f;
   body.root_y_ws = root_y;
   state.root_vy = state.body_lift = 0.0f;
+  state.bob_root = state.bob_pitch = 0.0f;
 }
 
 void mirror_body(const AnimRig& rig, BodyFrame& body) {
@@ -222,6 +240,7 @@ void fly_body(float root_y, float vy, float keep_level, BodyFrame& body, BodySta
   body.pitch = approach(body.pitch, 0.0f, keep_level);
   body.lean = approach(body.lean, 0.0f, keep_level);
   state.root_vy = vy;
+  state.bob_root = state.bob_pitch = 0.0f;
 }
 
 namespace {

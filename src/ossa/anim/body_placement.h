@@ -27,6 +27,7 @@
 // Heights in world metres; angles radians.
 
 #include <cmath>
+#include <span>
 
 #include <glm/vec2.hpp>
 
@@ -40,6 +41,10 @@ struct BodyState {
   float pitch_target = 0.0f;  // the pitch of the ground under the girdles, radians
   float root_vy = 0.0f;       // vertical speed of the root, m/s (drives the tail)
   float body_lift = 0.0f;     // legless: how far the wave has lately lifted the body, metres
+  // The part of the root height and the pitch the girdles' bob gave last tick: the placement
+  // smooths the rest (steps, slopes) and adds the bob unsmoothed (a low-pass would flatten and
+  // delay a trot's bounce).
+  float bob_root = 0.0f, bob_pitch = 0.0f;
   // The rest chord between the end girdles (model space) the placement last used, and its
   // length and angle: worked out once, not every tick.
   glm::vec2 chord{NAN, NAN};
@@ -50,11 +55,13 @@ struct PlacementInputs {
   float dt = 0.0f;            // seconds; 0 places at once (reset)
   float speed = 0.0f;         // m/s along the facing
   bool stepping = false;      // the gait clock runs this tick (a released foot lifts, not resteps)
-  float bob = 0.0f;           // pelvis bob (or idle breathing), metres
+  std::span<const float> bob;  // per girdle: the footfalls' bob (trunk_bob.h), metres, unsmoothed
+  float extra_bob = 0.0f;      // every girdle: the pelvis_y prototype's bob or idle breathing, metres
   bool snap = false;          // take the new height and pitch at once (a turn)
   bool turning = false;       // this tick mirrored the creature (swinging feet count as stance)
   float keep_pitch = 0.0f;    // smoothing exp(-rate·dt) of the pitch and the root height
   float keep_root = 0.0f;
+  float keep_bob = 0.0f;      // smoothing of the bob's part (BodyState::bob_root, bob_pitch)
   float crouch = 0.0f;        // the girdles stand this much lower (a jump's crouch), metres
   float root = NAN;           // a landing's descent: the root's height this tick, not smoothed
 };

@@ -40,6 +40,10 @@ struct GaitState {
   std::vector<float> foot_offset, foot_phase_prev;
   float idle_time = 0.0f;      // seconds the creature has stood (idle breathing)
   float crawl_phase = 0.0f;    // cycles of a legless creature's travelling wave
+  // Per girdle: how high it rides over its standing height this tick (trunk_bob.h), metres.
+  std::vector<float> girdle_bob;
+  float bob_weight = 0.0f;     // how much of the footfall bob applies (trunk_bob.h), eased
+  float extra_bob = 0.0f;      // every girdle: the pelvis_y prototype's bob or idle breathing, metres
 
   // Caches: the family's traits (for `traits_family`), the legs' target offsets at
   // (offsets_mid, offsets_fast) of offsets_family, Fr^0.3 at stride_froude, the shortest

@@ -21,7 +21,7 @@ namespace ossa::anim {
 std::optional<GroundHit> ground_below(const Level& level, float x0, float x1, float from_y, float max_drop);
 
 // Does the polyline p[0] - p[1] - ... pass through the interior of a collider (shrunk by a
-// millimetre)? One query for its bounds, then a Liang-Barsky clip per segment and box.
+// little under a millimetre, 0.99 mm)? One query for its bounds, then a Liang-Barsky clip per segment and box.
 // `hits` is scratch.
 bool polyline_hits_level(const Level& level, const glm::vec2* p, int n, std::vector<int>& hits);
 

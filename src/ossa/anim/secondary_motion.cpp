@@ -7,13 +7,6 @@
 
 namespace ossa::anim {
 
-float body_bob(const AnimRig& rig, const AnimatorParams& params, const SplinePrototypes& prototypes, const GaitState& gait,
-               float idle_time) {
-  const PrototypeId id = gait.moving ? PrototypeId::kPelvisY : PrototypeId::kIdleY;
-  const float t = gait.moving ? frac(2.0f * gait.phase) : frac(idle_time / params.idle_period);
-  return prototype_range(id).clamp(prototypes[id].value(t, gait.run_factor)) * rig.hip_height;
-}
-
 void swing_tail(const AnimRig& rig, const AnimatorParams& params, float dt, float root_vy, float body_angle, TailSpring& tail,
                 Pose& pose) {
   if (rig.tail.empty()) return;

@@ -1,7 +1,7 @@
 #pragma once
 // Secondary motion (DESIGN.md §7 "limbs"; the pose stage, pose_stage.h, stage 12 of
 // Animator::update, and body placement's bob, stage 10): what follows the body rather than carrying it —
-// the pelvis bob (or idle breathing), the tail's damped spring, the travelling wave of legless
+// the tail's damped spring, the travelling wave of legless
 // bodies, the arms swinging counter to their same-side leg and the fins' slow beat.
 //
 // Plain functions of the gait and body state; they write joint values of `pose` (radians)
@@ -13,11 +13,6 @@
 #include "ossa/anim/spline_prototypes.h"
 
 namespace ossa::anim {
-
-// The pelvis bob while moving (prototype kPelvisY, twice per cycle) or the idle breathing
-// (kIdleY over params.idle_period), in metres.
-float body_bob(const AnimRig& rig, const AnimatorParams& params, const SplinePrototypes& prototypes, const GaitState& gait,
-               float idle_time);
 
 struct TailSpring {
   float angle = 0.0f;  // radians, summed over the tail

@@ -44,10 +44,10 @@ SplinePrototypes SplinePrototypes::defaults() {
                                 spline({{0.0f, 0.0f, 0.4f}, {0.45f, 0.62f, 1.7f}, {1.0f, 1.0f, 0.0f}})};
   p[PrototypeId::kLegSwingY] = {spline({{0.0f, 0.0f, 0.6f}, {0.4f, 0.12f, 0.0f}, {1.0f, 0.0f, -0.3f}}),
                                 spline({{0.0f, 0.0f, 1.0f}, {0.35f, 0.22f, 0.0f}, {1.0f, 0.0f, -0.6f}})};
-  // Pelvis: lowest just after touch-down, highest mid-stance (walk: vaulting over the leg);
-  // running inverts it (lowest mid-stance, compressed spring).
-  p[PrototypeId::kPelvisY] = {spline({{0.0f, -0.015f, 0.0f}, {0.5f, 0.015f, 0.0f}, {1.0f, -0.015f, 0.0f}}),
-                              spline({{0.0f, 0.02f, 0.0f}, {0.5f, -0.03f, 0.0f}, {1.0f, 0.02f, 0.0f}})};
+  // Pelvis: the designer's extra bob, twice per stride, over the one the footfalls give
+  // (trunk_bob.h); none by default.
+  p[PrototypeId::kPelvisY] = {spline({{0.0f, 0.0f, 0.0f}, {0.5f, 0.0f, 0.0f}, {1.0f, 0.0f, 0.0f}}),
+                              spline({{0.0f, 0.0f, 0.0f}, {0.5f, 0.0f, 0.0f}, {1.0f, 0.0f, 0.0f}})};
   // Arms: a pendulum over the stride, counter to the same-side leg.
   p[PrototypeId::kArmSwing] = {spline({{0.0f, 0.3f, 0.0f}, {0.5f, -0.3f, 0.0f}, {1.0f, 0.3f, 0.0f}}),
                                spline({{0.0f, 0.65f, 0.0f}, {0.5f, -0.65f, 0.0f}, {1.0f, 0.65f, 0.0f}})};

@@ -209,6 +209,7 @@ void lift_overstretched_feet(const AnimContext& ctx, const SplinePrototypes& pro
     const int leg = static_cast<int>(i);
     FootState& f = feet.of_leg(leg);
     if (!handoff.release_next[feet.foot_of_leg[i]] || f.air || f.state != LegState::kStance) continue;
+    if (handoff.turned) continue;  // the turn's tick: the feet were just handed over (stage 4)
     // Out of its leg's reach where the body now stands (body placement's clamp 1 measure)?
     const RigLeg& info = ctx.rig.legs[i];
     const glm::vec2 joint = body.to_fs(body.girdle_ws(ctx.rig, info.girdle));
@@ -219,8 +220,11 @@ void lift_overstretched_feet(const AnimContext& ctx, const SplinePrototypes& pro
       restep_in_reach(in, leg, f);
       continue;
     }
-    // (No foothold: it stays and lifts on the next tick, as any released foot.)
-    set_new_splines(in, prototypes, gait.run_factor, speed, leg, f, std::max(1.0f - handoff.leg_phase[i].phase, 0.05f));
+    // No foothold for a step: it hangs (reaching down for ground, update_air_feet) rather than
+    // stay planted out of reach.
+    if (!set_new_splines(in, prototypes, gait.run_factor, speed, leg, f, std::max(1.0f - handoff.leg_phase[i].phase, 0.05f))) {
+      hang(ctx, body, leg, 1.0f, f);
+    }
   }
 }
 

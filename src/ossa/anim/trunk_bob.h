@@ -1,0 +1,62 @@
+#pragma once
+// Trunk bob (DESIGN.md §7 "body"; computed before body placement, stage 10 of
+// Animator::update): how high each girdle rides over its standing height while the creature
+// moves, from the gait's own footfall timing — not a shape drawn per animal or per gait.
+//
+// Each girdle is a mass carried by its own legs. A leg in stance pushes up with a force that
+// rises and falls over its stance, f(u) = sin(πu) + b·sin(3πu) (u: the fraction of its stance
+// gone): b > 0 dips the force at mid-stance, the walk's two humps (the body vaults over the
+// leg); b = 0 is the run's single hump (a spring). The girdle's legs together carry its weight
+// on average, so the girdle accelerates by g·(F(φ)/mean F − 1) over the cycle φ; integrated
+// twice over one period T = 1/frequency, that is its height (Fourier series in φ, exact for
+// these kernels: no sampling). Out of the timing alone it follows that walks and trots rise and
+// fall twice per stride (each leg of the pair in turn), gallops, bounds and hops once (the
+// pair lands together), that a walk is highest at mid-stance and a run lowest, that the
+// girdles of a quadruped rise and fall at different times (the trunk pitches), and that a
+// foot always down (graviportal) keeps the bob small.
+//
+// Below the walk-to-run Froude number 0.5 the force's swing grows with speed as the
+// centripetal force over the leg does (∝ Fr), so a creeping walk barely bobs and a creature
+// setting off starts from no bob at all (the height then tends to 2λ²/h·(…), not to ∞ as
+// T grows). The result is scaled by kTrunkShare, the part of the centre of mass's excursion the
+// girdles show (legs and spine take the rest; see the constant).
+//
+// Heights in metres, relative to the girdle's standing height.
+
+#include <span>
+#include <vector>
+
+#include "ossa/anim/anim_rig.h"
+#include "ossa/anim/anim_state.h"
+#include "ossa/anim/animator_params.h"
+#include "ossa/anim/gait_clock.h"
+#include "ossa/anim/spline_prototypes.h"
+
+namespace ossa::anim {
+
+// The walk's force dip at mid-stance (b of the kernel above; the run's is 0): a walking leg's
+// vertical force falls to about 0.6–0.7 of its peaks at mid-stance (human and horse force
+// plates; e.g. Biewener 2003, "Animal Locomotion", ch. 3).
+inline constexpr float kWalkForceDip = 0.45f;
+
+// The footfall bob of every girdle this tick at gait.phase, into `bob` (one per rig girdle;
+// zeros while the creature stands). Returns what every girdle adds besides, which body
+// placement smooths with the root (steps, the designer's shapes may jump): the pelvis_y
+// prototype (twice per stride; none by default) while moving, the idle breathing (kIdleY over
+// params.idle_period) while standing. `weight` (the caller keeps it) eases, at kBobEaseRate,
+// to 1 while the gait is `steady` — the feet step in rhythm on ground the legs walk like flat
+// ground — and to 0 on steps, at a ledge (a foot waiting for ground or hanging over a drop) or
+// blocked: there the feet keep no rhythm and the body placement's clamps hold the legs in
+// reach and out of the steps, which a bob would fight. The bob also fades
+// in over the first half of the walk speed (`speed`, m/s): a creature setting off or stopping
+// has none (the stride the clock keeps at a crawl would otherwise keep a walk's bob).
+float trunk_bob(const AnimRig& rig, const AnimatorParams& params, const SplinePrototypes& prototypes, const GaitState& gait,
+               const FootSet& feet, float speed, bool steady, float dt, std::vector<float>& bob, float& weight);
+
+// The footfall bob alone (metres) of a girdle whose legs' stances begin at `stance_start`
+// (cycles), each lasting `duty` cycles, with the walk's dip b, at `phase` of a cycle of
+// `frequency` cycles per second, stride `stride` metres, for a creature of hip height h.
+float footfall_bob(std::span<const float> stance_start, float duty, float b, float phase, float frequency, float stride, float h,
+                   float gravity);
+
+}  // namespace ossa::anim
