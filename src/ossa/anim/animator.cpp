@@ -181,7 +181,7 @@ void Animator::update(float dt, const AnimatorIntent& intent, const Level& level
     for (const anim::FootState& f : step_.feet.feet) steady = steady && !f.air;
     for (uint8_t w : handoff_.waiting) steady = steady && !w;
     gait_.extra_bob = trunk_bob(rig, params_, spline_prototypes_, gait_, step_.feet, motion_.speed, steady, dt, gait_.girdle_bob,
-                                gait_.bob_weight);
+                                gait_.bob_weight, gait_.bob_series);
   }  // 10 the girdles' bob
   place_body(ctx, dt);                                                          // 10 body placement
   if (!rig.legs.empty()) lift_overstretched_feet(ctx, spline_prototypes_, body_, gait_, motion_.speed, handoff_, step_);  // 10b step

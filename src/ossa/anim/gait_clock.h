@@ -9,6 +9,7 @@
 // smoothing factors. Output: GaitState. Stride in metres, frequency in cycles per second,
 // phases in cycles.
 
+#include <array>
 #include <cstdint>
 #include <vector>
 
@@ -20,6 +21,21 @@
 
 namespace ossa {
 namespace anim {
+
+// (trunk_bob.h) One girdle's footfall bob as a Fourier series in the phase (kBobHarmonics complex
+// coefficients, the constant term 0), kept with the timing it was made for.
+inline constexpr int kBobHarmonics = 6;
+struct BobKey {
+  float duty = -1.0f, b = 0.0f, frequency = 0.0f, stride = 0.0f;
+  int legs = 0;
+  std::array<float, 4> starts{};
+  bool operator==(const BobKey&) const = default;
+};
+struct BobSeries {
+  std::array<std::array<float, 2>, kBobHarmonics> coef{};
+  BobKey key;
+  float at(float phase) const;  // metres
+};
 
 // Owned by the gait clock (stage 6 of Animator::update): the clock's phase and blends, each
 // foot's phase offset, and the clocks of a standing or legless creature.
@@ -43,6 +59,7 @@ struct GaitState {
   // Per girdle: how high it rides over its standing height this tick (trunk_bob.h), metres.
   std::vector<float> girdle_bob;
   float bob_weight = 0.0f;     // how much of the footfall bob applies (trunk_bob.h), eased
+  std::vector<BobSeries> bob_series;  // per girdle: its bob's series (trunk_bob.h), a cache
   float extra_bob = 0.0f;      // every girdle: the pelvis_y prototype's bob or idle breathing, metres
 
   // Caches: the family's traits (for `traits_family`), the legs' target offsets at

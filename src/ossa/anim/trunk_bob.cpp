@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <complex>
 
 #include "ossa/anim/anim_math.h"
 
@@ -10,11 +9,10 @@ namespace ossa::anim {
 
 namespace {
 
-using Complex = std::complex<float>;
 
 // Harmonics of the series: a gallop's one bounce and its short flight need a few, the force
 // kernels' spectra fall as 1/k² and the height's as 1/k⁴ beyond.
-constexpr int kHarmonics = 6;
+constexpr int kHarmonics = kBobHarmonics;
 
 // The part of the centre of mass's vertical excursion the girdles show. The girdles ride on
 // legs that shorten under load and a spine that gives: the stride clock's periods (Alexander's
@@ -23,41 +21,82 @@ constexpr int kHarmonics = 6;
 // height, at about Fr 1); one share for every gait and creature.
 constexpr float kTrunkShare = 0.5f;
 
-// ∫₀¹ sin(nπu)·e^{−iωu} du (n odd).
-Complex sine_transform(int n, float w) {
+// Complex numbers by hand: std::complex<float>'s product checks for NaN through a library
+// call, and the series needs only products of unit phasors.
+struct Complex {
+  float re = 0.0f, im = 0.0f;
+};
+Complex operator*(Complex a, Complex b) { return {a.re * b.re - a.im * b.im, a.re * b.im + a.im * b.re}; }
+Complex operator*(float s, Complex a) { return {s * a.re, s * a.im}; }
+Complex operator+(Complex a, Complex b) { return {a.re + b.re, a.im + b.im}; }
+Complex unit(float angle) { return {std::cos(angle), std::sin(angle)}; }
+
+// ∫₀¹ sin(nπu)·e^{−iωu} du (n odd), given e^{−iω}.
+Complex sine_transform(int n, float w, Complex e_minus_iw) {
   const float npi = static_cast<float>(n) * kPi;
   const float d = npi * npi - w * w;
   if (std::fabs(d) < 1e-4f * npi * npi) return {0.0f, -0.5f};  // ω = nπ: the limit
-  return npi * (1.0f + std::polar(1.0f, -w)) / d;
+  return (npi / d) * Complex{1.0f + e_minus_iw.re, e_minus_iw.im};
 }
 
 }  // namespace
 
-float footfall_bob(std::span<const float> stance_start, float duty, float b, float phase, float frequency, float stride, float h,
-                   float gravity) {
-  if (stance_start.empty() || !(duty > 0.0f) || !(h > 0.0f) || !(stride > 0.0f)) return 0.0f;
+void footfall_series(std::span<const float> stance_start, float duty, float b, float frequency, float stride, float h, float gravity,
+                     BobSeries& series) {
+  series.coef.fill({0.0f, 0.0f});
+  if (stance_start.empty() || !(duty > 0.0f) || !(h > 0.0f) || !(stride > 0.0f)) return;
   // s² of the double integral, with the force's swing ∝ Fr below Fr 0.5:
   // min(T², (Fr/0.5)·T²) = min(1/f², 2λ²/(g·h)).
   const float creep = 2.0f * stride * stride / (gravity * h);
   const float period2 = frequency > 0.0f ? std::min(1.0f / (frequency * frequency), creep) : creep;
   // The mean force: Σ duty·∫₀¹ f = duty·(2/π + b·2/(3π)) per leg.
   const float mean = static_cast<float>(stance_start.size()) * duty * (2.0f / kPi) * (1.0f + b / 3.0f);
-  float y = 0.0f;
+  // Harmonic k's phasors are the k-th powers of the first: e^{−2πi·start} per leg and
+  // e^{−2πi·duty} (the kernel's e^{−iω}); one sine and cosine each, then products.
+  constexpr int kMaxLegs = 16;
+  const int n = std::min(static_cast<int>(stance_start.size()), kMaxLegs);
+  Complex leg_step[kMaxLegs], leg_k[kMaxLegs];
+  for (int j = 0; j < n; ++j) leg_step[j] = leg_k[j] = unit(-kTwoPi * stance_start[static_cast<size_t>(j)]);
+  const Complex duty_step = unit(-kTwoPi * duty);
+  Complex duty_k = duty_step;
   for (int k = 1; k <= kHarmonics; ++k) {
+    if (k > 1) {
+      for (int j = 0; j < n; ++j) leg_k[j] = leg_k[j] * leg_step[j];
+      duty_k = duty_k * duty_step;
+    }
     const float w = kTwoPi * static_cast<float>(k) * duty;
-    const Complex kernel = duty * (sine_transform(1, w) + b * sine_transform(3, w));
-    Complex c{0.0f, 0.0f};
-    for (float start : stance_start) c += std::polar(1.0f, -kTwoPi * static_cast<float>(k) * start);
-    // The acceleration's harmonic g·c_k/mean, integrated twice: ÷ −(2πk/T)².
-    const Complex a = gravity * kernel * c / mean;
+    const Complex kernel = duty * (sine_transform(1, w, duty_k) + b * sine_transform(3, w, duty_k));
+    Complex c;
+    for (int j = 0; j < n; ++j) c = c + leg_k[j];
+    // The acceleration's harmonic g·c_k/mean, integrated twice (÷ −(2πk/T)²), both signs of k.
     const float wk = kTwoPi * static_cast<float>(k);
-    y -= 2.0f * (a * std::polar(1.0f, kTwoPi * static_cast<float>(k) * phase)).real() / (wk * wk);
+    const Complex a = (-2.0f * kTrunkShare * period2 * gravity / (mean * wk * wk)) * (kernel * c);
+    series.coef[static_cast<size_t>(k - 1)] = {a.re, a.im};
   }
-  return kTrunkShare * y * period2;
+}
+
+float BobSeries::at(float phase) const {
+  const Complex step = unit(kTwoPi * phase);
+  Complex e = step;
+  float y = 0.0f;
+  for (size_t k = 0; k < coef.size(); ++k) {
+    if (k > 0) e = e * step;
+    y += (Complex{coef[k][0], coef[k][1]} * e).re;
+  }
+  return y;
+}
+
+float footfall_bob(std::span<const float> stance_start, float duty, float b, float phase, float frequency, float stride, float h,
+                   float gravity) {
+  BobSeries series;
+  footfall_series(stance_start, duty, b, frequency, stride, h, gravity, series);
+  return series.at(phase);
 }
 
 float trunk_bob(const AnimRig& rig, const AnimatorParams& params, const SplinePrototypes& prototypes, const GaitState& gait,
-               const FootSet& feet, float speed, bool steady, float dt, std::vector<float>& bob, float& weight) {
+               const FootSet& feet, float speed, bool steady, float dt, std::vector<float>& bob, float& weight,
+                std::vector<BobSeries>& cache) {
+  cache.resize(rig.girdles.size());
   constexpr float kBobEaseRate = 6.0f;  // 1/s
   weight = approach(weight, steady ? 1.0f : 0.0f, std::exp(-kBobEaseRate * dt));
   bob.assign(rig.girdles.size(), 0.0f);
@@ -70,6 +109,7 @@ float trunk_bob(const AnimRig& rig, const AnimatorParams& params, const SplinePr
                       rig.hip_height;
   const float b = kWalkForceDip * (1.0f - gait.run_factor);
   const float fade = weight * std::min(1.0f, speed / std::max(0.5f * walk_speed(rig, params), 1e-4f));
+  if (!(fade > 0.0f)) return extra;  // (bob: zeros)
   constexpr int kMaxLegsPerGirdle = 8;
   float starts[kMaxLegsPerGirdle];
   for (size_t g = 0; g < rig.girdles.size(); ++g) {
@@ -79,8 +119,15 @@ float trunk_bob(const AnimRig& rig, const AnimatorParams& params, const SplinePr
       // φ = −offset.
       if (n < kMaxLegsPerGirdle) starts[n++] = frac(-gait.foot_offset[feet.foot_of_leg[leg]]);
     }
-    bob[g] = fade * footfall_bob({starts, static_cast<size_t>(n)}, gait.duty, b, gait.phase, gait.frequency, gait.stride,
-                                  rig.hip_height, params.gravity);
+    // The series changes only when the timing does (a steady gait keeps it).
+    BobSeries& series = cache[g];
+    BobKey key{gait.duty, b, gait.frequency, gait.stride, n, {}};
+    std::copy(starts, starts + std::min(n, 4), key.starts.begin());
+    if (!(series.key == key) || n > 4) {
+      footfall_series({starts, static_cast<size_t>(n)}, gait.duty, b, gait.frequency, gait.stride, rig.hip_height, params.gravity, series);
+      series.key = key;
+    }
+    bob[g] = fade * series.at(gait.phase);
   }
   return extra;
 }

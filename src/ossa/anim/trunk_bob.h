@@ -34,6 +34,7 @@
 
 namespace ossa::anim {
 
+
 // The walk's force dip at mid-stance (b of the kernel above; the run's is 0): a walking leg's
 // vertical force falls to about 0.6–0.7 of its peaks at mid-stance (human and horse force
 // plates; e.g. Biewener 2003, "Animal Locomotion", ch. 3).
@@ -51,11 +52,14 @@ inline constexpr float kWalkForceDip = 0.45f;
 // in over the first half of the walk speed (`speed`, m/s): a creature setting off or stopping
 // has none (the stride the clock keeps at a crawl would otherwise keep a walk's bob).
 float trunk_bob(const AnimRig& rig, const AnimatorParams& params, const SplinePrototypes& prototypes, const GaitState& gait,
-               const FootSet& feet, float speed, bool steady, float dt, std::vector<float>& bob, float& weight);
+               const FootSet& feet, float speed, bool steady, float dt, std::vector<float>& bob, float& weight,
+               std::vector<BobSeries>& cache);  // (cache: per girdle, the caller keeps it)
 
 // The footfall bob alone (metres) of a girdle whose legs' stances begin at `stance_start`
 // (cycles), each lasting `duty` cycles, with the walk's dip b, at `phase` of a cycle of
 // `frequency` cycles per second, stride `stride` metres, for a creature of hip height h.
+void footfall_series(std::span<const float> stance_start, float duty, float b, float frequency, float stride, float h, float gravity,
+                     BobSeries& series);
 float footfall_bob(std::span<const float> stance_start, float duty, float b, float phase, float frequency, float stride, float h,
                    float gravity);
 
