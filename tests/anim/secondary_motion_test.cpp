@@ -1,4 +1,5 @@
-// Secondary motion (secondary_motion.h) on its own: the tail's spring, the legless wave, the arms' swing and the fins' beat.
+// Secondary motion (secondary_motion.h) on its own: the tail's spring, the legless wave, the
+// arms' swing and the fins' beat.
 
 #include "ossa/anim/secondary_motion.h"
 

@@ -176,13 +176,8 @@ void Animator::update(float dt, const AnimatorIntent& intent, const Level& level
     advance_feet(ctx, body_, gait_, motion_.speed, dt, handoff_, step_);
   }
   handoff_.crouch_done = tick_crouch(rig, params_, dt, loco_);                  //  9 locomotion: the crouch
-  {
-    bool steady = !motion_.on_steps && !motion_.block.blocked;
-    for (const anim::FootState& f : step_.feet.feet) steady = steady && !f.air;
-    for (uint8_t w : handoff_.waiting) steady = steady && !w;
-    gait_.extra_bob = trunk_bob(rig, params_, spline_prototypes_, gait_, step_.feet, motion_.speed, steady, dt, gait_.girdle_bob,
-                                gait_.bob_weight, gait_.bob_series);
-  }  // 10 the girdles' bob
+  trunk_bob(rig, params_, spline_prototypes_, step_.feet, motion_.speed,       // 10 the girdles' bob
+            steady_gait(motion_.on_steps, motion_.block.blocked, step_.feet, handoff_.waiting), dt, gait_);
   place_body(ctx, dt);                                                          // 10 body placement
   if (!rig.legs.empty()) lift_overstretched_feet(ctx, spline_prototypes_, body_, gait_, motion_.speed, handoff_, step_);  // 10b step
   switch (mode_change(ctx, body_, step_.feet, landing, handoff_.crouch_done, loco_)) {  // 11 locomotion

@@ -178,10 +178,7 @@ float stance_excess(const Placement& p, size_t i, GirdleJointFs& joints) {
   const AnimRig& rig = p.ctx.rig;
   const FootState& f = p.feet.of_leg(static_cast<int>(i));
   if (f.state != LegState::kStance) return -1e30f;
-  const glm::vec2 joint = joints.of(rig, p.body, rig.legs[i].girdle);
-  float r;
-  const glm::vec2 anchor = leg_anchor(p.ctx, p.body, static_cast<int>(i), p.body.to_fs(f.pos_ws), joint, f.stance_clear, &r);
-  return glm::length(anchor - joint) - r;
+  return leg_overreach(p.ctx, p.body, static_cast<int>(i), f, joints.of(rig, p.body, rig.legs[i].girdle));
 }
 
 // How far the stance foot furthest out of its leg's reach is beyond it (≤ 0: all in reach).

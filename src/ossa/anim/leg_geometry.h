@@ -76,6 +76,13 @@ bool limit_foot_roll(const AnimContext& ctx, const BodyFrame& body, int leg, glm
   return ankle;
 }
 
+// How far stance foot `foot` of leg `leg` lies beyond what its leg reaches with the girdle
+// joint at joint_fs (metres; ≤ 0: in reach) — body placement's clamp 1 measure.
+inline float leg_overreach(const AnimContext& ctx, const BodyFrame& body, int leg, const FootState& foot, glm::vec2 joint_fs) {
+  float r;
+  const glm::vec2 anchor = leg_anchor(ctx, body, leg, body.to_fs(foot.pos_ws), joint_fs, foot.stance_clear, &r);
+  return glm::length(anchor - joint_fs) - r;
+}
 // Would leg `leg`'s chain (joint, knee, ankle, toe), its foot standing where it stands, cut
 // into a box with its girdle joint at joint_fs?
 bool stance_leg_hits(const AnimContext& ctx, const BodyFrame& body, int leg, const FootState& foot, glm::vec2 joint_fs);

@@ -210,12 +210,8 @@ void lift_overstretched_feet(const AnimContext& ctx, const SplinePrototypes& pro
     FootState& f = feet.of_leg(leg);
     if (!handoff.release_next[feet.foot_of_leg[i]] || f.air || f.state != LegState::kStance) continue;
     if (handoff.turned) continue;  // the turn's tick: the feet were just handed over (stage 4)
-    // Out of its leg's reach where the body now stands (body placement's clamp 1 measure)?
-    const RigLeg& info = ctx.rig.legs[i];
-    const glm::vec2 joint = body.to_fs(body.girdle_ws(ctx.rig, info.girdle));
-    float r;
-    const glm::vec2 anchor = leg_anchor(ctx, body, leg, body.to_fs(f.pos_ws), joint, f.stance_clear, &r);
-    if (!(glm::length(anchor - joint) > r)) continue;
+    // Out of its leg's reach where the body now stands?
+    if (!(leg_overreach(ctx, body, leg, f, body.to_fs(body.girdle_ws(ctx.rig, ctx.rig.legs[i].girdle))) > 0.0f)) continue;
     if (!gait.moving) {
       restep_in_reach(in, leg, f);
       continue;

@@ -14,11 +14,11 @@ namespace {
 // kernels' spectra fall as 1/k² and the height's as 1/k⁴ beyond.
 constexpr int kHarmonics = kBobHarmonics;
 
-// The part of the centre of mass's vertical excursion the girdles show. The girdles ride on
-// legs that shorten under load and a spine that gives: the stride clock's periods (Alexander's
-// λ ≈ 2.3·h·Fr^0.3, longer strides than a horse's at a trot) make the ballistic estimate
-// about 1.6 times the horse's measured trot (Buchner et al. 2000: 53 mm, 4 % of the hip
-// height, at about Fr 1); one share for every gait and creature.
+// The share of the ballistic estimate the girdles show, one for every gait and creature. At
+// 1 the horse's trot at Froude 1 rises about 4 % of its hip height, as measured (Buchner et
+// al. 2000: 53 mm), but a gallop's and a bound's trunk then jolts well over the 1.5 g the
+// animator holds to outside hops; at 0.5 the trot reads about 2 % and the gallops stay under
+// (issue 28; README, Gait families).
 constexpr float kTrunkShare = 0.5f;
 
 // Complex numbers by hand: std::complex<float>'s product checks for NaN through a library
@@ -93,9 +93,19 @@ float footfall_bob(std::span<const float> stance_start, float duty, float b, flo
   return series.at(phase);
 }
 
-float trunk_bob(const AnimRig& rig, const AnimatorParams& params, const SplinePrototypes& prototypes, const GaitState& gait,
-               const FootSet& feet, float speed, bool steady, float dt, std::vector<float>& bob, float& weight,
-                std::vector<BobSeries>& cache) {
+bool steady_gait(bool on_steps, bool blocked, const FootSet& feet, std::span<const uint8_t> waiting) {
+  if (on_steps || blocked) return false;
+  for (const FootState& f : feet.feet) {
+    if (f.air) return false;
+  }
+  return std::none_of(waiting.begin(), waiting.end(), [](uint8_t w) { return w != 0; });
+}
+
+void trunk_bob(const AnimRig& rig, const AnimatorParams& params, const SplinePrototypes& prototypes, const FootSet& feet,
+               float speed, bool steady, float dt, GaitState& gait) {
+  std::vector<float>& bob = gait.girdle_bob;
+  std::vector<BobSeries>& cache = gait.bob_series;
+  float& weight = gait.bob_weight;
   cache.resize(rig.girdles.size());
   constexpr float kBobEaseRate = 6.0f;  // 1/s
   weight = approach(weight, steady ? 1.0f : 0.0f, std::exp(-kBobEaseRate * dt));
@@ -103,13 +113,15 @@ float trunk_bob(const AnimRig& rig, const AnimatorParams& params, const SplinePr
   if (!gait.moving) {
     const float t = frac(gait.idle_time / params.idle_period);
     const float idle = prototype_range(PrototypeId::kIdleY).clamp(prototypes[PrototypeId::kIdleY].value(t, gait.run_factor)) * rig.hip_height;
-    return idle;
+    gait.extra_bob = idle;
+    return;
   }
   const float extra = prototype_range(PrototypeId::kPelvisY).clamp(prototypes[PrototypeId::kPelvisY].value(frac(2.0f * gait.phase), gait.run_factor)) *
                       rig.hip_height;
   const float b = kWalkForceDip * (1.0f - gait.run_factor);
   const float fade = weight * std::min(1.0f, speed / std::max(0.5f * walk_speed(rig, params), 1e-4f));
-  if (!(fade > 0.0f)) return extra;  // (bob: zeros)
+  gait.extra_bob = extra;
+  if (!(fade > 0.0f)) return;  // (bob: zeros)
   constexpr int kMaxLegsPerGirdle = 8;
   float starts[kMaxLegsPerGirdle];
   for (size_t g = 0; g < rig.girdles.size(); ++g) {
@@ -129,7 +141,6 @@ float trunk_bob(const AnimRig& rig, const AnimatorParams& params, const SplinePr
     }
     bob[g] = fade * series.at(gait.phase);
   }
-  return extra;
 }
 
 }  // namespace ossa::anim

@@ -18,11 +18,12 @@
 // Below the walk-to-run Froude number 0.5 the force's swing grows with speed as the
 // centripetal force over the leg does (∝ Fr), so a creeping walk barely bobs and a creature
 // setting off starts from no bob at all (the height then tends to 2λ²/h·(…), not to ∞ as
-// T grows). The result is scaled by kTrunkShare, the part of the centre of mass's excursion the
-// girdles show (legs and spine take the rest; see the constant).
+// T grows). The girdles show a share of it (kTrunkShare, trunk_bob.cpp: half, for the jolt
+// limit).
 //
 // Heights in metres, relative to the girdle's standing height.
 
+#include <cstdint>
 #include <span>
 #include <vector>
 
@@ -40,20 +41,24 @@ namespace ossa::anim {
 // plates; e.g. Biewener 2003, "Animal Locomotion", ch. 3).
 inline constexpr float kWalkForceDip = 0.45f;
 
-// The footfall bob of every girdle this tick at gait.phase, into `bob` (one per rig girdle;
-// zeros while the creature stands). Returns what every girdle adds besides, which body
+// The footfall bob of every girdle this tick at gait.phase, into gait.girdle_bob (zeros while
+// the creature stands), and what every girdle adds besides into gait.extra_bob, which body
 // placement smooths with the root (steps, the designer's shapes may jump): the pelvis_y
 // prototype (twice per stride; none by default) while moving, the idle breathing (kIdleY over
-// params.idle_period) while standing. `weight` (the caller keeps it) eases, at kBobEaseRate,
+// params.idle_period) while standing. gait.bob_weight eases, at kBobEaseRate,
 // to 1 while the gait is `steady` — the feet step in rhythm on ground the legs walk like flat
 // ground — and to 0 on steps, at a ledge (a foot waiting for ground or hanging over a drop) or
 // blocked: there the feet keep no rhythm and the body placement's clamps hold the legs in
 // reach and out of the steps, which a bob would fight. The bob also fades
 // in over the first half of the walk speed (`speed`, m/s): a creature setting off or stopping
 // has none (the stride the clock keeps at a crawl would otherwise keep a walk's bob).
-float trunk_bob(const AnimRig& rig, const AnimatorParams& params, const SplinePrototypes& prototypes, const GaitState& gait,
-               const FootSet& feet, float speed, bool steady, float dt, std::vector<float>& bob, float& weight,
-               std::vector<BobSeries>& cache);  // (cache: per girdle, the caller keeps it)
+void trunk_bob(const AnimRig& rig, const AnimatorParams& params, const SplinePrototypes& prototypes, const FootSet& feet,
+               float speed, bool steady, float dt, GaitState& gait);
+
+// Do the feet keep a rhythm on ground walked like flat ground: not on steps (body motion's
+// on_steps), not blocked, no foot hanging over a drop or waiting for ground (`waiting`,
+// TickHandoff::waiting)?
+bool steady_gait(bool on_steps, bool blocked, const FootSet& feet, std::span<const uint8_t> waiting);  // (cache: per girdle, the caller keeps it)
 
 // The footfall bob alone (metres) of a girdle whose legs' stances begin at `stance_start`
 // (cycles), each lasting `duty` cycles, with the walk's dip b, at `phase` of a cycle of
