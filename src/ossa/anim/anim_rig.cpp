@@ -357,6 +357,8 @@ std::shared_ptr<const AnimRig> build_anim_rig(const Skeleton& skeleton, const Po
   rig->weight_kg = roles.weight_kg;
   rig->skull_variant = roles.skull_variant;
   rig->gait_family = roles.gait_family == GaitFamily::kAuto ? anim::choose_gait_family(*rig) : roles.gait_family;
+  rig->traits = anim::gait_family_traits(rig->gait_family, *rig);
+  rig->traits_kept = true;
   return rig;
 }
 

@@ -19,6 +19,7 @@
 
 #include <glm/vec2.hpp>
 
+#include "ossa/anim/gait_family.h"
 #include "ossa/anim/rig_scale.h"
 #include "ossa/gen/creature.h"
 #include "ossa/skeleton/pose.h"
@@ -140,6 +141,10 @@ struct AnimRig {
   GaitFamily gait_family = GaitFamily::kCursorial;
   float weight_kg = 0.0f;           // 0: unknown
   int skull_variant = 0;            // 0 mammal, 1 bird, 2 reptile, 3 fish (genome.h)
+  // gait_family's traits, kept by the builder (gait_family_traits answers from them: the
+  // walk and run speeds are asked several times a tick).
+  anim::GaitFamilyTraits traits;
+  bool traits_kept = false;
 };
 
 // Which bones play which part, for build_anim_rig: a generated creature's LimbLayout

@@ -90,6 +90,7 @@ void Animator::reset(glm::vec2 position_ws, const Level& level, int facing) {
   gait_.run_factor = gait_.mid_factor = gait_.fast_factor = 0.0f;
   gait_.gait = rig.legs.empty() ? Gait::kCrawl : Gait::kIdle;
   gait_.idle_time = 0.0f;
+  gait_.walk_speed = walk_speed();
   pose_.tail = {};
   loco_ = {};
   handoff_.begin_tick();
@@ -160,7 +161,7 @@ void Animator::update(float dt, const AnimatorIntent& intent, const Level& level
   command_speed(planner(ctx, body_, gait_, step_.feet), intent.velocity, dt, landing, motion_);  //  5 body motion: speed
   motion_.on_steps = steps_ahead(ctx, body_, gait_.stride);                    //  5 body motion: steps ahead
   update_gait(rig, params_, motion_.speed, motion_.on_steps, decay_.run, decay_.gait, gait_);  //  6 gait clock
-  lean_body(-params_.max_spine_rotation * std::min(motion_.speed / run_speed(), 1.2f), decay_.lean, body_);  // 7 body motion
+  lean_body(-params_.max_spine_rotation * std::min(motion_.speed / gait_.run_speed, 1.2f), decay_.lean, body_);  // 7 body motion
   const float dx = allowed_move(ctx, body_, pose_.facing, step_.feet, gait_.stride, body_.facing * motion_.speed * dt,
                                 body_boxes_, handoff_);
   update_block(handoff_, body_.facing, motion_);
@@ -232,7 +233,7 @@ void Animator::finish_tick(const AnimContext& ctx, float dt) {
     raise_body(raise, body_, body_state_);
     lift_pose(*rig_, raise, pose_);
   }
-  const float motion = std::min(motion_.speed / std::max(walk_speed(), 1e-3f), 1.0f);
+  const float motion = std::min(motion_.speed / std::max(gait_.walk_speed, 1e-3f), 1.0f);
   pose_limbs(ctx, spline_prototypes_, body_, step_.feet, gait_, motion, pose_);
 }
 

@@ -66,6 +66,8 @@ GaitBands gait_bands(const AnimRig& rig, const AnimatorParams& params) {
 void update_gait(const AnimRig& rig, const AnimatorParams& params, float speed, bool on_steps, float keep_run, float keep_gait,
                  GaitState& gait) {
   const GaitFamilyTraits& t = traits_of(rig, gait_family(rig, params), gait);
+  gait.walk_speed = std::sqrt(walk_froude(t) * params.gravity * rig.hip_height);
+  gait.run_speed = std::sqrt(t.top_froude * params.gravity * rig.hip_height);
   gait.froude = speed * speed / (params.gravity * rig.hip_height);
   gait.run_factor = approach(gait.run_factor, smoothstep(params.run_froude_start, params.run_froude_end, gait.froude), keep_run);
   const float scale = params.gait_froude_scale;

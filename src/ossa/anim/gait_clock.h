@@ -61,6 +61,9 @@ struct GaitState {
   float bob_weight = 0.0f;     // how much of the footfall bob applies (trunk_bob.h), eased
   std::vector<BobSeries> bob_series;  // per girdle: its bob's series (trunk_bob.h), a cache
   float extra_bob = 0.0f;      // every girdle: the pelvis_y prototype's bob or idle breathing, metres
+  // The family's walk and full-run speeds (walk_speed(), run_speed()), m/s, as update_gait
+  // last found them.
+  float walk_speed = 0.0f, run_speed = 0.0f;
 
   // Caches: the family's traits (for `traits_family`), the legs' target offsets at
   // (offsets_mid, offsets_fast) of offsets_family, Fr^0.3 at stride_froude, the shortest

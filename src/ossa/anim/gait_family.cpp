@@ -93,6 +93,7 @@ GaitFamily choose_gait_family(const AnimRig& rig) {
 
 GaitFamilyTraits gait_family_traits(GaitFamily family, const AnimRig& rig) {
   if (family == GaitFamily::kAuto) family = choose_gait_family(rig);
+  if (rig.traits_kept && family == rig.traits.family) return rig.traits;
   GaitFamilyTraits t;
   t.family = family;
   const float kg = rig.weight_kg;

@@ -119,7 +119,7 @@ void trunk_bob(const AnimRig& rig, const AnimatorParams& params, const SplinePro
   const float extra = prototype_range(PrototypeId::kPelvisY).clamp(prototypes[PrototypeId::kPelvisY].value(frac(2.0f * gait.phase), gait.run_factor)) *
                       rig.hip_height;
   const float b = kWalkForceDip * (1.0f - gait.run_factor);
-  const float fade = weight * std::min(1.0f, speed / std::max(0.5f * walk_speed(rig, params), 1e-4f));
+  const float fade = weight * std::min(1.0f, speed / std::max(0.5f * gait.walk_speed, 1e-4f));
   gait.extra_bob = extra;
   if (!(fade > 0.0f)) return;  // (bob: zeros)
   constexpr int kMaxLegsPerGirdle = 8;
