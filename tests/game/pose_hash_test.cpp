@@ -34,11 +34,11 @@ struct ExpectedHash {
 };
 
 constexpr ExpectedHash kExpected[] = {
-    {"default.json", 0x1b4a00b9c09e0e36ull},
-    {"rough.json", 0xcc7a21d78f5babfcull},
-    {"stairs.json", 0xfaa0c09f8c8ff75eull},
-    {"slopes.json", 0x5e1a2e1e15eee81cull},
-    {"drops.json", 0x72d77cf273a1a58cull},
+    {"default.json", 0x939d19383cf90ed7ull},
+    {"rough.json", 0x607fe36cf559d739ull},
+    {"stairs.json", 0x43c1780c100eaaafull},
+    {"slopes.json", 0x9d00efb7ed047486ull},
+    {"drops.json", 0x829e8fd253e30b1bull},
 };
 
 std::string hex(uint64_t v) {

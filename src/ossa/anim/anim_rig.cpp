@@ -260,6 +260,31 @@ void build_fk_plan(const RigRoles& roles, AnimRig& rig) {
       }
     }
   }
+  // The neck's base turns for the head's nod and head-bob (head_motion, trunk_bob.h) when the
+  // skull hangs from it and no girdle does.
+  if (!rig.legs.empty() && !rig.neck.empty() && rig.skull >= 0 && !needed[rig.neck.back()]) {
+    const int base = rig.neck.back();
+    bool carries_skull = false;
+    for (int b = rig.skull; b >= 0; b = sk.parent(b)) carries_skull = carries_skull || b == base;
+    if (carries_skull) {
+      // The head is kept level, so its far end moves as its joint does. The second joint is
+      // the one nearest halfway up the neck (the two parts then reach furthest as two bones).
+      const glm::vec2 head = bone_start(rig.model_rest[rig.skull]);
+      auto reach = [&](int b) { return head - bone_start(rig.model_rest[b]); };
+      const float half = 0.5f * glm::length(reach(base));
+      float best = 1e30f;
+      for (size_t i = 0; i + 1 < rig.neck.size(); ++i) {
+        const float off = std::fabs(glm::length(reach(rig.neck[i])) - half);
+        if (off < best) best = off, rig.nod_bones[1] = rig.neck[i];
+      }
+      rig.nod_bones[0] = base;
+      for (size_t i = 0; i < 2; ++i) {
+        if (rig.nod_bones[i] < 0) continue;
+        rig.dynamic_bone[rig.nod_bones[i]] = 1;
+        rig.nod_reach[i] = reach(rig.nod_bones[i]);
+      }
+    }
+  }
   for (int b = 0; b < sk.bone_count(); ++b) {
     if (rig.dynamic_bone[b] || (limb_bone[b] && !leg_ik_bone[b])) rig.touched_bones.push_back(b);
   }

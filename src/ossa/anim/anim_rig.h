@@ -120,6 +120,12 @@ struct AnimRig {
   std::vector<int> touched_bones;   // bones whose joint values the pose rewrites each tick
   std::vector<int> other_limb_bones;// limb bones not placed by the leg IK, parents first
   std::vector<int> crawl_chain;     // back then tail: the legless travelling wave's bones
+  // The head's nod and a small bird's head-bob bend the neck at its base (nod_bones[0], -1:
+  // none; a legged body's first neck bone, off the girdles' chains) and halfway up
+  // (nod_bones[1], -1 for a one-bone neck), so moving the skull (kept level), nod_reach[i]
+  // from those joints at rest (model space).
+  std::array<int, 2> nod_bones{-1, -1};
+  std::array<glm::vec2, 2> nod_reach{};
 
   // Wall sweep: hulls of the root, back and neck in slabs along the body, relative to the root
   // bone's frame, and the skull (kept level) as its joint in that frame plus its rest span.

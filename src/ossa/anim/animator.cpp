@@ -228,7 +228,8 @@ void Animator::place_body(const AnimContext& ctx, float dt) {
 void Animator::finish_tick(const AnimContext& ctx, float dt) {
   // Stage 12: the pose. A legless body its wave bent into the ground rises (body placement)
   // before its limbs are posed.
-  const float raise = pose_body(ctx, body_, body_state_.root_vy, gait_.crawl_phase, motion_.speed, dt, pose_);
+  const float raise = pose_body(ctx, body_, body_state_.root_vy, gait_.crawl_phase, motion_.speed, dt, pose_,
+                               {gait_.head_rise, gait_.head_shift});
   if (raise > 0.0f) {
     raise_body(raise, body_, body_state_);
     lift_pose(*rig_, raise, pose_);

@@ -61,6 +61,9 @@ struct GaitState {
   float bob_weight = 0.0f;     // how much of the footfall bob applies (trunk_bob.h), eased
   std::vector<BobSeries> bob_series;  // per girdle: its bob's series (trunk_bob.h), a cache
   float extra_bob = 0.0f;      // every girdle: the pelvis_y prototype's bob or idle breathing, metres
+  // The head this tick (trunk_bob.h, head_motion): how far it rises over its rest place with
+  // the walk's nod and how far forward of it a small bird's head-bob holds it, metres.
+  float head_rise = 0.0f, head_shift = 0.0f;
   // The family's walk and full-run speeds (walk_speed(), run_speed()), m/s, as update_gait
   // last found them.
   float walk_speed = 0.0f, run_speed = 0.0f;

@@ -25,6 +25,44 @@ void body_fk(const AnimRig& rig, PoseState& state) {
   for (size_t i = 0; i < rig.girdle_bones.size(); ++i) model[rig.girdle_bones[i]] = root * rig.girdle_rel[i];
 }
 
+// Bend the neck at its two nod joints so that the skull's joint (and, the head kept level, its
+// far end) moves by (shift, rise): the neck from its base to the second joint and from there
+// to the head taken as two bones, solved exactly (law of cosines), bent to the side it is bent
+// at rest (a straight neck: the side that moves the middle forward, away from the body). A one-
+// bone neck turns about its base by the angle that best moves the head. The head follows half
+// the nod.
+void pose_head(const AnimRig& rig, HeadMotion head, Pose& pose) {
+  const glm::vec2 d{head.shift, head.rise};
+  const glm::vec2 r0 = rig.nod_reach[0];
+  float turn0 = 0.0f, turn1 = 0.0f;
+  if (rig.nod_bones[1] < 0) {
+    turn0 = (r0.x * d.y - r0.y * d.x) / std::max(glm::dot(r0, r0), 1e-8f);
+  } else {
+    const glm::vec2 lower = r0 - rig.nod_reach[1], upper = rig.nod_reach[1];
+    const float a = glm::length(lower), b = glm::length(upper);
+    const glm::vec2 target = r0 + d;
+    const float c = std::clamp(glm::length(target), std::fabs(a - b) + 1e-4f, a + b - 1e-4f);
+    if (!(a > 0.0f && b > 0.0f && c > 0.0f)) return;
+    const float alpha = std::acos(std::clamp((a * a + c * c - b * b) / (2.0f * a * c), -1.0f, 1.0f));
+    const float aim = std::atan2(target.y, target.x);
+    const float across = r0.x * lower.y - r0.y * lower.x;  // > 0: the middle lies left of base → head
+    float side = across > 0.0f ? 1.0f : -1.0f;
+    if (std::fabs(across) < 1e-3f * glm::dot(r0, r0)) side = std::cos(aim + alpha) > std::cos(aim - alpha) ? 1.0f : -1.0f;
+    const float lower_angle = aim + side * alpha;
+    const glm::vec2 lower_now = a * glm::vec2(std::cos(lower_angle), std::sin(lower_angle));
+    turn0 = wrap_angle(lower_angle - std::atan2(lower.y, lower.x));
+    const glm::vec2 upper_now = target - lower_now;
+    turn1 = wrap_angle(std::atan2(upper_now.y, upper_now.x) - std::atan2(upper.y, upper.x) - turn0);
+  }
+  constexpr float kMaxBend = 0.8f;  // radians at each joint
+  turn0 = std::clamp(turn0, -kMaxBend, kMaxBend);
+  turn1 = std::clamp(turn1, -kMaxBend, kMaxBend);
+  pose.locals[rig.nod_bones[0]].angle_ls += turn0;
+  if (rig.nod_bones[1] >= 0) pose.locals[rig.nod_bones[1]].angle_ls += turn1;
+  const float follow = 0.5f * head.rise / std::max(glm::length(r0), 1e-4f);
+  pose.locals[rig.skull].angle_ls += follow - turn0 - turn1;
+}
+
 }  // namespace
 
 void init_pose(const AnimRig& rig, PoseState& state) {
@@ -34,7 +72,7 @@ void init_pose(const AnimRig& rig, PoseState& state) {
 }
 
 float pose_body(const AnimContext& ctx, const BodyFrame& body, float root_vy, float crawl_phase, float speed, float dt,
-                PoseState& state) {
+                PoseState& state, HeadMotion head) {
   const AnimRig& rig = ctx.rig;
   Pose& pose = state.pose;
   for (int b : rig.touched_bones) pose.locals[b] = rig.rest_pose.locals[b];
@@ -42,6 +80,7 @@ float pose_body(const AnimContext& ctx, const BodyFrame& body, float root_vy, fl
   pose.locals[rig.root].offset_ls = {0.0f, body.root_y_ws};
   pose.locals[rig.root].angle_ls += body_angle;
   if (rig.skull >= 0) pose.locals[rig.skull].angle_ls -= body_angle;  // the head stays level
+  if (rig.nod_bones[0] >= 0 && (head.rise != 0.0f || head.shift != 0.0f)) pose_head(rig, head, pose);
   swing_tail(rig, ctx.params, dt, root_vy, body_angle, state.tail, pose);
   crawl_wave(rig, ctx.params, crawl_phase, speed, pose);
   // Forward kinematics in two passes: the body first, then the limb chains after IK.

@@ -43,11 +43,18 @@ struct PoseState {
 // The rest pose and matrices of `rig` (a new animator).
 void init_pose(const AnimRig& rig, PoseState& state);
 
+// The head's motion this tick (GaitState::head_rise, head_shift; trunk_bob.h), metres.
+struct HeadMotion {
+  float rise = 0.0f, shift = 0.0f;
+};
+
 // The body's joints and forward kinematics (above). `root_vy`: the root's vertical speed (m/s,
-// body placement's), `crawl_phase` the legless wave's (cycles), `speed` m/s. Returns the rise a
+// body placement's), `crawl_phase` the legless wave's (cycles), `speed` m/s; `head` turns the
+// neck about its base (AnimRig::nod_bone) so the skull's far end moves by about that much,
+// the head kept level (a bird's head-bob) or following half the nod. Returns the rise a
 // legless body needs (metres, 0 for any other).
 float pose_body(const AnimContext& ctx, const BodyFrame& body, float root_vy, float crawl_phase, float speed, float dt,
-                PoseState& state);
+                PoseState& state, HeadMotion head = {});
 // The body rose by `raise` metres after pose_body (body placement's raise_body): the pose
 // follows.
 void lift_pose(const AnimRig& rig, float raise, PoseState& state);

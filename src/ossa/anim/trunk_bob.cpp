@@ -21,6 +21,16 @@ constexpr int kHarmonics = kBobHarmonics;
 // (issue 28; README, Gait families).
 constexpr float kTrunkShare = 0.5f;
 
+// The walk's head nod at its largest, of the hip height (half its rise and fall): ungulates
+// and elephants nod twice per stride as each fore foot takes the weight, by several
+// centimetres in a horse. A chosen figure, not a measured one.
+constexpr float kNodOfHip = 0.025f;
+// A small bird's head-bob: the share of each step the head thrusts forward (the rest it holds
+// still; Frost 1978: still for most of the step).
+constexpr float kHeadThrust = 0.3f;
+// How far the neck's bend moves the head back and forth, of the neck's reach (base to head).
+constexpr float kHeadShiftOfNeck = 0.35f;
+
 // Complex numbers by hand: std::complex<float>'s product checks for NaN through a library
 // call, and the series needs only products of unit phasors.
 struct Complex {
@@ -110,6 +120,7 @@ void trunk_bob(const AnimRig& rig, const AnimatorParams& params, const SplinePro
   constexpr float kBobEaseRate = 6.0f;  // 1/s
   weight = approach(weight, steady ? 1.0f : 0.0f, std::exp(-kBobEaseRate * dt));
   bob.assign(rig.girdles.size(), 0.0f);
+  gait.head_rise = gait.head_shift = 0.0f;
   if (!gait.moving) {
     const float t = frac(gait.idle_time / params.idle_period);
     const float idle = prototype_range(PrototypeId::kIdleY).clamp(prototypes[PrototypeId::kIdleY].value(t, gait.run_factor)) * rig.hip_height;
@@ -140,6 +151,38 @@ void trunk_bob(const AnimRig& rig, const AnimatorParams& params, const SplinePro
       series.key = key;
     }
     bob[g] = fade * series.at(gait.phase);
+  }
+  head_motion(rig, feet, fade, gait);
+}
+
+void head_motion(const AnimRig& rig, const FootSet& feet, float fade, GaitState& gait) {
+  if (rig.nod_bones[0] < 0 || rig.girdles.empty() || !(fade > 0.0f)) return;
+  const GaitFamily family = gait.traits.family;
+  if (rig.girdles.size() == 2 && (family == GaitFamily::kCursorial || family == GaitFamily::kPacer || family == GaitFamily::kGraviportal)) {
+    // The nod: the fore girdle's bob, scaled to kNodOfHip at its largest (Σ|c_k| bounds the
+    // series), in the walk only.
+    const BobSeries& fore = gait.bob_series[0];
+    float bound = 0.0f;
+    for (const auto& c : fore.coef) bound += std::hypot(c[0], c[1]);
+    if (bound > 0.0f) gait.head_rise = (1.0f - gait.mid_factor) * kNodOfHip * rig.hip_height * gait.girdle_bob[0] / bound;
+  }
+  if (rig.girdles.size() == 1 && rig.legs.size() == 2 && gait.traits.head_bob) {
+    // The head-bob, once per step: the head holds its place in the world while the body
+    // walks on (the head falls back relative to the body by what the body travels), then
+    // thrusts forward around the next footfall, in the walk only.
+    // A stride longer than the neck can take up shortens the hold: the head is then carried
+    // with the body for the rest of the step. u: 0 when the hold begins; the thrust's middle
+    // is the footfall.
+    const float half = 0.5f * gait.stride;  // the body's travel per step
+    const float travel = std::min((1.0f - kHeadThrust) * half, kHeadShiftOfNeck * glm::length(rig.nod_reach[0]));
+    const float hold = travel / std::max(half, 1e-6f);
+    const float step = frac(2.0f * (gait.phase + gait.foot_offset[feet.foot_of_leg[0]]));
+    const float u = frac(step + hold + 0.5f * kHeadThrust);
+    // The head never reaches out further than at rest (a straight neck cannot).
+    float shift = 0.0f;  // carried
+    if (u < hold) shift = -travel * u / hold;
+    else if (u < hold + kHeadThrust) shift = travel * (smoothstep(0.0f, 1.0f, (u - hold) / kHeadThrust) - 1.0f);
+    gait.head_shift = (1.0f - gait.run_factor) * fade * shift;
   }
 }
 

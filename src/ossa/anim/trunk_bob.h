@@ -55,6 +55,14 @@ inline constexpr float kWalkForceDip = 0.45f;
 void trunk_bob(const AnimRig& rig, const AnimatorParams& params, const SplinePrototypes& prototypes, const FootSet& feet,
                float speed, bool steady, float dt, GaitState& gait);
 
+// The head's part (run by trunk_bob, with its fade): gait.head_rise, the nod of a cursorial,
+// pacing or graviportal quadruped's walk — the fore girdle's own bob, scaled to a few per cent
+// of the hip height, so the head drops as each fore foot takes the weight, twice per stride —
+// and gait.head_shift, a small bird's head-bob in the walk (GaitFamilyTraits::head_bob): the
+// head holds still in the world for most of each step, then thrusts forward. The pose turns
+// the neck about its base for both (pose_head, pose_stage.h).
+void head_motion(const AnimRig& rig, const FootSet& feet, float fade, GaitState& gait);
+
 // Do the feet keep a rhythm on ground walked like flat ground: not on steps (body motion's
 // on_steps), not blocked, no foot hanging over a drop or waiting for ground (`waiting`,
 // TickHandoff::waiting)?
