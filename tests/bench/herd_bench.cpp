@@ -3,8 +3,10 @@
 //   herd_horses:ossa/n:N/threads:T     step_all(herd, T threads): N horses sharing one rig
 //   herd_mixed:ossa/n:N/threads:T      the same for N creatures of 8 random genomes (8 rigs)
 //   herd_*:reference/n:N/threads:T     the single-thread reference: the same herd stepped one
-//                                      entity after the other on this thread (T is ignored;
-//                                      it is measured again beside each row for the ratio)
+//                                      entity after the other on this thread by a plain loop of
+//                                      Entity::step (no prefetch of the creatures ahead; T is
+//                                      ignored; it is measured again beside each row for the
+//                                      ratio)
 // Wall-clock times (UseRealTime): the ratio of a T-thread row is its speed-up over one core.
 // Counters: time_per_tick, time_per_creature (seconds per creature per tick) and
 // bytes_per_creature (heap bytes the herd holds after its first steps, divided by N: entity,

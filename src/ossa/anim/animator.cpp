@@ -225,6 +225,38 @@ void Animator::place_body(const AnimContext& ctx, float dt) {
   anim::place_body(ctx, placement_inputs(dt), step_.feet, handoff_, body_, body_state_);
 }
 
+namespace {
+
+void prefetch_bytes(const void* p, size_t n) {
+#if defined(__GNUC__)
+  for (size_t o = 0; o < n; o += 64) __builtin_prefetch(static_cast<const char*>(p) + o);
+#else
+  (void)p, (void)n;
+#endif
+}
+template <class T>
+void prefetch_vector(const std::vector<T>& v) {
+  prefetch_bytes(v.data(), v.size() * sizeof(T));
+}
+
+}  // namespace
+
+void Animator::prefetch(bool object) const {
+  if (object) {
+    prefetch_bytes(this, sizeof(*this));
+    return;
+  }
+  prefetch_vector(pose_.pose.locals);
+  prefetch_vector(pose_.facing);
+  prefetch_vector(pose_.leg_dirs);
+  prefetch_vector(step_.feet.feet);
+  prefetch_vector(gait_.foot_offset);
+  prefetch_vector(gait_.bob_series);
+  const std::span<const std::byte> treads = ground_.tread_bytes(), columns = ground_.column_bytes();
+  prefetch_bytes(treads.data(), treads.size());
+  prefetch_bytes(columns.data(), columns.size());
+}
+
 void Animator::finish_tick(const AnimContext& ctx, float dt) {
   // Stage 12: the pose. A legless body its wave bent into the ground rises (body placement)
   // before its limbs are posed.

@@ -114,6 +114,11 @@ class Animator {
   const std::vector<Mat2x3>& facing_matrices() const { return anim::facing_matrices(*rig_, pose_); }
   // World matrices of the current pose: facing_to_world() · facing-space, computed on first
   // use after an update (renderers that fold the placement into their palette never pay).
+  // Asks the processor to bring this animator's per-tick state into its cache: a herd
+  // (step_all) steps thousands of animators one after another, each one's state long evicted
+  // since its last tick; asked a few creatures ahead, the memory's latency overlaps the work.
+  // `object`: the animator itself (its members say where the rest lies), else the arrays.
+  void prefetch(bool object) const;
   const std::vector<Mat2x3>& world_matrices() const { return anim::world_matrices(*rig_, body_, pose_); }
   // The ground profile of the last tick (stage 1).
   const GroundProfile& ground_profile() const { return ground_; }

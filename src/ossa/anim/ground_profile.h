@@ -20,6 +20,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <span>
 #include <vector>
 
 #include "ossa/anim/anim_state.h"
@@ -55,6 +56,9 @@ class GroundProfile {
   static constexpr int kMaxColumns = 65535;  // (tread indices are 16 bits)
 
   bool empty() const { return tread_of_.empty(); }
+  // Its arrays, for Animator::prefetch.
+  std::span<const std::byte> tread_bytes() const { return std::as_bytes(std::span(treads_)); }
+  std::span<const std::byte> column_bytes() const { return std::as_bytes(std::span(tread_of_)); }
   int size() const { return static_cast<int>(tread_of_.size()); }
   int tread_count() const { return static_cast<int>(treads_.size()); }
   // Heap bytes the profile holds.

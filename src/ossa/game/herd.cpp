@@ -22,13 +22,24 @@ std::shared_ptr<const AnimRig> RigCache::rig(const std::shared_ptr<const Creatur
 
 int resolve_threads(int threads) { return threads > 0 ? threads : tbb::info::default_concurrency(); }
 
+namespace {
+constexpr size_t kPrefetchObject = 2, kPrefetchState = 1;
+}  // namespace
+
 void step_all(std::span<Entity* const> entities, std::span<const Controls> controls, float dt, const Level& level,
               int threads) {
   OSSA_ASSERT(entities.size() == controls.size(), "step_all: one Controls per entity");
   const size_t n = entities.size();
   const int t = resolve_threads(threads);
+  // A creature's state is cold by its next tick in a large herd: each step first asks for the
+  // state of the creatures a few places ahead (Animator::prefetch).
+  auto step = [&](size_t i, size_t end) {
+    if (i + kPrefetchObject < end) entities[i + kPrefetchObject]->animator().prefetch(true);
+    if (i + kPrefetchState < end) entities[i + kPrefetchState]->animator().prefetch(false);
+    entities[i]->step(dt, controls[i], level);
+  };
   if (t == 1 || n < 2) {
-    for (size_t i = 0; i < n; ++i) entities[i]->step(dt, controls[i], level);
+    for (size_t i = 0; i < n; ++i) step(i, n);
     return;
   }
   // Chunks of a few creatures (a creature's step is a few microseconds): enough chunks to
@@ -36,7 +47,7 @@ void step_all(std::span<Entity* const> entities, std::span<const Controls> contr
   tbb::task_arena arena(t);
   arena.execute([&] {
     tbb::parallel_for(tbb::blocked_range<size_t>(0, n, 8), [&](const tbb::blocked_range<size_t>& r) {
-      for (size_t i = r.begin(); i != r.end(); ++i) entities[i]->step(dt, controls[i], level);
+      for (size_t i = r.begin(); i != r.end(); ++i) step(i, r.end());
     });
   });
 }
