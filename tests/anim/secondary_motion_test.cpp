@@ -44,27 +44,6 @@ TEST_CASE("secondary motion: the tail's spring settles where the body leaves it,
   CHECK(std::fabs(tail.angle) <= params.tail_max_swing + 1e-6f);
 }
 
-TEST_CASE("secondary motion: the legless wave grows with the speed and is still at rest", "[anim][secondary]") {
-  const Creature& snake = example("snake");
-  const auto rig = build_anim_rig(snake);
-  REQUIRE(rig->legs.empty());
-  REQUIRE_FALSE(rig->crawl_chain.empty());
-  const AnimatorParams params;
-  auto bend = [&](float speed) {
-    Pose pose = rig->rest_pose;
-    anim::crawl_wave(*rig, params, 0.3f, speed, pose);
-    float most = 0.0f;
-    for (int b : rig->crawl_chain) most = std::max(most, std::fabs(pose.locals[b].angle_ls - rig->rest_pose.locals[b].angle_ls));
-    return most;
-  };
-  CHECK(bend(0.0f) == 0.0f);
-  const float walk = anim::walk_speed(*rig, params);
-  CHECK(bend(0.5f * walk) > 0.0f);
-  CHECK(bend(walk) > bend(0.5f * walk));
-  CHECK(bend(walk) <= params.crawl_amplitude + 1e-6f);
-  CHECK(bend(3.0f * walk) == Approx(bend(walk)));  // full amplitude from the walk on
-}
-
 TEST_CASE("secondary motion: arms swing counter to their own side's leg, fins beat with the motion", "[anim][secondary]") {
   const Creature& kangaroo = scenes::biped();
   const auto rig = build_anim_rig(kangaroo);

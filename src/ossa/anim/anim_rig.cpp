@@ -4,6 +4,7 @@
 
 #include "ossa/anim/anim_math.h"
 #include "ossa/anim/gait_family.h"
+#include "ossa/anim/secondary_motion.h"
 #include "ossa/math/two_bone_ik.h"
 #include "ossa/skeleton/pose.h"
 
@@ -184,6 +185,90 @@ void build_body_outline(AnimRig& rig, const Mat2x3& root_inv) {
   }
 }
 
+// A legless body's drape (AnimRig::drape_bones): which spine bone each ends at, and the depth of
+// what hangs below each joint, at rest.
+void build_drape(const RigRoles& roles, AnimRig& rig) {
+  const Skeleton& sk = rig.skeleton;
+  const int n = sk.bone_count();
+  std::vector<uint8_t> spine(n, 0), limb(n, 0);
+  for (const std::vector<int>* chain : {&rig.back, &rig.neck, &rig.tail}) {
+    for (int b : *chain) spine[b] = 1;
+  }
+  spine[rig.root] = 1;  // (the skull is not: it hangs from the neck, kept level)
+  for (const RigLimbRole& l : roles.limbs) {
+    for (int b : l.bones) limb[b] = 1;
+  }
+  // The spine bone each bone hangs from (itself for a spine bone; −1 for a limb's).
+  std::vector<int> owner(n, -1), next(n, -1);
+  for (int b = 0; b < n; ++b) {  // parents precede children
+    const int p = sk.parent(b);
+    if (spine[b]) {
+      owner[b] = b;
+      if (p >= 0 && spine[p] && p != rig.root) next[p] = b;
+    } else if (!limb[b] && p >= 0) {
+      owner[b] = owner[p];
+    }
+  }
+  rig.belly.assign(n, 0.0f);
+  std::vector<float> lowest(n, 1e30f);  // per spine bone: the lowest rest point hanging from it
+  for (int b = 0; b < n; ++b) {
+    if (owner[b] < 0 || owner[b] == b) continue;
+    const float y = std::min(bone_start(rig.model_rest[b]).y, bone_end(rig.model_rest[b], sk.length(b)).y);
+    lowest[owner[b]] = std::min(lowest[owner[b]], y);
+  }
+  // A limb's root hangs from the spine too (the limb itself keeps out of the ground on its own).
+  std::vector<std::pair<int, glm::vec2>> roots;  // (spine owner, the root at rest)
+  for (const RigLimbRole& l : roles.limbs) {
+    const int o = l.girdle_bone >= 0 ? owner[l.girdle_bone] : -1;
+    if (o < 0) continue;
+    roots.emplace_back(o, bone_start(rig.model_rest[l.bones[0]]));
+    lowest[o] = std::min(lowest[o], roots.back().second.y);
+  }
+  for (int b = 0; b < n; ++b) {
+    if (!spine[b]) continue;
+    const float joint = bone_start(rig.model_rest[b]).y;
+    rig.belly[b] = std::max(0.5f * sk.width(b), lowest[b] < 1e29f ? joint - lowest[b] : 0.0f);
+  }
+  for (int b = 0; b < n; ++b) {
+    if (!spine[b] || b == rig.root) continue;
+    rig.drape_bones.push_back(b);
+    rig.drape_next.push_back(next[b]);
+    const float end = bone_end(rig.model_rest[b], sk.length(b)).y;
+    rig.tip_belly.push_back(std::max(0.5f * sk.width(b), lowest[b] < 1e29f ? end - lowest[b] : 0.0f));
+    rig.hang_begin.push_back(static_cast<int>(rig.hang_points.size()));
+    const Mat2x3 to_bone = inverse(rig.model_rest[b]);
+    for (int h = 0; h < n; ++h) {
+      if (owner[h] != b || h == b) continue;
+      rig.hang_points.push_back(to_bone.apply(bone_start(rig.model_rest[h])));
+      rig.hang_points.push_back(to_bone.apply(bone_end(rig.model_rest[h], sk.length(h))));
+    }
+    for (const auto& [o, p] : roots) {
+      if (o == b) rig.hang_points.push_back(to_bone.apply(p));
+    }
+  }
+  rig.hang_begin.push_back(static_cast<int>(rig.hang_points.size()));
+  // The root lies as deep as the deepest joint beside it (a small root bone may carry no ribs
+  // of its own).
+  if (rig.skull >= 0) rig.head_owner = owner[rig.skull];
+  // The root lies as high as the joints around it need, each no steeper than the drape lays
+  // a bone (kDrapeSlope, secondary_motion.cpp): a small root bone may carry no ribs of its own,
+  // and a deep head far ahead needs the body to rise towards it.
+  rig.crawl_rest_y = rig.belly[rig.root];
+  const glm::vec2 root_at = bone_start(rig.model_rest[rig.root]);
+  for (int b = 0; b < n; ++b) {
+    if (!spine[b]) continue;
+    const glm::vec2 at = bone_start(rig.model_rest[b]);
+    const float run = std::fabs(at.x - root_at.x);
+    rig.crawl_rest_y = std::max(rig.crawl_rest_y, rig.belly[b] - anim::kDrapeSlope * run);
+  }
+  for (size_t i = 0; i < rig.drape_bones.size(); ++i) {
+    if (rig.drape_next[i] >= 0) continue;
+    const int b = rig.drape_bones[i];
+    const float run = std::fabs(bone_end(rig.model_rest[b], sk.length(b)).x - root_at.x);
+    rig.crawl_rest_y = std::max(rig.crawl_rest_y, rig.tip_belly[i] - anim::kDrapeSlope * run);
+  }
+}
+
 // Which bones each tick keeps current and how: the root, the girdles (rigid to the root: one
 // product each, skipping the vertebrae between) and the limb chains; the rest on demand.
 void build_fk_plan(const RigRoles& roles, AnimRig& rig) {
@@ -205,6 +290,10 @@ void build_fk_plan(const RigRoles& roles, AnimRig& rig) {
   }
   for (int b = 0; b < sk.bone_count(); ++b) {
     if (limb_bone[b] && !leg_ik_bone[b]) rig.other_limb_bones.push_back(b);
+  }
+  rig.limb_bone = limb_bone;
+  for (int b = 0; b < sk.bone_count(); ++b) {  // parents precede children
+    if (sk.parent(b) >= 0 && rig.limb_bone[sk.parent(b)]) rig.limb_bone[b] = 1;
   }
   // Girdles are rigid to the root unless a bone between bends (legless bodies).
   bool rigid = sk.parent(root) < 0 && !rig.legs.empty();
@@ -290,6 +379,7 @@ void build_fk_plan(const RigRoles& roles, AnimRig& rig) {
   }
   rig.crawl_chain = rig.back;
   rig.crawl_chain.insert(rig.crawl_chain.end(), rig.tail.begin(), rig.tail.end());
+  if (rig.legs.empty()) build_drape(roles, rig);
 }
 
 }  // namespace
@@ -379,6 +469,9 @@ std::shared_ptr<const AnimRig> build_anim_rig(const Skeleton& skeleton, const Po
     }
   }
   build_fk_plan(roles, *rig);
+  // A legless body rests on its belly (build_drape): its root stands that high, whatever the
+  // rest pose's ground (the hip height, and so its speeds, stay the rest pose's).
+  if (rig->legs.empty()) rig->root_rest_y = rig->crawl_rest_y;
   rig->weight_kg = roles.weight_kg;
   rig->skull_variant = roles.skull_variant;
   rig->gait_family = roles.gait_family == GaitFamily::kAuto ? anim::choose_gait_family(*rig) : roles.gait_family;

@@ -181,7 +181,7 @@ void Animator::update(float dt, const AnimatorIntent& intent, const Level& level
             steady_gait(motion_.on_steps, motion_.block.blocked, step_.feet, handoff_.waiting), dt, gait_);
   place_body(ctx, dt);                                                          // 10 body placement
   if (!rig.legs.empty()) lift_overstretched_feet(ctx, spline_prototypes_, body_, gait_, motion_.speed, handoff_, step_);  // 10b step
-  switch (mode_change(ctx, body_, step_.feet, landing, handoff_.crouch_done, loco_)) {  // 11 locomotion
+  switch (mode_change(ctx, body_, step_.feet, landing, handoff_.crouch_done, loco_, body_state_.body_lift)) {  // 11 locomotion
     case ModeChange::kJump:  // forwards at the speed asked for, even from a standstill at a step
       take_off(ctx, body_, {body_.facing * std::max(motion_.speed, std::fabs(intent.velocity)), jump_speed(rig, params_)}, true,
                step_.feet, loco_);

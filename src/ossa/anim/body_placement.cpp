@@ -264,8 +264,11 @@ void tip_about_front(const AnimRig& rig, int g, float dy, BodyFrame& body) {
 bool rest_body_on_ground(const AnimContext& ctx, float floor, BodyFrame& body) {
   const AnimRig& rig = ctx.rig;
   if (rig.girdles.empty()) {
+    // Looked for from up to half a body length above the root (no higher than the ledge it
+    // left): a fast fall passes a belly's height in a tick.
     auto hit = ground_below(ctx.level, rig.body_lo_ws(body.x_ws, body.facing), rig.body_hi_ws(body.x_ws, body.facing),
-                            std::min(body.root_y_ws + 0.5f * rig.hip_height, floor), ctx.rig.scale.search_depth);
+                            std::min(body.root_y_ws + std::max(0.5f * rig.hip_height, rig.body_half_length), floor),
+                            ctx.rig.scale.search_depth + rig.body_half_length);
     if (!hit || hit->height_ws + rig.root_rest_y <= body.root_y_ws) return false;
     body.root_y_ws = hit->height_ws + rig.root_rest_y;
     return true;

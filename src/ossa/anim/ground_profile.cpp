@@ -207,7 +207,10 @@ void refresh_ground_profile(const Level& level, const AnimRig& rig, const BodyFr
   // Above the root: a hip height, or as high as the steepest slope rises over the body and a
   // leg's reach (a long, low body meets the hill ahead above its own height).
   const float above = std::max(kProfileAboveOfHip * rig.hip_height, GroundProfile::kMaxSlope * reach);
-  const float lo = body.root_y_ws - 0.75f * kProfileBelowOfHip * rig.hip_height;
+  // Below the root: a few hip heights; a legless body lying over lower ground, its length.
+  const float below = rig.legs.empty() ? std::max(kProfileBelowOfHip * rig.hip_height, rig.body_half_length)
+                                       : kProfileBelowOfHip * rig.hip_height;
+  const float lo = body.root_y_ws - 0.75f * below;
   const float hi = body.root_y_ws + 0.5f * above;
   if (ground.covers(level, x0, x1, lo, hi)) return;
   float size = 1e30f;
@@ -215,7 +218,7 @@ void refresh_ground_profile(const Level& level, const AnimRig& rig, const BodyFr
   if (rig.legs.empty()) size = rig.hip_height;
   const float step = std::clamp(kProfileStepOfFoot * size, 0.005f, 0.02f);
   // Twice the window, so that it lasts for a while.
-  ground.build(level, x0 - span, x1 + span, body.root_y_ws + above, above + kProfileBelowOfHip * rig.hip_height, step);
+  ground.build(level, x0 - span, x1 + span, body.root_y_ws + above, above + below, step);
 }
 
 }  // namespace anim

@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "ossa/anim/anim_math.h"
+#include "ossa/anim/ground_profile.h"
 #include "ossa/math/two_bone_ik.h"
 
 namespace ossa::anim {
@@ -94,22 +95,37 @@ void keep_arm_above_ground(const AnimContext& ctx, const BodyFrame& body, const 
 }
 
 float body_out_of_ground(const AnimContext& ctx, const BodyFrame& body, const std::vector<Mat2x3>& model, const Pose& pose) {
-  // A legless body's wave bends its spine, and the roots of its fins, arms and wings, below
-  // where body placement put them at rest: the whole body rises by the deepest into the
-  // ground. (A limb's root may hang far below its girdle: the ground is looked for from the
-  // girdle.)
+  // Where the drape could not keep a legless body out of the ground (a step, a gap's edge),
+  // the whole body rises by its deepest point: every bone's two ends and the roots of its
+  // fins, arms and wings.
   float raise = 0.0f;
+  const GroundProfile& ground = ctx.ground;
+  const float span = ctx.rig.scale.ground_span;
+  // The ground under a point is looked for from above the body (a point may lie deeper in the
+  // ground than the body is high): in the profile where it holds the span, else in the level.
+  const float top = body.root_y_ws + ctx.rig.hip_height + ctx.rig.root_rest_y;
   auto keep_out = [&](glm::vec2 p_fs, float from_y_fs) {
     const glm::vec2 p = body.to_ws(p_fs);
-    const float from = body.to_ws({p_fs.x, std::max(from_y_fs, p_fs.y)}).y;
-    const float span = ctx.rig.scale.ground_span;
-    if (auto below = ground_below(ctx.level, p.x - span, p.x + span, from + ctx.rig.hip_height, ctx.rig.scale.search_depth)) {
+    if (ground.covers(ctx.level, p.x - span, p.x + span, std::min(p.y, top), top)) {
+      for (int i = ground.column_of(p.x - span), end = ground.column_of(p.x + span); i <= end; ++i) {
+        const float h = ground.column(i);
+        if (h <= top) raise = std::max(raise, h - p.y);  // (NaN: a gap)
+      }
+      return;
+    }
+    const float from = std::max(top, body.to_ws({p_fs.x, std::max(from_y_fs, p_fs.y)}).y + ctx.rig.hip_height);
+    if (auto below = ground_below(ctx.level, p.x - span, p.x + span, from, ctx.rig.scale.search_depth + (from - p.y))) {
       raise = std::max(raise, below->height_ws - p.y);
     }
   };
-  for (int b : ctx.rig.needed_bones) {
-    const glm::vec2 p = bone_start(model[b]);
+
+  // Every bone of the body, both ends (the limbs' own clearance keeps them out; their roots
+  // below).
+  for (int b = 0; b < ctx.rig.skeleton.bone_count(); ++b) {
+    if (ctx.rig.limb_bone[b]) continue;
+    const glm::vec2 p = bone_start(model[b]), e = bone_end(model[b], ctx.rig.skeleton.length(b));
     keep_out(p, p.y);
+    keep_out(e, e.y);
   }
   for (const std::vector<RigLimb>* limbs : {&ctx.rig.arms, &ctx.rig.fins, &ctx.rig.wings}) {
     for (const RigLimb& limb : *limbs) {

@@ -104,9 +104,9 @@ bool tick_crouch(const AnimRig& rig, const AnimatorParams& params, float dt, Loc
 }
 
 ModeChange mode_change(const AnimContext& ctx, const BodyFrame& body, const FootSet& feet, bool was_landing, bool crouch_done,
-                       const LocomotionState& loco) {
+                       const LocomotionState& loco, float body_lift) {
   if (crouch_done) return ModeChange::kJump;
-  if (!was_landing && (ctx.rig.legs.empty() ? legless_over_drop(ctx, body) : unsupported(feet))) return ModeChange::kFall;
+  if (!was_landing && (ctx.rig.legs.empty() ? legless_over_drop(ctx, body, body_lift) : unsupported(feet))) return ModeChange::kFall;
   if (was_landing && std::isnan(landing_root(loco))) return ModeChange::kLanded;
   return ModeChange::kNone;
 }
@@ -116,11 +116,11 @@ bool below_kill_height(const AnimRig& rig, const BodyFrame& body, const Level& l
   return body.root_y_ws - rig.root_rest_y < level.kill_y(rig.hip_height);
 }
 
-bool legless_over_drop(const AnimContext& ctx, const BodyFrame& body) {
+bool legless_over_drop(const AnimContext& ctx, const BodyFrame& body, float body_lift) {
   // Once the whole body has left a ledge, a drop deeper than a share of the body's length is
   // fallen (a smaller one, or a tile slope, the body follows down).
   const AnimRig& rig = ctx.rig;
-  const float ground = body.root_y_ws - rig.root_rest_y;
+  const float ground = body.root_y_ws - rig.root_rest_y - std::max(body_lift, 0.0f);
   const float deepest = kLeglessFallOfLength * (rig.body_front - rig.body_back);
   // (From above the root: a landing's compression may hold the root below its rest height.)
   const float from = std::max(body.root_y_ws, ground) + 0.5f * rig.hip_height;

@@ -81,8 +81,10 @@ bool tick_crouch(const AnimRig& rig, const AnimatorParams& params, float dt, Loc
 // Stage 11: what changes the mode at the end of a grounded tick: the crouch over (a jump), the
 // last foot or the legless body gone over a drop (a fall), the landing's descent over.
 enum class ModeChange : uint8_t { kNone, kJump, kFall, kLanded };
+// `body_lift`: how far body placement holds a legless body above its resting height
+// (BodyState::body_lift, where the drape could not keep it out of the ground).
 ModeChange mode_change(const AnimContext& ctx, const BodyFrame& body, const FootSet& feet, bool was_landing, bool crouch_done,
-                       const LocomotionState& loco);
+                       const LocomotionState& loco, float body_lift = 0.0f);
 // A creature standing on a floor at the kill height is below it once its legs give on landing:
 // where the feet would stand under the root is below the level's kill height.
 bool below_kill_height(const AnimRig& rig, const BodyFrame& body, const Level& level);
@@ -97,7 +99,7 @@ void take_off(const AnimContext& ctx, const BodyFrame& body, glm::vec2 velocity,
 bool unsupported(const FootSet& feet);
 // Has a legless body crawled off a drop it falls (no ground within a quarter of its length
 // below it, under the whole body)?
-bool legless_over_drop(const AnimContext& ctx, const BodyFrame& body);
+bool legless_over_drop(const AnimContext& ctx, const BodyFrame& body, float body_lift = 0.0f);
 
 // ---- In the air (stages A1, A4) ----------------------------------------------------------------
 // The path's time advances by dt; its horizontal step is swept against walls (`model_fs`, the

@@ -6,6 +6,7 @@
 #include "ossa/anim/anim_math.h"
 #include "ossa/anim/leg_ik.h"
 #include "ossa/anim/limb_clearance.h"
+#include "ossa/anim/secondary_motion.h"
 #include "ossa/math/angle.h"
 
 namespace ossa::anim {
@@ -82,16 +83,22 @@ float pose_body(const AnimContext& ctx, const BodyFrame& body, float root_vy, fl
   if (rig.skull >= 0) pose.locals[rig.skull].angle_ls -= body_angle;  // the head stays level
   if (rig.nod_bones[0] >= 0 && (head.rise != 0.0f || head.shift != 0.0f)) pose_head(rig, head, pose);
   swing_tail(rig, ctx.params, dt, root_vy, body_angle, state.tail, pose);
-  crawl_wave(rig, ctx.params, crawl_phase, speed, pose);
   // Forward kinematics in two passes: the body first, then the limb chains after IK.
   state.facing.resize(rig.skeleton.bone_count());
-  body_fk(rig, state);
-  if (!rig.legs.empty()) return 0.0f;
+  if (!rig.legs.empty()) {
+    body_fk(rig, state);
+    return 0.0f;
+  }
+  drape_legless(ctx, body, crawl_phase, speed, pose, state.facing);
   return std::max(body_out_of_ground(ctx, body, state.facing, pose), 0.0f);
 }
 
 void lift_pose(const AnimRig& rig, float raise, PoseState& state) {
   state.pose.locals[rig.root].offset_ls.y += raise;
+  if (rig.legs.empty()) {  // the drape placed every bone: all rise
+    for (Mat2x3& m : state.facing) m.m[5] += raise;
+    return;
+  }
   body_fk(rig, state);
 }
 

@@ -2,8 +2,12 @@
 
 #include <algorithm>
 #include <cmath>
+#include <iterator>
 
 #include "ossa/anim/anim_math.h"
+#include "ossa/anim/ground_profile.h"
+#include "ossa/anim/gait_clock.h"
+#include "ossa/math/angle.h"
 
 namespace ossa::anim {
 
@@ -23,13 +27,104 @@ void swing_tail(const AnimRig& rig, const AnimatorParams& params, float dt, floa
   for (int b : rig.tail) pose.locals[b].angle_ls += bend;
 }
 
-void crawl_wave(const AnimRig& rig, const AnimatorParams& params, float crawl_phase, float speed, Pose& pose) {
-  if (!rig.legs.empty() || !(params.crawl_amplitude > 0.0f)) return;
-  const std::vector<int>& chain = rig.crawl_chain;
-  const float n = static_cast<float>(chain.size());
-  const float amp = params.crawl_amplitude * std::min(speed / std::max(walk_speed(rig, params), 1e-3f), 1.0f);
-  for (size_t i = 0; i < chain.size(); ++i) {
-    pose.locals[chain[i]].angle_ls += amp * std::sin(kTwoPi * (crawl_phase - params.crawl_waves * static_cast<float>(i) / n));
+void drape_legless(const AnimContext& ctx, const BodyFrame& body, float crawl_phase, float speed, Pose& pose,
+                   std::vector<Mat2x3>& model_fs) {
+  constexpr float kMaxDrapeBend = 0.3f;   // radians from a bone's rest angle
+  constexpr float kHeadLiftOfSkull = 1.0f / 3.0f;
+  const AnimRig& rig = ctx.rig;
+  const AnimatorParams& params = ctx.params;
+  const Skeleton& sk = rig.skeleton;
+  const GroundProfile& ground = ctx.ground;
+  const float motion = std::min(speed / std::max(walk_speed(rig, params), 1e-3f), 1.0f);
+  const float wave = std::max(params.crawl_amplitude, 0.0f) * rig.body_half_length * motion;
+  const float n = static_cast<float>(std::max<size_t>(rig.drape_bones.size(), 1));
+  // The ground as the body lies on it: the highest within `reach` either side, so that the
+  // body ramps up to a step (at kDrapeSlope) before it reaches the riser rather than meet it.
+  const float reach = std::min(rig.root_rest_y / kDrapeSlope, 0.5f * rig.body_half_length);
+  auto ground_at = [&](float x_fs, float reach) {  // NaN: none the profile holds
+    const float x = body.to_ws({x_fs, 0.0f}).x;
+    if (ground.empty() || x - reach < ground.x0() || x + reach > ground.x0() + ground.step() * static_cast<float>(ground.size() - 1)) {
+      return NAN;
+    }
+    float h = NAN;
+    for (int c = ground.column_of(x - reach), end = ground.column_of(x + reach); c <= end; ++c) {
+      const float column = ground.column(c);
+      if (!(column <= h)) h = std::isnan(column) ? h : column;
+    }
+    return h;
+  };
+  const std::vector<int>& parents = sk.parents();
+  size_t next_drape = 0;
+  for (int b = 0; b < sk.bone_count(); ++b) {
+    const int parent = parents[b];
+    if (next_drape < rig.drape_bones.size() && rig.drape_bones[next_drape] == b && parent >= 0) {
+      const size_t i = next_drape++;
+      const int next = rig.drape_next[i];
+      const Mat2x3& up = model_fs[parent];
+      const float parent_angle = std::atan2(up.m[1], up.m[0]);
+      const glm::vec2 start = up.apply(pose.locals[b].offset_ls);
+      const glm::vec2 v = next >= 0 ? pose.locals[next].offset_ls : glm::vec2(sk.length(b), 0.0f);
+      const float length = glm::length(v), along = std::atan2(v.y, v.x);
+      float clearance = next >= 0 ? rig.belly[next] : rig.tip_belly[i];
+      if (b == rig.head_owner && rig.skull >= 0) clearance += kHeadLiftOfSkull * sk.length(rig.skull);
+      clearance += wave * std::max(0.0f, std::sin(kTwoPi * (crawl_phase - params.crawl_waves * static_cast<float>(i) / n)));
+      const float rest = rig.rest_pose.locals[b].angle_ls;
+      float dir = parent_angle + rest + along;  // the segment's direction (facing space)
+      const bool forward = std::cos(dir) >= 0.0f;
+      bool placed = length > 1e-6f;
+      for (int k = 0; k < 2 && placed; ++k) {
+        const float g = ground_at(start.x + length * std::cos(dir), reach);
+        if (!(g <= start.y + length)) {  // a gap, or higher than the bone reaches: as at rest
+          placed = false;
+          break;
+        }
+        const float s = std::clamp((g + clearance - start.y) / length, -kDrapeSlope, kDrapeSlope);
+        dir = forward ? std::asin(s) : kPi - std::asin(s);
+      }
+      float turn = placed ? std::clamp(wrap_angle(dir - along - parent_angle - rest), -kMaxDrapeBend, kMaxDrapeBend) : 0.0f;
+      // What hangs from the bone (ribs, a jaw) turns with it: of the turn, as much as keeps
+      // them out of the ground (none: the rest of the body then rises, body_out_of_ground).
+      auto hangers_clear = [&](float t) {
+        const float a = parent_angle + rest + t, c = std::cos(a), sn = std::sin(a);
+        for (int k = rig.hang_begin[i]; k < rig.hang_begin[i + 1]; ++k) {
+          const glm::vec2 q = rig.hang_points[k];
+          const glm::vec2 w = start + glm::vec2(c * q.x - sn * q.y, sn * q.x + c * q.y);
+          if (ground_at(w.x, 0.0f) > w.y) return false;
+        }
+        return true;
+      };
+      if (!hangers_clear(turn)) {
+        // Nearer the rest angle first, then either way out to the largest bend.
+        constexpr float kTries[] = {0.5f, 0.0f, 0.25f, -0.25f, 0.5f, -0.5f, 0.75f, -0.75f, 1.0f, -1.0f};
+        for (size_t k = 0; k < std::size(kTries); ++k) {
+          const float t = k < 2 ? kTries[k] * turn : kTries[k] * kMaxDrapeBend;
+          if (hangers_clear(t)) {
+            turn = t;
+            break;
+          }
+        }
+      }
+      pose.locals[b].angle_ls = rest + turn;
+    }
+    if (b == rig.skull && parent >= 0) {
+      // Level, as at rest; raised by up to kMaxDrapeBend where its far end would come nearer
+      // the ground than a third of its length.
+      const Mat2x3& up = model_fs[parent];
+      const Mat2x3& rest = rig.model_rest[b];
+      const float level = std::atan2(rest.m[1], rest.m[0]), length = sk.length(b);
+      const glm::vec2 joint = up.apply(pose.locals[b].offset_ls);
+      const float tip_x = joint.x + length * std::cos(level), g = ground_at(tip_x, 0.0f);
+      float dir = level;
+      if (g <= joint.y + length) {
+        const float want = std::asin(std::clamp((g + kHeadLiftOfSkull * length - joint.y) / length, -1.0f, 1.0f));
+        const float forward = std::cos(level) >= 0.0f ? 1.0f : -1.0f;  // pitching up: towards +y
+        const float up_turn = forward * (forward > 0.0f ? want - level : (kPi - want) - level);
+        dir = level + forward * std::clamp(forward * wrap_angle(up_turn), 0.0f, kMaxDrapeBend);
+      }
+      pose.locals[b].angle_ls = wrap_angle(dir - std::atan2(up.m[1], up.m[0]));
+    }
+    const Mat2x3 local = local_matrix(pose.locals[b]);
+    model_fs[b] = parent < 0 ? local : model_fs[parent] * local;
   }
 }
 

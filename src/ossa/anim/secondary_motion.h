@@ -1,8 +1,7 @@
 #pragma once
 // Secondary motion (DESIGN.md §7 "limbs"; the pose stage, pose_stage.h, stage 12 of
 // Animator::update, and body placement's bob, stage 10): what follows the body rather than carrying it —
-// the tail's damped spring, the travelling wave of legless
-// bodies, the arms swinging counter to their same-side leg and the fins' slow beat.
+// the tail's damped spring, a legless body lying along the ground, the arms swinging counter to their same-side leg and the fins' slow beat.
 //
 // Plain functions of the gait and body state; they write joint values of `pose` (radians)
 // or return heights (metres).
@@ -23,8 +22,22 @@ struct TailSpring {
 void swing_tail(const AnimRig& rig, const AnimatorParams& params, float dt, float root_vy, float body_angle, TailSpring& tail,
                 Pose& pose);
 
-// The legless travelling wave at crawl_phase (cycles) and speed (m/s).
-void crawl_wave(const AnimRig& rig, const AnimatorParams& params, float crawl_phase, float speed, Pose& pose);
+// A legless body lies along the ground (issue 27): seen from the side a snake's, a whale's
+// or a fish's belly follows the ground under it (their undulation is sideways, out of the
+// picture). From the root outwards each spine bone turns so that the point it ends at (its
+// spine child's joint; at a tip, its own far end) stands its belly's depth over the ground
+// profile there (AnimRig::belly, tip_belly), at most kMaxDrapeBend from its rest angle and
+// ±kDrapeSlope steep, and turned back as far as what hangs from it (ribs, the skull, a fin's
+// root) needs to stay out of the ground; the skull keeps its rest angle, a third of its length
+// higher. Where that is not enough the whole body rises (body_out_of_ground). The
+// travelling wave at crawl_phase (cycles) lifts short stretches of the body off the ground
+// (never into it) by up to params.crawl_amplitude of the half body length, growing with
+// `speed` (m/s) up to the walk speed. Ground the profile does not hold, or higher than a
+// bone can reach, leaves that bone at its rest angle. Writes the bones' joint angles and the
+// facing-space matrices of every bone (the root's must be set).
+inline constexpr float kDrapeSlope = 0.35f;  // sine of the steepest a draped bone lies
+void drape_legless(const AnimContext& ctx, const BodyFrame& body, float crawl_phase, float speed, Pose& pose,
+                   std::vector<Mat2x3>& model_fs);
 
 // Arm swing counter to the same-side leg, scaled by how fast the creature moves; `motion` in
 // [0, 1] is the speed as a fraction of the walk speed.
