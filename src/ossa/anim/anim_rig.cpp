@@ -209,6 +209,10 @@ void build_drape(const RigRoles& roles, AnimRig& rig) {
       owner[b] = owner[p];
     }
   }
+  // The skull and what hangs from it are placed as the head (drape_legless), not as the
+  // neck's hangers: their points are the skull's own (skull_hang_points).
+  std::vector<uint8_t> in_head(n, 0);
+  for (int b = 0; b < n; ++b) in_head[b] = b == rig.skull || (sk.parent(b) >= 0 && in_head[sk.parent(b)] && !limb[b]);
   rig.belly.assign(n, 0.0f);
   std::vector<float> lowest(n, 1e30f);  // per spine bone: the lowest rest point hanging from it
   for (int b = 0; b < n; ++b) {
@@ -233,12 +237,15 @@ void build_drape(const RigRoles& roles, AnimRig& rig) {
     if (!spine[b] || b == rig.root) continue;
     rig.drape_bones.push_back(b);
     rig.drape_next.push_back(next[b]);
+    const glm::vec2 v = next[b] >= 0 ? rig.rest_pose.locals[next[b]].offset_ls : glm::vec2(sk.length(b), 0.0f);
+    rig.drape_length.push_back(glm::length(v));
+    rig.drape_along.push_back(std::atan2(v.y, v.x));
     const float end = bone_end(rig.model_rest[b], sk.length(b)).y;
     rig.tip_belly.push_back(std::max(0.5f * sk.width(b), lowest[b] < 1e29f ? end - lowest[b] : 0.0f));
     rig.hang_begin.push_back(static_cast<int>(rig.hang_points.size()));
     const Mat2x3 to_bone = inverse(rig.model_rest[b]);
     for (int h = 0; h < n; ++h) {
-      if (owner[h] != b || h == b) continue;
+      if (owner[h] != b || h == b || in_head[h]) continue;
       rig.hang_points.push_back(to_bone.apply(bone_start(rig.model_rest[h])));
       rig.hang_points.push_back(to_bone.apply(bone_end(rig.model_rest[h], sk.length(h))));
     }
@@ -247,9 +254,40 @@ void build_drape(const RigRoles& roles, AnimRig& rig) {
     }
   }
   rig.hang_begin.push_back(static_cast<int>(rig.hang_points.size()));
-  // The root lies as deep as the deepest joint beside it (a small root bone may carry no ribs
-  // of its own).
-  if (rig.skull >= 0) rig.head_owner = owner[rig.skull];
+  const Mat2x3 to_root = inverse(rig.model_rest[rig.root]);
+  for (int h = 0; h < n; ++h) {
+    if (owner[h] != rig.root || h == rig.root) continue;
+    rig.root_hang_points.push_back(to_root.apply(bone_start(rig.model_rest[h])));
+    rig.root_hang_points.push_back(to_root.apply(bone_end(rig.model_rest[h], sk.length(h))));
+  }
+  for (const auto& [o, p] : roots) {
+    if (o == rig.root) rig.root_hang_points.push_back(to_root.apply(p));
+  }
+  if (rig.skull >= 0) {
+    const Mat2x3 to_skull = inverse(rig.model_rest[rig.skull]);
+    for (int h = 0; h < n; ++h) {
+      if (!in_head[h] || h == rig.skull) continue;
+      rig.skull_hang_points.push_back(to_skull.apply(bone_start(rig.model_rest[h])));
+      rig.skull_hang_points.push_back(to_skull.apply(bone_end(rig.model_rest[h], sk.length(h))));
+    }
+  }
+  std::vector<uint8_t> placed(n, 0);
+  for (int b = 0; b < n; ++b) placed[b] = spine[b] || b == rig.skull;
+  for (const RigLimbRole& l : roles.limbs) {
+    for (int b = l.girdle_bone; b >= 0 && !placed[b]; b = sk.parent(b)) placed[b] = 1;
+  }
+  for (int b = 0; b < n; ++b) {
+    if (placed[b]) {
+      for (int a = sk.parent(b); a >= 0 && !placed[a]; a = sk.parent(a)) placed[a] = 1;
+    }
+  }
+  for (int b = 0; b < n; ++b) {
+    if (placed[b]) rig.drape_fk.push_back(b);
+  }
+  if (rig.skull >= 0) {
+    rig.head_owner = owner[rig.skull];
+    rig.skull_rest_angle = std::atan2(rig.model_rest[rig.skull].m[1], rig.model_rest[rig.skull].m[0]);
+  }
   // The root lies as high as the joints around it need, each no steeper than the drape lays
   // a bone (kDrapeSlope, secondary_motion.cpp): a small root bone may carry no ribs of its own,
   // and a deep head far ahead needs the body to rise towards it.

@@ -133,7 +133,16 @@ struct AnimRig {
   // (hang_points[hang_begin[i] .. hang_begin[i + 1]]).
   std::vector<glm::vec2> hang_points;
   std::vector<int> hang_begin;
+  std::vector<glm::vec2> root_hang_points;   // the same for the root, in its frame
+  std::vector<glm::vec2> skull_hang_points;  // and for the skull (a jaw), in its frame
+  // The bones the drape places each tick, parents first: the spine, the skull and the chains to
+  // the limbs' girdles (what hangs from them follows on demand, as their rest shape).
+  std::vector<int> drape_fk;
   int head_owner = -1;              // the spine bone the skull hangs from (kept level)
+  float skull_rest_angle = 0.0f;    // the skull's rest angle (model space)
+  // Per drape bone: from its joint to the point it ends at, the length and direction in its
+  // own frame.
+  std::vector<float> drape_length, drape_along;
   float crawl_rest_y = 0.0f;        // (build_drape's; root_rest_y takes it)
   // The head's nod and a small bird's head-bob bend the neck at its base (nod_bones[0], -1:
   // none; a legged body's first neck bone, off the girdles' chains) and halfway up

@@ -19,6 +19,7 @@
 // A profile holds at most kMaxColumns columns; a wider window gets coarser columns.
 
 #include <cstddef>
+#include <cmath>
 #include <cstdint>
 #include <span>
 #include <vector>
@@ -68,6 +69,26 @@ class GroundProfile {
   float top() const { return top_; }
   // Column i's ground height, or NaN where there is none.
   float column(int i) const { return treads_[tread_of_[i]].height; }
+  // The highest ground no higher than `below` in the columns holding [a_ws, b_ws] (NaN: none),
+  // a tread at a time.
+  float highest(float a_ws, float b_ws, float below = INFINITY) const {
+    float h = NAN;
+    for (int t = tread_of_[column_of(a_ws)], end = tread_of_[column_of(b_ws)]; t <= end; ++t) {
+      const float y = treads_[t].height;
+      if (y <= below && !(y <= h)) h = y;
+    }
+    return h;
+  }
+  // Is the ground over [a_ws, b_ws] one height with no gap (into *height)? (Inside the profile.)
+  bool level_over(float a_ws, float b_ws, float* height) const {
+    const int first = tread_of_[column_of(a_ws)], last = tread_of_[column_of(b_ws)];
+    const float h = treads_[first].height;
+    for (int t = first; t <= last; ++t) {
+      if (!(treads_[t].height == h)) return false;  // (NaN: a gap)
+    }
+    *height = h;
+    return true;
+  }
   // The column holding x (clamped to the profile).
   int column_of(float x_ws) const {
     // floor, then clamp to the columns: compared before the floor (t < 0 exactly when

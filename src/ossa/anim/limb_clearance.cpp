@@ -104,13 +104,25 @@ float body_out_of_ground(const AnimContext& ctx, const BodyFrame& body, const st
   // The ground under a point is looked for from above the body (a point may lie deeper in the
   // ground than the body is high): in the profile where it holds the span, else in the level.
   const float top = body.root_y_ws + ctx.rig.hip_height + ctx.rig.root_rest_y;
+  // Level ground under the whole body (the common case) is one height.
+  float flat = NAN;
+  {
+    const float a = ctx.rig.body_lo_ws(body.x_ws, body.facing) - ctx.rig.body_half_length - span;
+    const float b = ctx.rig.body_hi_ws(body.x_ws, body.facing) + ctx.rig.body_half_length + span;
+    if (!ground.covers(ctx.level, a, b, body.root_y_ws - ctx.rig.body_half_length, top) || !ground.level_over(a, b, &flat) ||
+        !(flat <= top)) {
+      flat = NAN;
+    }
+  }
   auto keep_out = [&](glm::vec2 p_fs, float from_y_fs) {
+    if (!std::isnan(flat)) {
+      raise = std::max(raise, flat - p_fs.y);  // (facing space y is world y)
+      return;
+    }
     const glm::vec2 p = body.to_ws(p_fs);
     if (ground.covers(ctx.level, p.x - span, p.x + span, std::min(p.y, top), top)) {
-      for (int i = ground.column_of(p.x - span), end = ground.column_of(p.x + span); i <= end; ++i) {
-        const float h = ground.column(i);
-        if (h <= top) raise = std::max(raise, h - p.y);  // (NaN: a gap)
-      }
+      const float h = ground.highest(p.x - span, p.x + span, top);
+      if (h - p.y > raise) raise = h - p.y;  // (NaN: none)
       return;
     }
     const float from = std::max(top, body.to_ws({p_fs.x, std::max(from_y_fs, p_fs.y)}).y + ctx.rig.hip_height);
@@ -119,13 +131,30 @@ float body_out_of_ground(const AnimContext& ctx, const BodyFrame& body, const st
     }
   };
 
-  // Every bone of the body, both ends (the limbs' own clearance keeps them out; their roots
-  // below).
-  for (int b = 0; b < ctx.rig.skeleton.bone_count(); ++b) {
-    if (ctx.rig.limb_bone[b]) continue;
-    const glm::vec2 p = bone_start(model[b]), e = bone_end(model[b], ctx.rig.skeleton.length(b));
+  // Every bone of the body, both ends: those the drape placed from their matrices, what hangs
+  // from them (ribs, the skull, the limbs' roots) from the rest shape they keep (the limbs' own
+  // clearance keeps the limbs out).
+  const AnimRig& rig = ctx.rig;
+  for (int b : rig.drape_fk) {
+    if (rig.limb_bone[b]) continue;
+    const glm::vec2 p = bone_start(model[b]), e = bone_end(model[b], rig.skeleton.length(b));
     keep_out(p, p.y);
     keep_out(e, e.y);
+  }
+  for (size_t i = 0; i < rig.drape_bones.size(); ++i) {
+    const Mat2x3& m = model[rig.drape_bones[i]];
+    for (int k = rig.hang_begin[i]; k < rig.hang_begin[i + 1]; ++k) {
+      const glm::vec2 p = m.apply(rig.hang_points[k]);
+      keep_out(p, p.y);
+    }
+  }
+  for (glm::vec2 q : rig.root_hang_points) {
+    const glm::vec2 p = model[rig.root].apply(q);
+    keep_out(p, p.y);
+  }
+  for (glm::vec2 q : rig.skull_hang_points) {
+    const glm::vec2 p = model[rig.skull].apply(q);
+    keep_out(p, p.y);
   }
   for (const std::vector<RigLimb>* limbs : {&ctx.rig.arms, &ctx.rig.fins, &ctx.rig.wings}) {
     for (const RigLimb& limb : *limbs) {

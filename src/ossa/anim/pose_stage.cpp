@@ -95,8 +95,8 @@ float pose_body(const AnimContext& ctx, const BodyFrame& body, float root_vy, fl
 
 void lift_pose(const AnimRig& rig, float raise, PoseState& state) {
   state.pose.locals[rig.root].offset_ls.y += raise;
-  if (rig.legs.empty()) {  // the drape placed every bone: all rise
-    for (Mat2x3& m : state.facing) m.m[5] += raise;
+  if (rig.legs.empty()) {  // the bones the drape placed rise (the rest follow on demand)
+    for (int b : rig.drape_fk) state.facing[b].m[5] += raise;
     return;
   }
   body_fk(rig, state);

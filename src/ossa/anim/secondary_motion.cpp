@@ -31,6 +31,7 @@ void drape_legless(const AnimContext& ctx, const BodyFrame& body, float crawl_ph
                    std::vector<Mat2x3>& model_fs) {
   constexpr float kMaxDrapeBend = 0.3f;   // radians from a bone's rest angle
   constexpr float kHeadLiftOfSkull = 1.0f / 3.0f;
+  constexpr float kHangTolerance = 1e-4f;  // metres: a rib's end resting on the ground is clear
   const AnimRig& rig = ctx.rig;
   const AnimatorParams& params = ctx.params;
   const Skeleton& sk = rig.skeleton;
@@ -41,30 +42,38 @@ void drape_legless(const AnimContext& ctx, const BodyFrame& body, float crawl_ph
   // The ground as the body lies on it: the highest within `reach` either side, so that the
   // body ramps up to a step (at kDrapeSlope) before it reaches the riser rather than meet it.
   const float reach = std::min(rig.root_rest_y / kDrapeSlope, 0.5f * rig.body_half_length);
+  // Level ground under the whole body and beyond (the common case) is one height.
+  float flat = NAN;
+  {
+    const float a = rig.body_lo_ws(body.x_ws, body.facing) - rig.body_half_length - reach;
+    const float b = rig.body_hi_ws(body.x_ws, body.facing) + rig.body_half_length + reach;
+    if (ground.empty() || a < ground.x0() || b > ground.x0() + ground.step() * static_cast<float>(ground.size() - 1) ||
+        !ground.level_over(a, b, &flat)) {
+      flat = NAN;
+    }
+  }
   auto ground_at = [&](float x_fs, float reach) {  // NaN: none the profile holds
+    if (!std::isnan(flat)) return flat;
     const float x = body.to_ws({x_fs, 0.0f}).x;
     if (ground.empty() || x - reach < ground.x0() || x + reach > ground.x0() + ground.step() * static_cast<float>(ground.size() - 1)) {
       return NAN;
     }
-    float h = NAN;
-    for (int c = ground.column_of(x - reach), end = ground.column_of(x + reach); c <= end; ++c) {
-      const float column = ground.column(c);
-      if (!(column <= h)) h = std::isnan(column) ? h : column;
-    }
-    return h;
+    return ground.highest(x - reach, x + reach);
   };
   const std::vector<int>& parents = sk.parents();
+  // Each bone's angle in facing space, kept alongside its matrix (no atan2 per bone).
+  thread_local std::vector<float> angle;
+  angle.resize(static_cast<size_t>(sk.bone_count()));
   size_t next_drape = 0;
-  for (int b = 0; b < sk.bone_count(); ++b) {
+  for (int b : rig.drape_fk) {
     const int parent = parents[b];
     if (next_drape < rig.drape_bones.size() && rig.drape_bones[next_drape] == b && parent >= 0) {
       const size_t i = next_drape++;
       const int next = rig.drape_next[i];
       const Mat2x3& up = model_fs[parent];
-      const float parent_angle = std::atan2(up.m[1], up.m[0]);
+      const float parent_angle = angle[parent];
       const glm::vec2 start = up.apply(pose.locals[b].offset_ls);
-      const glm::vec2 v = next >= 0 ? pose.locals[next].offset_ls : glm::vec2(sk.length(b), 0.0f);
-      const float length = glm::length(v), along = std::atan2(v.y, v.x);
+      const float length = rig.drape_length[i], along = rig.drape_along[i];
       float clearance = next >= 0 ? rig.belly[next] : rig.tip_belly[i];
       if (b == rig.head_owner && rig.skull >= 0) clearance += kHeadLiftOfSkull * sk.length(rig.skull);
       clearance += wave * std::max(0.0f, std::sin(kTwoPi * (crawl_phase - params.crawl_waves * static_cast<float>(i) / n)));
@@ -89,7 +98,7 @@ void drape_legless(const AnimContext& ctx, const BodyFrame& body, float crawl_ph
         for (int k = rig.hang_begin[i]; k < rig.hang_begin[i + 1]; ++k) {
           const glm::vec2 q = rig.hang_points[k];
           const glm::vec2 w = start + glm::vec2(c * q.x - sn * q.y, sn * q.x + c * q.y);
-          if (ground_at(w.x, 0.0f) > w.y) return false;
+          if (ground_at(w.x, 0.0f) > w.y + kHangTolerance) return false;
         }
         return true;
       };
@@ -110,8 +119,7 @@ void drape_legless(const AnimContext& ctx, const BodyFrame& body, float crawl_ph
       // Level, as at rest; raised by up to kMaxDrapeBend where its far end would come nearer
       // the ground than a third of its length.
       const Mat2x3& up = model_fs[parent];
-      const Mat2x3& rest = rig.model_rest[b];
-      const float level = std::atan2(rest.m[1], rest.m[0]), length = sk.length(b);
+      const float level = rig.skull_rest_angle, length = sk.length(b);
       const glm::vec2 joint = up.apply(pose.locals[b].offset_ls);
       const float tip_x = joint.x + length * std::cos(level), g = ground_at(tip_x, 0.0f);
       float dir = level;
@@ -121,10 +129,11 @@ void drape_legless(const AnimContext& ctx, const BodyFrame& body, float crawl_ph
         const float up_turn = forward * (forward > 0.0f ? want - level : (kPi - want) - level);
         dir = level + forward * std::clamp(forward * wrap_angle(up_turn), 0.0f, kMaxDrapeBend);
       }
-      pose.locals[b].angle_ls = wrap_angle(dir - std::atan2(up.m[1], up.m[0]));
+      pose.locals[b].angle_ls = wrap_angle(dir - angle[parent]);
     }
     const Mat2x3 local = local_matrix(pose.locals[b]);
     model_fs[b] = parent < 0 ? local : model_fs[parent] * local;
+    angle[b] = (parent < 0 ? 0.0f : angle[parent]) + pose.locals[b].angle_ls;
   }
 }
 
