@@ -76,12 +76,12 @@ void drape_legless(const AnimContext& ctx, const BodyFrame& body, float crawl_ph
       const float length = rig.drape_length[i], along = rig.drape_along[i];
       float clearance = next >= 0 ? rig.belly[next] : rig.tip_belly[i];
       if (b == rig.head_owner && rig.skull >= 0) clearance += kHeadLiftOfSkull * sk.length(rig.skull);
-      clearance += wave * std::max(0.0f, std::sin(kTwoPi * (crawl_phase - params.crawl_waves * static_cast<float>(i) / n)));
+      if (wave > 0.0f) clearance += wave * std::max(0.0f, std::sin(kTwoPi * (crawl_phase - params.crawl_waves * static_cast<float>(i) / n)));
       const float rest = rig.rest_pose.locals[b].angle_ls;
       float dir = parent_angle + rest + along;  // the segment's direction (facing space)
       const bool forward = std::cos(dir) >= 0.0f;
       bool placed = length > 1e-6f;
-      for (int k = 0; k < 2 && placed; ++k) {
+      for (int k = 0; k < (std::isnan(flat) ? 2 : 1) && placed; ++k) {  // (level ground: x does not matter)
         const float g = ground_at(start.x + length * std::cos(dir), reach);
         if (!(g <= start.y + length)) {  // a gap, or higher than the bone reaches: as at rest
           placed = false;
