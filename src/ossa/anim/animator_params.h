@@ -51,7 +51,8 @@ struct AnimatorParams {
   float tail_damping = 0.35f;
   // Largest swing of the tail's spring, radians summed over the tail. [0, 1.5].
   float tail_max_swing = 0.8f;
-  // Travelling wave of legless bodies: amplitude (radians per vertebra) and waves per body.
+  // Travelling wave of legless bodies: how high it lifts a stretch of the body off the ground,
+  // of the half body length, and waves per body.
   float crawl_amplitude = 0.035f;
   float crawl_waves = 1.5f;
   // Amplitude of a fin's slow beat while moving, radians. [0, 0.5].

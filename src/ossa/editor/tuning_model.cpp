@@ -28,7 +28,7 @@ std::span<const TuningField> tuning_fields() {
       {"tail_stiffness", "1/s^2", 1.0f, 400.0f, &P::tail_stiffness, "spring stiffness of the tail's follow-through"},
       {"tail_damping", "ratio", 0.0f, 2.0f, &P::tail_damping, "damping ratio of the tail"},
       {"tail_max_swing", "rad", 0.0f, 1.5f, &P::tail_max_swing, "largest swing of the tail's spring"},
-      {"crawl_amplitude", "rad/vertebra", 0.0f, 0.2f, &P::crawl_amplitude, "travelling wave of legless bodies"},
+      {"crawl_amplitude", "of half length", 0.0f, 0.2f, &P::crawl_amplitude, "lift of a legless body's travelling wave"},
       {"crawl_waves", "waves/body", 0.25f, 4.0f, &P::crawl_waves, "waves along a legless body"},
       {"fin_beat", "rad", 0.0f, 0.5f, &P::fin_beat, "amplitude of a fin's slow beat while moving"},
       {"idle_period", "s", 0.5f, 10.0f, &P::idle_period, "period of the idle breathing"},
