@@ -148,6 +148,12 @@ void Animator::update(float dt, const AnimatorIntent& intent, const Level& level
       place_body(ctx, dt);  // the clamps at once: no knee or girdle in the ground on touch-down
     }
     finish_tick(ctx, dt);                                                       // 12 pose
+    // A part of the body come down into a ledge ahead: the body goes back out of it.
+    if (const float push = fall_push_back(ctx, body_, pose_.facing, body_boxes_, loco_); push > 0.0f) {
+      move_body(-body_.facing * push, body_);
+      loco_.vx = 0.0f;
+      finish_tick(ctx, 0.0f);
+    }
     return;
   }
 

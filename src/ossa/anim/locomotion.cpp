@@ -184,6 +184,35 @@ float path_height(const AnimContext& ctx, const BodyFrame& body, const std::vect
   return y;
 }
 
+float fall_push_back(const AnimContext& ctx, const BodyFrame& body, const std::vector<Mat2x3>& model_fs, std::vector<Box>& boxes,
+                     const LocomotionState& loco) {
+  const AnimRig& rig = ctx.rig;
+  if (loco.vy >= 0.0f || rig.body_slabs.empty()) return 0.0f;
+  body_boxes(rig, body, model_fs, true, &boxes);
+  // (The arms' reach boxes come last: the arms fold out of the way.)
+  const size_t parts = boxes.size() - std::min(boxes.size(), rig.arms.size());
+  float push = 0.0f;
+  for (size_t k = 0; k < parts; ++k) {
+    const Box& p = boxes[k];
+    ctx.hits.clear();
+    ctx.level.overlapping(p, ctx.hits);
+    for (int h : ctx.hits) {
+      const Box& c = ctx.level.box(h);
+      // Only a face ahead of the part (its near edge inside the part, its far side beyond).
+      const bool ahead = body.facing > 0 ? c.min_ws.x > p.min_ws.x : c.max_ws.x < p.max_ws.x;
+      if (ahead) push = std::max(push, body.facing > 0 ? p.max_ws.x - c.min_ws.x : c.max_ws.x - p.min_ws.x);
+    }
+  }
+  if (!(push > 0.0f)) return 0.0f;
+  push += 1e-3f;
+  // Back there, nothing of the body may be in a box (a gap narrower than the body: it stays).
+  for (size_t k = 0; k < parts; ++k) {
+    const glm::vec2 shift(-body.facing * push, 0.0f);
+    if (ctx.level.first_overlap(Box{boxes[k].min_ws + shift, boxes[k].max_ws + shift})) return 0.0f;
+  }
+  return push;
+}
+
 bool body_may_land(const LocomotionState& loco, const FootSet& feet, float* floor) {
   bool any_stance = false;
   for (const FootState& f : feet.feet) any_stance = any_stance || f.state == LegState::kStance;
