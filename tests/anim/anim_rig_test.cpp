@@ -24,7 +24,7 @@ TEST_CASE("anim rig: legs, girdles front to back, reaches and heights of every e
     REQUIRE(static_cast<int>(rig->legs.size()) == legs);
     if (rig->legs.empty()) {
       CHECK(rig->girdles.empty());
-      CHECK_FALSE(rig->crawl_chain.empty());
+      CHECK_FALSE(rig->drape_bones.empty());
       continue;
     }
     ++legged;

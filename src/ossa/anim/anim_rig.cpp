@@ -190,14 +190,12 @@ void build_body_outline(AnimRig& rig, const Mat2x3& root_inv) {
 void build_drape(const RigRoles& roles, AnimRig& rig) {
   const Skeleton& sk = rig.skeleton;
   const int n = sk.bone_count();
-  std::vector<uint8_t> spine(n, 0), limb(n, 0);
+  const std::vector<uint8_t>& limb = rig.limb_bone;  // (build_fk_plan's, every limb bone)
+  std::vector<uint8_t> spine(n, 0);
   for (const std::vector<int>* chain : {&rig.back, &rig.neck, &rig.tail}) {
     for (int b : *chain) spine[b] = 1;
   }
   spine[rig.root] = 1;  // (the skull is not: it hangs from the neck, kept level)
-  for (const RigLimbRole& l : roles.limbs) {
-    for (int b : l.bones) limb[b] = 1;
-  }
   // The spine bone each bone hangs from (itself for a spine bone; −1 for a limb's).
   std::vector<int> owner(n, -1), next(n, -1);
   for (int b = 0; b < n; ++b) {  // parents precede children
@@ -288,22 +286,23 @@ void build_drape(const RigRoles& roles, AnimRig& rig) {
     rig.head_owner = owner[rig.skull];
     rig.skull_rest_angle = std::atan2(rig.model_rest[rig.skull].m[1], rig.model_rest[rig.skull].m[0]);
   }
-  // The root lies as high as the joints around it need, each no steeper than the drape lays
-  // a bone (kDrapeSlope, secondary_motion.cpp): a small root bone may carry no ribs of its own,
-  // and a deep head far ahead needs the body to rise towards it.
-  rig.crawl_rest_y = rig.belly[rig.root];
+  // The root rests (root_rest_y) as high as the joints around it need, each no steeper than the
+  // drape lays a bone (kDrapeSlope, secondary_motion.cpp): a small root bone may carry no ribs
+  // of its own, and a deep head far ahead needs the body to rise towards it. (The hip height,
+  // and so the speeds, keep the rest pose's root height: it was taken before.)
+  rig.root_rest_y = rig.belly[rig.root];
   const glm::vec2 root_at = bone_start(rig.model_rest[rig.root]);
   for (int b = 0; b < n; ++b) {
     if (!spine[b]) continue;
     const glm::vec2 at = bone_start(rig.model_rest[b]);
     const float run = std::fabs(at.x - root_at.x);
-    rig.crawl_rest_y = std::max(rig.crawl_rest_y, rig.belly[b] - anim::kDrapeSlope * run);
+    rig.root_rest_y = std::max(rig.root_rest_y, rig.belly[b] - anim::kDrapeSlope * run);
   }
   for (size_t i = 0; i < rig.drape_bones.size(); ++i) {
     if (rig.drape_next[i] >= 0) continue;
     const int b = rig.drape_bones[i];
     const float run = std::fabs(bone_end(rig.model_rest[b], sk.length(b)).x - root_at.x);
-    rig.crawl_rest_y = std::max(rig.crawl_rest_y, rig.tip_belly[i] - anim::kDrapeSlope * run);
+    rig.root_rest_y = std::max(rig.root_rest_y, rig.tip_belly[i] - anim::kDrapeSlope * run);
   }
 }
 
@@ -415,8 +414,6 @@ void build_fk_plan(const RigRoles& roles, AnimRig& rig) {
   for (int b = 0; b < sk.bone_count(); ++b) {
     if (rig.dynamic_bone[b] || (limb_bone[b] && !leg_ik_bone[b])) rig.touched_bones.push_back(b);
   }
-  rig.crawl_chain = rig.back;
-  rig.crawl_chain.insert(rig.crawl_chain.end(), rig.tail.begin(), rig.tail.end());
   if (rig.legs.empty()) build_drape(roles, rig);
 }
 
@@ -507,9 +504,6 @@ std::shared_ptr<const AnimRig> build_anim_rig(const Skeleton& skeleton, const Po
     }
   }
   build_fk_plan(roles, *rig);
-  // A legless body rests on its belly (build_drape): its root stands that high, whatever the
-  // rest pose's ground (the hip height, and so its speeds, stay the rest pose's).
-  if (rig->legs.empty()) rig->root_rest_y = rig->crawl_rest_y;
   rig->weight_kg = roles.weight_kg;
   rig->skull_variant = roles.skull_variant;
   rig->gait_family = roles.gait_family == GaitFamily::kAuto ? anim::choose_gait_family(*rig) : roles.gait_family;

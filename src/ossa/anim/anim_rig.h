@@ -120,13 +120,12 @@ struct AnimRig {
   std::vector<int> touched_bones;   // bones whose joint values the pose rewrites each tick
   std::vector<int> other_limb_bones;// limb bones not placed by the leg IK, parents first
   std::vector<uint8_t> limb_bone;   // per bone: a limb's (legs, arms, fins, wings and what hangs from them)
-  std::vector<int> crawl_chain;     // back then tail: the legless travelling wave's bones
   // A legless body lies along the ground (drape_legless, secondary_motion.h): its spine bones
   // other than the root and the skull, parents first (drape_bones), each laid so that the point it ends at — its
   // spine child's joint, or its own far end at a tip (drape_next −1) — stands its belly's depth
   // over the ground: belly[b], the depth below bone b's joint of the bones hanging from it (ribs,
   // the skull; not the next spine bone or a limb, but a limb's root) or half its own width, at rest; tip_belly[i] the
-  // same below the far end of a tip. The root's own belly depth is its root_rest_y.
+  // same below the far end of a tip. A legless rig's root_rest_y is the height its root rests at.
   std::vector<int> drape_bones, drape_next;
   std::vector<float> belly, tip_belly;
   // Per drape bone i: the ends of the bones hanging from it, in its own frame at rest
@@ -143,7 +142,6 @@ struct AnimRig {
   // Per drape bone: from its joint to the point it ends at, the length and direction in its
   // own frame.
   std::vector<float> drape_length, drape_along;
-  float crawl_rest_y = 0.0f;        // (build_drape's; root_rest_y takes it)
   // The head's nod and a small bird's head-bob bend the neck at its base (nod_bones[0], -1:
   // none; a legged body's first neck bone, off the girdles' chains) and halfway up
   // (nod_bones[1], -1 for a one-bone neck), so moving the skull (kept level), nod_reach[i]

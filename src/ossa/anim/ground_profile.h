@@ -69,6 +69,10 @@ class GroundProfile {
   float top() const { return top_; }
   // Column i's ground height, or NaN where there is none.
   float column(int i) const { return treads_[tread_of_[i]].height; }
+  // Does the profile hold the columns of [a_ws, b_ws]?
+  bool spans(float a_ws, float b_ws) const {
+    return !tread_of_.empty() && a_ws >= x0_ && b_ws <= x0_ + static_cast<float>(size() - 1) * step_;
+  }
   // The highest ground no higher than `below` in the columns holding [a_ws, b_ws] (NaN: none),
   // a tread at a time.
   float highest(float a_ws, float b_ws, float below = INFINITY) const {

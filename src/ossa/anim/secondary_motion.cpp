@@ -47,18 +47,14 @@ void drape_legless(const AnimContext& ctx, const BodyFrame& body, float crawl_ph
   {
     const float a = rig.body_lo_ws(body.x_ws, body.facing) - rig.body_half_length - reach;
     const float b = rig.body_hi_ws(body.x_ws, body.facing) + rig.body_half_length + reach;
-    if (ground.empty() || a < ground.x0() || b > ground.x0() + ground.step() * static_cast<float>(ground.size() - 1) ||
-        !ground.level_over(a, b, &flat)) {
+    if (!ground.spans(a, b) || !ground.level_over(a, b, &flat)) {
       flat = NAN;
     }
   }
   auto ground_at = [&](float x_fs, float reach) {  // NaN: none the profile holds
     if (!std::isnan(flat)) return flat;
     const float x = body.to_ws({x_fs, 0.0f}).x;
-    if (ground.empty() || x - reach < ground.x0() || x + reach > ground.x0() + ground.step() * static_cast<float>(ground.size() - 1)) {
-      return NAN;
-    }
-    return ground.highest(x - reach, x + reach);
+    return ground.spans(x - reach, x + reach) ? ground.highest(x - reach, x + reach) : NAN;
   };
   const std::vector<int>& parents = sk.parents();
   // Each bone's angle in facing space, kept alongside its matrix (no atan2 per bone).
@@ -125,9 +121,10 @@ void drape_legless(const AnimContext& ctx, const BodyFrame& body, float crawl_ph
       float dir = level;
       if (g <= joint.y + length) {
         const float want = std::asin(std::clamp((g + kHeadLiftOfSkull * length - joint.y) / length, -1.0f, 1.0f));
-        const float forward = std::cos(level) >= 0.0f ? 1.0f : -1.0f;  // pitching up: towards +y
-        const float up_turn = forward * (forward > 0.0f ? want - level : (kPi - want) - level);
-        dir = level + forward * std::clamp(forward * wrap_angle(up_turn), 0.0f, kMaxDrapeBend);
+        // Pitching up turns a skull facing +x counter-clockwise, one facing −x clockwise.
+        const float forward = std::cos(level) >= 0.0f ? 1.0f : -1.0f;
+        const float up = forward * wrap_angle((forward > 0.0f ? want : kPi - want) - level);
+        dir = level + forward * std::clamp(up, 0.0f, kMaxDrapeBend);
       }
       pose.locals[b].angle_ls = wrap_angle(dir - angle[parent]);
     }
