@@ -34,11 +34,11 @@ struct ExpectedHash {
 };
 
 constexpr ExpectedHash kExpected[] = {
-    {"default.json", 0x939d19383cf90ed7ull},
-    {"rough.json", 0x607fe36cf559d739ull},
+    {"default.json", 0x2fb1e56abb762905ull},
+    {"rough.json", 0x0df412d2025dd80bull},
     {"stairs.json", 0x43c1780c100eaaafull},
-    {"slopes.json", 0x9d00efb7ed047486ull},
-    {"drops.json", 0x829e8fd253e30b1bull},
+    {"slopes.json", 0x01df226cef041f90ull},
+    {"drops.json", 0xccb81f9ff5125d98ull},
 };
 
 std::string hex(uint64_t v) {

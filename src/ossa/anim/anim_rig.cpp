@@ -417,7 +417,74 @@ void build_fk_plan(const RigRoles& roles, AnimRig& rig) {
   if (rig.legs.empty()) build_drape(roles, rig);
 }
 
+// Girdle bone i's model matrix with the spine flexed by `flex` (AnimRig::flex_sign).
+Mat2x3 flexed_girdle(const AnimRig& rig, size_t i, float flex) {
+  return rig.model_rest[rig.root] * rig.flexed_girdle_rel(i, flex / static_cast<float>(rig.flex_count));
+}
+
+// The spine's flexion (AnimRig::flex_sign): two leg girdles rigid to the root, each reached
+// by its own chain of spine bones.
+void build_flex(AnimRig& rig) {
+  if (rig.girdles.size() != 2 || rig.girdle_bones.empty()) return;
+  const Skeleton& sk = rig.skeleton;
+  rig.flex_sign.assign(static_cast<size_t>(sk.bone_count()), 0);
+  std::vector<int> girdle_of(static_cast<size_t>(sk.bone_count()), -1);
+  for (const RigLeg& leg : rig.legs) girdle_of[leg.girdle_bone] = leg.girdle;
+  for (int gb : rig.girdle_bones) {
+    std::vector<int> chain;
+    for (int b = sk.parent(gb); b >= 0 && b != rig.root; b = sk.parent(b)) chain.push_back(b);
+    const int sign = girdle_of[gb] == 0 ? -1 : girdle_of[gb] == 1 ? 1 : 0;
+    for (int b : chain) {
+      if (sign == 0 || (rig.flex_sign[b] != 0 && rig.flex_sign[b] != sign)) {  // a chain shared by both girdles
+        rig.flex_sign.clear();
+        rig.flex_chains.clear();
+        rig.flex_count = 0;
+        return;
+      }
+      if (rig.flex_sign[b] == 0) ++rig.flex_count;
+      rig.flex_sign[b] = static_cast<int8_t>(sign);
+    }
+    rig.flex_chains.emplace_back(chain.rbegin(), chain.rend());
+  }
+  if (rig.flex_count == 0) {
+    rig.flex_sign.clear();
+    rig.flex_chains.clear();
+    return;
+  }
+  if (rig.tail_between.empty() && rig.tail_base_bone >= 0) {  // a tail hanging from the flexing spine
+    std::vector<int> between;
+    for (int b = rig.skeleton.parent(rig.tail[0]); b >= 0 && b != rig.tail_base_bone; b = rig.skeleton.parent(b)) between.push_back(b);
+    if (std::any_of(between.begin(), between.end(), [&](int b) { return rig.flex_sign[b] != 0; }))
+      rig.tail_flex_between.assign(between.rbegin(), between.rend());
+  }
+  if (!rig.neck.empty() && rig.dynamic_bone[rig.neck.back()]) {
+    int turned = 0;
+    for (int b = sk.parent(rig.neck.back()); b >= 0; b = sk.parent(b)) turned += rig.flex_sign[b];
+    if (turned != 0) rig.flex_neck = rig.neck.back(), rig.flex_neck_turn = static_cast<float>(-turned);
+  }
+  // How each girdle's joint moves, to second order (central differences of the chain's FK).
+  constexpr float h = 0.05f;
+  for (size_t g = 0; g < rig.girdles.size(); ++g) {
+    RigGirdle& girdle = rig.girdles[g];
+    const int gb = rig.legs[girdle.legs.front()].girdle_bone;
+    const size_t i = static_cast<size_t>(std::find(rig.girdle_bones.begin(), rig.girdle_bones.end(), gb) - rig.girdle_bones.begin());
+    if (i == rig.girdle_bones.size()) continue;
+    const glm::vec2 local = inverse(rig.model_rest[gb]).apply(girdle.joint_ms);
+    const glm::vec2 up = flexed_girdle(rig, i, h).apply(local), down = flexed_girdle(rig, i, -h).apply(local);
+    girdle.flex_d1 = (up - down) / (2.0f * h);
+    girdle.flex_d2 = (up + down - 2.0f * girdle.joint_ms) / (2.0f * h * h);
+  }
+}
+
 }  // namespace
+
+Mat2x3 AnimRig::flexed_girdle_rel(size_t i, float step) const {
+  const float c = std::cos(step), s = std::sin(step);
+  const Mat2x3 turn[2] = {frame_matrix({c, -s}, {0.0f, 0.0f}), frame_matrix({c, s}, {0.0f, 0.0f})};  // by −step, +step
+  Mat2x3 m;
+  for (int b : flex_chains[i]) m = m * rest_local_m[b] * turn[flex_sign[b] > 0];
+  return m * rest_local_m[girdle_bones[i]];
+}
 
 RigRoles rig_roles(const Creature& creature) {
   RigRoles roles;
@@ -504,6 +571,7 @@ std::shared_ptr<const AnimRig> build_anim_rig(const Skeleton& skeleton, const Po
     }
   }
   build_fk_plan(roles, *rig);
+  build_flex(*rig);
   rig->weight_kg = roles.weight_kg;
   rig->skull_variant = roles.skull_variant;
   rig->gait_family = roles.gait_family == GaitFamily::kAuto ? anim::choose_gait_family(*rig) : roles.gait_family;

@@ -65,6 +65,9 @@ struct RigGirdle {                  // a girdle slot carrying a leg pair
   // The farthest a knee of its legs reaches ahead of the joint, metres: the thigh's length for
   // a knee that bends forward, 0 for knees that bend back.
   float knee_reach = 0.0f;
+  // How the joint moves with the spine's flexion f (radians, AnimRig::flex_count):
+  // joint_ms + f·flex_d1 + f²·flex_d2 (zero when the spine never flexes).
+  glm::vec2 flex_d1{0.0f}, flex_d2{0.0f};
 };
 
 struct RigLimb {                    // an arm, fin or wing: a chain hanging from a girdle bone
@@ -117,6 +120,29 @@ struct AnimRig {
   std::vector<int> needed_bones;    // chain-computed each tick, parents first
   std::vector<int> girdle_bones;    // computed directly from the root each tick (rigid body)
   std::vector<Mat2x3> girdle_rel;   // their rest matrices relative to the root bone
+  // Spine flexion (the gallop's and the bound's, GaitState::spine_flex): between two leg
+  // girdles rigid to the root, the spine bends as one arc. Each bone of the chains from the
+  // root to the girdles turns by flex_sign[b]·f/flex_count for a flexion f (radians, the whole
+  // arc): −1 on the way to the front girdle, +1 to the back one, so f > 0 arches the back
+  // (flexion) and f < 0 hollows it (extension). flex_chains[i]: girdle_bones[i]'s chain below
+  // the root, root side first. flex_count 0: the spine never flexes (one girdle, three or
+  // more, legless bodies, a spine that bends already).
+  std::vector<int8_t> flex_sign;
+  std::vector<std::vector<int>> flex_chains;
+  int flex_count = 0;
+  // The neck's base (-1: none that the pose turns) turns back by flex_neck_turn·f/flex_count,
+  // what the chain it hangs from turned: the head keeps its place as the back flexes.
+  int flex_neck = -1;
+  float flex_neck_turn = 0.0f;
+  // Girdle bone i's matrix relative to the root's with each flexing bone turned by
+  // flex_sign·step.
+  Mat2x3 flexed_girdle_rel(size_t i, float step) const;
+  // Girdle g's joint with the spine flexed by `flex` (model space, rest otherwise).
+  glm::vec2 girdle_joint(int g, float flex) const {
+    const RigGirdle& girdle = girdles[static_cast<size_t>(g)];
+    if (flex == 0.0f) return girdle.joint_ms;
+    return girdle.joint_ms + flex * (girdle.flex_d1 + flex * girdle.flex_d2);
+  }
   std::vector<int> touched_bones;   // bones whose joint values the pose rewrites each tick
   std::vector<int> other_limb_bones;// limb bones not placed by the leg IK, parents first
   std::vector<uint8_t> limb_bone;   // per bone: a limb's (legs, arms, fins, wings and what hangs from them)
@@ -163,6 +189,9 @@ struct AnimRig {
   int tail_base_bone = -1;
   std::vector<int> tail_between;
   Mat2x3 tail_between_rest;
+  // The bones between when tail_between was folded into its rest product but the spine's
+  // flexion bends one of them (empty otherwise).
+  std::vector<int> tail_flex_between;
   float tail_length = 0.0f;         // > 0: the tail is kept out of the level
   // The body plan's gait (anim/gait_family.h): never kAuto here (the builder resolves it with
   // choose_gait_family), and what the choice reads besides the bones.

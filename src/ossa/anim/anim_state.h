@@ -52,6 +52,7 @@ struct BodyFrame {
   float root_y_ws = 0.0f;   // world y of the root
   float pitch = 0.0f;       // root rotation from the terrain, radians (counter-clockwise, _fs)
   float lean = 0.0f;        // lean into the motion, radians
+  float flex = 0.0f;        // the spine's flexion (GaitState::spine_flex), radians
 
   glm::vec2 to_fs(glm::vec2 p_ws) const { return {(p_ws.x - x_ws) * facing, p_ws.y}; }
   glm::vec2 to_ws(glm::vec2 p_fs) const { return {x_ws + facing * p_fs.x, p_fs.y}; }
@@ -69,8 +70,10 @@ struct BodyFrame {
     const glm::vec2 j = rotate_body(rest_ms - glm::vec2(0.0f, rig.root_rest_y));
     return to_ws({j.x, j.y + root_y_ws + lift});
   }
-  // Girdle joint g from the current body placement.
-  glm::vec2 girdle_ws(const AnimRig& rig, int g) const { return body_point_ws(rig, rig.girdles[g].joint_ms); }
+  // Girdle joint g with the spine as flexed now (model space) and from the current body
+  // placement (world).
+  glm::vec2 girdle_ms(const AnimRig& rig, int g) const { return rig.girdle_joint(g, flex); }
+  glm::vec2 girdle_ws(const AnimRig& rig, int g) const { return body_point_ws(rig, girdle_ms(rig, g)); }
 
  private:
   mutable float cached_angle_ = 0.0f;

@@ -224,6 +224,7 @@ PlacementInputs Animator::placement_inputs(float dt) const {
   in.keep_bob = decay_.bob;
   in.crouch = loco_.mode == Locomotion::kCrouch ? loco_.crouch : 0.0f;
   in.root = landing_root(loco_);
+  in.flex = gait_.spine_flex;
   return in;
 }
 

@@ -24,8 +24,8 @@ void move_girdle(Placement& p, int g, float dy) {
   // Turn the body about the girdle at the other end (o), which stays put; whatever a turn
   // within the pitch limits (per tick and overall) cannot give, the whole body moves.
   const glm::vec2 root_rest(0.0f, rig.root_rest_y);
-  const glm::vec2 o = rig.girdles[g == 0 ? n - 1 : 0].joint_ms - root_rest;
-  const glm::vec2 v = rig.girdles[g].joint_ms - root_rest - o;
+  const glm::vec2 o = body.girdle_ms(rig, g == 0 ? n - 1 : 0) - root_rest;
+  const glm::vec2 v = body.girdle_ms(rig, g) - root_rest - o;
   const float len = std::sqrt(v.x * v.x + v.y * v.y);
   const glm::vec2 v_before = body.rotate_body(v), o_before = body.rotate_body(o);
   if (len > 1e-4f) {

@@ -89,7 +89,7 @@ void body_target(Placement& p, const std::vector<float>& height, float* target_r
   const glm::vec2 root_rest(0.0f, rig.root_rest_y);
   const float angle_extra = p.body.lean;
   if (rig.girdles.size() >= 2) {
-    const glm::vec2 df = rig.girdles.front().joint_ms - root_rest, db = rig.girdles.back().joint_ms - root_rest;
+    const glm::vec2 df = p.body.girdle_ms(rig, 0) - root_rest, db = p.body.girdle_ms(rig, static_cast<int>(rig.girdles.size()) - 1) - root_rest;
     const glm::vec2 d = df - db;  // the rest chord between the girdles
     if (!(d == p.state.chord)) {
       p.state.chord = d;
@@ -136,6 +136,7 @@ void place_body(const AnimContext& ctx, const PlacementInputs& in, const FootSet
   Placement p{ctx, in, feet, body, state, handoff.waiting, &handoff.release_next};
   const AnimRig& rig = ctx.rig;
   const float old_root = body.root_y_ws;
+  body.flex = in.flex;
   float target_root = body.root_y_ws, target_pitch = 0.0f;
   const size_t n = rig.girdles.size();
   // Scratch per girdle (a creature has a few), one thread-local lookup for all.
@@ -161,12 +162,15 @@ void place_body(const AnimContext& ctx, const PlacementInputs& in, const FootSet
     girdle_heights(p, height);
     body_target(p, height, &target_root, &target_pitch);
   }
-  // The bob's part of the targets: the same targets without it.
+  // The bob's part of the targets (and the flexion's, which moves the girdles as a bob would):
+  // the same targets without them.
   float bob_root = 0.0f, bob_pitch = 0.0f;
-  if (!rig.girdles.empty() && !in.bob.empty()) {
+  if (!rig.girdles.empty() && (!in.bob.empty() || body.flex != 0.0f)) {
     for (size_t g = 0; g < n && g < in.bob.size(); ++g) height[g] -= in.bob[g];
     float root0 = target_root, pitch0 = 0.0f;
+    body.flex = 0.0f;
     body_target(p, height, &root0, &pitch0);
+    body.flex = in.flex;
     bob_root = target_root - root0, bob_pitch = target_pitch - pitch0;
     target_root = root0, target_pitch = pitch0;
   }
@@ -216,7 +220,7 @@ float standing_root(const AnimContext& ctx, const PlacementInputs& in, const Foo
 void reset_body(float x, float root_y, int facing, BodyFrame& body, BodyState& state) {
   body.facing = facing < 0 ? -1 : 1;
   body.x_ws = x;
-  body.lean = body.pitch = 0.0f;
+  body.lean = body.pitch = body.flex = 0.0f;
   body.root_y_ws = root_y;
   state.root_vy = state.body_lift = 0.0f;
   state.bob_root = state.bob_pitch = 0.0f;
@@ -239,6 +243,7 @@ void fly_body(float root_y, float vy, float keep_level, BodyFrame& body, BodySta
   body.root_y_ws = root_y;
   body.pitch = approach(body.pitch, 0.0f, keep_level);
   body.lean = approach(body.lean, 0.0f, keep_level);
+  body.flex = approach(body.flex, 0.0f, keep_level);
   state.root_vy = vy;
   state.bob_root = state.bob_pitch = 0.0f;
 }
@@ -247,7 +252,7 @@ namespace {
 
 // Turns the body about its front girdle so that girdle `g` rises by dy.
 void tip_about_front(const AnimRig& rig, int g, float dy, BodyFrame& body) {
-  const glm::vec2 front = rig.girdles.front().joint_ms, joint = rig.girdles[g].joint_ms;
+  const glm::vec2 front = body.girdle_ms(rig, 0), joint = body.girdle_ms(rig, g);
   const float len = glm::length(joint - front);
   if (len < 1e-4f) {
     body.root_y_ws += dy;

@@ -64,6 +64,7 @@ struct PlacementInputs {
   float keep_bob = 0.0f;      // smoothing of the bob's part (BodyState::bob_root, bob_pitch)
   float crouch = 0.0f;        // the girdles stand this much lower (a jump's crouch), metres
   float root = NAN;           // a landing's descent: the root's height this tick, not smoothed
+  float flex = 0.0f;          // the spine's flexion (GaitState::spine_flex), radians
 };
 
 // Stage 10: places the body over the feet. Reads handoff.waiting; writes handoff.release_next

@@ -64,6 +64,9 @@ struct GaitState {
   // The head this tick (trunk_bob.h, head_motion): how far it rises over its rest place with
   // the walk's nod and how far forward of it a small bird's head-bob holds it, metres.
   float head_rise = 0.0f, head_shift = 0.0f;
+  // The spine's flexion this tick (trunk_bob.h, spine_flex): radians over the arc between
+  // the girdles, > 0 arched (flexed), < 0 hollowed (extended).
+  float spine_flex = 0.0f;
   // The family's walk and full-run speeds (walk_speed(), run_speed()), m/s, as update_gait
   // last found them.
   float walk_speed = 0.0f, run_speed = 0.0f;

@@ -108,6 +108,9 @@ GaitFamilyTraits gait_family_traits(GaitFamily family, const AnimRig& rig) {
       t.mid_froude = 0.5f;
       t.fast_froude = 2.0f;
       t.top_froude = 3.0f;
+      // Hoofed animals gallop on a stiff back: about 10° from flexed to extended, a chosen
+      // figure of the order measured in the horse's canter (Faber et al. 2001).
+      t.spine_flex = 0.09f;
       break;
     case GaitFamily::kGraviportal:
       // A lateral-sequence walk and amble at every speed, always a foot down; elephants reach
@@ -125,6 +128,9 @@ GaitFamilyTraits gait_family_traits(GaitFamily family, const AnimRig& rig) {
       t.mid_froude = 0.5f;
       t.fast_froude = 1.5f;
       t.top_froude = 3.0f;
+      // Small mammals bound on their backs: the lumbar spine flexes and extends by tens of
+      // degrees each stride (Schilling & Hackert 2006); 40° from flexed to extended, chosen.
+      t.spine_flex = 0.35f;
       break;
     case GaitFamily::kHopper:
       // Both hind feet in phase at every speed (Dawson & Taylor 1973; Ahn et al. 2004).

@@ -44,6 +44,11 @@ struct GaitFamilyTraits {
   float duty_floor = 0.0f;
   float aerial_froude = 0.0f; // below it the duty keeps at least 0.5 (a grounded run)
   bool head_bob = false;      // the head holds still, then thrusts (small birds' walk)
+  // How far the spine flexes and extends (radians over the arc between the girdles, either
+  // way) when the fore feet land together and the hind feet together, half a stride apart (a
+  // bound); a gait whose pairs land apart flexes less, a walk or trot not at all (trunk_bob.h,
+  // spine_flex).
+  float spine_flex = 0.0f;
 };
 
 // The traits of `family` for this rig (its weight and tail set the heavy bipeds', the

@@ -170,8 +170,13 @@ void keep_tail_clear(const AnimContext& ctx, const BodyFrame& body, const std::v
   // the least that clears, up to kMaxTailCurl over its length (or, if that is not enough,
   // lifts at its root). Only asked when ground rises to within a tail's length of its root.
   const AnimRig& rig = ctx.rig;
-  Mat2x3 base = model[rig.tail_base_bone] * rig.tail_between_rest;
-  for (int b : rig.tail_between) base = base * local_matrix(pose.locals[b]);
+  Mat2x3 base = model[rig.tail_base_bone];
+  if (body.flex != 0.0f && !rig.tail_flex_between.empty()) {  // the spine it hangs from flexes
+    for (int b : rig.tail_flex_between) base = base * local_matrix(pose.locals[b]);
+  } else {
+    base = base * rig.tail_between_rest;
+    for (int b : rig.tail_between) base = base * local_matrix(pose.locals[b]);
+  }
   const glm::vec2 root = body.to_ws(base.apply(pose.locals[rig.tail[0]].offset_ls));
   const float len = rig.tail_length;
   const auto ground = ground_below(ctx.level, root.x - len, root.x + len, root.y + len, 2.0f * len);

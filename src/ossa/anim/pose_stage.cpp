@@ -23,7 +23,23 @@ void body_fk(const AnimRig& rig, PoseState& state) {
     model[b] = parents[b] < 0 ? local : model[parents[b]] * local;
   }
   const Mat2x3 root = model[rig.root];
+  if (state.flex_step != 0.0f) {
+    for (size_t i = 0; i < rig.girdle_bones.size(); ++i) model[rig.girdle_bones[i]] = root * rig.flexed_girdle_rel(i, state.flex_step);
+    return;
+  }
   for (size_t i = 0; i < rig.girdle_bones.size(); ++i) model[rig.girdle_bones[i]] = root * rig.girdle_rel[i];
+}
+
+// The spine's flexion (AnimRig::flex_sign): each bone of the chains to the girdles turns by
+// an equal share of body.flex, the back an arc.
+void flex_spine(const AnimRig& rig, float flex, PoseState& state) {
+  const float step = rig.flex_count > 0 ? flex / static_cast<float>(rig.flex_count) : 0.0f;
+  if (step == 0.0f && state.flex_step == 0.0f) return;
+  for (const std::vector<int>& chain : rig.flex_chains) {
+    for (int b : chain) state.pose.locals[b].angle_ls = rig.rest_pose.locals[b].angle_ls + static_cast<float>(rig.flex_sign[b]) * step;
+  }
+  if (rig.flex_neck >= 0) state.pose.locals[rig.flex_neck].angle_ls += rig.flex_neck_turn * step;
+  state.flex_step = step;
 }
 
 // Bend the neck at its two nod joints so that the skull's joint (and, the head kept level, its
@@ -82,6 +98,7 @@ float pose_body(const AnimContext& ctx, const BodyFrame& body, float root_vy, fl
   pose.locals[rig.root].angle_ls += body_angle;
   if (rig.skull >= 0) pose.locals[rig.skull].angle_ls -= body_angle;  // the head stays level
   if (rig.nod_bones[0] >= 0 && (head.rise != 0.0f || head.shift != 0.0f)) pose_head(rig, head, pose);
+  flex_spine(rig, body.flex, state);
   swing_tail(rig, ctx.params, dt, root_vy, body_angle, state.tail, pose);
   // Forward kinematics in two passes: the body first, then the limb chains after IK.
   state.facing.resize(rig.skeleton.bone_count());
@@ -134,7 +151,7 @@ const Pose& pose_angles(const AnimRig& rig, const PoseState& state) {
     for (size_t i = 0; i < rig.legs.size(); ++i) {
       const RigLeg& info = rig.legs[i];
       const auto& [upper_dir, lower_dir, foot_dir] = state.leg_dirs[i];
-      const float girdle = std::isnan(info.girdle_rel_angle) ? bone_angle(state.facing[info.girdle_bone])
+      const float girdle = std::isnan(info.girdle_rel_angle) || state.flex_step != 0.0f ? bone_angle(state.facing[info.girdle_bone])
                                                               : pose.locals[rig.root].angle_ls + info.girdle_rel_angle;
       const float upper = fast_atan2(upper_dir.y, upper_dir.x);
       const float lower = fast_atan2(upper_dir.x * lower_dir.y - upper_dir.y * lower_dir.x, glm::dot(upper_dir, lower_dir));
@@ -154,7 +171,8 @@ const std::vector<Mat2x3>& facing_matrices(const AnimRig& rig, const PoseState& 
     std::vector<Mat2x3>& model = state.facing;
     for (int b = 0; b < rig.skeleton.bone_count(); ++b) {
       if (rig.tick_bone[b]) continue;
-      const Mat2x3 local = rig.dynamic_bone[b] ? local_matrix(state.pose.locals[b]) : rig.rest_local_m[b];
+      const bool bent = rig.dynamic_bone[b] || (state.flex_step != 0.0f && rig.flex_sign[b] != 0);
+      const Mat2x3 local = bent ? local_matrix(state.pose.locals[b]) : rig.rest_local_m[b];
       model[b] = parents[b] < 0 ? local : model[parents[b]] * local;
     }
     state.facing_dirty = false;

@@ -32,6 +32,7 @@ struct PoseState {
   mutable Pose pose;                               // (the legs' angles are filled in lazily)
   TailSpring tail;
   std::vector<std::array<glm::vec2, 3>> leg_dirs;  // per leg: upper, lower, foot directions (_fs)
+  float flex_step = 0.0f;                          // each flexing spine bone's turn (AnimRig::flex_sign), radians
   // Caches of the lazily computed outputs.
   mutable std::vector<Mat2x3> facing;              // facing-space matrices (_fs)
   mutable std::vector<Mat2x3> world;               // world matrices (_ws)

@@ -120,7 +120,7 @@ void trunk_bob(const AnimRig& rig, const AnimatorParams& params, const SplinePro
   constexpr float kBobEaseRate = 6.0f;  // 1/s
   weight = approach(weight, steady ? 1.0f : 0.0f, std::exp(-kBobEaseRate * dt));
   bob.assign(rig.girdles.size(), 0.0f);
-  gait.head_rise = gait.head_shift = 0.0f;
+  gait.head_rise = gait.head_shift = gait.spine_flex = 0.0f;
   if (!gait.moving) {
     const float t = frac(gait.idle_time / params.idle_period);
     const float idle = prototype_range(PrototypeId::kIdleY).clamp(prototypes[PrototypeId::kIdleY].value(t, gait.run_factor)) * rig.hip_height;
@@ -153,6 +153,23 @@ void trunk_bob(const AnimRig& rig, const AnimatorParams& params, const SplinePro
     bob[g] = fade * series.at(gait.phase);
   }
   head_motion(rig, feet, fade, gait);
+  spine_flex(rig, feet, fade, gait);
+}
+
+void spine_flex(const AnimRig& rig, const FootSet& feet, float fade, GaitState& gait) {
+  if (rig.flex_count == 0 || !(gait.traits.spine_flex > 0.0f) || !(fade > 0.0f) || !(gait.fast_factor > 0.0f)) return;
+  // A foot lands at φ = −offset furthest forward and lifts off at −offset + duty furthest
+  // back, moving evenly between: the first harmonic of that triangle peaks (duty − ½)/2
+  // cycles after the landing. Its amplitude is common to every foot and cancels below.
+  const float lag = 0.5f * (gait.duty - 0.5f);
+  float place[2] = {0.0f, 0.0f};
+  for (size_t g = 0; g < 2; ++g) {
+    const std::vector<int>& legs = rig.girdles[g].legs;
+    for (int leg : legs) place[g] += std::cos(kTwoPi * (gait.phase + gait.foot_offset[feet.foot_of_leg[leg]] - lag));
+    place[g] /= static_cast<float>(std::max<size_t>(legs.size(), 1));
+  }
+  // From −2 (fore feet back, hind feet forward: gathered) to 2 (extended).
+  gait.spine_flex = -0.5f * fade * gait.fast_factor * gait.traits.spine_flex * (place[0] - place[1]);
 }
 
 void head_motion(const AnimRig& rig, const FootSet& feet, float fade, GaitState& gait) {

@@ -63,6 +63,17 @@ void trunk_bob(const AnimRig& rig, const AnimatorParams& params, const SplinePro
 // the neck about its base for both (pose_head, pose_stage.h).
 void head_motion(const AnimRig& rig, const FootSet& feet, float fade, GaitState& gait);
 
+// The spine's part (run by trunk_bob, with its fade): gait.spine_flex, how far the back
+// arches. The spine flexes as the hind feet swing forward under the body while the fore feet
+// push back, and extends as the fore feet reach forward and the hind feet push off: the
+// flexion follows the fore feet's mean place ahead of their girdle less the hind feet's, each
+// foot's place taken as the first harmonic of its travel (back in stance, forward in swing).
+// In a walk, trot or pace each pair's feet are half a cycle apart and their places cancel:
+// the back stays still; the closer each pair lands together the more it flexes, up to the
+// family's spine_flex when both pairs do, half a cycle apart. In the fast gait only (gallop,
+// bound: gait.fast_factor), where the back's flexion drives the stride.
+void spine_flex(const AnimRig& rig, const FootSet& feet, float fade, GaitState& gait);
+
 // Do the feet keep a rhythm on ground walked like flat ground: not on steps (body motion's
 // on_steps), not blocked, no foot hanging over a drop or waiting for ground (`waiting`,
 // TickHandoff::waiting)?
