@@ -79,6 +79,7 @@
 #include "ossa/anim/level_probe.h"
 #include "ossa/anim/limb_clearance.h"
 #include "ossa/anim/locomotion.h"
+#include "ossa/anim/pentapedal.h"
 #include "ossa/anim/pose_stage.h"
 #include "ossa/anim/rig_scale.h"
 #include "ossa/anim/secondary_motion.h"

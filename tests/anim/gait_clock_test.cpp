@@ -103,10 +103,13 @@ TEST_CASE("gait clock: every family's gaits, top speed and duty floor", "[anim][
     }
   }
   SECTION("hopper: a biped's feet land together at every speed") {
+    // With arms and a tail it walks on five supports below the hop (pentapedal.h).
+    const bool five = !biped->arms.empty() && !biped->tail.empty();
+    CHECK(anim::gait_family_traits(GaitFamily::kHopper, *biped).pentapedal == five);
     for (float fr : {0.1f, 1.0f, 2.5f}) {
       const anim::GaitState g = at(*biped, GaitFamily::kHopper, fr);
       CHECK(std::fabs(anim::phase_diff(offset_of(*biped, g, 0, Side::kNear), offset_of(*biped, g, 0, Side::kFar))) < 1e-4f);
-      CHECK(g.gait == Gait::kHop);
+      CHECK(g.gait == (five && fr < 0.5f ? Gait::kPentapedal : Gait::kHop));
     }
   }
   SECTION("bird: a grounded run before the aerial run") {

@@ -65,7 +65,7 @@ TEST_CASE("limb clearance: an arm reaching into a step in front of the chest fol
     anim::pose_body(s.ctx, s.body, 0.0f, 0.0f, 0.0f, 0.0f, pose);
     std::vector<glm::vec2> before = chain_ws(s, pose.facing, arm.girdle_bone, {arm.bones[0], arm.bones[1], arm.bones[2]}, pose.pose);
     REQUIRE(anim::polyline_hits_level(s.level, before.data(), static_cast<int>(before.size()), s.hits));
-    anim::keep_arm_above_ground(s.ctx, s.body, arm, pose.facing, pose.pose);
+    anim::keep_arm_above_ground(s.ctx, s.body, arm, pose.facing, s.rig->scale.arm_margin, pose.pose);
     const std::vector<glm::vec2> after = chain_ws(s, pose.facing, arm.girdle_bone, {arm.bones[0], arm.bones[1], arm.bones[2]}, pose.pose);
     CHECK_FALSE(anim::polyline_hits_level(s.level, after.data(), static_cast<int>(after.size()), s.hits));
     CHECK(glm::length(after.front() - before.front()) < 1e-5f);  // the shoulder stays

@@ -4,6 +4,7 @@
 
 #include "ossa/anim/anim_math.h"
 #include "ossa/anim/gait_family.h"
+#include "ossa/anim/pentapedal.h"
 #include "ossa/anim/secondary_motion.h"
 #include "ossa/math/two_bone_ik.h"
 #include "ossa/skeleton/pose.h"
@@ -572,6 +573,7 @@ std::shared_ptr<const AnimRig> build_anim_rig(const Skeleton& skeleton, const Po
   }
   build_fk_plan(roles, *rig);
   build_flex(*rig);
+  anim::build_pentapedal(*rig);
   rig->weight_kg = roles.weight_kg;
   rig->skull_variant = roles.skull_variant;
   rig->gait_family = roles.gait_family == GaitFamily::kAuto ? anim::choose_gait_family(*rig) : roles.gait_family;

@@ -134,6 +134,11 @@ struct AnimRig {
   // what the chain it hangs from turned: the head keeps its place as the back flexes.
   int flex_neck = -1;
   float flex_neck_turn = 0.0f;
+  // The pentapedal walk's posture (pentapedal.h; one leg girdle with arms): the body pitched
+  // nose down by pentapedal_pitch (radians) about its girdle, the girdle pentapedal_crouch
+  // (metres) lower, so the shoulders come within kPentapedalReach of the arms' reach of the
+  // ground. 0: no arms.
+  float pentapedal_pitch = 0.0f, pentapedal_crouch = 0.0f;
   // Girdle bone i's matrix relative to the root's with each flexing bone turned by
   // flex_sign·step.
   Mat2x3 flexed_girdle_rel(size_t i, float step) const;

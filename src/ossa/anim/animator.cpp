@@ -27,6 +27,8 @@ constexpr float kLeanRate = 6.0f, kRunRate = 5.0f, kGaitRate = 4.0f, kPitchRate 
 constexpr float kBobRate = 40.0f;
 // A reset looks for ground from this many hip heights (and at least 1 m) above the position.
 constexpr float kResetSearchOfHip = 2.0f;
+// The most a standing body goes back out of a step in one tick, of the hip height.
+constexpr float kStandingPushOfHip = 0.03f;
 
 }  // namespace
 
@@ -149,7 +151,7 @@ void Animator::update(float dt, const AnimatorIntent& intent, const Level& level
     }
     finish_tick(ctx, dt);                                                       // 12 pose
     // A part of the body come down into a ledge ahead: the body goes back out of it.
-    if (const float push = fall_push_back(ctx, body_, pose_.facing, body_boxes_, loco_); push > 0.0f) {
+    if (const float push = loco_.vy < 0.0f ? push_back_from_face(ctx, body_, pose_.facing, body_boxes_) : 0.0f; push > 0.0f) {
       move_body(-body_.facing * push, body_);
       loco_.vx = 0.0f;
       finish_tick(ctx, 0.0f);
@@ -206,6 +208,15 @@ void Animator::update(float dt, const AnimatorIntent& intent, const Level& level
   }
   if (below_kill_height(rig, body_, level)) respawn(level);  // came down on a floor at the kill height
   finish_tick(ctx, dt);                                                         // 12 pose
+  // Standing or blocked, a part of the body settled or leant a little into a step ahead: the
+  // body goes back out of it (moving, the wall sweep keeps it out). Not far: the feet stay
+  // where they stand.
+  if (loco_.mode == Locomotion::kGrounded && (!gait_.moving || motion_.block.blocked)) {
+    if (const float push = push_back_from_face(ctx, body_, pose_.facing, body_boxes_); push > 0.0f && push <= kStandingPushOfHip * rig.hip_height) {
+      move_body(-body_.facing * push, body_);
+      finish_tick(ctx, 0.0f);
+    }
+  }
 }
 
 // ---- Stage calls with their inputs -------------------------------------------------------------
@@ -222,7 +233,8 @@ PlacementInputs Animator::placement_inputs(float dt) const {
   in.keep_pitch = decay_.pitch;
   in.keep_root = decay_.root;
   in.keep_bob = decay_.bob;
-  in.crouch = loco_.mode == Locomotion::kCrouch ? loco_.crouch : 0.0f;
+  in.crouch = (loco_.mode == Locomotion::kCrouch ? loco_.crouch : 0.0f) + gait_.pentapedal * rig().pentapedal_crouch;
+  in.pitch_down = gait_.pentapedal * rig().pentapedal_pitch;
   in.root = landing_root(loco_);
   in.flex = gait_.spine_flex;
   return in;

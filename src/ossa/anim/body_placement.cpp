@@ -122,6 +122,7 @@ void body_target(Placement& p, const std::vector<float>& height, float* target_r
       if (rise > 0.0f) *target_pitch = std::asin(std::min(rise / shoulder.x, 0.6f));
     }
   }
+  *target_pitch -= p.in.pitch_down;
   const glm::vec2 d = rig.girdles.front().joint_ms - root_rest;
   *target_root = height.front() - rotate(d, *target_pitch + angle_extra).y;
 }

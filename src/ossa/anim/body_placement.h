@@ -65,6 +65,7 @@ struct PlacementInputs {
   float crouch = 0.0f;        // the girdles stand this much lower (a jump's crouch), metres
   float root = NAN;           // a landing's descent: the root's height this tick, not smoothed
   float flex = 0.0f;          // the spine's flexion (GaitState::spine_flex), radians
+  float pitch_down = 0.0f;    // one girdle: the body leans nose down by this much (the pentapedal walk), radians
 };
 
 // Stage 10: places the body over the feet. Reads handoff.waiting; writes handoff.release_next

@@ -22,6 +22,7 @@ const char* gait_name(Gait gait) {
     case Gait::kBound: return "bound";
     case Gait::kHop: return "hop";
     case Gait::kGroundedRun: return "grounded run";
+    case Gait::kPentapedal: return "pentapedal";
   }
   return "unknown";
 }
@@ -133,8 +134,11 @@ GaitFamilyTraits gait_family_traits(GaitFamily family, const AnimRig& rig) {
       t.spine_flex = 0.35f;
       break;
     case GaitFamily::kHopper:
-      // Both hind feet in phase at every speed (Dawson & Taylor 1973; Ahn et al. 2004).
-      t.gaits = {Gait::kHop, Gait::kHop, Gait::kHop};
+      // Both hind feet in phase at every speed (Dawson & Taylor 1973; Ahn et al. 2004); slowly
+      // a kangaroo walks on five supports, its forelimbs and tail planted while the hind feet
+      // swing (Dawson & Taylor 1973; O'Connor et al. 2014), up to the hop at Fr 0.5 (chosen).
+      t.pentapedal = rig.girdles.size() == 1 && !rig.arms.empty() && !rig.tail.empty();
+      t.gaits = {t.pentapedal ? Gait::kPentapedal : Gait::kHop, Gait::kHop, Gait::kHop};
       t.mid_froude = 0.5f;
       t.fast_froude = kNone;
       t.top_froude = 3.0f;

@@ -25,6 +25,7 @@ enum class Gait : uint8_t {
   kBound,        // hind pair, then fore pair (small mammals)
   kHop,          // both hind feet together (kangaroo, frog)
   kGroundedRun,  // a run's bounce without a moment in the air (birds)
+  kPentapedal,   // hind feet together, swung past forelimbs and tail planted (kangaroo)
 };
 const char* gait_name(Gait gait);
 
@@ -49,6 +50,10 @@ struct GaitFamilyTraits {
   // bound); a gait whose pairs land apart flexes less, a walk or trot not at all (trunk_bob.h,
   // spine_flex).
   float spine_flex = 0.0f;
+  // The slow walk goes on five supports (a hopper with arms and a tail: the kangaroo): the body
+  // leans down onto its forelimbs and tail, which hold it while the hind feet swing forward
+  // together (pentapedal.h).
+  bool pentapedal = false;
 };
 
 // The traits of `family` for this rig (its weight and tail set the heavy bipeds', the

@@ -21,7 +21,7 @@ constexpr int kFinBisections = 7;
 }  // namespace
 
 void keep_arm_above_ground(const AnimContext& ctx, const BodyFrame& body, const RigLimb& arm, const std::vector<Mat2x3>& model,
-                           Pose& pose) {
+                           float margin, Pose& pose) {
   // Long arms of a low body would reach into the ground (or a ledge): lift the wrist with
   // two-bone IK until elbow, wrist and hand clear the highest ground under the arm; an arm
   // still in a step (a riser in front) folds towards the shoulder until it clears.
@@ -56,7 +56,6 @@ void keep_arm_above_ground(const AnimContext& ctx, const BodyFrame& body, const 
       low = std::min(low, q.y);
     }
     const auto ground = ground_below(ctx.level, x0, x1, p.shoulder.y, ctx.rig.scale.search_depth);
-    const float margin = ctx.rig.scale.arm_margin;
     if (!ground || low >= ground->height_ws + margin) break;
     set_wrist(p, p.wrist + glm::vec2(0.0f, ground->height_ws + margin - low));
   }

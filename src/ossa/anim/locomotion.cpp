@@ -184,10 +184,9 @@ float path_height(const AnimContext& ctx, const BodyFrame& body, const std::vect
   return y;
 }
 
-float fall_push_back(const AnimContext& ctx, const BodyFrame& body, const std::vector<Mat2x3>& model_fs, std::vector<Box>& boxes,
-                     const LocomotionState& loco) {
+float push_back_from_face(const AnimContext& ctx, const BodyFrame& body, const std::vector<Mat2x3>& model_fs, std::vector<Box>& boxes) {
   const AnimRig& rig = ctx.rig;
-  if (loco.vy >= 0.0f || rig.body_slabs.empty()) return 0.0f;
+  if (rig.body_slabs.empty()) return 0.0f;
   body_boxes(rig, body, model_fs, true, &boxes);
   // (The arms' reach boxes come last: the arms fold out of the way.)
   const size_t parts = boxes.size() - std::min(boxes.size(), rig.arms.size());

@@ -124,14 +124,16 @@ void pose_limbs(const AnimContext& ctx, const SplinePrototypes& prototypes, cons
   const AnimRig& rig = ctx.rig;
   Pose& pose = state.pose;
   std::vector<Mat2x3>& model = state.facing;
+  press_tail(ctx, body, feet, gait, model, pose);
   if (rig.tail_length > 0.0f) keep_tail_clear(ctx, body, model, pose);
   const LegIkJob ik{&ctx, &body, &feet, &pose, &model, &state.leg_dirs, gait.moving};
   ik.run();
-  // Arms swing counter to the same-side leg; fins trail with a slow beat; wings stay folded.
-  for (const RigLimb& arm : rig.arms) {
-    swing_arm(rig, prototypes, gait, feet, arm, motion, pose);
-    keep_arm_above_ground(ctx, body, arm, model, pose);
-  }
+  // Arms swing counter to the same-side leg (or stand on the ground in the pentapedal walk);
+  // fins trail with a slow beat; wings stay folded.
+  for (const RigLimb& arm : rig.arms) swing_arm(rig, prototypes, gait, feet, arm, motion, pose);
+  plant_hands(ctx, body, feet, gait, model, state.pentapedal, pose);
+  const float arm_margin = hand_margin(rig, gait);
+  for (const RigLimb& arm : rig.arms) keep_arm_above_ground(ctx, body, arm, model, arm_margin, pose);
   for (const RigLimb& fin : rig.fins) {
     beat_fin(ctx.params, fin, motion, gait.crawl_phase + gait.phase, pose);
     keep_fin_clear(ctx, body, fin, model, pose);

@@ -22,6 +22,7 @@
 
 #include "ossa/anim/anim_state.h"
 #include "ossa/anim/gait_clock.h"
+#include "ossa/anim/pentapedal.h"
 #include "ossa/anim/secondary_motion.h"
 #include "ossa/anim/spline_prototypes.h"
 #include "ossa/skeleton/pose.h"
@@ -33,6 +34,7 @@ struct PoseState {
   TailSpring tail;
   std::vector<std::array<glm::vec2, 3>> leg_dirs;  // per leg: upper, lower, foot directions (_fs)
   float flex_step = 0.0f;                          // each flexing spine bone's turn (AnimRig::flex_sign), radians
+  PentapedalState pentapedal;                      // the hands' places in the pentapedal walk
   // Caches of the lazily computed outputs.
   mutable std::vector<Mat2x3> facing;              // facing-space matrices (_fs)
   mutable std::vector<Mat2x3> world;               // world matrices (_ws)

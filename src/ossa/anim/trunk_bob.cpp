@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "ossa/anim/anim_math.h"
+#include "ossa/anim/pentapedal.h"
 
 namespace ossa::anim {
 
@@ -121,6 +122,7 @@ void trunk_bob(const AnimRig& rig, const AnimatorParams& params, const SplinePro
   weight = approach(weight, steady ? 1.0f : 0.0f, std::exp(-kBobEaseRate * dt));
   bob.assign(rig.girdles.size(), 0.0f);
   gait.head_rise = gait.head_shift = gait.spine_flex = 0.0f;
+  ease_pentapedal(steady, dt, gait);
   if (!gait.moving) {
     const float t = frac(gait.idle_time / params.idle_period);
     const float idle = prototype_range(PrototypeId::kIdleY).clamp(prototypes[PrototypeId::kIdleY].value(t, gait.run_factor)) * rig.hip_height;
@@ -150,7 +152,7 @@ void trunk_bob(const AnimRig& rig, const AnimatorParams& params, const SplinePro
       footfall_series({starts, static_cast<size_t>(n)}, gait.duty, b, gait.frequency, gait.stride, rig.hip_height, params.gravity, series);
       series.key = key;
     }
-    bob[g] = fade * series.at(gait.phase);
+    bob[g] = fade * (1.0f - gait.pentapedal) * series.at(gait.phase);  // (five supports carry the body evenly)
   }
   head_motion(rig, feet, fade, gait);
   spine_flex(rig, feet, fade, gait);
