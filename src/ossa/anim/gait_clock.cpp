@@ -36,6 +36,8 @@ const GaitFamilyTraits& traits_of(const AnimRig& rig, GaitFamily family, GaitSta
   return gait.traits;
 }
 
+constexpr float kPentapedalStrideCut = 0.4f;
+
 float walk_froude(const GaitFamilyTraits& t) { return std::min(0.5f, 0.4f * t.top_froude); }
 
 }  // namespace
@@ -90,7 +92,9 @@ void update_gait(const AnimRig& rig, const AnimatorParams& params, float speed, 
     gait.stride_froude = gait.froude;
     gait.stride_pow = std::pow(std::max(gait.froude, 1e-4f), kStrideFroudeExponent);
   }
-  const float stride = kStrideOfHip * rig.hip_height * gait.stride_pow * params.step_distance_multiplier;
+  // (The pentapedal walk's hind feet swing past the hands on folded legs: shorter strides.)
+  const float stride = kStrideOfHip * rig.hip_height * gait.stride_pow * params.step_distance_multiplier *
+                       (1.0f - kPentapedalStrideCut * gait.pentapedal);
   if (params.stance_height != gait.reach_stance_height) {
     gait.reach_stance_height = params.stance_height;
     gait.min_reach_x = 1e30f;

@@ -68,8 +68,8 @@ struct GaitState {
   // the girdles, > 0 arched (flexed), < 0 hollowed (extended).
   float spine_flex = 0.0f;
   // How far the body has gone down onto its forelimbs and tail for the pentapedal walk
-  // (pentapedal.h): 0 upright, 1 all the way, eased.
-  float pentapedal = 0.0f;
+  // (pentapedal.h): 0 upright, 1 all the way, eased; and how fast it changes (1/s).
+  float pentapedal = 0.0f, pentapedal_rate = 0.0f;
   // The family's walk and full-run speeds (walk_speed(), run_speed()), m/s, as update_gait
   // last found them.
   float walk_speed = 0.0f, run_speed = 0.0f;

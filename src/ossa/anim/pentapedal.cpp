@@ -15,12 +15,14 @@ namespace {
 // The posture: the body pitches nose down until its shoulders stand this share of the arms'
 // reach (shoulder to wrist) above the girdle's ground, turning no further than kMaxPitch; the
 // rest the girdle goes down, by at most kMaxCrouchOfRest of its rest height.
-constexpr float kReachUse = 0.8f;
+constexpr float kReachUse = 0.85f;
 constexpr float kMaxPitch = 0.8f;  // radians (body placement turns no steeper than 0.9)
-constexpr float kMaxCrouchOfRest = 0.6f;
+constexpr float kMaxCrouchOfRest = 0.5f;
 constexpr float kStanding = 0.97f;  // AnimatorParams::stance_height's default
-// How fast the body goes down onto its forelimbs and rises again (1/s).
-constexpr float kEaseRate = 3.0f;
+// How fast the body goes down onto its forelimbs and rises again: a critically damped spring
+// of this angular frequency (1/s), so the lean sets off and settles without a jolt (at most
+// ω² of the whole lean a second squared: about half a g for a kangaroo).
+constexpr float kEaseOmega = 4.0f;
 // The hands stand this share of a cycle longer than the hind feet swing, at each end: for a
 // moment all five supports are down.
 constexpr float kOverlap = 0.05f;
@@ -62,11 +64,16 @@ void build_pentapedal(AnimRig& rig) {
 
 void ease_pentapedal(bool steady, float dt, GaitState& gait) {
   if (!gait.traits.pentapedal) {
-    gait.pentapedal = 0.0f;
+    gait.pentapedal = gait.pentapedal_rate = 0.0f;
     return;
   }
-  if (!gait.moving || !steady) return;
-  gait.pentapedal = approach(gait.pentapedal, 1.0f - gait.mid_factor, std::exp(-kEaseRate * dt));
+  if (!gait.moving || !steady) {  // held where it is
+    gait.pentapedal_rate = 0.0f;
+    return;
+  }
+  const float target = 1.0f - gait.mid_factor;
+  gait.pentapedal_rate += dt * (kEaseOmega * kEaseOmega * (target - gait.pentapedal) - 2.0f * kEaseOmega * gait.pentapedal_rate);
+  gait.pentapedal = std::clamp(gait.pentapedal + dt * gait.pentapedal_rate, 0.0f, 1.0f);
 }
 
 // Where in its cycle the walk is: the hind feet stand for s < duty, the hands (and the tail)

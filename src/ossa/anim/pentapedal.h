@@ -39,7 +39,7 @@ struct PentapedalState {
 // builder: one leg girdle with arms only.
 void build_pentapedal(AnimRig& rig);
 
-// Eases gait.pentapedal towards the walk's share of the gait (1 − mid_factor) while the
+// Eases gait.pentapedal (a critically damped spring) towards the walk's share of the gait (1 − mid_factor) while the
 // family walks on five supports and the creature moves in a steady gait (trunk_bob.h,
 // steady_gait): a kangaroo that stops stays down on its hands and tail, as one grazing does,
 // and one blocked, on steps or at a ledge keeps its posture (rising there would swing its
