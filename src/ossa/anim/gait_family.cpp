@@ -130,8 +130,8 @@ GaitFamilyTraits gait_family_traits(GaitFamily family, const AnimRig& rig) {
       t.fast_froude = 1.5f;
       t.top_froude = 3.0f;
       // Small mammals bound on their backs: the lumbar spine flexes and extends by tens of
-      // degrees each stride (Schilling & Hackert 2006); 40° from flexed to extended, chosen.
-      t.spine_flex = 0.35f;
+      // degrees each stride (Schilling & Hackert 2006); about 30° from flexed to extended, chosen.
+      t.spine_flex = 0.25f;
       break;
     case GaitFamily::kHopper:
       // Both hind feet in phase at every speed (Dawson & Taylor 1973; Ahn et al. 2004); slowly
