@@ -30,7 +30,6 @@ void swing_tail(const AnimRig& rig, const AnimatorParams& params, float dt, floa
 void drape_legless(const AnimContext& ctx, const BodyFrame& body, float crawl_phase, float speed, Pose& pose,
                    std::vector<Mat2x3>& model_fs) {
   constexpr float kMaxDrapeBend = 0.3f;   // radians from a bone's rest angle
-  constexpr float kHeadLiftOfSkull = 1.0f / 3.0f;
   constexpr float kHangTolerance = 1e-4f;  // metres: a rib's end resting on the ground is clear
   const AnimRig& rig = ctx.rig;
   const AnimatorParams& params = ctx.params;
@@ -65,13 +64,14 @@ void drape_legless(const AnimContext& ctx, const BodyFrame& body, float crawl_ph
     const int parent = parents[b];
     if (next_drape < rig.drape_bones.size() && rig.drape_bones[next_drape] == b && parent >= 0) {
       const size_t i = next_drape++;
-      const int next = rig.drape_next[i];
       const Mat2x3& up = model_fs[parent];
       const float parent_angle = angle[parent];
       const glm::vec2 start = up.apply(pose.locals[b].offset_ls);
       const float length = rig.drape_length[i], along = rig.drape_along[i];
+      const int next = rig.drape_next[i];
       float clearance = next >= 0 ? rig.belly[next] : rig.tip_belly[i];
       if (b == rig.head_owner && rig.skull >= 0) clearance += kHeadLiftOfSkull * sk.length(rig.skull);
+      const float least = clearance;  // (what the bone's end needs without the wave)
       if (wave > 0.0f) clearance += wave * std::max(0.0f, std::sin(kTwoPi * (crawl_phase - params.crawl_waves * static_cast<float>(i) / n)));
       const float rest = rig.rest_pose.locals[b].angle_ls;
       float dir = parent_angle + rest + along;  // the segment's direction (facing space)
@@ -89,25 +89,42 @@ void drape_legless(const AnimContext& ctx, const BodyFrame& body, float crawl_ph
       float turn = placed ? std::clamp(wrap_angle(dir - along - parent_angle - rest), -kMaxDrapeBend, kMaxDrapeBend) : 0.0f;
       // What hangs from the bone (ribs, a jaw) turns with it: of the turn, as much as keeps
       // them out of the ground (none: the rest of the body then rises, body_out_of_ground).
-      auto hangers_clear = [&](float t) {
+      auto hangers_depth = [&](float t) {  // how deep the deepest goes into the ground
         const float a = parent_angle + rest + t, c = std::cos(a), sn = std::sin(a);
+        float depth = 0.0f;
         for (int k = rig.hang_begin[i]; k < rig.hang_begin[i + 1]; ++k) {
           const glm::vec2 q = rig.hang_points[k];
           const glm::vec2 w = start + glm::vec2(c * q.x - sn * q.y, sn * q.x + c * q.y);
-          if (ground_at(w.x, 0.0f) > w.y + kHangTolerance) return false;
+          depth = std::max(depth, ground_at(w.x, 0.0f) - w.y);  // (NaN: no ground, clear)
         }
-        return true;
+        return depth;
+      };
+      auto hangers_clear = [&](float t) { return !(hangers_depth(t) > kHangTolerance); };
+      // Nor may a turn that clears them leave the bone's end below its belly's depth over the
+      // ground: the next bone's hangers would start as much too low, the one after it turn down
+      // to clear its own, and so on down the body, which the deepest would then lift as a whole
+      // (a jolt of several g, every wave). So of the turns tried, the one whose worse of the two
+      // — its hangers' depth in the ground, its end's shortfall under its belly's depth — is
+      // least; the turn it wanted first, then nearer the rest angle, then out to the largest bend.
+      auto end_short = [&](float t) {
+        if (!placed) return 0.0f;
+        const float a = parent_angle + rest + t + along;
+        const glm::vec2 end = start + length * glm::vec2(std::cos(a), std::sin(a));
+        const float short_by = ground_at(end.x, reach) + least - end.y;
+        return short_by > 0.0f ? short_by : 0.0f;  // (NaN: no ground, none)
       };
       if (!hangers_clear(turn)) {
-        // Nearer the rest angle first, then either way out to the largest bend.
-        constexpr float kTries[] = {0.5f, 0.0f, 0.25f, -0.25f, 0.5f, -0.5f, 0.75f, -0.75f, 1.0f, -1.0f};
+        constexpr float kTries[] = {1.0f, 0.5f, 0.0f, 0.25f, -0.25f, 0.5f, -0.5f, 0.75f, -0.75f, 1.0f, -1.0f};
+        float best = 1e30f, chosen = turn;
         for (size_t k = 0; k < std::size(kTries); ++k) {
-          const float t = k < 2 ? kTries[k] * turn : kTries[k] * kMaxDrapeBend;
-          if (hangers_clear(t)) {
-            turn = t;
-            break;
-          }
+          const float t = k < 3 ? kTries[k] * turn : kTries[k] * kMaxDrapeBend;
+          const float depth = hangers_depth(t) > kHangTolerance ? hangers_depth(t) : 0.0f;
+          // (Off level ground, the first turn that clears the hangers: a body lifted as a whole
+          // by the bones after it is how a legless body gets up a flight of steps today.)
+          const float worst = std::isnan(flat) ? (depth > 0.0f ? 1.0f : 0.0f) : std::max(depth, end_short(t));
+          if (worst < best - kHangTolerance) best = worst, chosen = t;
         }
+        turn = chosen;
       }
       pose.locals[b].angle_ls = rest + turn;
     }

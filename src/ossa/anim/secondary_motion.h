@@ -36,6 +36,9 @@ void swing_tail(const AnimRig& rig, const AnimatorParams& params, float dt, floa
 // bone can reach, leaves that bone at its rest angle. Writes the bones' joint angles and the
 // facing-space matrices of every bone (the root's must be set).
 inline constexpr float kDrapeSlope = 0.35f;  // sine of the steepest a draped bone lies
+// The skull's far end keeps this share of its length over the ground (its owner's end rises
+// with it).
+inline constexpr float kHeadLiftOfSkull = 1.0f / 3.0f;
 void drape_legless(const AnimContext& ctx, const BodyFrame& body, float crawl_phase, float speed, Pose& pose,
                    std::vector<Mat2x3>& model_fs);
 
