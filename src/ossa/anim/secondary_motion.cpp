@@ -129,15 +129,20 @@ void drape_legless(const AnimContext& ctx, const BodyFrame& body, float crawl_ph
       pose.locals[b].angle_ls = rest + turn;
     }
     if (b == rig.skull && parent >= 0) {
-      // Level, as at rest; raised by up to kMaxDrapeBend where its far end would come nearer
-      // the ground than a third of its length.
+      // Level, as at rest; raised by up to kMaxDrapeBend where a point along it would come
+      // nearer the ground than a third of its distance from the joint (its far end, or a
+      // nearer point over the edge of a ledge the head reaches out over).
       const Mat2x3& up = model_fs[parent];
       const float level = rig.skull_rest_angle, length = sk.length(b);
       const glm::vec2 joint = up.apply(pose.locals[b].offset_ls);
-      const float tip_x = joint.x + length * std::cos(level), g = ground_at(tip_x, 0.0f);
+      float rise = -1e30f;  // the largest (ground + lift − joint.y) / distance along it
+      for (const float f : {0.25f, 0.5f, 0.75f, 1.0f}) {
+        const float g = ground_at(joint.x + f * length * std::cos(level), 0.0f);
+        if (g <= joint.y + f * length) rise = std::max(rise, (g - joint.y) / (f * length) + kHeadLiftOfSkull);
+      }
       float dir = level;
-      if (g <= joint.y + length) {
-        const float want = std::asin(std::clamp((g + kHeadLiftOfSkull * length - joint.y) / length, -1.0f, 1.0f));
+      if (rise > -1e29f) {
+        const float want = std::asin(std::clamp(rise, -1.0f, 1.0f));
         // Pitching up turns a skull facing +x counter-clockwise, one facing −x clockwise.
         const float forward = std::cos(level) >= 0.0f ? 1.0f : -1.0f;
         const float up = forward * wrap_angle((forward > 0.0f ? want : kPi - want) - level);
