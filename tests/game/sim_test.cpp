@@ -72,3 +72,32 @@ TEST_CASE("x_reached is the final x, x_max_m the furthest right, blocked_s the t
     CHECK(r.blocked_s <= 10.0f);
   }
 }
+
+TEST_CASE("joint_angles: each leg's hip, knee and ankle in stance and swing, 180 degrees in line", "[game][sim]") {
+  const Level flat = scenes::flat_level(100.0f);
+  SECTION("walking: every leg stands and swings, and folds its knee further in the swing") {
+    const SimResult r = run_horse(flat, "walk:0.5:6");
+    REQUIRE(r.probe.joint_angles.size() == 4);
+    for (const SimProbe::LegJointAngles& leg : r.probe.joint_angles) {
+      for (const auto* phase : {&leg.stance, &leg.swing}) {
+        for (const SimProbe::AngleStats& s : *phase) {
+          REQUIRE(s.count > 0);
+          CHECK(s.min > 0.0f);
+          CHECK(s.min <= s.mean() + 1e-3f);
+          CHECK(s.mean() <= 180.0f);
+        }
+      }
+      CHECK(leg.swing[1].min < leg.stance[1].min);
+    }
+  }
+  SECTION("standing: every tick counts as stance, none as swing") {
+    const SimResult r = run_horse(flat, "stop:3");
+    REQUIRE(r.probe.joint_angles.size() == 4);
+    for (const SimProbe::LegJointAngles& leg : r.probe.joint_angles) {
+      for (size_t k = 0; k < 3; ++k) {
+        CHECK(leg.swing[k].count == 0);
+        CHECK(leg.stance[k].count == 360);
+      }
+    }
+  }
+}

@@ -445,6 +445,25 @@ int main(int argc, char** argv) {
                       {"vertical_excursion", m.measured.vertical_excursion}, {"bobs_per_stride", m.measured.bobs_per_stride}});
     }
     out["segments"] = segs;
+    // Per leg: the hip, knee and ankle angles (degrees, 180 in line) in stance and swing, and
+    // the contact the foot stands on (SimProbe::joint_angles).
+    Json legs = Json::array();
+    for (size_t i = 0; i < probe.joint_angles.size() && i < a.rig().legs.size(); ++i) {
+      const SimProbe::LegJointAngles& j = probe.joint_angles[i];
+      auto phase = [](const std::array<SimProbe::AngleStats, 3>& s) {
+        Json o;
+        const char* names[3] = {"hip", "knee", "ankle"};
+        for (size_t k = 0; k < 3; ++k) {
+          o[names[k]] = s[k].count > 0 ? Json{{"min", s[k].min}, {"mean", s[k].mean()}} : Json();
+        }
+        return o;
+      };
+      legs.push_back({{"leg", a.rig().skeleton.name(a.rig().legs[i].bones[0])},
+                      {"contact", a.rig().flat_contact ? "flat" : "tip"},
+                      {"stance", phase(j.stance)},
+                      {"swing", phase(j.swing)}});
+    }
+    out["joint_angles"] = legs;
     out["max_stance_slip_m"] = probe.max_stance_slip_m;
     out["max_penetration_m"] = probe.max_penetration_m;  // every bone (limbs and body)
     out["max_limb_penetration_m"] = probe.max_limb_penetration_m;

@@ -239,6 +239,23 @@ void SimProbe::observe(const Animator& a, const Level& level) {
   const Skeleton& sk = rig.skeleton;
   const std::vector<Mat2x3>& world = a.world_matrices();
   pose_hash = ossa::pose_hash(world, pose_hash);
+  // The legs' joint angles (a mirrored world matrix turns both directions alike).
+  joint_angles.resize(rig.legs.size());
+  for (size_t i = 0; i < rig.legs.size(); ++i) {
+    const RigLeg& leg = rig.legs[i];
+    const int chain[4] = {leg.girdle_bone, leg.bones[0], leg.bones[1], leg.bones[2]};
+    auto& stats = a.leg_state(static_cast<int>(i)) == LegState::kStance ? joint_angles[i].stance : joint_angles[i].swing;
+    for (size_t j = 0; j < 3; ++j) {
+      const Mat2x3& p = world[static_cast<size_t>(chain[j])];
+      const Mat2x3& q = world[static_cast<size_t>(chain[j + 1])];
+      const float turn = std::atan2(p.m[0] * q.m[1] - p.m[1] * q.m[0], p.m[0] * q.m[0] + p.m[1] * q.m[1]);
+      const float angle = 180.0f - std::fabs(turn) * (180.0f / 3.14159265f);
+      if (!std::isfinite(angle)) continue;
+      stats[j].min = std::min(stats[j].min, angle);
+      stats[j].sum += angle;
+      ++stats[j].count;
+    }
+  }
   for (const Mat2x3& m : world) {
     for (float v : m.m) nan_count += std::isfinite(v) ? 0 : 1;
   }

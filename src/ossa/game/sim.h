@@ -5,6 +5,7 @@
 // limbs into colliders, swing clearance, non-finite values and the pose hash, and each
 // segment's gait is measured from the feet and the trunk (measure_gait, gait_metrics.h).
 
+#include <array>
 #include <cmath>
 #include <cstdint>
 #include <functional>
@@ -117,6 +118,19 @@ class SimProbe {
   float jolt_g = 0.0f;
   int nan_count = 0;
   uint64_t pose_hash = 1469598103934665603ull;
+  // Per leg (AnimRig::legs): the angle at its hip (girdle bone to thigh), knee (thigh to shin)
+  // and ankle (shin to foot) between the two bones' directions, degrees (180: in line), over
+  // the ticks its foot stood and those it swung: the least and the mean.
+  struct AngleStats {
+    float min = 360.0f;
+    double sum = 0.0;
+    long long count = 0;
+    float mean() const { return count > 0 ? static_cast<float>(sum / static_cast<double>(count)) : 0.0f; }
+  };
+  struct LegJointAngles {
+    std::array<AngleStats, 3> stance, swing;  // hip, knee, ankle
+  };
+  std::vector<LegJointAngles> joint_angles;
 
  private:
   std::vector<glm::vec2> stance_anchor_;
