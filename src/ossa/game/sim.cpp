@@ -239,8 +239,13 @@ void SimProbe::observe(const Animator& a, const Level& level) {
   const Skeleton& sk = rig.skeleton;
   const std::vector<Mat2x3>& world = a.world_matrices();
   pose_hash = ossa::pose_hash(world, pose_hash);
-  // The legs' joint angles (a mirrored world matrix turns both directions alike).
+  // The legs' joint angles: 180° less the turn from one bone to the next, the turn counted
+  // positive the way the joint bends at rest (past straight the other way: over 180°). A
+  // creature facing −x is mirrored, which turns every joint the other way.
   joint_angles.resize(rig.legs.size());
+  auto turn_of = [](const Mat2x3& p, const Mat2x3& q) {
+    return std::atan2(p.m[0] * q.m[1] - p.m[1] * q.m[0], p.m[0] * q.m[0] + p.m[1] * q.m[1]);
+  };
   for (size_t i = 0; i < rig.legs.size(); ++i) {
     const RigLeg& leg = rig.legs[i];
     const int chain[4] = {leg.girdle_bone, leg.bones[0], leg.bones[1], leg.bones[2]};
@@ -248,8 +253,9 @@ void SimProbe::observe(const Animator& a, const Level& level) {
     for (size_t j = 0; j < 3; ++j) {
       const Mat2x3& p = world[static_cast<size_t>(chain[j])];
       const Mat2x3& q = world[static_cast<size_t>(chain[j + 1])];
-      const float turn = std::atan2(p.m[0] * q.m[1] - p.m[1] * q.m[0], p.m[0] * q.m[0] + p.m[1] * q.m[1]);
-      const float angle = 180.0f - std::fabs(turn) * (180.0f / 3.14159265f);
+      const float rest = turn_of(rig.model_rest[static_cast<size_t>(chain[j])], rig.model_rest[static_cast<size_t>(chain[j + 1])]);
+      const float way = (rest < 0.0f ? -1.0f : 1.0f) * static_cast<float>(a.facing());
+      const float angle = 180.0f - way * turn_of(p, q) * (180.0f / 3.14159265f);
       if (!std::isfinite(angle)) continue;
       stats[j].min = std::min(stats[j].min, angle);
       stats[j].sum += angle;

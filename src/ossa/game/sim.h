@@ -119,8 +119,9 @@ class SimProbe {
   int nan_count = 0;
   uint64_t pose_hash = 1469598103934665603ull;
   // Per leg (AnimRig::legs): the angle at its hip (girdle bone to thigh), knee (thigh to shin)
-  // and ankle (shin to foot) between the two bones' directions, degrees (180: in line), over
-  // the ticks its foot stood and those it swung: the least and the mean.
+  // and ankle (shin to foot) between the two bones' directions, degrees (180: in line; over
+  // 180: bent past straight, the other way from the rest pose), over the ticks its foot stood
+  // and those it swung: the least and the mean.
   struct AngleStats {
     float min = 360.0f;
     double sum = 0.0;
