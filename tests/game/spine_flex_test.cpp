@@ -2,7 +2,8 @@
 // and the bound, and stays still in the walk and the trot. Measured from the bones' world
 // matrices tick by tick on flat ground (not from the animator's own spine_flex): the spine's
 // bend is the angle between its last bone towards the shoulders and its last bone towards the
-// pelvis (turned round), less that angle at rest.
+// pelvis (turned round), less that angle at rest. The back should arch as the feet gather under
+// the body and hollow as they reach apart (fore feet's mean x less the hind feet's).
 
 #include <catch2/catch.hpp>
 
@@ -48,6 +49,7 @@ float wrap(float a) {
 
 struct BendTrack {
   std::vector<float> bend;  // radians, > 0 arched (flexed), from the rest bend
+  std::vector<float> spread;  // the fore feet's mean x less the hind feet's (facing +x), metres
   float frequency = 0.0f;   // strides per second
   float slip = 0.0f;        // the largest stance slip, metres
   Gait gait = Gait::kIdle;  // at the end
@@ -79,6 +81,18 @@ BendTrack track(const std::string& name, Controls controls) {
     player.step(kDt, controls, flat);
     if (i < 360) continue;
     t.bend.push_back(wrap(bend_of(a.world_matrices()) - rest));
+    {
+      const std::vector<Mat2x3>& w = a.world_matrices();
+      float fore = 0.0f, hind = 0.0f;
+      int n_fore = 0, n_hind = 0;
+      for (const RigLeg& leg : a.rig().legs) {
+        const int foot = leg.bones[2];
+        const float x = bone_end(w[foot], a.rig().skeleton.length(foot)).x;
+        (leg.girdle == 0 ? fore : hind) += x;
+        ++(leg.girdle == 0 ? n_fore : n_hind);
+      }
+      t.spread.push_back(static_cast<float>(a.facing()) * (fore / std::max(n_fore, 1) - hind / std::max(n_hind, 1)));
+    }
     t.frequency += a.cycle_frequency();
     ++n;
     for (size_t k = 0; k < legs; ++k) {
@@ -106,6 +120,21 @@ float peak_to_peak(const std::vector<float>& v) {
   return *hi - *lo;
 }
 
+// Pearson's correlation of a and b.
+float correlation(const std::vector<float>& a, const std::vector<float>& b) {
+  double ma = 0.0, mb = 0.0;
+  for (size_t i = 0; i < a.size(); ++i) ma += a[i], mb += b[i];
+  ma /= static_cast<double>(a.size());
+  mb /= static_cast<double>(b.size());
+  double ab = 0.0, aa = 0.0, bb = 0.0;
+  for (size_t i = 0; i < a.size(); ++i) {
+    ab += (a[i] - ma) * (b[i] - mb);
+    aa += (a[i] - ma) * (a[i] - ma);
+    bb += (b[i] - mb) * (b[i] - mb);
+  }
+  return aa > 0.0 && bb > 0.0 ? static_cast<float>(ab / std::sqrt(aa * bb)) : 0.0f;
+}
+
 // Arches per second: upward crossings of the mean.
 float arches_per_second(const std::vector<float>& v) {
   float mean = 0.0f;
@@ -128,8 +157,11 @@ TEST_CASE("the back flexes and extends once per stride in the gallop and the bou
     const BendTrack t = track(c.name, moving(1.0f, true));
     const float range = peak_to_peak(t.bend);
     const float rate = arches_per_second(t.bend);
+    // Arched when the feet are gathered under the body, hollow when they reach apart.
+    const float with_spread = correlation(t.bend, t.spread);
     INFO(c.name << ": bend " << range << " rad flexed to extended, " << rate << " arches/s, " << t.frequency
-                 << " strides/s, slip " << t.slip << " m");
+                 << " strides/s, slip " << t.slip << " m, correlation with the feet's spread " << with_spread);
+    CHECK(with_spread < -0.5f);
     CHECK(range >= 0.5f * c.most);
     CHECK(range <= 2.0f * c.most + 0.01f);
     CHECK(std::fabs(rate - t.frequency) <= 0.2f * t.frequency);
