@@ -136,8 +136,8 @@ struct AnimRig {
   float flex_neck_turn = 0.0f;
   // The pentapedal walk's posture (pentapedal.h; one leg girdle with arms): the body pitched
   // nose down by pentapedal_pitch (radians) about its girdle, the girdle pentapedal_crouch
-  // (metres) lower, so the shoulders come within kPentapedalReach of the arms' reach of the
-  // ground. 0: no arms.
+  // (metres) lower, so the shoulders come within most of the arms' reach of the ground
+  // (build_pentapedal). 0: no arms.
   float pentapedal_pitch = 0.0f, pentapedal_crouch = 0.0f;
   // Girdle bone i's matrix relative to the root's with each flexing bone turned by
   // flex_sign·step.

@@ -151,11 +151,7 @@ void Animator::update(float dt, const AnimatorIntent& intent, const Level& level
     }
     finish_tick(ctx, dt);                                                       // 12 pose
     // A part of the body come down into a ledge ahead: the body goes back out of it.
-    if (const float push = loco_.vy < 0.0f ? push_back_from_face(ctx, body_, pose_.facing, body_boxes_) : 0.0f; push > 0.0f) {
-      move_body(-body_.facing * push, body_);
-      loco_.vx = 0.0f;
-      finish_tick(ctx, 0.0f);
-    }
+    if (loco_.vy < 0.0f && go_back_from_face(ctx, 1e30f)) loco_.vx = 0.0f;
     return;
   }
 
@@ -211,12 +207,15 @@ void Animator::update(float dt, const AnimatorIntent& intent, const Level& level
   // Standing or blocked, a part of the body settled or leant a little into a step ahead: the
   // body goes back out of it (moving, the wall sweep keeps it out). Not far: the feet stay
   // where they stand.
-  if (loco_.mode == Locomotion::kGrounded && (!gait_.moving || motion_.block.blocked)) {
-    if (const float push = push_back_from_face(ctx, body_, pose_.facing, body_boxes_); push > 0.0f && push <= kStandingPushOfHip * rig.hip_height) {
-      move_body(-body_.facing * push, body_);
-      finish_tick(ctx, 0.0f);
-    }
-  }
+  if (loco_.mode == Locomotion::kGrounded && (!gait_.moving || motion_.block.blocked)) go_back_from_face(ctx, kStandingPushOfHip * rig.hip_height);
+}
+
+bool Animator::go_back_from_face(const AnimContext& ctx, float most) {
+  const float push = push_back_from_face(ctx, body_, pose_.facing, body_boxes_);
+  if (!(push > 0.0f) || push > most) return false;
+  move_body(-body_.facing * push, body_);
+  finish_tick(ctx, 0.0f);
+  return true;
 }
 
 // ---- Stage calls with their inputs -------------------------------------------------------------

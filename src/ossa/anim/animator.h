@@ -188,6 +188,9 @@ class Animator {
   anim::PlacementInputs placement_inputs(float dt) const;
   void place_body(const anim::AnimContext& ctx, float dt);
   void finish_tick(const anim::AnimContext& ctx, float dt);
+  // A part of the body in a box ahead (push_back_from_face): the body goes back out of it,
+  // if that takes no more than `most` metres, and is posed again. Whether it went.
+  bool go_back_from_face(const anim::AnimContext& ctx, float most);
   void respawn(const Level& level);
 
   const Creature* creature_ = nullptr;

@@ -120,7 +120,8 @@ void plant_hands(const AnimContext& ctx, const BodyFrame& body, const FootSet& f
     const float upper = rig.skeleton.length(arm.bones[0]), lower = rig.skeleton.length(arm.bones[1]);
     const float reach = upper + lower;
     auto ground_at = [&](float x, float* y) {
-      auto hit = ground_below(ctx.level, x - 0.01f, x + 0.01f, shoulder_ws.y, 1.5f * reach);
+      const float half = 0.5f * rig.scale.ground_span;
+      auto hit = ground_below(ctx.level, x - half, x + half, shoulder_ws.y, 1.5f * reach);
       if (hit) *y = hit->height_ws + kTouch;
       return hit.has_value();
     };

@@ -118,7 +118,8 @@ void drape_legless(const AnimContext& ctx, const BodyFrame& body, float crawl_ph
         float best = 1e30f, chosen = turn;
         for (size_t k = 0; k < std::size(kTries); ++k) {
           const float t = k < 3 ? kTries[k] * turn : kTries[k] * kMaxDrapeBend;
-          const float depth = hangers_depth(t) > kHangTolerance ? hangers_depth(t) : 0.0f;
+          const float deepest = hangers_depth(t);
+          const float depth = deepest > kHangTolerance ? deepest : 0.0f;
           // (Off level ground, the first turn that clears the hangers: a body lifted as a whole
           // by the bones after it is how a legless body gets up a flight of steps today.)
           const float worst = std::isnan(flat) ? (depth > 0.0f ? 1.0f : 0.0f) : std::max(depth, end_short(t));
