@@ -9,8 +9,9 @@
 // DATA_DIR is an installed ossa's share/ossa (ossa_DATA_DIR, compiled in as the default).
 // Without --frame it opens a window (Esc quits). With --frame it draws one frame after 1.5 s
 // of walking into a software renderer (an SDL_Surface: no display, no GPU), writes it as BMP,
-// and checks that every creature is drawn: within each creature's screen box at least a tenth
-// of the pixels differ from the same frame drawn without creatures (exit 1 otherwise).
+// and checks that every creature is drawn: within each creature's screen box at least one pixel
+// in twenty differs from the same frame drawn without creatures (exit 1 otherwise; a long-legged
+// skeleton in the bones look covers a tenth of its box, a creature not drawn none).
 #include <SDL.h>
 
 #include <algorithm>
@@ -225,7 +226,7 @@ int render_frame(Herd& herd, const ossa::SpriteAtlas& atlas, const char* out) {
         ++area;
       }
     }
-    const bool seen = area > 0 && drawn * 10 >= area;
+    const bool seen = area > 0 && drawn * 20 >= area;
     ok = ok && seen;
     std::printf("  %-12s %4dx%-4d px box, %5.1f %% drawn%s\n", herd.entities[c]->name().c_str(), x1 - x0, y1 - y0,
                 area ? 100.0 * drawn / area : 0.0, seen ? "" : "  <- NOT DRAWN");

@@ -300,6 +300,8 @@ TEST_CASE("falling into drops.json's gap, a head held over its far side stays ou
   // The gap from x 38 to 41 is narrower than these animals with their necks: walking in, the
   // head reaches over the far ledge and would come down into it (up to 56 cm before); the body
   // goes back from its face instead. Measured over every bone until the root is 3 m down.
+  // (The dromedary, on the tips of its long feet, paces across it at 0.6: a foot hanging over
+  // the gap is planted on the far ledge. Counted as done when the root is past the gap.)
   const Level level = drops();
   for (const char* name : {"horse", "chamois", "giraffe", "dromedary", "swan", "rock hyrax"}) {
     for (float stick : {0.4f, 0.6f}) {  // (running, they gallop across it)
@@ -307,10 +309,12 @@ TEST_CASE("falling into drops.json's gap, a head held over its far side stays ou
       Animator& a = player.animator();
       a.reset({34.0f, 0.5f}, level);
       SimProbe probe;
-      step_until(player, level, {stick, stick > 0.9f, false}, 20.0f, probe, [&] { return a.root_y() < -3.0f; });
+      const bool across = std::string(name) == "dromedary" && stick > 0.5f;
+      step_until(player, level, {stick, stick > 0.9f, false}, 20.0f, probe,
+                 [&] { return a.root_y() < -3.0f || (across && a.x() > 42.0f); });
       INFO(name << " at stick " << stick << ": root y " << a.root_y() << ", deepest " << probe.deepest_bone << " "
                 << probe.max_body_penetration_m << " m at " << probe.deepest_at_s << " s");
-      CHECK(a.root_y() < -3.0f);
+      CHECK((across ? a.x() > 42.0f : a.root_y() < -3.0f));
       CHECK(probe.max_penetration_m <= 0.001f);
       CHECK(probe.nan_count == 0);
     }

@@ -149,6 +149,12 @@ void body_boxes(const AnimRig& rig, const BodyFrame& body, const std::vector<Mat
     if (slabs) begin();
     for (int b : fin.bones) add(b);
   }
+  // A folded wing lies along the body and meets a wall with it (one of each pair that
+  // coincides in the side view).
+  for (const RigLimb& wing : rig.outline_wings) {
+    if (slabs) begin();
+    for (int b : wing.bones) add(b);
+  }
   // Arms swing: count the whole reach of each arm, forward and back, not just this pose.
   // (They come last: the sweep tests them against walls only, as they lift over the rest.)
   for (const RigLimb& arm : rig.arms) {

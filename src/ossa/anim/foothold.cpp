@@ -66,6 +66,11 @@ FootSpan foot_span_ws(const RigLeg& leg, int facing) {
   return {std::min(a, b), std::max(a, b)};
 }
 
+FootSpan support_span_ws(const RigLeg& leg, int facing) {
+  const float a = facing * std::min(0.0f, leg.tip_rel_ms.x), b = facing * std::max(0.0f, leg.tip_rel_ms.x);
+  return {std::min(a, b), std::max(a, b)};
+}
+
 SlopeReading slope_reading(const GroundProfile& ground, float rest_height, float foot_length) {
   SlopeReading r;
   r.tread = kSlopeTreadOfRest * rest_height;
@@ -198,6 +203,11 @@ bool find_landing(const FootholdInputs& in, int leg, glm::vec2 foot_ws, float x_
   const FootSpan span = foot_span_ws(info, facing);
   const RigScale& scale = rig.scale;
   const float span_lo = span.lo - scale.landing_side, span_hi = span.hi + scale.landing_side;
+  // What bears on the ground must have ground under it within the step limits (a tip does not
+  // stand on the ground under its ankle: a slanted hoof bone at a gap's edge would stand over
+  // the gap). The landing's height is still the highest ground under the whole foot.
+  const FootSpan support = support_span_ws(info, facing);
+  const float support_lo = support.lo - scale.landing_side, support_hi = support.hi + scale.landing_side;
   const float height = foot_height(scale, info);
   const SlopeReading reading = girdle_slope_reading(in.ctx, info.girdle);
   const float stride = in.stride;
@@ -224,15 +234,21 @@ bool find_landing(const FootholdInputs& in, int leg, glm::vec2 foot_ws, float x_
       // the landing) a stride may climb or descend further than a step: the step limits count
       // from the slope's height at the landing.
       // (Asked only when the plain step limits find no ground there.)
+      float slope_top = top, bottom = lowest;
       auto hit = ground_below(in.ctx.level, x + span_lo, x + span_hi, top, top - lowest);
       if (!hit) {
         const float along = in.ctx.ground.slope_top(foot_ws.x, x + span_lo, x + span_hi, reading);
         if (!std::isnan(along)) {
-          const float slope_top = std::max(top, along + up), bottom = std::min(lowest, along - down);
+          slope_top = std::max(top, along + up);
+          bottom = std::min(lowest, along - down);
           hit = ground_below(in.ctx.level, x + span_lo, x + span_hi, slope_top, slope_top - bottom);
         }
       }
       if (!hit || hit->height_ws < floor_y) continue;
+      if ((support_lo > span_lo || support_hi < span_hi) &&
+          !ground_below(in.ctx.level, x + support_lo, x + support_hi, slope_top, slope_top - bottom)) {
+        continue;
+      }
       const float y = hit->height_ws;
       const Box foot_box{{x + span_lo + scale.landing_inset, y + scale.landing_inset}, {x + span_hi - scale.landing_inset, y + height}};
       if (in.ctx.level.overlaps(foot_box)) continue;

@@ -49,6 +49,9 @@ struct FootSpan {
   float lo = 0.0f, hi = 0.0f;
 };
 FootSpan foot_span_ws(const RigLeg& leg, int facing);
+// The part of it that bears on the ground: a flat foot's sole, a tip's point (its ankle and
+// foot bone stand above the ground, over whatever lies there).
+FootSpan support_span_ws(const RigLeg& leg, int facing);
 
 // Where leg `leg` would land if it lifted now at `speed` m/s (swing_phase < 0: a full swing):
 // half a stance ahead of where its girdle will be at touch-down [T 4.4.1].

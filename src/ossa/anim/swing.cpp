@@ -179,8 +179,16 @@ void start_ease(const FootholdInputs& in, int leg, FootState& f, const glm::vec2
     const float h = joint.y - landing.y;
     const float reach_x = 0.9f * reach_across(reach, h);
     const float dx = std::clamp(in.body.to_fs(landing).x - joint.x, -reach_x, reach_x);
+    // On the landing's ground, else on the ground the girdle stands over (a foot left far
+    // behind on a step the body has left), else the nearest fit at all.
+    const float under = in.body.girdle_ws(in.ctx.rig, info.girdle).y -
+                        in.ctx.rig.girdles[info.girdle].rest_height * in.ctx.params.stance_height;
     glm::vec2 spot;
-    if (nearest_fit(in, leg, in.body.to_ws({joint.x + dx, landing.y}), &spot, true)) landing = spot;
+    if ((nearest_fit(in, leg, in.body.to_ws({joint.x + dx, landing.y}), &spot, true) && reaches(in, leg, spot)) ||
+        (nearest_fit(in, leg, in.body.to_ws({joint.x + dx, under}), &spot, true) && reaches(in, leg, spot)) ||
+        nearest_fit(in, leg, in.body.to_ws({joint.x + dx, landing.y}), &spot, true)) {
+      landing = spot;
+    }
   }
   begin_swing(in.ctx, in.body, leg, f, landing, ease_shape(in.ctx.params.stop_ease_time));
 }

@@ -72,6 +72,19 @@ Animal read_animal(JsonReader& r, const Json& v, size_t index) {
   a.leg_pairs = static_cast<int>(r.integer(v, path, "leg_pairs", 0, 2));
   a.weight_kg = r.number(v, path, "weight_kg", 0.0, kMaxWeightKg);
   (void)r.string_or(v, path, "note", "");
+  if (r.has(v, "posture")) {
+    const std::string posture = r.string(v, path, "posture");
+    bool known = false;
+    for (LimbPosture p : {LimbPosture::kUnguligrade, LimbPosture::kDigitigrade, LimbPosture::kPlantigrade}) {
+      if (posture == limb_posture_name(p)) {
+        a.posture = p;
+        known = true;
+      }
+    }
+    if (!r.failed() && !known) {
+      r.fail(json_path(path, "posture"), "expected \"unguligrade\", \"digitigrade\" or \"plantigrade\", got \"" + posture + "\"");
+    }
+  }
   if (const Json* spine = r.array(v, path, "spine")) {
     const std::string sp = json_path(path, "spine");
     if (spine->size() != kSpinePoints) {
@@ -108,6 +121,15 @@ Animal read_animal(JsonReader& r, const Json& v, size_t index) {
 }
 
 }  // namespace
+
+const char* limb_posture_name(LimbPosture posture) {
+  switch (posture) {
+    case LimbPosture::kUnguligrade: return "unguligrade";
+    case LimbPosture::kDigitigrade: return "digitigrade";
+    case LimbPosture::kPlantigrade: return "plantigrade";
+  }
+  return "?";
+}
 
 const Animal* Dataset::find(std::string_view name_en_or_de) const {
   const std::string key = lower_ascii(name_en_or_de);

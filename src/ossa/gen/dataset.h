@@ -14,6 +14,7 @@
 //       "weight_kg": 600, "spine": [[x, y] × 10],
 //       "front": {"upper": .., "lower": .., "hand": ..},
 //       "hind": {"upper": .., "lower": .., "foot": ..},
+//       "posture": "unguligrade",   (optional: "unguligrade", "digitigrade" or "plantigrade")
 //       "note": "optional free text",
 //       "skull": {"length": 0.5, "height": 0.36, "snout": 0.62},   (optional, skull_shape.h)
 //       "look": {...}, "appendages": [...]}, ...]}     (optional: the body, gen/look.h)
@@ -22,6 +23,7 @@
 // (to_vector / from_vector, layout in `Dim`).
 
 #include <array>
+#include <cstdint>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -55,6 +57,12 @@ struct LimbLengths {
   double total() const { return upper + lower + distal; }
 };
 
+// How an animal's legs meet the ground (GAITS.md "Limb posture"): on hooves at the tip of a
+// long metapodial, on its toes, or on the whole sole. The skeleton has one foot bone, so the
+// first two stand on its tip (ContactMode::kTip) and the third on the whole bone (kFlat).
+enum class LimbPosture : uint8_t { kUnguligrade, kDigitigrade, kPlantigrade };
+const char* limb_posture_name(LimbPosture posture);
+
 struct Animal {
   std::string name;          // English, lower case, unique ("horse")
   std::string name_de;       // German as in [Z] ("Pferd")
@@ -65,6 +73,7 @@ struct Animal {
   std::array<glm::vec2, kSpinePoints> spine{};  // frame units, see kSpineHead..kSpineTailTip
   LimbLengths front;         // upper arm, forearm, hand (birds: the wing)
   LimbLengths hind;          // thigh, shank, foot
+  std::optional<LimbPosture> posture;  // how its legs stand (else from their proportions)
   std::optional<SkullShape> skull;  // the skull's proportions (else its class's default)
   std::optional<Look> look;  // the body's coat (else drawn from the genome's seed)
   std::vector<Appendage> appendages;  // ears, horns, mane … the animal has

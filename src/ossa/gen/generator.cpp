@@ -62,6 +62,31 @@ bool place_limb(LimbKind kind, std::vector<LimbGene>& placed, const std::vector<
   return false;
 }
 
+// A foot at least this long against the leg above it (upper + lower) stands on its tip, as
+// hooved and toe-walking animals do on their long metapodials; at most this long, flat (the
+// examples: horse, deer, camel 0.58–0.79 against tortoise, crocodile, lizards 0.32–0.35).
+constexpr double kTipFootOfLeg = 0.55;
+constexpr double kFlatFootOfLeg = 0.36;
+
+// A random creature's contact mode from its legs' mean foot proportion; between the two bounds
+// the heel draw decides.
+ContactMode contact_from_proportions(const BodyPlan& plan, const Genome& g, bool heel_draw) {
+  double sum = 0.0;
+  int count = 0;
+  for (const LimbGene& limb : g.limbs) {
+    if (limb.kind != LimbKind::kLeg) continue;
+    const LimbLengths l = limb_lengths(plan, g, limb.kind, limb.girdle);
+    if (l.upper + l.lower <= 0.0) continue;
+    sum += l.distal / (l.upper + l.lower);
+    ++count;
+  }
+  if (count == 0) return ContactMode::kTip;
+  const double foot = sum / count;
+  if (foot >= kTipFootOfLeg) return ContactMode::kTip;
+  if (foot <= kFlatFootOfLeg) return ContactMode::kFlat;
+  return heel_draw ? ContactMode::kFlat : ContactMode::kTip;
+}
+
 }  // namespace
 
 SkullShape random_skull_shape(int variant, uint64_t seed) {
@@ -250,9 +275,12 @@ Genome Generator::complete(std::array<double, kPcaDims> pca, Rng& rng, const Gen
   g.scale = 0.002f;
   if (g.options.true_size) g.scale = static_cast<float>(0.002 * std::cbrt(g.pca[kWeightKg] / 500.0));
 
-  // Contact mode from the heel probability [Z 7.2.1], then the rest pose.
+  // Contact mode: as given (an example's posture), else from the legs' proportions, then the
+  // rest pose. The heel draw [Z 7.2.1] is made either way, so that a given contact leaves the
+  // rest of the genome as the seed makes it.
   const BodyPlan plan = plan_body(g);
-  g.contact = rng.chance(plan.heel_probability) ? ContactMode::kFlat : ContactMode::kTip;
+  const bool heel_draw = rng.chance(plan.heel_probability);
+  g.contact = options.contact ? *options.contact : contact_from_proportions(plan, g, heel_draw);
   // Winged bodies stand on their toes: flat would lay a bird's tarsometatarsus on the ground.
   if (wings > 0) g.contact = ContactMode::kTip;
   if (g.contact == ContactMode::kFlat) {
@@ -317,6 +345,9 @@ Result<Genome> Generator::example(std::string_view name, uint64_t seed, const Ge
   // The example's own counts decide (they are exact 0/1/2 values).
   if (!o.wings) o.wings = animal->wings;
   if (!o.leg_pairs) o.leg_pairs = animal->leg_pairs;
+  if (!o.contact && animal->posture) {
+    o.contact = *animal->posture == LimbPosture::kPlantigrade ? ContactMode::kFlat : ContactMode::kTip;
+  }
   if (!o.fin_pairs) {
     // Fish and whales swim with fins; a snake has none.
     const bool swims = animal->animal_class == "fish" || (animal->leg_pairs == 0 && animal->wings == 0 &&

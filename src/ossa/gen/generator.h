@@ -26,6 +26,7 @@ struct GenerateOptions {
   std::optional<double> weight_kg;   // > 0
   std::optional<int> arm_pairs;      // else drawn with the wing probability [Z 7.2.4]
   std::optional<int> fin_pairs;      // else 1 for legless wingless bodies with a tail, else 0
+  std::optional<ContactMode> contact;// tip or flat feet; else from the legs' proportions
   GenomeOptions genome;              // neck girdle, several limbs per girdle, spacing, size
 };
 
