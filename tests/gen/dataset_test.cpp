@@ -117,6 +117,11 @@ TEST_CASE("a small valid file parses field by field", "[gen]") {
   CHECK(g.spine[2] == glm::vec2(500.0f, 630.0f));
   CHECK(g.front.distal == 180.0);
   CHECK(g.hind.distal == 190.0);
+  CHECK_FALSE(g.posture.has_value());
+  Result<Dataset> p = parse_dataset(replaced(file_with(kGiraffe), "\"weight_kg\":2000", "\"weight_kg\":2000,\"posture\":\"unguligrade\""),
+                                    "examples.json");
+  REQUIRE(p.ok());
+  CHECK(p->animals[1].posture == LimbPosture::kUnguligrade);
 }
 
 TEST_CASE("bad inputs name the animal and the field", "[gen]") {
@@ -140,6 +145,8 @@ TEST_CASE("bad inputs name the animal and the field", "[gen]") {
              Catch::Contains("examples.json: animals[1].name: missing (required field)"));
   CHECK_THAT(error_of(replaced(good, "\"wings\":0,\"leg_pairs\":2,\"weight_kg\":2000", "\"wings\":true,\"leg_pairs\":2,\"weight_kg\":2000")),
              Catch::Contains("animals[1] (giraffe).wings"));
+  CHECK_THAT(error_of(replaced(good, "\"weight_kg\":2000", "\"weight_kg\":2000,\"posture\":\"hooved\"")),
+             Catch::Contains("animals[1] (giraffe).posture: expected \"unguligrade\", \"digitigrade\" or \"plantigrade\", got \"hooved\""));
 }
 
 TEST_CASE("duplicate names are rejected, in English and German", "[gen]") {

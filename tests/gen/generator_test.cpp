@@ -137,6 +137,52 @@ TEST_CASE("every example builds and reads as its kind of animal", "[gen]") {
   CHECK(build("horse").count(LimbKind::kLeg) == 4);
 }
 
+TEST_CASE("feet meet the ground as the animal's do: hooves and toes on their tips, plantigrade soles flat", "[gen]") {
+  // Issue 29: the contact used to be a random draw (the cape buffalo, wildebeest, chamois and
+  // dromedary stood on their whole hoof bones). GAITS.md "Limb posture".
+  const Generator& gen = scenes::generator();
+  for (const char* name : {"horse", "red deer", "cape buffalo", "wildebeest", "chamois", "dromedary", "giraffe", "pig",
+                           "propalaeotherium", "ostrich", "pigeon", "tyrannosaurus", "african elephant"}) {
+    INFO(name);
+    CHECK(gen.example(name).value().contact == ContactMode::kTip);
+  }
+  for (const char* name : {"tortoise", "crocodile", "chameleon", "dimetrodon", "armored shrew", "frog", "kangaroo"}) {
+    INFO(name);
+    CHECK(gen.example(name).value().contact == ContactMode::kFlat);
+  }
+  // Every legged example says how it stands, and any seed keeps it.
+  for (const Animal& a : gen.dataset().animals) {
+    if (a.leg_pairs == 0) continue;
+    INFO(a.name);
+    REQUIRE(a.posture.has_value());
+    const ContactMode want = *a.posture == LimbPosture::kPlantigrade ? ContactMode::kFlat : ContactMode::kTip;
+    for (uint64_t seed : {1u, 7u, 99u}) CHECK(gen.example(a.name, seed).value().contact == want);
+  }
+  // Random creatures from their legs' proportions: a long foot stands on its tip, a short one
+  // flat (between the bounds the heel draw decides).
+  int tip = 0, flat = 0;
+  for (uint64_t seed = 1; seed <= 300; ++seed) {
+    const Genome g = gen.random(seed);
+    const BodyPlan plan = plan_body(g);
+    double sum = 0.0;
+    int legs = 0;
+    for (const LimbGene& l : g.limbs) {
+      if (l.kind != LimbKind::kLeg) continue;
+      const LimbLengths len = limb_lengths(plan, g, l.kind, l.girdle);
+      sum += len.distal / (len.upper + len.lower);
+      ++legs;
+    }
+    if (legs == 0) continue;
+    const double foot = sum / legs;
+    INFO("seed " << seed << ", foot " << foot << " of the leg");
+    if (foot >= 0.55) CHECK(g.contact == ContactMode::kTip);
+    tip += g.contact == ContactMode::kTip;
+    flat += g.contact == ContactMode::kFlat;
+  }
+  CHECK(tip > 0);
+  CHECK(flat > 0);
+}
+
 TEST_CASE("conditions and options shape the creature", "[gen]") {
   const Generator& gen = scenes::generator();
   int neck_girdles = 0, second_slots = 0;
