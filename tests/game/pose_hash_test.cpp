@@ -34,11 +34,11 @@ struct ExpectedHash {
 };
 
 constexpr ExpectedHash kExpected[] = {
-    {"default.json", 0x2fb1e56abb762905ull},
-    {"rough.json", 0x0df412d2025dd80bull},
-    {"stairs.json", 0x43c1780c100eaaafull},
-    {"slopes.json", 0x01df226cef041f90ull},
-    {"drops.json", 0xccb81f9ff5125d98ull},
+    {"default.json", 0x911024aa5f4b1a54ull},
+    {"rough.json", 0xaecd25b9646c121aull},
+    {"stairs.json", 0x471cd19a6c05897dull},
+    {"slopes.json", 0x95c535aed5f28dedull},
+    {"drops.json", 0x229a2ccc4dbe4435ull},
 };
 
 std::string hex(uint64_t v) {

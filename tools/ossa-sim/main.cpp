@@ -374,6 +374,9 @@ int main(int argc, char** argv) {
   }
   const long long total_ticks = script_ticks(*script, args.hz);
   const long long shot_every = std::max(1LL, std::llround(static_cast<double>(args.svg_every) * args.hz));
+  // The strobe's poses count from the window's first tick (a window between two multiples of
+  // EVERY still has its poses).
+  const long long shot_from = static_cast<long long>(std::ceil(static_cast<double>(args.svg_from) * args.hz - 1e-6));
   std::vector<Snapshot> shots;
   double extra_seconds = 0.0;
   const float dt = 1.0f / static_cast<float>(args.hz);
@@ -411,7 +414,7 @@ int main(int argc, char** argv) {
       joints << "\n";
     }
     const float t = static_cast<float>(tick) * dt;
-    if (args.svg && t >= args.svg_from && t <= args.svg_to && tick % shot_every == 0) shots.push_back({a.world_matrices()});
+    if (args.svg && tick >= shot_from && t <= args.svg_to && (tick - shot_from) % shot_every == 0) shots.push_back({a.world_matrices()});
   });
   const SimProbe& probe = result.probe;
   const std::vector<SegmentMetrics>& segments = result.segments;
@@ -419,6 +422,12 @@ int main(int argc, char** argv) {
   const double update_seconds = result.update_seconds + extra_seconds;
   const long long updates = total_ticks * args.count;
   if (args.svg) {
+    if (shots.empty()) {
+      char msg[160];
+      std::snprintf(msg, sizeof msg, "--svg-window: no pose between %g and %g s (the script runs %g s)", args.svg_from, args.svg_to,
+                    static_cast<double>(total_ticks) / args.hz);
+      fail(msg);
+    }
     if (Status s = write_file_atomic(*args.svg, strobe_svg(player.skeleton(), *level, shots)); !s) fail(s.message());
   }
   if (args.json) {
@@ -445,7 +454,7 @@ int main(int argc, char** argv) {
                       {"vertical_excursion", m.measured.vertical_excursion}, {"bobs_per_stride", m.measured.bobs_per_stride}});
     }
     out["segments"] = segs;
-    // Per leg: the hip, knee and ankle angles (degrees, 180 in line) in stance and swing, and
+    // Per leg: the hip, knee and ankle angles (degrees, 180 in line; least, largest, mean) in stance and swing, and
     // the contact the foot stands on (SimProbe::joint_angles).
     Json legs = Json::array();
     for (size_t i = 0; i < probe.joint_angles.size() && i < a.rig().legs.size(); ++i) {
@@ -454,7 +463,7 @@ int main(int argc, char** argv) {
         Json o;
         const char* names[3] = {"hip", "knee", "ankle"};
         for (size_t k = 0; k < 3; ++k) {
-          o[names[k]] = s[k].count > 0 ? Json{{"min", s[k].min}, {"mean", s[k].mean()}} : Json();
+          o[names[k]] = s[k].count > 0 ? Json{{"min", s[k].min}, {"max", s[k].max}, {"mean", s[k].mean()}} : Json();
         }
         return o;
       };

@@ -42,6 +42,40 @@ std::vector<glm::vec2> convex_hull(std::vector<glm::vec2> p) {
 
 RigLimb rig_limb(const RigLimbRole& limb) { return {limb.girdle_bone, limb.bones, limb.side}; }
 
+// A foot at least this long against the leg above it (upper + lower) is a third segment of
+// the leg (the examples' hooves, paws and bird feet 0.38–0.79; the elephant's and the big
+// dinosaurs' short, columnar feet 0.16–0.32 keep rolling about their tips).
+constexpr float kCoupledFootOfLeg = 0.35f;
+// ... with upper and lower bones each at least this fraction of the two (a random leg may come
+// with a vanishing bone: it keeps the plain solve).
+constexpr float kCoupledBoneOfLeg = 0.05f;
+// The lower joint's fold at mid-swing, chosen: a horse's carpus flexes by about 70–100° in the
+// swing of a walk and trot; the hind foot tucks by turning up to a further 57° from the thigh.
+constexpr float kForeSwingFold = 1.1f;
+constexpr float kHindSwingFold = 0.4f;
+// A lower joint bent less than this at rest (radians) is taken to fold against the knee.
+constexpr float kBentAnkle = 0.05f;
+
+// Which legs are three-segment (RigLeg::coupled), and how their feet follow the leg.
+void couple_legs(AnimRig& rig) {
+  const std::vector<Mat2x3>& rest = rig.model_rest;
+  // A biped's legs are not coupled: its thigh is held near level and moves little, the knee
+  // and ankle do the walking (birds and theropods, Gatesy 1990, Paleobiology 16:170), so the
+  // foot keeps its own angle (leg_ik.cpp bends the ankle no further than straight).
+  const bool quadruped = rig.girdles.size() >= 2;
+  for (RigLeg& leg : rig.legs) {
+    leg.hind = leg.girdle + 1 == static_cast<int>(rig.girdles.size());
+    leg.coupled = quadruped && !rig.flat_contact && leg.reach > 0.0f && leg.foot_length >= kCoupledFootOfLeg * leg.reach &&
+                  std::min(leg.upper, leg.lower) >= kCoupledBoneOfLeg * leg.reach;
+    // The way the rest pose bends the lower joint (a zigzag leg: against the knee).
+    const float rest_turn = wrap_angle(leg.foot_angle_ms - anim::bone_angle(rest[leg.bones[1]]));
+    leg.fold_sign = std::fabs(rest_turn) > kBentAnkle ? (rest_turn > 0.0f ? 1.0f : -1.0f) : leg.bend;
+    leg.swing_fold = leg.hind ? kHindSwingFold : kForeSwingFold;
+    // A hind foot's rest turn from the thigh (the hock bends and straightens with the knee).
+    if (leg.hind) leg.couple_angle = wrap_angle(leg.foot_angle_ms - anim::bone_angle(rest[leg.bones[0]]));
+  }
+}
+
 // Legs grouped by girdle slot, front girdle first.
 void build_legs(const RigRoles& roles, AnimRig& rig) {
   const Skeleton& sk = rig.skeleton;
@@ -106,6 +140,7 @@ void build_legs(const RigRoles& roles, AnimRig& rig) {
       if (knee_ahead(info, girdle.rest_height) > 0.0f) girdle.knee_reach = std::max(girdle.knee_reach, info.upper);
     }
   }
+  couple_legs(rig);
   rig.climb_height = 0.0f;
   for (size_t g = 0; g < rig.girdles.size(); ++g) {
     rig.climb_height = g == 0 ? rig.girdles[g].step_height : std::min(rig.climb_height, rig.girdles[g].step_height);

@@ -53,6 +53,18 @@ struct RigLeg {
   // The foot's extent relative to its contact point, facing +x: back to the ankle, forward to
   // the toe (a flat foot's whole sole).
   glm::vec2 ankle_rel_ms{0.0f}, tip_rel_ms{0.0f};
+  // Three-segment legs (a long foot standing on its tip: hooves, paws, bird feet; issue 29):
+  // the foot bone is coupled to the leg instead of keeping its rest angle. A fore foot lies in
+  // line with the forearm (the carpus straight under load); a hind foot keeps its rest angle to
+  // the thigh (the hock bends and straightens with the knee, as the ungulate's reciprocal
+  // apparatus makes it), and where that would bend the hock past straight, the hock stays
+  // straight. In swing the lower joint folds further, up to swing_fold at mid-swing (the carpus
+  // flexes, the hoof tucks). leg_ik.h solve_coupled_leg.
+  bool coupled = false;
+  bool hind = false;                // on the rearmost girdle (or the only one)
+  float couple_angle = 0.0f;        // hind: the foot's rest turn from the thigh, radians
+  float fold_sign = 1.0f;           // the turn that flexes the lower joint (carpus, hock), as at rest
+  float swing_fold = 0.0f;          // radians, at mid-swing
 };
 
 struct RigGirdle {                  // a girdle slot carrying a leg pair

@@ -19,6 +19,10 @@ constexpr float kDrawBackOfLeg = 0.02f;
 // A stance leg whose ankle lies further from the joint than the leg's length by more than this
 // fraction of it is stretched (the leg IK cannot reach the foot).
 constexpr float kStretchedOfLeg = 0.01f;
+// A coupled leg reaches its tip with the virtual two-bone chain at most this straight, and
+// bends no closer than this multiple of its fold.
+constexpr float kCoupledReach = 0.999f;
+constexpr float kCoupledFold = 1.02f;
 
 
 }  // namespace
@@ -32,6 +36,78 @@ inline bool valid(const LegIkJob& j) {
 }
 
 }  // namespace
+
+namespace {
+
+// The leg reaching tip_fs with bone p (the thigh, hind_pair; else the forearm) and the foot q
+// as one bone, the foot turned gamma radians from p, then the other bone o.
+bool solve_pair(const RigLeg& info, bool hind_pair, glm::vec2 joint_fs, glm::vec2 tip_fs, float gamma, TwoBoneIkResult* ik,
+                glm::vec2* foot_dir) {
+  const float p = hind_pair ? info.upper : info.lower;
+  const float q = info.foot_span;
+  const float o = hind_pair ? info.lower : info.upper;
+  const glm::vec2 turn(std::cos(gamma), std::sin(gamma));
+  const glm::vec2 pq(p + q * turn.x, q * turn.y);  // the composite bone, as if p pointed along +x
+  const float a = glm::length(pq);
+  const float d = glm::length(tip_fs - joint_fs);
+  if (!(a > 0.0f) || d > kCoupledReach * (a + o) || d < kCoupledFold * std::fabs(a - o)) return false;
+  const glm::vec2 e = pq / a;
+  auto back = [&](glm::vec2 v) { return glm::vec2(e.x * v.x + e.y * v.y, e.x * v.y - e.y * v.x); };  // turned by -arg(pq)
+  if (hind_pair) {  // thigh and foot as one bone, then the shin
+    const TwoBoneIkResult r = solve_two_bone_ik_directions(joint_fs, a, o, tip_fs, info.bend);
+    ik->upper_dir = back(r.upper_dir);
+    ik->lower_dir = r.lower_dir;
+    ik->middle = joint_fs + p * ik->upper_dir;
+    ik->end = ik->middle + o * ik->lower_dir;
+    *foot_dir = rotate(ik->upper_dir, gamma);
+  } else {  // the upper bone, then forearm (or shin) and foot as one bone
+    const TwoBoneIkResult r = solve_two_bone_ik_directions(joint_fs, o, a, tip_fs, info.bend);
+    ik->upper_dir = r.upper_dir;
+    ik->lower_dir = back(r.lower_dir);
+    ik->middle = r.middle;
+    ik->end = r.middle + p * ik->lower_dir;
+    *foot_dir = rotate(ik->lower_dir, gamma);
+  }
+  return true;
+}
+
+// The most the foot may turn from p and the chain (p + q·e^(iγ), then o) still reach d:
+// |p + q·e^(iγ)| >= d / kCoupledReach - o. Negative: not even straight.
+float most_turn(float p, float q, float o, float d) {
+  const float need = d / kCoupledReach - o;
+  if (need <= std::fabs(p - q)) return kPi;
+  if (!(p * q > 0.0f)) return -1.0f;
+  const float c = (need * need - p * p - q * q) / (2.0f * p * q);
+  return c > 1.0f ? -1.0f : std::acos(std::max(c, -1.0f));
+}
+
+}  // namespace
+
+bool solve_straight_ankle(const RigLeg& info, glm::vec2 joint_fs, glm::vec2 tip_fs, TwoBoneIkResult* ik, glm::vec2* foot_dir) {
+  return solve_pair(info, false, joint_fs, tip_fs, 0.0f, ik, foot_dir);
+}
+
+bool solve_coupled_leg(const RigLeg& info, glm::vec2 joint_fs, glm::vec2 tip_fs, float fold, TwoBoneIkResult* ik,
+                       glm::vec2* foot_dir) {
+  const float d = glm::length(tip_fs - joint_fs);
+  const float s = info.fold_sign;
+  if (info.hind) {
+    // The foot keeps its rest turn from the thigh (folded further in swing, turned no further
+    // than the reach allows), unless that would bend the hock past straight: then the hock
+    // stays straight (the same pose where the hock is just straight, so no jump).
+    const float most = most_turn(info.upper, info.foot_span, info.lower, d);
+    const float turn = std::clamp(s * info.couple_angle + fold, -most, most);
+    if (most >= 0.0f && solve_pair(info, true, joint_fs, tip_fs, s * turn, ik, foot_dir) &&
+        s * (ik->lower_dir.x * foot_dir->y - ik->lower_dir.y * foot_dir->x) >= 0.0f) {
+      return true;
+    }
+    return solve_pair(info, false, joint_fs, tip_fs, 0.0f, ik, foot_dir);
+  }
+  // The foot in line with the forearm, folded in swing as far as the reach allows.
+  const float most = most_turn(info.lower, info.foot_span, info.upper, d);
+  if (most < 0.0f) return false;
+  return solve_pair(info, false, joint_fs, tip_fs, s * std::min(fold, most), ik, foot_dir);
+}
 
 bool LegIkJob::validate() const { return valid(*this); }
 
@@ -80,6 +156,29 @@ bool LegIkJob::run() const {
       return solve_two_bone_ik_directions(joint, info.upper, info.lower, target, info.bend);
     };
     TwoBoneIkResult ik = leg_ik(ankle);
+    // A three-segment leg is solved whole (its foot coupled to the leg); another whose foot,
+    // holding its angle, would bend the ankle (hock, intertarsal joint) past straight has the
+    // ankle straight instead (the same pose where it is just straight). A stance leg whose new
+    // pose would cut the level keeps the plain one (a hoof on a step's edge: the body
+    // placement kept that one clear).
+    TwoBoneIkResult whole;
+    glm::vec2 whole_dir;
+    bool use = false;
+    if (info.coupled) {
+      const float fold = f.state == LegState::kSwing ? info.swing_fold * std::sin(kPi * std::clamp(f.progress, 0.0f, 1.0f)) : 0.0f;
+      use = solve_coupled_leg(info, joint, contact, fold, &whole, &whole_dir);
+    } else if (info.foot_span > 0.0f && info.fold_sign * (ik.lower_dir.x * foot_dir.y - ik.lower_dir.y * foot_dir.x) < 0.0f) {
+      use = solve_straight_ankle(info, joint, contact, &whole, &whole_dir);
+    }
+    if (use && f.state == LegState::kStance && !near.clear_above(std::min({joint.y, whole.middle.y, whole.end.y, contact.y}))) {
+      const glm::vec2 p[4] = {b.to_ws(joint), b.to_ws(whole.middle), b.to_ws(whole.end), b.to_ws(contact)};
+      use = !polyline_hits_level(c.level, p, 4, c.hits);
+    }
+    if (use) {
+      ik = whole;
+      foot_dir = whole_dir;
+      ankle = whole.end;
+    }
     // A stance leg the body placement stretched past its reach (its clamps 3 and 5 may, and
     // clamp 6 then releases the foot to lift on the next tick) does not reach its ankle: its
     // foot hangs from where the leg ends and may cut the step it stood by. While the creature

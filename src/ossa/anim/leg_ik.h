@@ -1,8 +1,9 @@
 #pragma once
 // Leg IK (DESIGN.md §7 "leg IK"; part of the pose stage, stage 12 of Animator::update): every
-// leg's pose from its contact point and girdle joint — the foot rolled about its contact point
-// as far as the leg's reach needs (hooves and toes, leg_geometry.h leg_ankle), then analytic
-// two-bone IK on upper + lower. A swinging leg that would cut a box lifts its foot, then tucks
+// leg's pose from its contact point and girdle joint. A three-segment leg (a long foot on its
+// tip, RigLeg::coupled) is solved whole, its foot coupled to the leg (solve_coupled_leg);
+// others roll the foot about its contact point as far as the leg's reach needs (leg_geometry.h
+// leg_ankle), then solve upper + lower by analytic two-bone IK. A swinging leg that would cut a box lifts its foot, then tucks
 // it, until the whole leg clears; so does a walking creature's stance leg that the body
 // placement stretched past its reach (LegIkJob::moving).
 //
@@ -19,9 +20,24 @@
 
 #include "ossa/anim/anim_state.h"
 #include "ossa/anim/leg_geometry.h"
+#include "ossa/math/two_bone_ik.h"
 #include "ossa/skeleton/pose.h"
 
 namespace ossa::anim {
+
+// A three-segment leg (RigLeg::coupled) reaching `tip_fs` from `joint_fs` with its foot coupled
+// to the leg, the lower joint folded `fold` radians (>= 0) beyond the coupling — less where the
+// tip lies too far for that fold. The foot and the bone it follows (forearm or thigh) act as
+// one bone, p + q·e^(iγ) in complex terms, so the pose is one analytic two-bone solve. Writes
+// the upper and lower directions, the middle joint, the ankle and the foot's direction; false
+// (nothing written) where the coupled leg cannot reach the tip: stretched beyond its length,
+// or folded closer than it bends.
+bool solve_coupled_leg(const RigLeg& info, glm::vec2 joint_fs, glm::vec2 tip_fs, float fold, TwoBoneIkResult* ik,
+                       glm::vec2* foot_dir);
+
+// The leg reaching `tip_fs` with its lower joint (ankle, hock) straight: the shin and foot in
+// line. False where it cannot reach (as solve_coupled_leg).
+bool solve_straight_ankle(const RigLeg& info, glm::vec2 joint_fs, glm::vec2 tip_fs, TwoBoneIkResult* ik, glm::vec2* foot_dir);
 
 // Poses every leg (ozz-style job: inputs as fields, validate(), run()). Writes the leg bones'
 // facing-space matrices and each leg's bone directions (for the joint angles, worked out

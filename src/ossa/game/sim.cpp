@@ -258,6 +258,7 @@ void SimProbe::observe(const Animator& a, const Level& level) {
       const float angle = 180.0f - way * turn_of(p, q) * (180.0f / 3.14159265f);
       if (!std::isfinite(angle)) continue;
       stats[j].min = std::min(stats[j].min, angle);
+      stats[j].max = std::max(stats[j].max, angle);
       stats[j].sum += angle;
       ++stats[j].count;
     }

@@ -121,9 +121,10 @@ class SimProbe {
   // Per leg (AnimRig::legs): the angle at its hip (girdle bone to thigh), knee (thigh to shin)
   // and ankle (shin to foot) between the two bones' directions, degrees (180: in line; over
   // 180: bent past straight, the other way from the rest pose), over the ticks its foot stood
-  // and those it swung: the least and the mean.
+  // and those it swung: the least, the largest and the mean.
   struct AngleStats {
     float min = 360.0f;
+    float max = 0.0f;
     double sum = 0.0;
     long long count = 0;
     float mean() const { return count > 0 ? static_cast<float>(sum / static_cast<double>(count)) : 0.0f; }

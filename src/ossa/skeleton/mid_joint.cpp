@@ -67,11 +67,24 @@ Mat2x3 level_frame(const MidJoint& j, const Mat2x3& child) {
   const float det = child.m[0] * child.m[3] - child.m[1] * child.m[2];
   const float scale = std::sqrt(std::fabs(det));
   const float mirror = det < 0.0f ? -1.0f : 1.0f;
+  // The bone's turn since the rest pose: the frame stays level through kLevelTurn of it and
+  // turns with the bone beyond (a hoof swung forward with its cannon bone, not bent flat
+  // against it).
+  glm::vec2 x = j.rest_x;
+  if (scale > 0.0f) {
+    const glm::vec2 now(mirror * child.m[0] / scale, child.m[1] / scale);
+    const float turn = std::atan2(j.rest_x.x * now.y - j.rest_x.y * now.x, j.rest_x.x * now.x + j.rest_x.y * now.y);
+    const float beyond = turn - std::clamp(turn, -kLevelTurn, kLevelTurn);
+    if (beyond != 0.0f) {
+      const float c = std::cos(beyond), s = std::sin(beyond);
+      x = {c * j.rest_x.x - s * j.rest_x.y, s * j.rest_x.x + c * j.rest_x.y};
+    }
+  }
   Mat2x3 f;
-  f.m[0] = mirror * scale * j.rest_x.x;
-  f.m[1] = scale * j.rest_x.y;
-  f.m[2] = mirror * scale * -j.rest_x.y;
-  f.m[3] = scale * j.rest_x.x;
+  f.m[0] = mirror * scale * x.x;
+  f.m[1] = scale * x.y;
+  f.m[2] = mirror * scale * -x.y;
+  f.m[3] = scale * x.x;
   const glm::vec2 at = child.apply(j.point_ls);
   f.m[4] = at.x;
   f.m[5] = at.y;

@@ -29,11 +29,16 @@ struct MidJoint {
   // A level frame instead (a foot's toes, hoof or claws, which stay flat on the ground while
   // the foot bone turns over them): at `point_ls` of bone `child` (its contact point, the
   // bone's end), turned as that bone is in the rest pose, `rest_x` (its unit x axis in model
-  // space), whatever it turns since; mirrored and scaled with the creature.
+  // space), while the bone turns up to kLevelTurn either way from it, and with the bone beyond
+  // that; mirrored and scaled with the creature.
   bool level = false;
   glm::vec2 point_ls{0.0f};
   glm::vec2 rest_x{1.0f, 0.0f};
 };
+
+// How far (radians) a foot bone turns from its rest angle with its level frame held level
+// (the roll of a hoof or toes over the ground); beyond it the frame turns along.
+inline constexpr float kLevelTurn = 1.3f;
 
 // The level frame of `j` (MidJoint::level) for the child bone's frame `child` (bone frame →
 // world): at its contact point, with the child's rest turn, mirrored and scaled as `child`.
