@@ -36,9 +36,11 @@ constexpr int kAnkle = 2;  // SimProbe's joint order: hip, knee, ankle
 
 }  // namespace
 
-TEST_CASE("hooved animals stand on a straight foreleg and a hock that never bends past straight", "[game][anim][legs]") {
+TEST_CASE("hooved and columnar-footed animals stand on a straight foreleg and a hock that never bends past straight", "[game][anim][legs]") {
+  // (The elephant and the triceratops stand on short, columnar feet: their forelegs, too, are
+  // straight under load.)
   for (const char* name : {"horse", "red deer", "pig", "giraffe", "propalaeotherium", "cape buffalo", "wildebeest", "chamois",
-                           "dromedary"}) {
+                           "dromedary", "african elephant", "triceratops"}) {
     const auto creature = example(name);
     Player probe_player(creature, SplinePrototypes::defaults());
     const AnimRig& rig = probe_player.animator().rig();
@@ -68,9 +70,9 @@ TEST_CASE("hooved animals stand on a straight foreleg and a hock that never bend
 }
 
 TEST_CASE("a foot holding its angle straightens its ankle rather than bend it past straight", "[game][anim][legs]") {
-  // Bipeds' and short-footed legs are not coupled (anim_rig.h RigLeg::coupled): their feet keep
-  // their angle, and the ankle straightens where that would bend it the wrong way.
-  for (const char* name : {"ostrich", "tyrannosaurus", "pigeon", "african elephant", "triceratops"}) {
+  // Bipeds' legs and very short feet are not coupled (anim_rig.h RigLeg::coupled): their feet
+  // keep their angle, and the ankle straightens where that would bend it the wrong way.
+  for (const char* name : {"ostrich", "tyrannosaurus", "pigeon", "swan", "brachiosaurus"}) {
     const auto creature = example(name);
     const SimResult r = run(creature, "walk:0.4:5,run:1:5");
     for (size_t i = 0; i < r.probe.joint_angles.size(); ++i) {

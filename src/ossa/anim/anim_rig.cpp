@@ -43,9 +43,10 @@ std::vector<glm::vec2> convex_hull(std::vector<glm::vec2> p) {
 RigLimb rig_limb(const RigLimbRole& limb) { return {limb.girdle_bone, limb.bones, limb.side}; }
 
 // A foot at least this long against the leg above it (upper + lower) is a third segment of
-// the leg (the examples' hooves, paws and bird feet 0.38–0.79; the elephant's and the big
-// dinosaurs' short, columnar feet 0.16–0.32 keep rolling about their tips).
-constexpr float kCoupledFootOfLeg = 0.35f;
+// the leg (the examples' hooves, paws and bird feet 0.38–0.79, the elephant's and the big
+// dinosaurs' columnar feet 0.23–0.32; a shorter foot, brachiosaurus's hind 0.16, keeps rolling
+// about its tip).
+constexpr float kCoupledFootOfLeg = 0.2f;
 // ... with upper and lower bones each at least this fraction of the two (a random leg may come
 // with a vanishing bone: it keeps the plain solve).
 constexpr float kCoupledBoneOfLeg = 0.05f;
