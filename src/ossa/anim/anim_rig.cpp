@@ -210,11 +210,10 @@ void build_body_outline(AnimRig& rig, const Mat2x3& root_inv) {
     rig.skull_rel = root_inv.apply(bone_start(skull));
     rig.skull_span = bone_end(skull, sk.length(rig.skull)) - bone_start(skull);
   }
-  rig.body_lo = rig.body_hi = rig.body_top = rig.body_hull[0];
+  rig.body_lo = rig.body_hi = rig.body_hull[0];
   for (glm::vec2 p : rig.body_hull) {
     rig.body_lo = glm::min(rig.body_lo, p);
     rig.body_hi = glm::max(rig.body_hi, p);
-    if (p.y > rig.body_top.y) rig.body_top = p;
   }
   if (rig.skull >= 0) {
     rig.body_lo = glm::min(rig.body_lo, rig.skull_rel);

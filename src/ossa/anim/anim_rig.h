@@ -199,7 +199,6 @@ struct AnimRig {
   std::vector<glm::vec2> body_hull;
   glm::vec2 skull_rel{0.0f}, skull_span{0.0f};
   glm::vec2 body_lo{0.0f}, body_hi{0.0f};  // extent of the hull and the skull joint
-  glm::vec2 body_top{0.0f};                // the hull's highest point (root bone's frame)
 
   // Tail: it hangs from the nearest ancestor kept current each tick through the bones between
   // (or their rest product when none bends).
