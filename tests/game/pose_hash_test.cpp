@@ -34,11 +34,11 @@ struct ExpectedHash {
 };
 
 constexpr ExpectedHash kExpected[] = {
-    {"default.json", 0x911024aa5f4b1a54ull},
-    {"rough.json", 0xaecd25b9646c121aull},
-    {"stairs.json", 0x471cd19a6c05897dull},
-    {"slopes.json", 0x95c535aed5f28dedull},
-    {"drops.json", 0x229a2ccc4dbe4435ull},
+    {"default.json", 0x1e0e64a4cb0777b5ull},
+    {"rough.json", 0x304f6d87409261d6ull},
+    {"stairs.json", 0x355d5954a0673a12ull},
+    {"slopes.json", 0xebdf34f2ebdd49ccull},
+    {"drops.json", 0x77c37bda4108c4abull},
 };
 
 std::string hex(uint64_t v) {

@@ -74,6 +74,10 @@ void couple_legs(AnimRig& rig) {
     leg.swing_fold = leg.hind ? kHindSwingFold : kForeSwingFold;
     // A hind foot's rest turn from the thigh (the hock bends and straightens with the knee).
     if (leg.hind) leg.couple_angle = wrap_angle(leg.foot_angle_ms - anim::bone_angle(rest[leg.bones[0]]));
+    leg.couple_turn = {std::cos(leg.couple_angle), std::sin(leg.couple_angle)};
+    const glm::vec2 pq(leg.upper + leg.foot_span * leg.couple_turn.x, leg.foot_span * leg.couple_turn.y);
+    leg.couple_length = glm::length(pq);
+    if (leg.couple_length > 0.0f) leg.couple_dir = pq / leg.couple_length;
   }
 }
 

@@ -63,6 +63,11 @@ struct RigLeg {
   bool coupled = false;
   bool hind = false;                // on the rearmost girdle (or the only one)
   float couple_angle = 0.0f;        // hind: the foot's rest turn from the thigh, radians
+  glm::vec2 couple_turn{1.0f, 0.0f};// (cos, sin) of couple_angle
+  // Hind: the thigh and the foot at that turn as one bone, its length and direction with the
+  // thigh along +x (leg_ik.cpp; constant while the foot stands).
+  float couple_length = 0.0f;
+  glm::vec2 couple_dir{1.0f, 0.0f};
   float fold_sign = 1.0f;           // the turn that flexes the lower joint (carpus, hock), as at rest
   float swing_fold = 0.0f;          // radians, at mid-swing
 };

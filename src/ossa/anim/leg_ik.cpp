@@ -39,19 +39,34 @@ inline bool valid(const LegIkJob& j) {
 
 namespace {
 
-// The leg reaching tip_fs with bone p (the thigh, hind_pair; else the forearm) and the foot q
-// as one bone, the foot turned gamma radians from p, then the other bone o.
-bool solve_pair(const RigLeg& info, bool hind_pair, glm::vec2 joint_fs, glm::vec2 tip_fs, float gamma, TwoBoneIkResult* ik,
-                glm::vec2* foot_dir) {
-  const float p = hind_pair ? info.upper : info.lower;
-  const float q = info.foot_span;
-  const float o = hind_pair ? info.lower : info.upper;
-  const glm::vec2 turn(std::cos(gamma), std::sin(gamma));
-  const glm::vec2 pq(p + q * turn.x, q * turn.y);  // the composite bone, as if p pointed along +x
+// v turned by the unit vector t (a complex product).
+inline glm::vec2 turned(glm::vec2 v, glm::vec2 t) { return {t.x * v.x - t.y * v.y, t.y * v.x + t.x * v.y}; }
+inline glm::vec2 unit(float a) { return {std::cos(a), std::sin(a)}; }
+
+// The foot and the bone p it turns with (the thigh, hind; else the forearm) as one bone: its
+// length and its direction as if p pointed along +x, for the foot turned from p by `turn`
+// (cos, sin of the angle).
+struct Composite {
+  float length = 0.0f;
+  glm::vec2 dir{1.0f, 0.0f};
+};
+inline Composite composite(float p, float q, glm::vec2 turn) {
+  const glm::vec2 pq(p + q * turn.x, q * turn.y);
   const float a = glm::length(pq);
-  const float d = glm::length(tip_fs - joint_fs);
-  if (!(a > 0.0f) || d > kCoupledReach * (a + o) || d < kCoupledFold * std::fabs(a - o)) return false;
-  const glm::vec2 e = pq / a;
+  return {a, a > 0.0f ? pq / a : glm::vec2(1.0f, 0.0f)};
+}
+
+// The leg reaching tip_fs with bone p (the thigh, hind_pair; else the forearm) and the foot q
+// as one bone (`pq`, the foot turned from p by `turn`), then the other bone o.
+bool solve_pair(const RigLeg& info, bool hind_pair, glm::vec2 joint_fs, glm::vec2 tip_fs, glm::vec2 turn, const Composite& pq,
+                TwoBoneIkResult* ik, glm::vec2* foot_dir) {
+  const float p = hind_pair ? info.upper : info.lower;
+  const float o = hind_pair ? info.lower : info.upper;
+  const float a = pq.length;
+  const glm::vec2 to = tip_fs - joint_fs;
+  const float dd = glm::dot(to, to), far = kCoupledReach * (a + o), near = kCoupledFold * (a - o);
+  if (!(a > 0.0f) || dd > far * far || dd < near * near) return false;
+  const glm::vec2 e = pq.dir;
   auto back = [&](glm::vec2 v) { return glm::vec2(e.x * v.x + e.y * v.y, e.x * v.y - e.y * v.x); };  // turned by -arg(pq)
   if (hind_pair) {  // thigh and foot as one bone, then the shin
     const TwoBoneIkResult r = solve_two_bone_ik_directions(joint_fs, a, o, tip_fs, info.bend);
@@ -59,14 +74,14 @@ bool solve_pair(const RigLeg& info, bool hind_pair, glm::vec2 joint_fs, glm::vec
     ik->lower_dir = r.lower_dir;
     ik->middle = joint_fs + p * ik->upper_dir;
     ik->end = ik->middle + o * ik->lower_dir;
-    *foot_dir = rotate(ik->upper_dir, gamma);
+    *foot_dir = turned(ik->upper_dir, turn);
   } else {  // the upper bone, then forearm (or shin) and foot as one bone
     const TwoBoneIkResult r = solve_two_bone_ik_directions(joint_fs, o, a, tip_fs, info.bend);
     ik->upper_dir = r.upper_dir;
     ik->lower_dir = back(r.lower_dir);
     ik->middle = r.middle;
     ik->end = r.middle + p * ik->lower_dir;
-    *foot_dir = rotate(ik->lower_dir, gamma);
+    *foot_dir = turned(ik->lower_dir, turn);
   }
   return true;
 }
@@ -84,29 +99,39 @@ float most_turn(float p, float q, float o, float d) {
 }  // namespace
 
 bool solve_straight_ankle(const RigLeg& info, glm::vec2 joint_fs, glm::vec2 tip_fs, TwoBoneIkResult* ik, glm::vec2* foot_dir) {
-  return solve_pair(info, false, joint_fs, tip_fs, 0.0f, ik, foot_dir);
+  return solve_pair(info, false, joint_fs, tip_fs, {1.0f, 0.0f}, {info.lower + info.foot_span, {1.0f, 0.0f}}, ik, foot_dir);
 }
 
 bool solve_coupled_leg(const RigLeg& info, glm::vec2 joint_fs, glm::vec2 tip_fs, float fold, TwoBoneIkResult* ik,
                        glm::vec2* foot_dir) {
-  const float d = glm::length(tip_fs - joint_fs);
+  // (Standing, the turn and its composite bone are constants of the rig, and the reach limit is
+  // worked out only when the leg does not reach: no trigonometry on the common path.)
   const float s = info.fold_sign;
+  const Composite straight{info.lower + info.foot_span, {1.0f, 0.0f}};
+  auto pair = [&](bool hind_pair, glm::vec2 turn) {
+    return solve_pair(info, hind_pair, joint_fs, tip_fs, turn, composite(hind_pair ? info.upper : info.lower, info.foot_span, turn), ik,
+                      foot_dir);
+  };
   if (info.hind) {
     // The foot keeps its rest turn from the thigh (folded further in swing, turned no further
     // than the reach allows), unless that would bend the hock past straight: then the hock
     // stays straight (the same pose where the hock is just straight, so no jump).
-    const float most = most_turn(info.upper, info.foot_span, info.lower, d);
-    const float turn = std::clamp(s * info.couple_angle + fold, -most, most);
-    if (most >= 0.0f && solve_pair(info, true, joint_fs, tip_fs, s * turn, ik, foot_dir) &&
-        s * (ik->lower_dir.x * foot_dir->y - ik->lower_dir.y * foot_dir->x) >= 0.0f) {
-      return true;
+    const float want = s * info.couple_angle + fold;
+    auto hock_bent = [&] { return s * (ik->lower_dir.x * foot_dir->y - ik->lower_dir.y * foot_dir->x) >= 0.0f; };
+    bool solved = fold > 0.0f ? pair(true, unit(s * want))
+                              : solve_pair(info, true, joint_fs, tip_fs, info.couple_turn, {info.couple_length, info.couple_dir}, ik, foot_dir);
+    if (!solved) {
+      const float most = most_turn(info.upper, info.foot_span, info.lower, glm::length(tip_fs - joint_fs));
+      solved = most >= 0.0f && pair(true, unit(s * std::clamp(want, -most, most)));
     }
-    return solve_pair(info, false, joint_fs, tip_fs, 0.0f, ik, foot_dir);
+    if (solved && hock_bent()) return true;
+    return solve_pair(info, false, joint_fs, tip_fs, {1.0f, 0.0f}, straight, ik, foot_dir);
   }
   // The foot in line with the forearm, folded in swing as far as the reach allows.
-  const float most = most_turn(info.lower, info.foot_span, info.upper, d);
+  if (!(fold > 0.0f)) return solve_pair(info, false, joint_fs, tip_fs, {1.0f, 0.0f}, straight, ik, foot_dir);
+  const float most = most_turn(info.lower, info.foot_span, info.upper, glm::length(tip_fs - joint_fs));
   if (most < 0.0f) return false;
-  return solve_pair(info, false, joint_fs, tip_fs, s * std::min(fold, most), ik, foot_dir);
+  return pair(false, unit(s * std::min(fold, most)));
 }
 
 bool LegIkJob::validate() const { return valid(*this); }
@@ -134,50 +159,54 @@ bool LegIkJob::run() const {
         contact = joint + (contact - joint) * (r / len);
       }
     }
-    glm::vec2 foot_dir;
     const Clearance& near = f.state == LegState::kStance ? f.stance_clear : f.swing_clear;
-    glm::vec2 ankle = leg_ankle(c, b, leg, contact, joint, true, near, &foot_dir, nullptr);
-    if (f.state == LegState::kSwing) {
-      // The same for the ankle when the foot could not roll far enough.
-      const float r = info.leg_reach;
-      const float dx = ankle.x - joint.x;
-      if (glm::length(ankle - joint) > r && std::fabs(dx) < r && ankle.y < joint.y) {
-        ankle.y = joint.y - reach_across(r, dx);
-      }
-      // A foot lifted closer to the joint than the leg folds (short legs, high swings) moves
-      // out sideways to where the folded leg reaches, not down through the ground.
-      const float fold = info.fold;
-      const glm::vec2 d = ankle - joint;
-      if (glm::dot(d, d) < fold * fold && std::fabs(d.y) < fold) {
-        ankle.x = joint.x + (d.x >= 0.0f ? 1.0f : -1.0f) * reach_across(fold, d.y);
-      }
-    }
     auto leg_ik = [&](glm::vec2 target) {  // directions only: the angles are for pose() (lazily)
       return solve_two_bone_ik_directions(joint, info.upper, info.lower, target, info.bend);
     };
-    TwoBoneIkResult ik = leg_ik(ankle);
-    // A three-segment leg is solved whole (its foot coupled to the leg); another whose foot,
-    // holding its angle, would bend the ankle (hock, intertarsal joint) past straight has the
-    // ankle straight instead (the same pose where it is just straight). A stance leg whose new
-    // pose would cut the level keeps the plain one (a hoof on a step's edge: the body
-    // placement kept that one clear).
-    TwoBoneIkResult whole;
-    glm::vec2 whole_dir;
-    bool use = false;
+    // A stance leg whose new pose (below) would cut the level keeps the plain one (a hoof on a
+    // step's edge: the body placement kept that one clear).
+    auto clear_in_stance = [&](const TwoBoneIkResult& r) {
+      if (f.state != LegState::kStance || near.clear_above(std::min({joint.y, r.middle.y, r.end.y, contact.y}))) return true;
+      const glm::vec2 p[4] = {b.to_ws(joint), b.to_ws(r.middle), b.to_ws(r.end), b.to_ws(contact)};
+      return !polyline_hits_level(c.level, p, 4, c.hits);
+    };
+    // A three-segment leg is solved whole, its foot coupled to the leg.
+    TwoBoneIkResult ik;
+    glm::vec2 foot_dir, ankle;
+    bool solved = false;
     if (info.coupled) {
       const float fold = f.state == LegState::kSwing ? info.swing_fold * std::sin(kPi * std::clamp(f.progress, 0.0f, 1.0f)) : 0.0f;
-      use = solve_coupled_leg(info, joint, contact, fold, &whole, &whole_dir);
-    } else if (info.foot_span > 0.0f && info.fold_sign * (ik.lower_dir.x * foot_dir.y - ik.lower_dir.y * foot_dir.x) < 0.0f) {
-      use = solve_straight_ankle(info, joint, contact, &whole, &whole_dir);
+      solved = solve_coupled_leg(info, joint, contact, fold, &ik, &foot_dir) && clear_in_stance(ik);
+      ankle = ik.end;
     }
-    if (use && f.state == LegState::kStance && !near.clear_above(std::min({joint.y, whole.middle.y, whole.end.y, contact.y}))) {
-      const glm::vec2 p[4] = {b.to_ws(joint), b.to_ws(whole.middle), b.to_ws(whole.end), b.to_ws(contact)};
-      use = !polyline_hits_level(c.level, p, 4, c.hits);
-    }
-    if (use) {
-      ik = whole;
-      foot_dir = whole_dir;
-      ankle = whole.end;
+    if (!solved) {  // the plain pose: the foot rolled about its contact, then upper and lower
+      ankle = leg_ankle(c, b, leg, contact, joint, true, near, &foot_dir, nullptr);
+      if (f.state == LegState::kSwing) {
+        // The same for the ankle when the foot could not roll far enough.
+        const float r = info.leg_reach;
+        const float dx = ankle.x - joint.x;
+        if (glm::length(ankle - joint) > r && std::fabs(dx) < r && ankle.y < joint.y) {
+          ankle.y = joint.y - reach_across(r, dx);
+        }
+        // A foot lifted closer to the joint than the leg folds (short legs, high swings) moves
+        // out sideways to where the folded leg reaches, not down through the ground.
+        const float fold = info.fold;
+        const glm::vec2 d = ankle - joint;
+        if (glm::dot(d, d) < fold * fold && std::fabs(d.y) < fold) {
+          ankle.x = joint.x + (d.x >= 0.0f ? 1.0f : -1.0f) * reach_across(fold, d.y);
+        }
+      }
+      ik = leg_ik(ankle);
+      // A foot holding its angle that would bend the ankle (hock, intertarsal joint) past
+      // straight has the ankle straight instead (the same pose where it is just straight).
+      TwoBoneIkResult straight;
+      glm::vec2 straight_dir;
+      if (!info.coupled && info.foot_span > 0.0f && info.fold_sign * (ik.lower_dir.x * foot_dir.y - ik.lower_dir.y * foot_dir.x) < 0.0f &&
+          solve_straight_ankle(info, joint, contact, &straight, &straight_dir) && clear_in_stance(straight)) {
+        ik = straight;
+        foot_dir = straight_dir;
+        ankle = straight.end;
+      }
     }
     // A stance leg the body placement stretched past its reach (its clamps 3 and 5 may, and
     // clamp 6 then releases the foot to lift on the next tick) does not reach its ankle: its
