@@ -79,3 +79,46 @@ TEST_CASE("leg IK job: every stance foot is reached, knees bend their way, both 
     }
   }
 }
+
+TEST_CASE("coupled legs: the tip is reached, a standing foreleg is straight, no hock bends past straight, and no jumps", "[anim][ik]") {
+  // solve_coupled_leg on the horse's legs, over random tips within reach and folds: the chain
+  // ends on the tip, its bones keep their lengths, a foreleg's foot lies in line with its
+  // forearm when unfolded, a hind foot never turns past straight from its shin; and a tip that
+  // moves a millimetre moves no joint by more than a few (the switch to a straight hock and the
+  // reach-limited fold are continuous).
+  const test::StageScene s(scenes::quadruped(), scenes::flat_level(40.0f), 10.0f);
+  const AnimRig& rig = *s.rig;
+  Rng rng(11);
+  auto cross = [](glm::vec2 a, glm::vec2 b) { return a.x * b.y - a.y * b.x; };
+  for (const RigLeg& leg : rig.legs) {
+    REQUIRE(leg.coupled);
+    const glm::vec2 joint(0.0f, rig.girdles[leg.girdle].rest_height);
+    const float full = leg.upper + leg.lower + leg.foot_span;
+    int solved = 0;
+    for (int k = 0; k < 400; ++k) {
+      const float angle = rng.uniform(-2.4f, -0.7f);
+      const float dist = rng.uniform(0.45f, 0.99f) * full;
+      const glm::vec2 tip = joint + dist * glm::vec2(std::cos(angle), std::sin(angle));
+      const float fold = k % 2 == 0 ? 0.0f : rng.uniform(0.0f, leg.swing_fold);
+      TwoBoneIkResult ik;
+      glm::vec2 foot;
+      if (!anim::solve_coupled_leg(leg, joint, tip, fold, &ik, &foot)) continue;
+      ++solved;
+      INFO((leg.hind ? "hind" : "fore") << " tip at " << dist / full << " of the leg, fold " << fold);
+      CHECK(glm::length(ik.end + leg.foot_span * foot - tip) <= 1e-4f * full);
+      CHECK(glm::length(ik.middle - joint) == Approx(leg.upper).epsilon(1e-4));
+      CHECK(glm::length(ik.end - ik.middle) == Approx(leg.lower).epsilon(1e-4));
+      if (!leg.hind && fold == 0.0f) CHECK(glm::length(foot - ik.lower_dir) <= 1e-4f);
+      if (leg.hind) CHECK(leg.fold_sign * cross(ik.lower_dir, foot) >= -1e-4f);
+      // A millimetre further: no joint jumps.
+      const glm::vec2 step = 0.001f * glm::normalize(tip - joint);
+      TwoBoneIkResult next;
+      glm::vec2 next_foot;
+      if (anim::solve_coupled_leg(leg, joint, tip + step, fold, &next, &next_foot)) {
+        CHECK(glm::length(next.middle - ik.middle) <= 0.02f * full);
+        CHECK(glm::length(next.end - ik.end) <= 0.02f * full);
+      }
+    }
+    CHECK(solved > 300);
+  }
+}
