@@ -46,9 +46,11 @@ SimResult run_example(const char* name, const Level& level, const char* text) {
   return run_script(*w.player, level, script(text), 120);
 }
 
-// No foot on the ground slid, no limb went into a collider by more than 1 mm, no NaN.
+// No foot on the ground slid or was drawn short of its foothold (a leg stretched past its
+// length), no limb went into a collider by more than 1 mm, no NaN.
 void check_planted_and_clear(const SimResult& r) {
   CHECK(r.probe.max_stance_slip_m <= 0.001f);
+  CHECK(r.probe.max_stance_gap_m <= 0.001f);
   CHECK(r.probe.max_limb_penetration_m <= 0.001f);
   CHECK(r.probe.nan_count == 0);
 }

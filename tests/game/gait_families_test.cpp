@@ -38,6 +38,7 @@ Run run_family_script(const std::string& name) {
   const SimResult r = run_script(player, flat, parse_script("walk:0.3:8,run:0.6:8,run:1:8").value(), 120);
   REQUIRE(r.segments.size() == 3);
   REQUIRE(r.probe.max_stance_slip_m <= 0.001f);
+  REQUIRE(r.probe.max_stance_gap_m <= 0.001f);
   return {r.segments[0], r.segments[1], r.segments[2]};
 }
 

@@ -474,6 +474,7 @@ int main(int argc, char** argv) {
     }
     out["joint_angles"] = legs;
     out["max_stance_slip_m"] = probe.max_stance_slip_m;
+    out["max_stance_gap_m"] = probe.max_stance_gap_m;  // a standing foot short of its foothold
     out["max_penetration_m"] = probe.max_penetration_m;  // every bone (limbs and body)
     out["max_limb_penetration_m"] = probe.max_limb_penetration_m;
     out["max_body_penetration_m"] = probe.max_body_penetration_m;

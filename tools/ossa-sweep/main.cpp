@@ -199,6 +199,7 @@ OJson record_json(const RunRecord& r) {
           {"level", r.level},
           {"script", r.script},
           {"max_stance_slip_m", json_float(r.sim.probe.max_stance_slip_m)},
+          {"max_stance_gap_m", json_float(r.sim.probe.max_stance_gap_m)},
           {"max_penetration_m", json_float(r.sim.probe.max_penetration_m)},
           {"max_limb_penetration_m", json_float(r.sim.probe.max_limb_penetration_m)},
           {"max_body_penetration_m", json_float(r.sim.probe.max_body_penetration_m)},
@@ -312,6 +313,15 @@ int run_sweep(const Args& args, const Setup& setup) {
     std::printf("| of these, the worst slide | %s (%s, %s) |\n", mm(slid->sim.probe.max_stance_slip_m).c_str(),
                 slid->animal.c_str(), slid->level.c_str());
   }
+  int gaps = 0;
+  const RunRecord* widest = nullptr;
+  for (const RunRecord& r : runs) {
+    gaps += r.sim.probe.max_stance_gap_m > kLimit;
+    if (!widest || r.sim.probe.max_stance_gap_m > widest->sim.probe.max_stance_gap_m) widest = &r;
+  }
+  std::printf("| runs with a standing foot > 1 mm short of its foothold (a leg stretched past its length) | %d of %d", gaps, count);
+  if (widest && gaps > 0) std::printf(" (widest %s, %s on %s)", mm(widest->sim.probe.max_stance_gap_m).c_str(), widest->animal.c_str(), widest->level.c_str());
+  std::printf(" |\n");
   std::printf("| runs stopped at a step (< 20%% of the commanded speed, limbs clean) | %zu |\n", stopped.size());
   std::printf("| example walks (%s) with a tail > 1 mm in a step | %zu of %d", texts[0].c_str(), tails.size(), walks);
   if (worst_tail) std::printf(" (deepest %s, %s on %s)", mm(worst_tail->tail_penetration_m).c_str(), worst_tail->animal.c_str(), worst_tail->level.c_str());

@@ -334,6 +334,7 @@ void SimProbe::observe(const Animator& a, const Level& level) {
   for (int i = 0; i < legs; ++i) {
     const glm::vec2 foot = a.foot_ws(i);
     if (a.leg_state(i) == LegState::kStance) {
+      max_stance_gap_m = std::max(max_stance_gap_m, glm::length(foot - a.foot_target_ws(i)));
       if (stance_since_[i] < 0 || turned) {
         stance_anchor_[i] = foot;
         stance_since_[i] = static_cast<int>(ticks_);

@@ -100,6 +100,10 @@ class SimProbe {
   float dt = 1.0f / 120.0f;
 
   float max_stance_slip_m = 0.0f;
+  // How far a standing foot's drawn contact point lies from the foothold it stands on, metres:
+  // a leg that does not reach its foothold (stretched past its length) draws the foot hanging
+  // short of it, which the slip does not see (the hanging foot may keep still).
+  float max_stance_gap_m = 0.0f;
   // Penetration: how deep any point of a bone (the segment from its joint to its end, the
   // whole of it, exactly: segment_penetration) lies inside a collider, metres. Every bone of
   // the skeleton: the worst (max_penetration_m), the legs, arms, fins and wings
