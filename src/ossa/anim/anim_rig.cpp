@@ -42,16 +42,17 @@ std::vector<glm::vec2> convex_hull(std::vector<glm::vec2> p) {
 
 RigLimb rig_limb(const RigLimbRole& limb) { return {limb.girdle_bone, limb.bones, limb.side}; }
 
-// A foot at least this long against the leg above it (upper + lower) is a third segment of
-// the leg (the examples' hooves, paws and bird feet 0.38–0.79, the elephant's and the big
+// A quadruped's foot at least this long against the leg above it (upper + lower) is a third
+// segment of the leg (the examples' hooves and paws 0.5–0.79, the elephant's and the big
 // dinosaurs' columnar feet 0.23–0.32; a shorter foot, brachiosaurus's hind 0.16, keeps rolling
 // about its tip).
 constexpr float kCoupledFootOfLeg = 0.2f;
 // ... with upper and lower bones each at least this fraction of the two (a random leg may come
 // with a vanishing bone: it keeps the plain solve).
 constexpr float kCoupledBoneOfLeg = 0.05f;
-// The lower joint's fold at mid-swing, chosen: a horse's carpus flexes by about 70–100° in the
-// swing of a walk and trot; the hind foot tucks by turning up to a further 57° from the thigh.
+// The lower joint's fold at mid-swing, chosen: the carpus 63°, at the low end of a horse's
+// (about 70–100° in the swing of a walk and trot); the hind foot tucks by turning a further
+// 23° from the thigh.
 constexpr float kForeSwingFold = 1.1f;
 constexpr float kHindSwingFold = 0.4f;
 // A lower joint bent less than this at rest (radians) is taken to fold against the knee.
