@@ -183,10 +183,12 @@ void start_ease(const FootholdInputs& in, int leg, FootState& f, const glm::vec2
     // behind on a step the body has left), else the nearest fit at all.
     const float under = in.body.girdle_ws(in.ctx.rig, info.girdle).y -
                         in.ctx.rig.girdles[info.girdle].rest_height * in.ctx.params.stance_height;
-    glm::vec2 spot;
-    if ((nearest_fit(in, leg, in.body.to_ws({joint.x + dx, landing.y}), &spot, true) && reaches(in, leg, spot)) ||
-        (nearest_fit(in, leg, in.body.to_ws({joint.x + dx, under}), &spot, true) && reaches(in, leg, spot)) ||
-        nearest_fit(in, leg, in.body.to_ws({joint.x + dx, landing.y}), &spot, true)) {
+    glm::vec2 spot, under_spot;
+    const bool fits = nearest_fit(in, leg, in.body.to_ws({joint.x + dx, landing.y}), &spot, true);
+    if (fits && !reaches(in, leg, spot) && nearest_fit(in, leg, in.body.to_ws({joint.x + dx, under}), &under_spot, true) &&
+        reaches(in, leg, under_spot)) {
+      landing = under_spot;
+    } else if (fits) {
       landing = spot;
     }
   }

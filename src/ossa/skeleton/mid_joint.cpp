@@ -70,14 +70,13 @@ Mat2x3 level_frame(const MidJoint& j, const Mat2x3& child) {
   // The bone's turn since the rest pose: the frame stays level through kLevelTurn of it and
   // turns with the bone beyond (a hoof swung forward with its cannon bone, not bent flat
   // against it).
+  // (No trigonometry: beyond the limit the frame is the bone's axis turned back by it.)
   glm::vec2 x = j.rest_x;
   if (scale > 0.0f) {
     const glm::vec2 now(mirror * child.m[0] / scale, child.m[1] / scale);
-    const float turn = std::atan2(j.rest_x.x * now.y - j.rest_x.y * now.x, j.rest_x.x * now.x + j.rest_x.y * now.y);
-    const float beyond = turn - std::clamp(turn, -kLevelTurn, kLevelTurn);
-    if (beyond != 0.0f) {
-      const float c = std::cos(beyond), s = std::sin(beyond);
-      x = {c * j.rest_x.x - s * j.rest_x.y, s * j.rest_x.x + c * j.rest_x.y};
+    if (glm::dot(j.rest_x, now) < kCosLevelTurn) {
+      const float s = (j.rest_x.x * now.y - j.rest_x.y * now.x) < 0.0f ? -kSinLevelTurn : kSinLevelTurn;
+      x = {kCosLevelTurn * now.x + s * now.y, kCosLevelTurn * now.y - s * now.x};
     }
   }
   Mat2x3 f;

@@ -39,6 +39,7 @@ struct MidJoint {
 // How far (radians) a foot bone turns from its rest angle with its level frame held level
 // (the roll of a hoof or toes over the ground); beyond it the frame turns along.
 inline constexpr float kLevelTurn = 1.3f;
+inline constexpr float kCosLevelTurn = 0.26749883f, kSinLevelTurn = 0.96355819f;  // of kLevelTurn
 
 // The level frame of `j` (MidJoint::level) for the child bone's frame `child` (bone frame →
 // world): at its contact point, with the child's rest turn, mirrored and scaled as `child`.
