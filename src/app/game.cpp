@@ -19,6 +19,7 @@
 #include <thread>
 
 #include "app/game_impl.h"
+#include "ossa/body/body_mesh.h"
 #include "ossa/gen/skeleton_builder.h"
 #include "ossa/io/data_dir.h"
 #include "ossa/io/file.h"
@@ -130,7 +131,7 @@ Status Game::init(const GameOptions& o) {
 
   auto prototypes = load_prototypes(resolve_data_path("assets/animation/prototypes.json"));
   if (!prototypes.ok()) return prototypes.error();
-  auto generator = Generator::load(resolve_data_path("assets/creatures/examples.json"));
+  auto generator = Generator::load(resolve_data_path("assets/creatures/examples.json"), ossa::body_volume_m3);
   if (!generator.ok()) return generator.error();
   m.generator = std::make_unique<Generator>(std::move(generator.value()));
 

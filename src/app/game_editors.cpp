@@ -7,13 +7,14 @@
 
 #include <imgui.h>
 
+#include "ossa/body/body_mesh.h"
 #include "ossa/editor/tuning_model.h"
 #include "ossa/render/character_mesh.h"
 
 namespace ossa {
 
 GameEditors::GameEditors(Game& game, const GameOptions& o) : game_(&game) {
-  if (auto generator = Generator::load(resolve_data_path("assets/creatures/examples.json")); generator.ok()) {
+  if (auto generator = Generator::load(resolve_data_path("assets/creatures/examples.json"), ossa::body_volume_m3); generator.ok()) {
     generator_.emplace(std::move(generator.value()));
   }
   EditorPaths paths;

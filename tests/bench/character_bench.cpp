@@ -19,6 +19,7 @@
 #include <memory>
 #include <vector>
 
+#include "ossa/body/body_mesh.h"
 #include "ossa/anim/animator.h"
 #include "ossa/gen/generator.h"
 #include "ossa/gen/skeleton_builder.h"
@@ -60,7 +61,7 @@ Crowd& horses() {
   static Crowd c = [] {
     Crowd h;
     // The horse of the animator benchmark (scenes::quadruped(); this binary has no test scenes).
-    const Generator gen = Generator::load(data_path("assets/creatures/examples.json")).value();
+    const Generator gen = Generator::load(data_path("assets/creatures/examples.json"), ossa::body_volume_m3).value();
     h.creature = std::make_shared<const Creature>(build_creature(gen.example("horse").value()).value());
     for (int i = 0; i < kCount; ++i) h.animators.push_back(std::make_unique<Animator>(*h.creature, SplinePrototypes::defaults()));
     h.start();

@@ -67,7 +67,7 @@ struct Scene {
     const std::string dir = data_path("assets/sprites/bones");
     auto set = load_sprite_set(dir + "/sprites.json");
     atlas = std::make_unique<Atlas>(Atlas::build(set.ok() ? set.value() : default_sprite_set(), dir));
-    auto gen = Generator::load(data_path("assets/creatures/examples.json"));
+    auto gen = Generator::load(data_path("assets/creatures/examples.json"), ossa::body_volume_m3);
     if (!gen.ok()) return;
     for (const char* name : {"horse", "kangaroo", "giraffe", "pig", "red deer"}) {
       if (auto g = gen->example(name, 1); g.ok()) {

@@ -23,6 +23,7 @@
 #include <string>
 #include <vector>
 
+#include <ossa/body/body_mesh.h>
 #include <ossa/draw.h>
 
 #ifndef HERD_SDL_DATA_DIR
@@ -68,7 +69,7 @@ struct Herd {
 // The herd: four animals of the examples and two random walkers, spread along the ground.
 bool make_herd(Herd& herd, const std::string& data, const ossa::SpriteSet& sprites, ossa::CreatureLook look) {
   ossa::Result<ossa::Level> level = ossa::load_level(data + "/levels/default.json");
-  ossa::Result<ossa::Generator> gen = ossa::Generator::load(data + "/assets/creatures/examples.json");
+  ossa::Result<ossa::Generator> gen = ossa::Generator::load(data + "/assets/creatures/examples.json", ossa::body_volume_m3);
   if (!level || !gen) {
     std::fprintf(stderr, "%s\n", (!level ? level.message() : gen.message()).c_str());
     return false;

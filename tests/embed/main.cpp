@@ -4,6 +4,7 @@
 #include <memory>
 #include <string>
 
+#include <ossa/body/body_mesh.h>
 #include <ossa/anim/animator.h>
 #include <ossa/game/player.h>
 #include <ossa/gen/generator.h>
@@ -24,7 +25,7 @@ int main(int argc, char** argv) {
   const ossa::TwoBoneIkResult ik = ossa::solve_two_bone_ik({0.0f, 1.0f}, 0.5f, 0.5f, {0.3f, 0.2f}, 1.0f);
   if (!ik.reached) return 1;
 
-  ossa::Result<ossa::Generator> gen = ossa::Generator::load(argv[2]);
+  ossa::Result<ossa::Generator> gen = ossa::Generator::load(argv[2], ossa::body_volume_m3);
   if (!gen) {
     std::fprintf(stderr, "%s\n", gen.message().c_str());
     return 1;

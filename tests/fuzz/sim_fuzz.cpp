@@ -14,6 +14,7 @@
 #include <memory>
 #include <string_view>
 
+#include "ossa/body/body_mesh.h"
 #include "ossa/anim/spline_prototypes.h"
 #include "ossa/game/player.h"
 #include "ossa/game/sim.h"
@@ -26,7 +27,7 @@ namespace {
 
 std::shared_ptr<const ossa::Creature> horse() {
   static const std::shared_ptr<const ossa::Creature> creature = [] {
-    auto generator = ossa::Generator::load(ossa::data_path("assets/creatures/examples.json"));
+    auto generator = ossa::Generator::load(ossa::data_path("assets/creatures/examples.json"), ossa::body_volume_m3);
     if (!generator.ok()) {
       std::fprintf(stderr, "fuzz_sim: %s\n", generator.message().c_str());
       std::abort();

@@ -10,6 +10,7 @@
 #include <sstream>
 #include <string>
 
+#include "ossa/body/body_mesh.h"
 #include "ossa/gen/export_obj.h"
 #include "ossa/gen/export_svg.h"
 #include "ossa/gen/generator.h"
@@ -208,7 +209,7 @@ TEST_CASE("OBJ proxies: one box per bone with 8 vertices and 6 faces", "[gen][ob
 }
 
 TEST_CASE("every example's SVG is valid XML and draws every bone", "[gen][svg]") {
-  Result<Generator> gen = Generator::load(scenes::source_path("assets/creatures/examples.json"));
+  Result<Generator> gen = Generator::load(scenes::source_path("assets/creatures/examples.json"), ossa::body_volume_m3);
   REQUIRE(gen.ok());
   REQUIRE(gen->dataset().animals.size() == 44);
   std::vector<std::pair<std::string, Creature>> sheet;
@@ -233,7 +234,7 @@ TEST_CASE("every example's SVG is valid XML and draws every bone", "[gen][svg]")
 }
 
 TEST_CASE("random creatures export valid SVG and OBJ", "[gen][svg][obj]") {
-  Result<Generator> gen = Generator::load(scenes::source_path("assets/creatures/examples.json"));
+  Result<Generator> gen = Generator::load(scenes::source_path("assets/creatures/examples.json"), ossa::body_volume_m3);
   REQUIRE(gen.ok());
   for (uint64_t seed = 1; seed <= 150; ++seed) {
     GenerateOptions options;

@@ -13,6 +13,7 @@
 #include <map>
 #include <string>
 
+#include "ossa/body/body_mesh.h"
 #include "ossa/gen/generator.h"
 #include "ossa/gen/skeleton_builder.h"
 #include "ossa/io/file.h"
@@ -130,7 +131,7 @@ TEST_CASE("glTF export keeps smooth skinning's weights through ossa's rigged-mes
   // Exported, then loaded as a designer's character would be (load_rigged_mesh): a smooth
   // creature's vertices blend as many bones as its sprite mesh's (2), summing to 1, and its
   // rest pose skins to the sprite mesh's rest pose as drawn; a rigid one's follow one bone.
-  Result<Generator> gen = Generator::load(scenes::source_path("assets/creatures/examples.json"));
+  Result<Generator> gen = Generator::load(scenes::source_path("assets/creatures/examples.json"), ossa::body_volume_m3);
   REQUIRE(gen.ok());
   for (const char* name : {"horse", "kangaroo", "pigeon"}) {
     for (bool smooth : {true, false}) {
@@ -226,7 +227,7 @@ TEST_CASE("glTF export writes its buffer next to it and replaces files atomicall
 }
 
 TEST_CASE("glTF export of generated examples re-imports with their skeletons", "[gltf]") {
-  Result<Generator> gen = Generator::load(scenes::source_path("assets/creatures/examples.json"));
+  Result<Generator> gen = Generator::load(scenes::source_path("assets/creatures/examples.json"), ossa::body_volume_m3);
   REQUIRE(gen.ok());
   for (const char* name : {"horse", "giraffe", "kangaroo", "pigeon"}) {
     Result<Genome> genome = gen->example(name, 1);
@@ -247,7 +248,7 @@ TEST_CASE("glTF export of a body: skinned, coloured, posable, its rest pose the 
   // --look body: one mesh, the body (vertex colours, weights summing to 1 over real bones);
   // loaded as a designer's character would be, its rest pose lies on the body as built.
   // --look xray: the sprites and the body; bones: the sprites alone (as before bodies).
-  Result<Generator> gen = Generator::load(scenes::source_path("assets/creatures/examples.json"));
+  Result<Generator> gen = Generator::load(scenes::source_path("assets/creatures/examples.json"), ossa::body_volume_m3);
   REQUIRE(gen.ok());
   for (const char* name : {"horse", "pigeon", "crocodile"}) {
     INFO(name);

@@ -1,5 +1,6 @@
 #include "shared/scenes.h"
 
+#include "ossa/body/body_mesh.h"
 #include "ossa/io/data_dir.h"
 
 namespace ossa::scenes {
@@ -28,7 +29,7 @@ namespace ossa::scenes {
 
 const Generator& generator() {
   static const Generator g = [] {
-    Result<Generator> r = Generator::load(source_path("assets/creatures/examples.json"));
+    Result<Generator> r = Generator::load(source_path("assets/creatures/examples.json"), ossa::body_volume_m3);
     OSSA_ASSERT(r.ok(), "assets/creatures/examples.json must load");
     return std::move(r.value());
   }();

@@ -15,6 +15,7 @@
 #include <string_view>
 #include <vector>
 
+#include "ossa/body/body_mesh.h"
 #include "ossa/gen/export_obj.h"
 #include "ossa/gen/export_svg.h"
 #include "ossa/gen/generator.h"
@@ -312,7 +313,7 @@ int run(const Args& a) {
   }
   std::optional<Generator> generator;
   if (a.example || a.random || a.stats || a.sheet || a.variations) {
-    Result<Generator> g = Generator::load(dataset_path);
+    Result<Generator> g = Generator::load(dataset_path, ossa::body_volume_m3);
     if (!g) return fail(g.message());
     generator.emplace(std::move(*g));
   }

@@ -170,7 +170,7 @@ Creature make_creature(const Args& a) {
     if (!g.ok()) fail(g.message());
     genome = std::move(g.value());
   } else {
-    auto generator = Generator::load(data_path("assets/creatures/examples.json"));
+    auto generator = Generator::load(data_path("assets/creatures/examples.json"), ossa::body_volume_m3);
     if (!generator.ok()) fail(generator.message());
     if (a.example) {
       auto g = generator->example(*a.example, a.seed);

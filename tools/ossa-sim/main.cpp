@@ -20,6 +20,7 @@
 #include <string>
 #include <vector>
 
+#include "ossa/body/body_mesh.h"
 #include "ossa/anim/spline_prototypes.h"
 #include "ossa/gen/generator.h"
 #include "ossa/gen/skeleton_builder.h"
@@ -279,7 +280,7 @@ int main(int argc, char** argv) {
       if (!g) fail(g.message());
       genome = *g;
     } else {
-      Result<Generator> gen = Generator::load(data_path("assets/creatures/examples.json"));
+      Result<Generator> gen = Generator::load(data_path("assets/creatures/examples.json"), ossa::body_volume_m3);
       if (!gen) fail(gen.message());
       if (args.example) {
         Result<Genome> g = gen->example(*args.example);

@@ -26,6 +26,7 @@
 #include <thread>
 #include <vector>
 
+#include "ossa/body/body_mesh.h"
 #include "ossa/gen/generator.h"
 #include "ossa/gen/skeleton_builder.h"
 #include "ossa/game/player.h"
@@ -153,7 +154,7 @@ Setup load_setup(const Args& args) {
     if (!p) fail(p.message());
     s.prototypes = *p;
   }
-  Result<Generator> gen = Generator::load(data_path("assets/creatures/examples.json"));
+  Result<Generator> gen = Generator::load(data_path("assets/creatures/examples.json"), ossa::body_volume_m3);
   if (!gen) fail(gen.message());
   std::vector<std::string> names = args.examples;
   if (names.empty()) {

@@ -137,6 +137,16 @@ struct Countershade {
 
 }  // namespace
 
+double body_volume_m3(const Creature& c) {
+  BodyRig rig = make_rig(c);
+  if (rig.axial.bones.empty() || rig.bone_count > 255) return 0.0;
+  BodyParts parts;
+  plan_axial(rig, parts);
+  plan_limbs(rig, parts);
+  plan_appendages(rig, parts);
+  return plan_mass(parts, 1.0f) / kBodyDensity;
+}
+
 BodyMesh build_body(const Creature& c, const BodyOptions& options) {
   BodyMesh mesh;
   BodyRig rig = make_rig(c);

@@ -143,6 +143,11 @@ struct BodyMesh {
 BodyMesh build_body(const Creature& creature, const BodyOptions& options = {});
 Result<BodyMesh> try_build_body(const Creature& creature, const BodyOptions& options = {});
 
+// The volume (m³) of `creature`'s body at girth 1 (BodyMesh::default_mass_kg / density,
+// without building the mesh): what the size rule measures (gen/true_size.h). Hand it to the
+// Generator: Generator::load(path, body_volume_m3). 0 for a body without spine bones.
+double body_volume_m3(const Creature& creature);
+
 // A vertex skinned by `palette` (one entry per bone, then per mid joint), as the shader does
 // (without the floor: floor_point() after it, as the shader does).
 glm::vec2 skin_body_vertex(const BodyVertex& v, std::span<const Mat2x3> palette);

@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "ossa/gen/body_plan.h"
+#include "ossa/gen/skeleton_builder.h"
 #include "ossa/math/rng.h"
 
 namespace ossa {
@@ -147,14 +148,15 @@ std::vector<Appendage> random_appendages(const Genome& g, uint64_t seed) {
   return out;
 }
 
-Generator::Generator(Dataset dataset, PcaModel model) : dataset_(std::move(dataset)), model_(std::move(model)) {}
+Generator::Generator(Dataset dataset, PcaModel model, BodyVolume body_volume)
+    : dataset_(std::move(dataset)), model_(std::move(model)), body_volume_(std::move(body_volume)) {}
 
-Result<Generator> Generator::load(const std::string& dataset_path) {
+Result<Generator> Generator::load(const std::string& dataset_path, BodyVolume body_volume) {
   Result<Dataset> data = load_dataset(dataset_path);
   if (!data) return data.error();
   if (data->animals.size() < 2) return Error::at(dataset_path, "animals", "expected at least 2 animals");
   PcaModel model = PcaModel::fit(*data);
-  return Generator(std::move(*data), std::move(model));
+  return Generator(std::move(*data), std::move(model), std::move(body_volume));
 }
 
 void recompute_rest_angles(Genome& g) {
@@ -271,9 +273,9 @@ Genome Generator::complete(std::array<double, kPcaDims> pca, Rng& rng, const Gen
   }
   g.skull_shape = random_skull_shape(g.skull_variant, seed);
 
-  // Size: a 2 m frame, or length ∝ mass^(1/3) (a 500 kg animal fills the 2 m frame).
-  g.scale = 0.002f;
-  if (g.options.true_size) g.scale = static_cast<float>(0.002 * std::cbrt(g.pca[kWeightKg] / 500.0));
+  // Size: the frame for now; apply_size sets the true size once the body is complete.
+  g.options.frame_m = std::clamp(g.options.frame_m, kMinFrameMetres, kMaxFrameMetres);
+  g.scale = g.options.frame_m / 1000.0f;
 
   // Contact mode: as given (an example's posture), else from the legs' proportions, then the
   // rest pose. The heel draw [Z 7.2.1] is made either way, so that a given contact leaves the
@@ -332,7 +334,9 @@ Genome Generator::random(uint64_t seed, const GenerateOptions& options) const {
   }
   std::array<double, kPcaDims> pca;
   for (int d = 0; d < kPcaDims; ++d) pca[d] = raw[d];
-  return complete(pca, rng, options, "random-" + std::to_string(seed), seed);
+  Genome g = complete(pca, rng, options, "random-" + std::to_string(seed), seed);
+  apply_size(g);
+  return g;
 }
 
 Result<Genome> Generator::example(std::string_view name, uint64_t seed, const GenerateOptions& options) const {
@@ -363,6 +367,7 @@ Result<Genome> Generator::example(std::string_view name, uint64_t seed, const Ge
   g.look = animal->look ? *animal->look : random_look(seed, g.skull_variant, winged);
   g.appendages = animal->look || !animal->appendages.empty() ? animal->appendages : random_appendages(g, seed);
   clamp_to_genome_limits(g);
+  apply_size(g);
   return g;
 }
 
@@ -388,13 +393,23 @@ Genome Generator::variation(const Genome& parent, uint64_t seed, double sigma) c
     g.skull_variant = rng.uniform_int(0, kSkullVariants - 1);
     g.skull_shape = default_skull_shape(g.skull_variant);
   }
-  if (g.options.true_size) g.scale = static_cast<float>(0.002 * std::cbrt(g.pca[kWeightKg] / 500.0));
   // A neck girdle needs a long neck; drop limbs whose girdle the new body no longer has.
   clamp_to_genome_limits(g);
   const BodyPlan plan = plan_body(g);
   std::erase_if(g.limbs, [&](const LimbGene& l) { return !plan.girdles[static_cast<int>(l.girdle)].exists; });
   recompute_rest_angles(g);
+  apply_size(g);
   return g;
+}
+
+void Generator::apply_size(Genome& g) const {
+  g.options.frame_m = std::clamp(g.options.frame_m, kMinFrameMetres, kMaxFrameMetres);
+  g.scale = g.options.frame_m / 1000.0f;
+  if (!g.options.true_size || !body_volume_) return;
+  // The rule measures the body at the frame's scale; the true scale follows from it.
+  Result<Creature> built = build_creature(g);
+  if (!built) return;  // a genome the builder refuses keeps its frame (the builder says why)
+  g.scale = true_size_scale(*built, g.pca[kWeightKg], body_volume_(*built));
 }
 
 }  // namespace ossa

@@ -9,6 +9,7 @@
 #include "ossa/gen/dataset.h"
 #include "ossa/gen/genome.h"
 #include "ossa/gen/pca_model.h"
+#include "ossa/gen/true_size.h"
 #include "ossa/io/result.h"
 
 namespace ossa {
@@ -32,10 +33,13 @@ struct GenerateOptions {
 
 class Generator {
  public:
-  Generator(Dataset dataset, PcaModel model);
+  // `body_volume` measures a drawn body for the size rule (pass ossa::body_volume_m3 from
+  // body/body_mesh.h; the body layer sits above this one). Without it a genome that asks for
+  // its true size keeps the 2 m frame's scale.
+  Generator(Dataset dataset, PcaModel model, BodyVolume body_volume);
 
   // Loads assets/creatures/examples.json (or `path`) and fits the model.
-  static Result<Generator> load(const std::string& dataset_path);
+  static Result<Generator> load(const std::string& dataset_path, BodyVolume body_volume);
 
   const Dataset& dataset() const { return dataset_; }
   const PcaModel& model() const { return model_; }
@@ -51,6 +55,11 @@ class Generator {
   // sigma in [0, kMaxVariationSigma]; the result is clamped into the genome limits.
   Genome variation(const Genome& parent, uint64_t seed, double sigma) const;
 
+  // Sets genome.scale from its size choice (options.true_size: the size rule of
+  // gen/true_size.h, else options.frame_m). random, example and variation call it; call it
+  // again after changing the weight, the body or the choice.
+  void apply_size(Genome& genome) const;
+
   // Completes a genome whose PCA point and options are set: draws limb layout, vertebrae,
   // ribs, contact mode and skull from rng, then computes the rest-pose angles.
   Genome complete(std::array<double, kPcaDims> pca, Rng& rng, const GenerateOptions& options,
@@ -59,6 +68,7 @@ class Generator {
  private:
   Dataset dataset_;
   PcaModel model_;
+  BodyVolume body_volume_;
 };
 
 // A skull of `variant` with its proportions varied around the variant's default (length and

@@ -97,12 +97,12 @@ Json genome_to_json(const Genome& g) {
                {{"length", json_float(g.skull_shape.length)},
                 {"height", json_float(g.skull_shape.height)},
                 {"snout", json_float(g.skull_shape.snout)}}},
+              {"size", g.options.true_size ? Json("true") : Json(json_float(g.options.frame_m))},
               {"scale", json_float(g.scale)},
               {"options",
                {{"arc_length_vertebrae", g.options.arc_length_vertebrae},
                 {"neck_girdle", g.options.neck_girdle},
                 {"multi_limb", g.options.multi_limb},
-                {"true_size", g.options.true_size},
                 {"smooth_skinning", g.options.smooth_skinning}}},
               {"gait_family", gait_family_name(g.gait_family)},
               {"look", look_to_json(g.look)},
@@ -183,8 +183,22 @@ Result<Genome> genome_from_json(const Json& doc, std::string_view file) {
       g.options.arc_length_vertebrae = r.boolean_or(*o, "options", "arc_length_vertebrae", true);
       g.options.neck_girdle = r.boolean_or(*o, "options", "neck_girdle", false);
       g.options.multi_limb = r.boolean_or(*o, "options", "multi_limb", false);
-      g.options.true_size = r.boolean_or(*o, "options", "true_size", false);
+      g.options.true_size = r.boolean_or(*o, "options", "true_size", false);  // before "size"
       g.options.smooth_skinning = r.boolean_or(*o, "options", "smooth_skinning", true);
+    }
+  }
+  // The size choice; files from before it keep the frame their scale gives (see genome.h).
+  if (!r.has(doc, "options")) g.options.true_size = false;
+  if (!r.failed()) g.options.frame_m = std::clamp(g.scale * 1000.0f, kMinFrameMetres, kMaxFrameMetres);
+  if (r.has(doc, "size")) {
+    const Json& size = doc["size"];
+    if (size.is_string() && size.get<std::string>() == "true") {
+      g.options.true_size = true;
+    } else if (size.is_number()) {
+      g.options.true_size = false;
+      g.options.frame_m = r.number_f(doc, "", "size", kMinFrameMetres, kMaxFrameMetres);
+    } else {
+      r.fail("size", "expected \"true\" or a frame in metres (a number in [0.05, 50])");
     }
   }
   const std::string family = r.string_or(doc, "", "gait_family", "auto");

@@ -9,12 +9,19 @@
 //     "vertebrae": { "neck": 7, "back": 25, "tail": 18 }, "rib_interval": 0.62,
 //     "limbs": [ { "kind": "leg", "girdle": "shoulder", "slot": 0,
 //                  "angles": [-1.9, 0.4, -0.5] }, ... ],
-//     "contact": "tip", "skull": 0, "scale": 0.0021,
+//     "contact": "tip", "skull": 0, "size": "true", "scale": 0.0031,
 //     "options": { "arc_length_vertebrae": true, "neck_girdle": false, "multi_limb": false,
-//                  "true_size": false, "smooth_skinning": true },
+//                  "smooth_skinning": true },
 //     "gait_family": "auto",
 //     "look": { "base": "#8a5a3c", "belly": "#d8c3a0", "pattern": "none", ... },
 //     "appendages": [ { "kind": "ears", "size": 1 }, { "kind": "mane", "size": 1 } ] }
+//
+// `size` is the size choice: "true" (the animal's size from its weight and body plan,
+// gen/true_size.h) or a number, a fixed frame in metres (stylised games: every creature in the
+// same frame). `scale` is the metres per frame unit the choice gave when the genome was made;
+// tools build the creature at `scale` as saved (Generator::apply_size makes it again). Files
+// without `size` (before true size) keep their scale: "size" is then the frame their scale
+// gives, or "true" if their options said "true_size": true.
 //
 // `gait_family` (gen/gait_family.h) is how the creature moves: "auto" (chosen from the body
 // plan when the animator's rig is built) or a family's name. Files without it get "auto".
@@ -47,7 +54,10 @@ struct GenomeOptions {
   bool arc_length_vertebrae = true;  // false: the thesis's t = i/n spacing [Z 7.3]
   bool neck_girdle = false;          // a girdle just below the head (centaur) [Z 7.2.3]
   bool multi_limb = false;           // two limb slots per girdle (pegasus) [Z 7.2.3]
-  bool true_size = false;            // scale from the weight (length ∝ mass^(1/3)), else 2 m frame
+  bool true_size = true;             // the size choice: the animal's true size from its weight
+                                     // and body plan (gen/true_size.h), else a fixed frame …
+  float frame_m = 2.0f;              // … this many metres across (the skeleton's 1000 frame
+                                     // units; 2 m: every creature as big as a pony)
   bool smooth_skinning = true;       // bone sprites blend parent and child near each joint, so a
                                      // bent knee keeps one outline (draw/sprite_mesh.h); false:
                                      // every sprite follows its own bone rigidly. Files without
@@ -101,6 +111,8 @@ inline constexpr int kMaxTailVertebrae = 32;
 inline constexpr int kMaxLimbPairs = 6;  // 3 girdles × 2 slots
 inline constexpr float kMinGenomeScale = 5e-5f;
 inline constexpr float kMaxGenomeScale = 0.05f;
+inline constexpr float kMinFrameMetres = 0.05f;   // a fixed frame: 5 cm …
+inline constexpr float kMaxFrameMetres = 50.0f;   // … to 50 m (the scale's range)
 // The most bones a genome within these limits builds: root, skull, every vertebra, two ribs
 // per back vertebra, and per limb pair and side a girdle bone and three limb bones.
 inline constexpr int kMaxCreatureBones =

@@ -100,6 +100,33 @@ float size_measure(const Creature& c, SizeMeasure measure) {
   return hi > lo ? hi - lo : 0.0f;
 }
 
+float leg_height(const Creature& c) {
+  const float hip = size_measure(c, SizeMeasure::kHip);
+  if (hip > 0.0f) return hip;
+  const std::vector<Mat2x3> m = model_matrices(c.skeleton, c.rest_pose.locals.size() == static_cast<size_t>(c.skeleton.bone_count())
+                                                               ? c.rest_pose.locals
+                                                               : c.skeleton.rest_locals());
+  float height = 0.0f;
+  for (const Limb& l : c.limbs) {
+    if (l.kind != LimbKind::kLeg) continue;
+    height = std::max(height, bone_start(m[static_cast<size_t>(l.bones[0])]).y - c.ground_y_ms);
+  }
+  return height;
+}
+
+float true_size_scale(const Creature& c, double weight_kg, double body_volume_m3) {
+  if (!(body_volume_m3 > 0.0) || !(weight_kg > 0.0) || !(c.scale > 0.0f)) return c.scale;
+  const double size = std::cbrt(body_volume_m3);       // the body's own size at c.scale
+  const double true_size = std::cbrt(weight_kg) * kSizeRuleMetres;
+  // How leggy the body plan is: its leg height over its own size. Legless bodies and legs
+  // too short to stand take the volume rule alone; the clamp keeps a stub of a leg from
+  // ruling the size.
+  const double h = leg_height(c);
+  const double legginess = h > 0.0 ? std::clamp(h / size, 0.25, 4.0) : 1.0;
+  const double scale = c.scale * true_size / size * std::pow(legginess, kSizeRuleBodyPlan - 1.0);
+  return std::clamp(static_cast<float>(scale), kMinGenomeScale, kMaxGenomeScale);
+}
+
 std::optional<float> true_scale(const Creature& creature, const Genome& genome) {
   if (genome.options.true_size) return genome.scale;
   const PublishedSize* size = published_size(genome.name);
