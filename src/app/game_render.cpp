@@ -358,6 +358,8 @@ void Game::Impl::render(Game& game, float alpha) {
     const Animator& an = world.player()->animator();
     HudInfo info;
     info.creature = world.player()->name();
+    info.hip_height = an.hip_height();
+    info.blocked = describe_block(an.block_report());
     info.speed = an.velocity();
     info.walk_speed = an.walk_speed();
     info.run_speed = an.run_speed();

@@ -75,7 +75,9 @@ TEST_CASE("swing: a step onto and off a step clears its riser all the way", "[an
 }
 
 TEST_CASE("swing: a path through a wall is refused, an eased step stays on the ground", "[anim][swing]") {
-  const test::StageScene s(scenes::quadruped(),
+  // The horse in the 2 m frame, its body at x 4.3 behind the wall at x 5 (at its true size its
+  // head would be in the wall).
+  const test::StageScene s(scenes::example_in_frame("horse"),
                            Level({Box::from_corner(-40.0f, -1.0f, 80.0f, 1.0f), Box::from_corner(5.0f, -1.0f, 0.2f, 20.0f)}, {}), 4.3f);
   anim::FootState f;
   f.pos_ws = {4.8f, 0.0f};

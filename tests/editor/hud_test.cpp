@@ -59,6 +59,19 @@ TEST_CASE("the player HUD shows the name, the speed in km/h and the gait, develo
   CHECK(hud_lines(info, HudMode::kOff, 60.0f).empty());
 }
 
+TEST_CASE("the HUD shows the creature's size and why it stands blocked", "[editor]") {
+  HudInfo info = horse_trotting();
+  info.hip_height = 1.07f;
+  CHECK(hud_lines(info, HudMode::kPlayer, 60.0f)[0] == "horse (cursorial), hip 1.07 m");
+  info.creature = "frog";
+  info.hip_height = 0.031f;
+  info.blocked = "blocked: a step 0.25 m high ahead, its legs climb 0.01 m; too high to jump: a jump rises 0.03 m";
+  const auto player = hud_lines(info, HudMode::kPlayer, 60.0f);
+  CHECK(player[0] == "frog (cursorial), hip 3.1 cm");
+  CHECK(has(player, "too high to jump"));
+  CHECK(has(hud_lines(info, HudMode::kDeveloper, 60.0f), "its legs climb 0.01 m"));
+}
+
 TEST_CASE("H cycles the HUD: player, developer, off", "[editor]") {
   Hud hud;
   CHECK(hud.mode == HudMode::kPlayer);

@@ -132,7 +132,9 @@ TEST_CASE("walkers climb stairs up and down and cross rough ground without slidi
   const Level rough = shipped("rough.json");
   const Level stairs = shipped("stairs.json");  // 25 cm risers on 30 cm treads (40°)
   struct Case { Creature creature; const Level* level; float must_reach; };
-  const Creature magpie = build_creature(scenes::generator().example("magpie").value()).value();
+  // The magpie in the 2 m frame: at its true size (hip 11 cm) no step of these levels is within
+  // its legs; "small creatures stop at steps their legs cannot climb and say so" checks that.
+  const Creature magpie = scenes::example_in_frame("magpie");
   for (const Case& k : {Case{magpie, &level, 21.0f}, Case{magpie, &stairs, 30.0f},
                         Case{scenes::biped(), &level, 21.0f}, Case{scenes::biped(), &stairs, 30.0f},
                         Case{scenes::three_leg_pairs(), &level, 21.0f}, Case{scenes::three_leg_pairs(), &stairs, 30.0f},
@@ -149,7 +151,7 @@ TEST_CASE("walkers climb stairs up and down and cross rough ground without slidi
 
 TEST_CASE("walkers run up and down the steep flight of stairs.json without sliding or sinking", "[game][anim]") {
   const Level stairs = shipped("stairs.json");
-  const Creature magpie = build_creature(scenes::generator().example("magpie").value()).value();
+  const Creature magpie = scenes::example_in_frame("magpie");  // (as above)
   for (Creature c : {magpie, scenes::biped(), scenes::quadruped(), scenes::three_leg_pairs()}) {
     INFO(c.name);
     Walker w = make_walker(c, stairs, stairs.spawn_ws + glm::vec2(0.0f, 1.0f));
@@ -161,7 +163,7 @@ TEST_CASE("walkers run up and down the steep flight of stairs.json without slidi
 
 TEST_CASE("walkers stopped on the steep flight turn round and walk back down it", "[game][anim]") {
   const Level stairs = shipped("stairs.json");
-  const Creature magpie = build_creature(scenes::generator().example("magpie").value()).value();
+  const Creature magpie = scenes::example_in_frame("magpie");  // (at true size it never gets there)
   for (Creature c : {magpie, scenes::biped(), scenes::quadruped(), scenes::three_leg_pairs()}) {
     INFO(c.name);
     Walker w = make_walker(c, stairs, stairs.spawn_ws + glm::vec2(0.0f, 1.0f));
@@ -186,21 +188,56 @@ TEST_CASE("a trotting quadruped goes down the default level's stairs without sta
 
 TEST_CASE("example birds walk, run and turn round on every shipped level", "[game][anim]") {
   // Long, crouching legs on narrow steps: they land on the steps their legs reach and keep
-  // knees and thighs off the edges between.
+  // knees and thighs off the edges between. At their true size (the ostrich's hip 1.05 m, the
+  // pigeon's 18 cm, the sinornis' 4 cm) the small ones meet steps their legs cannot climb:
+  // they stop there and say so; in the 2 m frame every one of them climbs.
   const Level levels[] = {shipped("default.json"), shipped("stairs.json"), shipped("rough.json")};
   for (const char* name : {"pigeon", "ostrich", "sinornis", "ichthyornis"}) {
-    const Creature c = build_creature(scenes::generator().example(name).value()).value();
-    for (const Level& level : levels) {
-      for (const char* text : {"walk:0.6:30", "run:1:15", "walk:0.5:6,stop:1,walk:-0.6:6"}) {
-        INFO(name << " on " << level.name << ": " << text);
-        Walker w = make_walker(c, level, level.spawn_ws + glm::vec2(0.0f, 1.0f));
-        const SimResult r = run_script(*w.player, level, script(text), 120);
-        check_planted_and_clear(r);
-        for (const SegmentMetrics& s : r.segments) {
-          if (s.commanded_speed != 0.0f) CHECK(s.mean_speed * s.commanded_speed > 0.2f * s.commanded_speed * s.commanded_speed);
+    for (const bool true_size : {true, false}) {
+      const Creature c = true_size ? build_creature(scenes::generator().example(name).value()).value()
+                                   : scenes::example_in_frame(name);
+      for (const Level& level : levels) {
+        for (const char* text : {"walk:0.6:30", "run:1:15", "walk:0.5:6,stop:1,walk:-0.6:6"}) {
+          INFO(name << (true_size ? " at true size" : " in the 2 m frame") << " on " << level.name << ": " << text);
+          Walker w = make_walker(c, level, level.spawn_ws + glm::vec2(0.0f, 1.0f));
+          const SimResult r = run_script(*w.player, level, script(text), 120);
+          check_planted_and_clear(r);
+          for (const SegmentMetrics& s : r.segments) {
+            if (s.commanded_speed == 0.0f) continue;
+            INFO(s.command << ": " << s.blocked);
+            const bool moved = s.mean_speed * s.commanded_speed > 0.2f * s.commanded_speed * s.commanded_speed;
+            CHECK((moved || (true_size && s.blocked.starts_with("blocked: a step"))));
+          }
         }
       }
     }
+  }
+}
+
+TEST_CASE("small creatures stop at steps their legs cannot climb, say so, and jump where their legs allow", "[game][anim]") {
+  // default.json's first step is 10 cm high. The frog (hip 3 cm) and the sinornis (4 cm) stop
+  // at its foot and cannot jump it; the rock hyrax (15 cm) cannot step it but jumps onto it
+  // (its forefeet: the next riser, 15 cm more, holds it there).
+  const Level level = shipped("default.json");
+  struct Case { const char* name; bool jumps_on; };
+  for (const Case& k : {Case{"frog", false}, Case{"sinornis", false}, Case{"rock hyrax", true}}) {
+    INFO(k.name);
+    const SimResult r = run_example(k.name, level, "walk:0.6:20,jump,walk:0.6:5");
+    REQUIRE(r.segments.size() == 3);
+    const SegmentMetrics& at_step = r.segments[0];
+    CHECK(at_step.blocked.starts_with("blocked: a step 0.10 m high ahead"));
+    CHECK(r.blocked_s > 3.0f);
+    CHECK(r.locomotion.jumps == 1);
+    CHECK(r.locomotion.max_jump_height_m > 0.0f);
+    if (k.jumps_on) {
+      CHECK(at_step.blocked.find("; jump: a jump rises") != std::string::npos);
+      CHECK(r.locomotion.max_jump_height_m > 0.1f);
+      CHECK(r.x_reached > 10.0f);  // past the riser at x 10 it was held at
+    } else {
+      CHECK(at_step.blocked.find("too high to jump") != std::string::npos);
+      CHECK(r.segments[2].blocked.starts_with("blocked: a step 0.10 m high ahead"));
+    }
+    check_planted_and_clear(r);
   }
 }
 
@@ -218,7 +255,10 @@ TEST_CASE("long bodies at the steep flight keep wings and flippers out of the st
   for (const auto& k : cases) {
     for (const char* text : {"walk:0.6:30", "run:1:15"}) {
       INFO(k.name << ": " << text);
-      const SimResult r = run_example(k.name, level, text);
+      // In the 2 m frame: at its true size (hip 32 cm) the swan's legs climb none of these
+      // 25 cm risers (it stops at the foot of the flight and says so).
+      Walker w = make_walker(scenes::example_in_frame(k.name), level, level.spawn_ws + glm::vec2(0.0f, 1.0f));
+      const SimResult r = run_script(*w.player, level, script(text), 120);
       check_planted_and_clear(r);
       CHECK(r.x_reached > k.must_reach);
     }
@@ -266,9 +306,12 @@ TEST_CASE("animals keep their tails out of the steps", "[game][anim]") {
 
 TEST_CASE("legless swimmers crawl with their fins and spine out of the ground", "[game][anim]") {
   const Level rough = shipped("rough.json");
+  // rough.json's bumps are laid out for the 2 m frame: the 27 m blue whale would lie across the
+  // whole level; legless_test.cpp crawls it at true size on flat ground. The others at true size.
   for (const char* name : {"trout", "blue whale", "peloneustes"}) {
     INFO(name);
-    const Creature c = build_creature(scenes::generator().example(name).value()).value();
+    const Creature c = std::string_view(name) == "blue whale" ? scenes::example_in_frame(name)
+                                                               : build_creature(scenes::generator().example(name).value()).value();
     REQUIRE(c.limbs.size() >= 2);
     Walker w = make_walker(c, rough, rough.spawn_ws + glm::vec2(0.0f, 1.0f));
     const SimResult r = run_script(*w.player, rough, script("walk:0.6:10,stop:1,walk:-0.6:5"), 120);
@@ -545,7 +588,10 @@ TEST_CASE("a creature blocked at a step jumps onto it", "[game][anim][locomotion
   // forwards once it has risen above the step (the wall sweep used to stop the jump for good),
   // and the creature lands on the step and walks on up.
   const Level level = shipped("default.json");
-  Walker w = make_walker(build_creature(scenes::generator().random(42)).value(), level, level.spawn_ws + glm::vec2(0.0f, 1.0f));
+  // (In the 2 m frame, as the issue measured it: at its true size the creature is smaller.)
+  GenerateOptions framed;
+  framed.genome.true_size = false;
+  Walker w = make_walker(build_creature(scenes::generator().random(42, framed)).value(), level, level.spawn_ws + glm::vec2(0.0f, 1.0f));
   const Animator& a = w.player->animator();
   const SimResult before = run_script(*w.player, level, script("walk:0.5:10"), 120);
   REQUIRE(a.blocked());

@@ -35,7 +35,9 @@ Run run_family_script(const std::string& name) {
   auto creature = std::make_shared<const Creature>(build_creature(scenes::generator().example(name).value()).value());
   Player player(creature, SplinePrototypes::defaults());
   player.animator().reset({2.0f, 1.0f}, flat);
-  const SimResult r = run_script(player, flat, parse_script("walk:0.3:8,run:0.6:8,run:1:8").value(), 120);
+  // 12 s a segment: at its true size (hip 3 m) the tyrannosaurus' slow walk takes 2.5 s a
+  // stride, and the measure wants three after the segment's first second.
+  const SimResult r = run_script(player, flat, parse_script("walk:0.3:12,run:0.6:12,run:1:12").value(), 120);
   REQUIRE(r.segments.size() == 3);
   REQUIRE(r.probe.max_stance_slip_m <= 0.001f);
   REQUIRE(r.probe.max_stance_gap_m <= 0.001f);

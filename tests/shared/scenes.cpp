@@ -49,6 +49,13 @@ Creature biped() {
   return build_creature(g).value();
 }
 
+Creature example_in_frame(std::string_view name, float frame_m) {
+  GenerateOptions o;
+  o.genome.true_size = false;
+  o.genome.frame_m = frame_m;
+  return build_creature(generator().example(name, 1, o).value()).value();
+}
+
 Creature kangaroo() { return build_creature(generator().example("kangaroo").value()).value(); }
 
 Creature quadruped() { return build_creature(generator().example("horse").value()).value(); }
@@ -62,6 +69,7 @@ Creature three_leg_pairs() {
              LimbGene{LimbKind::kLeg, GirdleKind::kShoulder, 1, {}},
              LimbGene{LimbKind::kLeg, GirdleKind::kHip, 0, {}}};
   recompute_rest_angles(g);
+  generator().apply_size(g);  // the body changed: its true size with it
   return build_creature(g).value();
 }
 

@@ -30,6 +30,11 @@ namespace ossa::scenes {
 // The generator fitted on the shipped examples (loaded once per process).
 const Generator& generator();
 
+// Example `name` in a fixed frame of `frame_m` metres instead of its true size (the genome's
+// other size choice): the 2 m frame the shipped levels' steps were laid out for, where a test
+// is about how a creature meets steps rather than about its size.
+Creature example_in_frame(std::string_view name, float frame_m = 2.0f);
+
 }  // namespace ossa::scenes
 
 namespace ossa::scenes {

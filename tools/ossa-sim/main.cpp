@@ -445,6 +445,7 @@ int main(int argc, char** argv) {
                       {"duty_factor", m.duty_factor}, {"froude", m.froude},
                       {"gait", m.gait},             {"flight_phase", m.flight_phase},
                       {"airborne_s", m.airborne_s}, {"max_body_jolt_g", m.max_body_jolt_g},
+                      {"blocked", m.blocked},  // why it stood blocked at the segment's end, or ""
                       {"gait_family", m.gait_family},  // "" until the gait families land (gait_family_label)
                       // Measured from the feet and the root as simulated (GaitMeasure); null: not applicable
                       {"footfall_sequence", m.measured.footfall_sequence}, {"limb_phase", m.measured.limb_phase},
@@ -510,6 +511,11 @@ int main(int argc, char** argv) {
       out["update_us_per_creature"] = 1e6 * update_seconds / static_cast<double>(updates);
     }
     std::printf("%s\n", json_text(out, 2).c_str());
+  } else {
+    // A creature that ends a segment blocked says why (a step too high for a small one).
+    for (const SegmentMetrics& m : segments) {
+      if (!m.blocked.empty()) std::printf("%s: %s\n", m.command.c_str(), m.blocked.c_str());
+    }
   }
   return 0;
 }

@@ -5,6 +5,7 @@
 // owning stage). Every rule lives in its stage's file; here are only the calls, in order.
 
 #include <algorithm>
+#include <cstdio>
 #include <cmath>
 
 #include "ossa/anim/anim_math.h"
@@ -66,6 +67,56 @@ const Creature& Animator::creature() const {
 
 const Limb& Animator::leg_limb(int leg) const { return creature().limbs[leg_limb_[leg]]; }
 
+Animator::BlockReport Animator::block_report() const {
+  BlockReport r;
+  r.blocked = motion_.block.blocked;
+  r.climb_m = params_.max_step_up * rig_->climb_height;
+  r.step_down_m = params_.max_step_down * rig_->hip_height;
+  r.jump_m = params_.jump_height * rig_->hip_height;
+  if (!r.blocked || ground_.size() == 0) return r;
+  // Its feet: the lowest standing one, else where its hip height puts them.
+  float feet = INFINITY;
+  for (const anim::FootState& f : step_.feet.feet) {
+    if (f.state == LegState::kStance && !f.air) feet = std::min(feet, f.pos_ws.y);
+  }
+  if (!std::isfinite(feet)) feet = body_.root_y_ws - rig_->hip_height;
+  const int dir = motion_.block.dir != 0 ? motion_.block.dir : body_.facing;
+  const float half = 0.5f * rig_->scale.length;
+  const float a = body_.x_ws, b = body_.x_ws + dir * (half + std::max(gait_.stride, half));
+  const int i0 = ground_.column_of(std::min(a, b)), i1 = ground_.column_of(std::max(a, b));
+  for (int i = i0; i <= i1; ++i) {
+    const float h = ground_.column(i);
+    if (std::isnan(h)) {
+      r.drop_m = INFINITY;
+      continue;
+    }
+    r.rise_m = std::max(r.rise_m, h - feet);
+    r.drop_m = std::max(r.drop_m, feet - h);
+  }
+  return r;
+}
+
+std::string describe_block(const Animator::BlockReport& r) {
+  if (!r.blocked) return {};
+  char text[200];
+  if (r.rise_m > r.climb_m) {
+    std::snprintf(text, sizeof text, "blocked: a step %.2f m high ahead, its legs climb %.2f m; %s %.2f m",
+                  static_cast<double>(r.rise_m), static_cast<double>(r.climb_m),
+                  r.jump_m >= r.rise_m ? "jump: a jump rises" : "too high to jump: a jump rises",
+                  static_cast<double>(r.jump_m));
+  } else if (r.drop_m > r.step_down_m) {
+    if (std::isinf(r.drop_m)) {
+      std::snprintf(text, sizeof text, "blocked: a gap ahead with no ground its legs reach");
+    } else {
+      std::snprintf(text, sizeof text, "blocked: a drop of %.2f m ahead, its legs step down %.2f m",
+                    static_cast<double>(r.drop_m), static_cast<double>(r.step_down_m));
+    }
+  } else {
+    std::snprintf(text, sizeof text, "blocked: a wall or a foothold out of its reach ahead");
+  }
+  return text;
+}
+
 glm::vec2 Animator::foot_ws(int leg) const {
   const int b = rig_->legs[leg].contact_bone;
   return body_.to_ws(bone_end(pose_.facing[b], rig_->skeleton.length(b)));
@@ -122,6 +173,15 @@ void Animator::respawn(const Level& level) {
 
 void Animator::update(float dt, const AnimatorIntent& intent, const Level& level) {
   if (!(dt > 0.0f) || !std::isfinite(intent.velocity)) return;
+  // A small creature's gait cycles fast (the 3 cm frog hops 17 times a second, 7 ticks of
+  // 120 Hz a hop): a tick that long a part of the cycle left it 4 % short of the commanded
+  // speed. The tick splits into substeps, at least kSubstepsPerCycle a cycle (none for a
+  // creature whose cycle is that many ticks long: every animal from a rabbit up at 120 Hz).
+  const int n = std::clamp(static_cast<int>(std::ceil(gait_.frequency * dt * static_cast<float>(kSubstepsPerCycle))), 1, kMaxSubsteps);
+  for (int i = 0; i < n; ++i) tick(dt / static_cast<float>(n), i == 0 ? intent : AnimatorIntent{intent.velocity, false}, level);
+}
+
+void Animator::tick(float dt, const AnimatorIntent& intent, const Level& level) {
   const AnimRig& rig = *rig_;
   const float ism = std::max(params_.interpolation_speed_multiplier, 0.01f);
   if (dt != decay_.dt || ism != decay_.ism) {

@@ -40,6 +40,7 @@
 #include <cstdint>
 #include <cmath>
 #include <memory>
+#include <string>
 #include <vector>
 
 #include "ossa/anim/anim_rig.h"
@@ -86,7 +87,9 @@ class Animator {
   static constexpr float kResetSnapOfHip = 2.0f, kResetSnapMin = 1.5f;
 
   // One fixed step of dt seconds towards intent.velocity, jumping when asked. A creature that
-  // falls below the level's kill height starts again at the level's spawn.
+  // falls below the level's kill height starts again at the level's spawn. A creature whose
+  // gait cycles in fewer than 24 such steps (a frog at true size) takes the step in up to 8
+  // equal substeps, so that its motion does not depend on the tick rate.
   void update(float dt, const AnimatorIntent& intent, const Level& level);
   void update(float dt, float desired_velocity, const Level& level) { update(dt, AnimatorIntent{desired_velocity, false}, level); }
 
@@ -140,6 +143,18 @@ class Animator {
   // standing height this tick (trunk_bob.h), metres.
   const std::vector<float>& girdle_bob() const { return gait_.girdle_bob; }
   bool blocked() const { return motion_.block.blocked; }
+  // Why it stands blocked, for a HUD or a log (worked out when asked, from the ground the
+  // last tick saw): the ground ahead within a body length and a stride against what its legs
+  // climb and step down and how high its jump rises. A creature small for the level says so.
+  struct BlockReport {
+    bool blocked = false;
+    float rise_m = 0.0f;    // the highest ground ahead above its feet (0: none higher)
+    float drop_m = 0.0f;    // the deepest ground ahead below its feet (INFINITY: a gap)
+    float climb_m = 0.0f;   // the highest step its legs climb (params().max_step_up)
+    float step_down_m = 0.0f;  // the deepest step down its legs take (params().max_step_down)
+    float jump_m = 0.0f;    // how high its jump rises (params().jump_height)
+  };
+  BlockReport block_report() const;
   int steps() const { return step_.steps; }            // touch-downs so far
   float hip_height() const { return rig_->hip_height; } // h of the Froude number, metres
   // The gait family it moves by (params().gait_family, else the rig's: never kAuto).
@@ -188,6 +203,10 @@ class Animator {
   anim::PlacementInputs placement_inputs(float dt) const;
   void place_body(const anim::AnimContext& ctx, float dt);
   void finish_tick(const anim::AnimContext& ctx, float dt);
+  // One step of the pipeline (update splits a tick into these).
+  void tick(float dt, const AnimatorIntent& intent, const Level& level);
+  static constexpr int kSubstepsPerCycle = 24;
+  static constexpr int kMaxSubsteps = 8;
   // A part of the body in a box ahead (push_back_from_face): the body goes back out of it,
   // if that takes no more than `most` metres, and is posed again. Whether it went.
   bool go_back_from_face(const anim::AnimContext& ctx, float most);
@@ -215,5 +234,10 @@ class Animator {
   std::vector<int> hits_;
   std::vector<Box> body_boxes_;
 };
+
+// One line for a HUD or a log saying why the creature stands blocked ("" when it is not): a
+// step too high for its legs (and whether a jump would rise over it), a drop too deep, a gap,
+// or a wall.
+std::string describe_block(const Animator::BlockReport& report);
 
 }  // namespace ossa

@@ -48,6 +48,16 @@ std::string format(const char* fmt, auto... args) {
   return buf;
 }
 
+// "horse (quadruped), hip 1.07 m": the name, the gait family and the size (a 3 cm frog and a
+// 3 m dinosaur look alike on a screen that frames each by its size).
+std::string name_line(const HudInfo& info) {
+  std::string line = info.family.empty() ? info.creature : info.creature + " (" + info.family + ")";
+  if (info.hip_height > 0.0f) {
+    line += info.hip_height < 0.1f ? format(", hip %.1f cm", info.hip_height * 100.0f) : format(", hip %.2f m", info.hip_height);
+  }
+  return line;
+}
+
 }  // namespace
 
 std::vector<std::string> hud_lines(const HudInfo& info, HudMode mode, float fps) {
@@ -55,16 +65,17 @@ std::vector<std::string> hud_lines(const HudInfo& info, HudMode mode, float fps)
   if (mode == HudMode::kOff) return lines;
   if (mode == HudMode::kPlayer) {
     const bool grounded = info.locomotion.empty() || info.locomotion == "grounded";
-    lines.push_back(info.family.empty() ? info.creature : info.creature + " (" + info.family + ")");
+    lines.push_back(name_line(info));
     lines.push_back(format("%.1f km/h  %s%s", std::abs(info.speed) * 3.6f, info.gait.c_str(),
                            grounded ? "" : (" (" + info.locomotion + ")").c_str()));
+    if (!info.blocked.empty()) lines.push_back(info.blocked);
     if (info.recording) lines.push_back("REC replay");
     if (info.gif) lines.push_back("GIF capture");
     if (!info.status.empty()) lines.push_back(info.status);
     lines.push_back("H: more, F2: editors");
     return lines;
   }
-  lines.push_back(info.family.empty() ? info.creature : info.creature + " (" + info.family + ")");
+  lines.push_back(name_line(info));
   lines.push_back(format("speed   %6.2f m/s  %.1f km/h  (walk %.2f, run %.2f)", info.speed, std::abs(info.speed) * 3.6f,
                          info.walk_speed, info.run_speed));
   lines.push_back(format("gait    %s  (%s)", info.gait.c_str(), info.locomotion.c_str()));
@@ -74,6 +85,7 @@ std::vector<std::string> hud_lines(const HudInfo& info, HudMode mode, float fps)
     if (info.fast_speed > 0.0f) bands += format(" < %.2f < ", info.fast_speed) + info.gaits[2];
     lines.push_back(bands);
   }
+  if (!info.blocked.empty()) lines.push_back(info.blocked);
   lines.push_back(format("Froude  %6.2f", info.froude));
   lines.push_back(format("FPS     %6.1f  (%.2f ms)  sim %d Hz", fps, fps > 0.0f ? 1000.0f / fps : 0.0f, info.tick_hz));
   lines.push_back("input   " + info.input);

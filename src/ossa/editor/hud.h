@@ -1,7 +1,7 @@
 #pragma once
 // Hud — the overlay (Dear ImGui, DESIGN.md §8) in three modes, cycled by H (off, player,
-// developer): for players the creature's name, its speed in km/h and its gait, with a line of
-// key help; for developers also the speed in m/s with the walk and run speeds, the gait bands,
+// developer): for players the creature's name and size, its speed in km/h and its gait, why it
+// stands blocked when it does (a step too high for a small creature), with a line of key help; for developers also the speed in m/s with the walk and run speeds, the gait bands,
 // the Froude number, the frame rate, a graph of recent frame times, the input and all the keys.
 // Needs a current ImGui frame (NewFrame called); draws one small window in a corner.
 
@@ -14,6 +14,8 @@ namespace ossa {
 // What the HUD shows this frame.
 struct HudInfo {
   std::string creature;        // the player's creature name
+  float hip_height = 0.0f;     // its size: the hip height, m (Animator::hip_height(); 0: not shown)
+  std::string blocked;         // why it stands blocked (describe_block), or ""
   float speed = 0.0f;          // m/s, signed (+ right)
   float walk_speed = 0.0f;     // m/s at Froude 0.5, for reference
   float run_speed = 0.0f;      // m/s of the full run (Animator::run_speed())

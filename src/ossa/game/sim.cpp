@@ -186,6 +186,7 @@ SimResult run_script(Entity& entity, const Level& level, const std::vector<Scrip
       m.gait_family = most_frequent(families);
       m.measured = measure_gait(timeline, legs, dt, entity.animator().hip_height());
     }
+    m.blocked = describe_block(entity.animator().block_report());
     result.segments.push_back(m);
   }
   result.x_reached = entity.animator().x();

@@ -77,6 +77,7 @@ struct SegmentMetrics {
   std::string gait_family;    // most frequent gait_family_label() in the window
   bool flight_phase = false;  // a tick with every foot in the air (moving segments)
   float airborne_s = 0;       // s in the air (Animator::airborne(): jumps and falls)
+  std::string blocked;        // why it stood blocked at the segment's end (describe_block), or ""
   // The gait measured from the feet (LegState::kStance per leg) and the root's height as
   // simulated, not from the animator's intended offsets (measure_gait, gait_metrics.h): footfall
   // sequence, limb phase, pair phases, duty factor, suspensions per stride, vertical excursion
