@@ -323,7 +323,15 @@ TEST_CASE("sprite meshes: skinning the rest pose gives the rest pose, weights su
                                        mesh.bone_sprites[static_cast<size_t>(l.bones[2])] == SpriteId::kFlatFoot);
       }
       CHECK(mesh.mid_joints.size() - level == (smooth ? kSmoothJointFrames * joints : 0));
-      CHECK((smooth ? level <= c.limbs.size() : level == 0));
+      // One level frame per leg whose foot's sprite has a contact part (hoof, paw, bird's
+      // toes), whatever the foot's rest angle: a pig's hind hoof stands straight down at rest
+      // (its contact part turned by 0) and still rolls over its tip in stance.
+      size_t contact_feet = 0;
+      for (const Limb& l : c.limbs) {
+        contact_feet += l.kind == LimbKind::kLeg && l.bones[2] >= 0 &&
+                        sprites[mesh.bone_sprites[static_cast<size_t>(l.bones[2])]].contact_from >= 0.0f;
+      }
+      CHECK(level == (smooth ? contact_feet : 0));
       // Layer ranges: ordered, covering all indices, each triangle in the layer of its bone.
       REQUIRE(mesh.layer_begin[0] == 0);
       REQUIRE(mesh.layer_begin[3] == mesh.indices.size());
