@@ -85,7 +85,10 @@ SpriteMeshOptions rigid() {
   return o;
 }
 
-float tolerance(const Creature& c) { return 1e-4f * std::max(1.0f, c.scale * 1000.0f); }
+// 0.1 frame units (0.2 mm in the 2 m frame): in the creature's own size, so that a 3 cm frog is
+// held as tightly as a horse (1e-4 m would be a frame unit of it); float rounding is ~1e-7 of
+// the creature.
+float tolerance(const Creature& c) { return 0.1f * c.scale; }
 
 std::string write_temp(const std::string& name, const std::string& text) {
   const std::string path = (std::filesystem::temp_directory_path() / name).string();
