@@ -164,7 +164,19 @@ TEST_CASE("glTF export keeps smooth skinning's weights through ossa's rigged-mes
       CHECK(most == max_weights_per_vertex(sprites));
       CHECK(most == (smooth ? 2 : 1));
       CHECK((smooth ? blended > 0 : blended == 0));
-      if (!smooth) continue;
+      if (!smooth) {
+        // A rigid bone without a length (the root) is a small square in the creature's own
+        // size: 1 % of its frame across, not a fixed centimetre (a ninth of the frog's frame).
+        const std::vector<Mat2x3> model = model_matrices(c->skeleton, c->rest_pose.locals);
+        for (const RiggedVertex& v : loaded->vertices) {
+          const int bone = c->skeleton.find(loaded->bones[v.bones[0]].name);
+          REQUIRE(bone >= 0);
+          if (c->skeleton.length(bone) > 0.0f) continue;
+          const glm::vec2 start = bone_start(model[static_cast<size_t>(bone)]);
+          CHECK(glm::length(v.position - start) <= frame_tolerance(*c, 10.0f * std::sqrt(2.0f) + 0.05f));
+        }
+        continue;
+      }
       // The rest pose: every loaded vertex skinned by the rest palette lies on the sprite mesh
       // as drawn at rest (the same set of points).
       const std::vector<Mat2x3> palette = rigged_palette(*loaded, rest_locals(*loaded));
