@@ -86,13 +86,21 @@ SpriteFrame sprite_frame(const SpriteInfo& info, float length, float width, bool
 
 namespace {
 
+// Whether the bone is a leg's hand bone whose sprite has a contact part (toes, hoof, claws).
+// Such a foot gets a level frame and the contact ramp whatever its rest angle: a foot that
+// stands straight down at rest (a pig's hind hoof) turns its contact part by 0, and still
+// needs the level frame to keep it flat while the bone rolls over it in stance.
+bool has_contact_part(const Creature& c, int bone, const SpriteInfo& info) {
+  return s_kind_hand(c, bone) >= 0 && info.contact_from >= 0.0f;
+}
+
 // A sprite's drawn half height (metres) — the joint's thickness as the sprite shows it.
 // How far a foot's contact part turns (radians, in the bone's frame) so it stands on the ground
 // in the rest pose: the angle from the bone's direction to straight down, for the hand bone of
-// a leg whose sprite has a contact part (0 otherwise).
+// a leg whose sprite has a contact part (0 otherwise, and 0 for a foot straight down).
 constexpr float kContactRamp = 0.06f;
 float contact_angle(const Creature& c, int bone, const SpriteInfo& info, const Mat2x3& rest) {
-  if (s_kind_hand(c, bone) < 0 || info.contact_from < 0.0f) return 0.0f;
+  if (!has_contact_part(c, bone, info)) return 0.0f;
   // World down in the bone's frame (the rest frame's inverse rotation; a mirror flips it).
   const glm::vec2 x(rest.m[0], rest.m[1]), y(rest.m[2], rest.m[3]);
   const glm::vec2 down(glm::dot(glm::vec2(0.0f, -1.0f), x) / std::max(glm::dot(x, x), 1e-12f),
@@ -271,7 +279,7 @@ SpriteMesh build_sprite_mesh(const Creature& creature, const SpriteSet& sprites,
   std::vector<int> level_entry(static_cast<size_t>(n), -1);
   for (int b = 0; b < n && smooth; ++b) {
     const SpriteInfo& info = sprites[mesh.bone_sprites[static_cast<size_t>(b)]];
-    if (contact_angle(creature, b, info, rest[static_cast<size_t>(b)]) == 0.0f) continue;
+    if (!has_contact_part(creature, b, info)) continue;
     if (n + static_cast<int>(mesh.mid_joints.size()) >= kMaxSpriteMeshBones + 1) break;
     MidJoint j;
     j.level = true;
@@ -328,7 +336,7 @@ SpriteMesh build_sprite_mesh(const Creature& creature, const SpriteSet& sprites,
     // point (the child anchor, the bone's end) from the bone's direction to straight down,
     // ramping in over kContactRamp of u before contact_from (SpriteInfo::contact_from).
     const float contact_turn = contact_angle(creature, bone, info, rest[static_cast<size_t>(bone)]);
-    const bool contact = contact_turn != 0.0f;
+    const bool contact = has_contact_part(creature, bone, info);
     const float ramp_from = info.contact_from - kContactRamp;
     const auto turn = [&](glm::vec2 p, float u) {
       if (!contact || u <= ramp_from) return p;

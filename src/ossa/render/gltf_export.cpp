@@ -19,6 +19,7 @@
 #include "ossa/body/body_mesh.h"
 #include "ossa/body/coat.h"
 #include "ossa/io/file.h"
+#include "ossa/io/json.h"
 #include "ossa/draw/sprite_mesh.h"
 #include "ossa/skeleton/pose.h"
 
@@ -115,7 +116,10 @@ ExportMesh rigid_quads(const Creature& creature, const std::vector<Mat2x3>& mode
   static constexpr float kCorner[4][2] = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
   for (int i = 0; i < s.bone_count(); ++i) {
     const Mat2x3& m = model[static_cast<size_t>(i)];
-    const float fallback = 0.01f * std::max(1.0f, creature.scale * 1000.0f);
+    // A bone without a length or width gets a square 1 % of the creature's frame (2 cm in
+    // the 2 m frame), in its own size: not at least 1 cm, a fifth of a 5 cm creature.
+    const float unit = creature.scale > 0.0f && std::isfinite(creature.scale) ? creature.scale : 0.002f;
+    const float fallback = 10.0f * unit;
     float length = s.length(i), width = s.width(i);
     if (!(length > 0.0f) || !std::isfinite(length)) length = std::max(width, fallback);
     if (!(width > 0.0f) || !std::isfinite(width)) width = std::max(0.15f * length, fallback);
@@ -295,6 +299,64 @@ aiMesh* skinned_mesh(const ExportMesh& geometry, const Skeleton& s, const std::v
   return mesh;
 }
 
+// Assimp 5.2's glTF 2.0 exporter writes a node's matrix only when aiMatrix4x4::IsIdentity()
+// is false, and IsIdentity allows 0.01 in every entry: a translation under 1 cm with a turn
+// under 0.01 rad is taken for the identity and left out, so the node loads at its parent's
+// frame. The 2 m frame mostly hid it (bones there are rarely under 1 cm apart); at true size
+// a pigeon's vertebrae (5 mm apart, turning a few milliradians) all lost their transforms and
+// its skinned rest pose came back up to 7 cm from the body as drawn. A bone at its parent's
+// joint turning less than 0.01 rad was lost at any size.
+// This puts back every matrix Assimp left out: it walks the written node tree alongside
+// `node` (the exporter keeps the order of children) and gives each node without a transform
+// its mTransformation, unless that is exactly the identity (glTF's default). Fails when the
+// two trees differ (an exporter that reorders nodes).
+Status restore_node_matrices(Json& gltf, size_t index, const aiNode& node, const std::string& path, int depth) {
+  Json& nodes = gltf["nodes"];
+  if (!nodes.is_array() || index >= nodes.size() || depth > kMaxJsonDepth) {
+    return Error::at(path, "nodes", "the glTF exporter wrote an unexpected node tree");
+  }
+  Json& out = nodes[index];
+  if (!out.is_object()) return Error::at(path, json_path("nodes", index), "the glTF exporter wrote an unexpected node");
+  if (!out.contains("matrix") && !out.contains("translation") && !out.contains("rotation") &&
+      !out.contains("scale") && !(node.mTransformation == aiMatrix4x4())) {
+    const aiMatrix4x4& t = node.mTransformation;
+    out["matrix"] = Json::array({json_float(t.a1), json_float(t.b1), json_float(t.c1), json_float(t.d1),
+                                 json_float(t.a2), json_float(t.b2), json_float(t.c2), json_float(t.d2),
+                                 json_float(t.a3), json_float(t.b3), json_float(t.c3), json_float(t.d3),
+                                 json_float(t.a4), json_float(t.b4), json_float(t.c4), json_float(t.d4)});
+  }
+  const Json children = out.value("children", Json::array());
+  if (!children.is_array() || children.size() != node.mNumChildren) {
+    return Error::at(path, json_path("nodes", index), "the glTF exporter wrote an unexpected node tree");
+  }
+  for (unsigned k = 0; k < node.mNumChildren; ++k) {
+    if (!children[k].is_number_unsigned()) {
+      return Error::at(path, json_path("nodes", index), "the glTF exporter wrote an unexpected node tree");
+    }
+    if (Status s = restore_node_matrices(gltf, children[k].get<size_t>(), *node.mChildren[k], path, depth + 1); !s.ok()) return s;
+  }
+  return {};
+}
+
+// The .gltf text Assimp wrote, with the node matrices it left out (above).
+Result<std::string> with_node_matrices(const std::string& text, const aiScene& scene, const std::string& path) {
+  Result<Json> gltf = parse_json(text, path);
+  if (!gltf.ok()) return gltf.error();
+  Json& doc = gltf.value();
+  const Json no_scene;
+  const Json& index = doc.is_object() && doc.contains("scene") ? doc["scene"] : no_scene;
+  const size_t scene_index = index.is_number_unsigned() ? index.get<size_t>() : 0;
+  const Json& scenes = doc.is_object() && doc.contains("scenes") ? doc["scenes"] : no_scene;
+  const Json& roots = scenes.is_array() && scene_index < scenes.size() && scenes[scene_index].is_object() &&
+                              scenes[scene_index].contains("nodes") ? scenes[scene_index]["nodes"] : no_scene;
+  if (!roots.is_array() || roots.size() != 1 || !roots[0].is_number_unsigned()) {
+    return Error::at(path, "scenes", "the glTF exporter wrote an unexpected scene");
+  }
+  const size_t root = roots[0].get<size_t>();
+  if (Status s = restore_node_matrices(doc, root, *scene.mRootNode, path, 0); !s.ok()) return s.error();
+  return json_text(doc, 4);
+}
+
 }  // namespace
 
 Status export_gltf(const Creature& creature, const std::string& path, const GltfOptions& options) {
@@ -406,6 +468,9 @@ Status export_gltf(const Creature& creature, const std::string& path, const Gltf
     }
   }
   if (files.count(path) == 0) return Error::at(path, "", "glTF export wrote no file");
+  Result<std::string> text = with_node_matrices(files[path], *scene, path);
+  if (!text.ok()) return text.error();
+  files[path] = std::move(text.value());
   // The buffers first, the .gltf that refers to them last.
   for (const auto& [file, bytes] : files) {
     if (file == path) continue;
