@@ -97,7 +97,7 @@ TEST_CASE("the size rule knows only weight and body plan: heavier is bigger, the
   }
 }
 
-TEST_CASE("true size spans a 3 cm frog to a 27 m whale; the body weighs what the weight says", "[gen][size][body]") {
+TEST_CASE("true size spans a 3 cm frog to a 27 m whale, the body weighs what the weight says", "[gen][size][body]") {
   const Creature frog = example("frog");
   const Creature whale = example("blue whale");
   CHECK(size_measure(frog, SizeMeasure::kHip) < 0.05f);
@@ -116,7 +116,7 @@ TEST_CASE("true size spans a 3 cm frog to a 27 m whale; the body weighs what the
   }
 }
 
-TEST_CASE("a genome file keeps its size choice; files from before it keep their frame", "[gen][size][io]") {
+TEST_CASE("a genome file keeps its size choice, files from before it keep their frame", "[gen][size][io]") {
   const Genome g = scenes::generator().example("rabbit").value();
   const Genome back = genome_from_json(genome_to_json(g), "rabbit.creature.json").value();
   CHECK(back.options.true_size);

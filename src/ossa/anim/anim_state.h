@@ -102,6 +102,9 @@ struct GirdleJointFs {
 //   easing                     ⇒ state == kSwing.
 struct FootState {
   LegState state = LegState::kStance;
+  std::uint32_t plantings = 0;      // times it was set down (a swing's touch-down, plant()): a
+                                    // new stance, for a probe that samples less often than the
+                                    // animator steps (a tick of substeps)
   glm::vec2 pos_ws{0.0f};           // contact point target
   glm::vec2 from_ws{0.0f}, to_ws{0.0f};
   HermiteSpline swing_x, swing_y;   // blended prototypes of this swing (set_new_splines)

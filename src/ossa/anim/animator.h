@@ -177,6 +177,9 @@ class Animator {
   int leg_count() const { return static_cast<int>(rig_->legs.size()); }
   // [T] leg_state: stance or swing of leg i.
   LegState leg_state(int leg) const { return step_.feet.of_leg(leg).state; }
+  // Times leg i's foot was set down since the reset: a change between two looks is a new stance
+  // even when the foot stands at both (a tick of substeps may hold a whole swing).
+  std::uint32_t plantings(int leg) const { return step_.feet.of_leg(leg).plantings; }
   // The creature's limb that leg i is (has_creature() only).
   const Limb& leg_limb(int leg) const;
   // Where leg i's contact point (tip, or heel for flat contact) is meant to be, world space.

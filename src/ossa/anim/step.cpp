@@ -65,6 +65,7 @@ void hang(const AnimContext& ctx, const BodyFrame& body, int leg, float extensio
 
 void plant(const AnimContext& ctx, FootState& f, glm::vec2 p) {
   f.state = LegState::kStance;
+  ++f.plantings;
   f.air = false;
   f.pos_ws = f.from_ws = f.to_ws = p;
   f.progress = 0.0f;

@@ -311,6 +311,7 @@ bool advance_swing(const FootholdInputs& in, const SwingTick& tick, int leg, Foo
   if (f.progress >= 1.0f) {
     f.hover = 0.0f;
     f.state = LegState::kStance;
+    ++f.plantings;
     f.pos_ws = f.to_ws;
     f.easing = false;
     note_ledge(ctx, f);

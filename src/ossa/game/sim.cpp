@@ -328,6 +328,7 @@ void SimProbe::observe(const Animator& a, const Level& level) {
   if (static_cast<int>(stance_anchor_.size()) != legs) {
     stance_anchor_.assign(legs, glm::vec2(0.0f));
     stance_since_.assign(legs, -1);
+    plantings_.assign(legs, 0);
   }
   // A turn, or a start again at the spawn, plants every foot anew.
   const bool turned = (last_facing_ != 0 && a.facing() != last_facing_) || a.locomotion_stats().respawns != last_respawns_;
@@ -336,9 +337,10 @@ void SimProbe::observe(const Animator& a, const Level& level) {
     const glm::vec2 foot = a.foot_ws(i);
     if (a.leg_state(i) == LegState::kStance) {
       max_stance_gap_m = std::max(max_stance_gap_m, glm::length(foot - a.foot_target_ws(i)));
-      if (stance_since_[i] < 0 || turned) {
+      if (stance_since_[i] < 0 || turned || a.plantings(i) != plantings_[i]) {
         stance_anchor_[i] = foot;
         stance_since_[i] = static_cast<int>(ticks_);
+        plantings_[i] = a.plantings(i);
       } else {
         max_stance_slip_m = std::max(max_stance_slip_m, glm::length(foot - stance_anchor_[i]));
       }

@@ -142,6 +142,7 @@ class SimProbe {
  private:
   std::vector<glm::vec2> stance_anchor_;
   std::vector<int> stance_since_;
+  std::vector<std::uint32_t> plantings_;  // per leg: Animator::plantings when its stance began
   std::vector<uint8_t> limb_bone_;    // per bone: a leg's, arm's, fin's or wing's
   const AnimRig* limb_rig_ = nullptr;
   std::vector<float> root_y_;         // the root's height, the last window's ticks
