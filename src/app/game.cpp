@@ -113,6 +113,7 @@ Status Game::init(const GameOptions& o) {
   std::string level_path = o.level;
   if (!o.replay.empty()) {
     if (sources > 0) return Error{"--replay brings its own creature: drop --creature/--example/--seed/--character"};
+    if (o.size) return Error{"--replay brings its own creature: drop --size true|FRAME_M"};
     auto r = load_replay(o.replay);
     if (!r.ok()) return r.error();
     m.playback = std::move(r.value());
@@ -134,6 +135,7 @@ Status Game::init(const GameOptions& o) {
   auto generator = Generator::load(resolve_data_path("assets/creatures/examples.json"), ossa::body_volume_m3);
   if (!generator.ok()) return generator.error();
   m.generator = std::make_unique<Generator>(std::move(generator.value()));
+  if (o.size) o.size->apply_to(m.generate.genome);
 
   // A rigged character: from --character or the replay.
   std::string character_path = o.character;
@@ -147,7 +149,7 @@ Status Game::init(const GameOptions& o) {
 
   Genome genome;
   if (character) {
-    auto g = m.generator->example(kDefaultExample);  // kept for N (next example) and the window title
+    auto g = m.generator->example(kDefaultExample, 1, m.generate);  // kept for N (next example) and the window title
     if (!g.ok()) return g.error();
     genome = std::move(g.value());
   } else if (m.playback) {
@@ -158,11 +160,15 @@ Status Game::init(const GameOptions& o) {
     auto g = load_genome(o.creature_file);
     if (!g.ok()) return g.error();
     genome = std::move(g.value());
+    if (o.size) {  // resized: its scale made again for the size asked for
+      o.size->apply_to(genome.options);
+      m.generator->apply_size(genome);
+    }
   } else if (o.seed) {
-    genome = m.generator->random(*o.seed);
+    genome = m.generator->random(*o.seed, m.generate);
   } else {
     const std::string name = o.example.empty() ? kDefaultExample : o.example;
-    auto g = m.generator->example(name);
+    auto g = m.generator->example(name, 1, m.generate);
     if (!g.ok()) return g.error();
     genome = std::move(g.value());
   }
@@ -208,7 +214,7 @@ Status Game::init(const GameOptions& o) {
                         0x9e3779b97f4a7c15ull * static_cast<uint64_t>(i + 1));
       continue;
     }
-    auto g = m.generator->example(kNpcExamples[i % std::size(kNpcExamples)], 7 + i);
+    auto g = m.generator->example(kNpcExamples[i % std::size(kNpcExamples)], 7 + i, m.generate);
     if (!g.ok()) return g.error();
     auto c = make_creature(g.value());
     if (!c.ok()) return c.error();
@@ -246,7 +252,7 @@ void Game::next_example() {
   // builds; an example that fails to build is skipped.
   for (int tries = 0; tries < n; ++tries) {
     m.example_index = (m.example_index + 1) % n;
-    auto g = m.generator->example(m.generator->dataset().animals[m.example_index].name);
+    auto g = m.generator->example(m.generator->dataset().animals[m.example_index].name, 1, m.generate);
     if (!g.ok()) continue;
     if (m.switch_creature(*world_, g.value())) return;
   }
@@ -255,7 +261,7 @@ void Game::next_example() {
 void Game::random_creature() {
   Impl& m = *impl_;
   for (int tries = 0; tries < 8; ++tries) {
-    if (m.switch_creature(*world_, m.generator->random(m.random_seed++))) return;
+    if (m.switch_creature(*world_, m.generator->random(m.random_seed++, m.generate))) return;
   }
 }
 

@@ -26,6 +26,7 @@
 #include "ossa/body/body_mesh.h"
 #include "ossa/game/controls.h"
 #include "ossa/game/replay.h"
+#include "ossa/gen/genome.h"
 #include "ossa/game/world.h"
 #include "ossa/editor/hud.h"
 #include "ossa/io/result.h"
@@ -50,6 +51,10 @@ struct GameOptions {
   std::optional<uint64_t> seed;
   // ... or a rigged character: its rig mapping (.rig.json); exclusive with the three above.
   std::string character;
+  // The size of every creature the game makes (the player, the NPCs, the next example and
+  // random creatures) and of a --creature genome: unset, examples and random creatures at their
+  // true size and genome files as saved (GenomeOptions::true_size, frame_m).
+  std::optional<SizeChoice> size;
   int npcs = 3;                 // NPC walkers, [0, 64]
   bool npc_characters = false;  // every other NPC is one of the shipped rigged characters
   std::string replay;           // play this replay file back

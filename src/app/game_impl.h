@@ -29,6 +29,7 @@ namespace ossa {
 struct Game::Impl {
   // Loading.
   std::unique_ptr<Generator> generator;
+  GenerateOptions generate;      // of every creature made: the size choice (GameOptions::size)
   Genome genome;                 // the player's
   int example_index = 0;         // into the dataset, for cycling
   uint64_t random_seed = 1000;

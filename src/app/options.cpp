@@ -6,7 +6,8 @@
 
 namespace ossa {
 
-const char* const kGameUsage = R"(usage: ossa [--level F] [--creature F | --example NAME | --seed N | --character F] [--npcs N]
+const char* const kGameUsage = R"(usage: ossa [--level F] [--creature F | --example NAME | --seed N | --character F]
+            [--size true|FRAME_M] [--npcs N]
             [--replay F] [--record F] [--headless --frames N] [--png F] [--gif F]
             [--state F] [--hz N] [--threads N] [options]
 
@@ -21,6 +22,11 @@ Walk a generated creature over a box level with a gamepad or the keyboard.
   --seed N          ... or a random creature drawn with seed N
   --character F     ... or a rigged character: its rig mapping (.rig.json, e.g.
                     assets/characters/humanoid.rig.json) and the skinned mesh it names
+  --size true|FRAME_M  the size of every creature the game makes (the player, the NPCs, N
+                    and M): true (default: the animal's true size from its weight and body
+                    plan) or a fixed frame of FRAME_M metres (0.05 to 50, e.g. 2: every
+                    creature as big as a pony); a --creature genome is resized (default: as
+                    saved). --size WxH is the window's size (below)
   --npcs N          NPC walkers roaming the level, 0-64 (default 3)
   --npc-characters  every other NPC is one of the shipped rigged characters
   --replay F        play a replay file back (its creature, spawn and tick rate)
@@ -145,8 +151,18 @@ Result<ParsedArgs> parse_game_args(const std::vector<std::string>& args) {
     } else if (flag == "--fps-cap") {
       s = number(0, 1000, o.fps_cap);
     } else if (flag == "--size") {
+      // Two sizes, told apart by their form: the window's (WIDTHxHEIGHT) and the creatures'
+      // (true, or a frame in metres: a number).
       if (!value()) {
         s = Error{flag + ": missing value"};
+      } else if (v.find('x') == std::string::npos) {
+        auto size = parse_size_arg(flag, v);
+        if (!size.ok()) {
+          s = Error{flag + ": expected true or a frame in metres (a number in [0.05, 50]) for the creatures, or "
+                           "WIDTHxHEIGHT for the window, got \"" + v + "\""};
+        } else {
+          o.size = size.value();
+        }
       } else {
         const size_t x = v.find('x');
         auto w = parse_int_arg(flag + " width", x == std::string::npos ? v : v.substr(0, x), 16, 8192);
@@ -175,6 +191,7 @@ Result<ParsedArgs> parse_game_args(const std::vector<std::string>& args) {
                       (o.character.empty() ? 0 : 1);
   if (sources > 1) return Error{"give only one of --creature, --example, --seed, --character"};
   if (!o.replay.empty() && sources > 0) return Error{"--replay brings its own creature: drop --creature/--example/--seed/--character"};
+  if (!o.replay.empty() && o.size) return Error{"--replay brings its own creature: drop --size true|FRAME_M"};
   if (frames_set && !o.headless && o.frames <= 0) return Error{"--frames: expected an integer >= 1"};
   if (o.headless) {
     o.demo = o.replay.empty();

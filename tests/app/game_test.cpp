@@ -733,3 +733,56 @@ TEST_CASE("a slow frame runs at most max_steps_per_frame ticks and drops the res
   for (int i = 0; i < 120; ++i) REQUIRE(game.frame(1.0 / 60.0));
   CHECK(static_cast<double>(game.world().tick() - t0) == Approx(480.0).margin(1.0));
 }
+
+TEST_CASE("ossa --size: the creatures the game makes in a fixed frame, a genome file resized, WxH still the window", "[app]") {
+  // Told apart by their form: true or a number is the creatures' size, WxH the window's.
+  auto p = parse_game_args({"--size", "2", "--size", "320x180"});
+  REQUIRE(p.ok());
+  REQUIRE(p->options.size);
+  CHECK_FALSE(p->options.size->true_size);
+  CHECK(p->options.size->frame_m == 2.0f);
+  CHECK(p->options.width == 320);
+  CHECK(p->options.height == 180);
+  CHECK(parse_game_args({"--size", "true"})->options.size->true_size);
+  CHECK_FALSE(parse_game_args({"--example", "horse"})->options.size);  // unset: true size, files as saved
+  const auto bad = parse_game_args({"--size", "big"});
+  REQUIRE_FALSE(bad.ok());
+  CHECK(bad.message().find("--size: expected true or a frame in metres") != std::string::npos);
+  CHECK_FALSE(parse_game_args({"--size", "0.01"}).ok());
+  CHECK_FALSE(parse_game_args({"--size", "2", "--replay", "x.json"}).ok());
+
+  use_offscreen();
+  {
+    GameOptions o = quiet_options();
+    o.npcs = 1;
+    o.size = SizeChoice{false, 2.0f};
+    Game game;
+    REQUIRE(game.init(o).ok());
+    CHECK(game.world().player()->creature().scale == Approx(0.002f));
+    game.next_example();  // N keeps the size
+    CHECK(game.world().player()->creature().scale == Approx(0.002f));
+    game.random_creature();  // M too
+    CHECK(game.world().player()->creature().scale == Approx(0.002f));
+  }
+
+  // A genome file (the horse at its true size) is resized by --size, and kept as saved without
+  // it. One game at a time (each has its window and ImGui context).
+  const std::string file = temp_dir() + "/true_horse.creature.json";
+  auto generator = Generator::load(resolve_data_path("assets/creatures/examples.json"), ossa::body_volume_m3);
+  REQUIRE(generator.ok());
+  auto horse = generator->example("horse");
+  REQUIRE(horse.ok());
+  REQUIRE(horse->scale > 0.0022f);
+  REQUIRE(save_genome(file, *horse).ok());
+  GameOptions from_file = quiet_options();
+  from_file.creature_file = file;
+  {
+    Game as_saved;
+    REQUIRE(as_saved.init(from_file).ok());
+    CHECK(as_saved.world().player()->creature().scale == Approx(horse->scale));
+  }
+  from_file.size = SizeChoice{false, 1.5f};
+  Game resized;
+  REQUIRE(resized.init(from_file).ok());
+  CHECK(resized.world().player()->creature().scale == Approx(0.0015f));
+}

@@ -15,3 +15,15 @@ TEST_CASE("command-line integers: the whole text, in range, or an error naming t
   CHECK_FALSE(parse_int_arg("--hz", "481", 30, 480).ok());
   CHECK_FALSE(parse_int_arg("--seed", "99999999999999999999", 0, 1LL << 62).ok());  // out of long long
 }
+
+TEST_CASE("command-line numbers: the whole text, finite, in range, or an error naming the flag", "[io]") {
+  CHECK(parse_number_arg("--sigma", "0.5", 0.0, 10.0).value() == 0.5);
+  CHECK(parse_number_arg("--sigma", "1e1", 0.0, 10.0).value() == 10.0);
+  CHECK(parse_number_arg("--frame", "0.05", 0.05, 50.0).ok());  // the ends are in
+  CHECK(parse_number_arg("--sigma", "far", 0.0, 10.0).message() == "--sigma: expected a number in [0, 10], got \"far\"");
+  CHECK(parse_number_arg("--frame", "", 0.05, 50.0).message() == "--frame: expected a number in [0.05, 50], got \"\"");
+  for (const char* bad : {"2m", "nan", "inf", "-0.1", "10.5", "1e999"}) {
+    INFO(bad);
+    CHECK_FALSE(parse_number_arg("--sigma", bad, 0.0, 10.0).ok());
+  }
+}

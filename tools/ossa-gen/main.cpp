@@ -48,6 +48,11 @@ source (one of):
   --random              a random creature from the PCA model
   --in F.creature.json  load a saved genome instead of generating one
   --seed N              seed of the random choices (default 1)
+size (of every creature made, variations and --sheet too):
+  --size true|FRAME_M   true (default: the animal's true size from its weight and body plan)
+                        or a fixed frame of FRAME_M metres (0.05 to 50; 2: every creature as
+                        big as a pony); saved as the genome's "size". With --in the genome is
+                        resized (without --size: as saved)
 conditions (--example, --random):
   --wings 0|1           condition on wings
   --leg-pairs 0|1|2     condition on ground-contact leg pairs
@@ -63,7 +68,8 @@ outputs (with variations, F-1.ext .. F-K.ext):
   --gltf F.gltf         glTF 2.0 via Assimp: the node hierarchy and, by --look, the skinned
                         body (vertex colours), the bone sprite mesh, or both
   --obj F.obj           box proxies, one box per bone
-  --summary             JSON description of the creature(s) on stdout (the default output)
+  --summary             JSON description of the creature(s) on stdout (the default output):
+                        limbs, bones, weight, scale (metres per frame unit), size, ...
   --count N             with --random --summary: N creatures from consecutive seeds, print
                         counts, limb-layout histogram and throughput
 model:
@@ -85,6 +91,7 @@ struct Args {
   std::optional<double> weight, sigma;
   std::optional<long long> count;
   std::optional<int> sheet_random;
+  std::optional<SizeChoice> size;
   CreatureLook look = CreatureLook::kBody;
   bool neck_girdle = false, multi_limb = false;
 };
@@ -142,6 +149,11 @@ Args parse_args(int argc, char** argv) {
     else if (flag == "--leg-pairs") once(a.leg_pairs, static_cast<int>(parse_int(flag, value(), 0, 2)));
     else if (flag == "--weight") {
       once(a.weight, parse_double(flag, value(), pca_range(kWeightKg).min, false, pca_range(kWeightKg).max));
+    }
+    else if (flag == "--size") {
+      Result<SizeChoice> size = parse_size_arg(flag, value());
+      if (!size) usage_error(size.message());
+      once(a.size, *size);
     }
     else if (flag == "--neck-girdle") a.neck_girdle = true;
     else if (flag == "--multi-limb") a.multi_limb = true;
@@ -219,6 +231,7 @@ Json creature_summary(const Genome& g, const Creature& c) {
   j["contact"] = contact_mode_name(c.contact);
   j["skull"] = skull_variant_name(g.skull_variant);
   j["scale"] = c.scale;
+  j["size"] = g.options.true_size ? Json("true") : Json(json_float(g.options.frame_m));  // as the genome file says
   Json limbs = Json::array();
   for (const Limb& l : c.limbs) {
     if (l.side != Side::kNear) continue;
@@ -312,7 +325,7 @@ int run(const Args& a) {
     }
   }
   std::optional<Generator> generator;
-  if (a.example || a.random || a.stats || a.sheet || a.variations) {
+  if (a.example || a.random || a.stats || a.sheet || a.variations || (a.in && a.size)) {
     Result<Generator> g = Generator::load(dataset_path, ossa::body_volume_m3);
     if (!g) return fail(g.message());
     generator.emplace(std::move(*g));
@@ -321,10 +334,12 @@ int run(const Args& a) {
   if (a.stats) std::cout << json_text(model_stats(*generator), 2) << "\n";
 
   if (a.sheet) {
+    GenerateOptions sheet_options;  // the examples as they are, in the size asked for
+    if (a.size) a.size->apply_to(sheet_options.genome);
     std::vector<std::pair<std::string, Creature>> sheet;
     std::vector<int> skulls;
     for (const Animal& animal : generator->dataset().animals) {
-      Result<Genome> genome = generator->example(animal.name, 1);
+      Result<Genome> genome = generator->example(animal.name, 1, sheet_options);
       if (!genome) return fail(animal.name + ": " + genome.message());
       Result<Creature> creature = build_creature(*genome);
       if (!creature) return fail(animal.name + ": " + creature.message());
@@ -332,7 +347,7 @@ int run(const Args& a) {
       skulls.push_back(genome->skull_variant);
     }
     for (int k = 1; k <= a.sheet_random.value_or(0); ++k) {
-      const Genome genome = generator->random(static_cast<uint64_t>(k));
+      const Genome genome = generator->random(static_cast<uint64_t>(k), sheet_options);
       Result<Creature> creature = build_creature(genome);
       if (!creature) return fail("random " + std::to_string(k) + ": " + creature.message());
       sheet.emplace_back("random, seed " + std::to_string(k), std::move(*creature));
@@ -354,6 +369,7 @@ int run(const Args& a) {
   options.weight_kg = a.weight;
   options.genome.neck_girdle = a.neck_girdle;
   options.genome.multi_limb = a.multi_limb;
+  if (a.size) a.size->apply_to(options.genome);
 
   if (a.count) {
     std::map<std::string, long long> layouts;
@@ -387,6 +403,10 @@ int run(const Args& a) {
     Result<Genome> g = load_genome(*a.in);
     if (!g) return fail(g.message());
     base = std::move(*g);
+    if (a.size) {  // resized: the saved genome's scale made again for the size asked for
+      a.size->apply_to(base.options);
+      generator->apply_size(base);
+    }
   } else if (a.example) {
     Result<Genome> g = generator->example(*a.example, a.seed, options);
     if (!g) return fail("--example " + *a.example + ": " + g.message());

@@ -49,6 +49,10 @@ source (one of):
                           names, in its rest pose (the bones the animator drives with --bones)
 options:
   --seed N                seed of the random choices (default 1)
+  --size true|FRAME_M     a generated creature's size: true (the animal's true size from its
+                          weight and body plan, the default for --example and --random) or a
+                          fixed frame of FRAME_M metres (0.05 to 50); a --creature genome is
+                          resized (default: as saved)
   --level F               stand on this level's ground under its spawn point (an ossa level,
                           a Tiled .tmj/.tmx map or an LDtk project, F#LevelName), drawn
                           as the game draws it (its tile art, its look or its boxes) at
@@ -67,8 +71,9 @@ options:
   --stats                 print JSON: draw_calls, creatures, bones, vertices, triangles,
                           max_weights_per_vertex (of the bone sprites), and for a generated
                           creature body_vertices, body_triangles, body_area_m2 (every part's
-                          side-view area, overlaps counted), body_mass_kg and
-                          expected_mass_kg (the genome's weight at the creature's size)
+                          side-view area, overlaps counted), body_mass_kg,
+                          expected_mass_kg (the genome's weight at the creature's size),
+                          body_girth and scale (metres per frame unit: --size's outcome)
   --help                  this text
 )";
 
@@ -77,6 +82,7 @@ struct Args {
   bool random = false, stats = false, bones = false, rigid = false;
   CreatureLook look = CreatureLook::kBody;
   uint64_t seed = 1;
+  std::optional<SizeChoice> size;  // --size: the genome's size choice
   int width = 1024, height = 576, count = 1;
   float pixels_per_metre = 32.0f;  // LevelLoadOptions::pixels_per_metre
 };
@@ -115,6 +121,10 @@ Args parse_args(int argc, char** argv) {
       a.random = true;
     } else if (flag == "--seed") {
       a.seed = static_cast<uint64_t>(parse_int(flag, value(), 0, 2147483647L));
+    } else if (flag == "--size") {
+      Result<SizeChoice> size = parse_size_arg(flag, value());
+      if (!size) fail(size.message());
+      a.size = *size;
     } else if (flag == "--level") {
       a.level = value();
     } else if (flag == "--pixels-per-metre") {
@@ -149,6 +159,7 @@ Args parse_args(int argc, char** argv) {
   const int sources = (a.example ? 1 : 0) + (a.creature ? 1 : 0) + (a.random ? 1 : 0) + (a.mesh ? 1 : 0) + (a.character ? 1 : 0);
   if (sources == 0) fail("nothing to render: give --example NAME, --random, --creature F, --mesh F or --character F");
   if (sources > 1) fail("give only one of --example, --random, --creature, --mesh, --character");
+  if (a.size && (a.mesh || a.character)) fail("--size: a rigged mesh or character has the size it was made at; drop --size");
   if (!a.png && !a.stats) fail("nothing to do: give --png OUT and/or --stats");
   if (a.png) {  // no output may be one of the inputs (io/file.h)
     std::vector<std::string> inputs;
@@ -165,20 +176,28 @@ constexpr float kMinCreaturePixels = 4.0f;
 
 Creature make_creature(const Args& a) {
   Genome genome;
+  std::optional<Generator> generator;
+  if (!a.creature || a.size) {
+    auto g = Generator::load(data_path("assets/creatures/examples.json"), ossa::body_volume_m3);
+    if (!g.ok()) fail(g.message());
+    generator.emplace(std::move(g.value()));
+  }
+  GenerateOptions options;
+  if (a.size) a.size->apply_to(options.genome);
   if (a.creature) {
     auto g = load_genome(*a.creature);
     if (!g.ok()) fail(g.message());
     genome = std::move(g.value());
-  } else {
-    auto generator = Generator::load(data_path("assets/creatures/examples.json"), ossa::body_volume_m3);
-    if (!generator.ok()) fail(generator.message());
-    if (a.example) {
-      auto g = generator->example(*a.example, a.seed);
-      if (!g.ok()) fail(g.message());
-      genome = std::move(g.value());
-    } else {
-      genome = generator->random(a.seed);
+    if (a.size) {  // resized: its scale made again for the size asked for
+      a.size->apply_to(genome.options);
+      generator->apply_size(genome);
     }
+  } else if (a.example) {
+    auto g = generator->example(*a.example, a.seed, options);
+    if (!g.ok()) fail(g.message());
+    genome = std::move(g.value());
+  } else {
+    genome = generator->random(a.seed, options);
   }
   if (a.rigid) genome.options.smooth_skinning = false;
   auto creature = build_creature(genome);
@@ -376,11 +395,11 @@ int run(const Args& a) {
       std::snprintf(buf, sizeof buf,
                     "  \"look\": \"%s\",\n  \"body_vertices\": %zu,\n  \"body_triangles\": %d,\n"
                     "  \"body_area_m2\": %.6g,\n  \"body_mass_kg\": %.6g,\n  \"expected_mass_kg\": %s,\n"
-                    "  \"body_girth\": %.4g,\n",
+                    "  \"body_girth\": %.4g,\n  \"scale\": %.6g,\n",
                     creature_look_name(look), flesh->vertices.size(), flesh->triangle_count(),
                     static_cast<double>(flesh->area_m2), static_cast<double>(flesh->mass_kg),
                     creature.body_mass_kg ? std::to_string(*creature.body_mass_kg).c_str() : "null",
-                    static_cast<double>(flesh->girth));
+                    static_cast<double>(flesh->girth), static_cast<double>(creature.scale));
       body_stats = buf;
     }
     std::printf(

@@ -41,13 +41,16 @@ using namespace ossa;
 namespace {
 
 const char* kUsage = R"(usage: ossa-sim (--example NAME | --creature F.creature.json | --character F.rig.json | --random --seed N)
-                [--level F] --script "mode:stick:seconds,..." [--hz 120] [--count N [--threads N]]
+                [--size true|FRAME_M] [--level F] --script "mode:stick:seconds,..." [--hz 120] [--count N [--threads N]]
                 [--prototypes F] [--json] [--trace F.csv] [--trace-joints F.csv]
                 [--svg F.svg [--svg-window FROM:TO[:EVERY]]]
   --example NAME   one of the 44 example animals (English or German name)
   --creature F     a saved genome (.creature.json)
   --character F    a rigged character: its rig mapping (.rig.json) and the mesh it names
   --random         a random creature (with --seed N, default 1)
+  --size S         the creature's size: true (the animal's true size from its weight and
+                   body plan, the default for --example and --random) or a fixed frame of S
+                   metres (0.05 to 50); a --creature genome is resized (default: as saved)
   --level F        level file (default: levels/default.json): an ossa level, a Tiled map
                    (.tmj, .tmx) or an LDtk project (.ldtk, F#LevelName picks a level)
   --pixels-per-metre P  scale of Tiled/LDtk maps with neither a pixels_per_metre property
@@ -86,6 +89,7 @@ struct Args {
   bool random = false, json = false;
   uint64_t seed = 1;
   int hz = 120, count = 1, threads = 0;
+  std::optional<SizeChoice> size;  // --size: the genome's size choice
   float pixels_per_metre = 32.0f;  // LevelLoadOptions::pixels_per_metre
   float svg_from = 0.0f, svg_to = 1e30f, svg_every = 0.4f;  // seconds (--svg-window)
 };
@@ -151,6 +155,11 @@ Args parse_args(int argc, char** argv) {
     else if (f == "--character") a.character = value();
     else if (f == "--random") a.random = true;
     else if (f == "--seed") a.seed = static_cast<uint64_t>(parse_int(f, value(), 0, 1LL << 62));
+    else if (f == "--size") {
+      Result<SizeChoice> size = parse_size_arg(f, value());
+      if (!size) fail(size.message());
+      a.size = *size;
+    }
     else if (f == "--level") a.level = value();
     else if (f == "--pixels-per-metre") a.pixels_per_metre = parse_scale(f, value());
     else if (f == "--script") a.script = value();
@@ -168,6 +177,7 @@ Args parse_args(int argc, char** argv) {
   if (static_cast<int>(a.example.has_value()) + a.creature.has_value() + a.character.has_value() + a.random != 1) {
     fail("give exactly one of --example NAME, --creature F, --character F or --random");
   }
+  if (a.size && a.character) fail("--size: a rigged character has the size its mesh gives; drop --size");
   if (!a.script) fail("--script: missing (e.g. --script \"walk:0.5:10,stop:2\")");
   return a;
 }
@@ -275,20 +285,28 @@ int main(int argc, char** argv) {
 #endif
   } else {
     Genome genome;
+    std::optional<Generator> gen;
+    if (!args.creature || args.size) {
+      Result<Generator> g = Generator::load(data_path("assets/creatures/examples.json"), ossa::body_volume_m3);
+      if (!g) fail(g.message());
+      gen.emplace(std::move(*g));
+    }
+    GenerateOptions options;
+    if (args.size) args.size->apply_to(options.genome);
     if (args.creature) {
       Result<Genome> g = load_genome(*args.creature);
       if (!g) fail(g.message());
       genome = *g;
-    } else {
-      Result<Generator> gen = Generator::load(data_path("assets/creatures/examples.json"), ossa::body_volume_m3);
-      if (!gen) fail(gen.message());
-      if (args.example) {
-        Result<Genome> g = gen->example(*args.example);
-        if (!g) fail(g.message());
-        genome = *g;
-      } else {
-        genome = gen->random(args.seed);
+      if (args.size) {  // resized: its scale made again for the size asked for
+        args.size->apply_to(genome.options);
+        gen->apply_size(genome);
       }
+    } else if (args.example) {
+      Result<Genome> g = gen->example(*args.example, 1, options);
+      if (!g) fail(g.message());
+      genome = *g;
+    } else {
+      genome = gen->random(args.seed, options);
     }
     Result<Creature> built = build_creature(genome);
     if (!built) fail((args.creature ? *args.creature + ": " : std::string()) + built.message());

@@ -1,9 +1,11 @@
 #include "ossa/editor/creature_panel_model.h"
 
 #include <algorithm>
+#include <cstdio>
 
 #include "ossa/gen/export_svg.h"
 #include "ossa/gen/skeleton_builder.h"
+#include "ossa/gen/true_size.h"
 #include "ossa/io/file.h"
 #include "ossa/math/rng.h"
 #include "ossa/render/gltf_export.h"
@@ -50,6 +52,11 @@ void CreaturePanelModel::assign(const Genome& g) {
   }
 }
 
+Genome CreaturePanelModel::sized(Genome g) const {
+  generator_->apply_size(g);
+  return g;
+}
+
 void CreaturePanelModel::set_genome(Genome g, const std::string& label) {
   if (editing_) {
     assign(g);
@@ -82,6 +89,31 @@ void CreaturePanelModel::set_smooth_skinning(bool on) {
   set_genome(std::move(g), on ? "smooth skinning" : "rigid sprites");
 }
 
+void CreaturePanelModel::set_size(SizeChoice size) {
+  size.frame_m = std::clamp(size.frame_m, kMinFrameMetres, kMaxFrameMetres);
+  size.apply_to(conditions.genome);
+  Genome g = genome_;
+  size.apply_to(g.options);
+  g = sized(std::move(g));
+  if (genome_to_json(g) == genome_to_json(genome_)) return;
+  set_genome(std::move(g), size.true_size ? "true size" : "size frame");
+}
+
+std::string CreaturePanelModel::size_text() const {
+  if (!creature_) return "";
+  const Creature& c = *creature_;
+  char legs[48] = "";
+  if (const float h = leg_height(c); h > 0.0f) {
+    std::snprintf(legs, sizeof legs, "%s %.3g m, ", size_measure(c, SizeMeasure::kHip) > 0.0f ? "hip" : "shoulder",
+                  static_cast<double>(h));
+  }
+  const double kg = genome_.pca[kWeightKg];
+  char text[128];
+  std::snprintf(text, sizeof text, "%slength %.3g m, %.*f kg", legs, static_cast<double>(size_measure(c, SizeMeasure::kLength)),
+                kg >= 10.0 ? 0 : kg >= 0.1 ? 2 : 3, kg);
+  return text;
+}
+
 void CreaturePanelModel::variation(double sigma) {
   Genome g = generator_->variation(genome_, seed, sigma);
   g.name = kCustomName;
@@ -106,7 +138,7 @@ void CreaturePanelModel::regenerate(CreaturePart part) {
     case CreaturePart::kSkull: g.skull_variant = fresh.skull_variant; break;
   }
   g.name = kCustomName;
-  set_genome(g, std::string("regenerate ") + creature_part_name(part));
+  set_genome(sized(std::move(g)), std::string("regenerate ") + creature_part_name(part));
 }
 
 void CreaturePanelModel::set_look(Look look) {
@@ -141,6 +173,7 @@ void CreaturePanelModel::set_appendage(AppendageKind kind, std::optional<float> 
     it->size = *size;
   }
   clamp_appendages(g.appendages);
+  g = sized(std::move(g));  // appendages are part of the body the size rule measures
   if (genome_to_json(g) == genome_to_json(genome_)) return;
   set_genome(std::move(g), std::string(size ? "" : "remove ") + appendage_kind_name(kind));
 }
@@ -150,7 +183,7 @@ void CreaturePanelModel::set_skull_shape(SkullShape shape) {
   g.skull_shape = shape;
   clamp_to_genome_limits(g);
   if (g.skull_shape == genome_.skull_shape) return;
-  set_genome(std::move(g), "skull shape");
+  set_genome(sized(std::move(g)), "skull shape");
 }
 
 double CreaturePanelModel::sigma(int i) const {
@@ -171,7 +204,7 @@ void CreaturePanelModel::set_sigma(int i, double value) {
   }
   recompute_rest_angles(g);
   g.name = kCustomName;
-  set_genome(g, "PC" + std::to_string(i + 1));
+  set_genome(sized(std::move(g)), "PC" + std::to_string(i + 1));
 }
 
 void CreaturePanelModel::begin_edit(const std::string& label) {

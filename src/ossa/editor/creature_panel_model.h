@@ -1,7 +1,8 @@
 #pragma once
 // CreaturePanelModel — the creature panel without any UI (DESIGN.md §10, [Z 8.3]): pick an
 // example or draw a random creature with a seed under conditions (wings, leg pairs, weight,
-// neck girdle, several limbs per girdle), move the first 8 principal components in σ units,
+// neck girdle, several limbs per girdle), choose the size (true size or a fixed frame), move
+// the first 8 principal components in σ units,
 // draw variations with a σ, regenerate one part (limbs, ribs, tail, skull) keeping the rest,
 // save / load the genome, export glTF, SVG and PNG, and hand the creature to the game (apply to
 // the player, spawn as an NPC) through callbacks.
@@ -77,6 +78,20 @@ class CreaturePanelModel {
   // changes) and of the creatures generated next (conditions.genome).
   void set_smooth_skinning(bool on);
 
+  // ---- Size (issue 29) ---------------------------------------------------------------------
+  // The genome's size choice: its animal's true size (from its weight and body plan) or a fixed
+  // frame of `size.frame_m` metres (clamped into [kMinFrameMetres, kMaxFrameMetres]); the scale
+  // follows (Generator::apply_size) and the creature is rebuilt. One undo step when it changes
+  // (one per drag inside begin_edit/end_edit); creatures generated next keep the choice
+  // (conditions.genome). Every other edit that moves the weight or the body (σ sliders,
+  // variations, regenerated parts, appendages, the skull) applies the choice again, so a
+  // true-size creature follows its weight.
+  void set_size(SizeChoice size);
+  // What the size gave, for the panel: "hip 1.07 m, length 2.64 m, 600 kg" (the leg height the
+  // size rule uses, gen/true_size.h, "shoulder" for forelegs only and left out without legs;
+  // the snout-to-tail length on the rest pose; the weight); "" without a creature.
+  std::string size_text() const;
+
   // ---- The body: look, appendages, skull (issue 30; each one undo step, or one per drag
   // inside begin_edit/end_edit). Values are clamped into the genome's ranges (gen/look.h,
   // gen/skull_shape.h); a change that leaves the genome as it is adds no step.
@@ -122,6 +137,7 @@ class CreaturePanelModel {
 
  private:
   void assign(const Genome& g);   // set + rebuild the creature
+  Genome sized(Genome g) const;   // g with its size choice applied (the weight or body moved)
   Status fail(const Status& s) const { if (!s.ok()) error_ = s.message(); return s; }
   // An export's outcome: the error, or a note naming the file.
   Status exported(const Status& s, const std::string& path) const;

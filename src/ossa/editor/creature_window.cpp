@@ -1,5 +1,5 @@
 // EditorSuite: the creature panel window — example picker, random with seed and conditions,
-// σ sliders of the first principal components, variations, part regeneration, genome files,
+// the size (true size or a fixed frame), σ sliders of the first principal components, variations, part regeneration, genome files,
 // the body's look, appendages and skull (creature_body_window.cpp), glTF / SVG / PNG export,
 // apply / spawn — with a rest-pose preview of the skeleton.
 #include <algorithm>
@@ -127,6 +127,26 @@ void EditorSuite::draw_creature_window() {
     // A drawing option saved with the genome: sprites blend across joints (off: rigid bones).
     bool smooth = m.genome().options.smooth_skinning;
     if (ImGui::Checkbox("smooth skinning", &smooth)) m.set_smooth_skinning(smooth);
+    ImGui::TreePop();
+  }
+
+  // Size: the animal's true size, or a fixed frame (metres; a drag is one undo step). What it
+  // gave shows below.
+  if (ImGui::TreeNodeEx("Size", ImGuiTreeNodeFlags_DefaultOpen)) {
+    SizeChoice size{m.genome().options.true_size, m.genome().options.frame_m};
+    if (ImGui::Checkbox("true size", &size.true_size)) m.set_size(size);
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("from its weight and body plan; off: a fixed frame for every creature");
+    if (!size.true_size) {
+      ImGui::SameLine();
+      ImGui::SetNextItemWidth(140);
+      // Logarithmic: a 5 cm frame and a 50 m one on one slider (Ctrl+click types a value).
+      const bool moved = ImGui::SliderFloat("m frame", &size.frame_m, kMinFrameMetres, kMaxFrameMetres, "%.2f",
+                                            ImGuiSliderFlags_Logarithmic);
+      if (ImGui::IsItemActivated()) m.begin_edit("size frame");
+      if (moved) m.set_size(size);
+      if (ImGui::IsItemDeactivated()) m.end_edit();
+    }
+    ImGui::TextDisabled("%s", m.size_text().c_str());
     ImGui::TreePop();
   }
 

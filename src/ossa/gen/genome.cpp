@@ -2,9 +2,12 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
+#include <limits>
 
 #include "ossa/gen/skeleton_builder.h"
 #include "ossa/io/file.h"
+#include "ossa/io/parse_arg.h"
 
 namespace ossa {
 
@@ -71,6 +74,20 @@ const char* skull_variant_name(int variant) {
     case 3: return "fish";
   }
   return "unknown";
+}
+
+Result<SizeChoice> parse_size_arg(std::string_view flag, std::string_view text) {
+  if (text == "true") return SizeChoice{};
+  // The range's ends as floats (the documented "0.05" is a little below 0.05f as a double).
+  Result<double> frame = parse_number_arg(flag, text, -std::numeric_limits<double>::max(), std::numeric_limits<double>::max());
+  const float frame_m = frame ? static_cast<float>(*frame) : 0.0f;
+  if (!frame || !(frame_m >= kMinFrameMetres && frame_m <= kMaxFrameMetres)) {
+    char range[64];
+    std::snprintf(range, sizeof range, "[%g, %g]", static_cast<double>(kMinFrameMetres), static_cast<double>(kMaxFrameMetres));
+    return Error{std::string(flag) + ": expected true or a frame in metres (a number in " + range + "), got \"" +
+                 std::string(text) + "\""};
+  }
+  return SizeChoice{false, frame_m};
 }
 
 Json genome_to_json(const Genome& g) {

@@ -126,6 +126,23 @@ PcaRange pca_range(int dim);
 void clamp_to_genome_limits(Genome& genome);
 const char* skull_variant_name(int variant);
 
+// ---- The size choice on a command line (--size of ossa-gen, ossa-sim, ossa-render, ossa) ---
+// "true" (the animal's true size, gen/true_size.h) or a frame in metres in [kMinFrameMetres,
+// kMaxFrameMetres], as the genome file's "size" holds it.
+struct SizeChoice {
+  bool true_size = true;
+  float frame_m = 2.0f;  // with true_size false
+  // Sets the choice in `options` (GenerateOptions::genome, or a loaded genome's options: then
+  // Generator::apply_size(genome) makes its scale again). True size keeps the options' frame.
+  void apply_to(GenomeOptions& options) const {
+    options.true_size = true_size;
+    if (!true_size) options.frame_m = frame_m;
+  }
+};
+// `text` as a size choice, or an error naming `flag`, what it takes and what was given:
+// "--size: expected true or a frame in metres (a number in [0.05, 50]), got \"big\"".
+Result<SizeChoice> parse_size_arg(std::string_view flag, std::string_view text);
+
 Json genome_to_json(const Genome& genome);
 // Parses and validates (every accepted genome builds: build_creature succeeds); errors name
 // the file and field.
