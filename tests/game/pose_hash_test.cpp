@@ -34,11 +34,11 @@ struct ExpectedHash {
 };
 
 constexpr ExpectedHash kExpected[] = {
-    {"default.json", 0x1e0e64a4cb0777b5ull},
-    {"rough.json", 0x304f6d87409261d6ull},
-    {"stairs.json", 0x355d5954a0673a12ull},
-    {"slopes.json", 0xebdf34f2ebdd49ccull},
-    {"drops.json", 0x77c37bda4108c4abull},
+    {"default.json", 0x282010d275af261eull},
+    {"rough.json", 0x19795ca63f05f0b0ull},
+    {"stairs.json", 0xab98a05bdc0ac876ull},
+    {"slopes.json", 0x4af1faa708e74e9bull},
+    {"drops.json", 0xa47c2518d1d52c60ull},
 };
 
 std::string hex(uint64_t v) {

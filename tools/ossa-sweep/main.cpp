@@ -46,7 +46,7 @@ namespace {
 // [SECTION] arguments ---------------------------------------------------------------------
 
 const char* kUsage = R"(usage: ossa-sweep [--slopes-check] [--level F]... [--example NAME]... [--script S]...
-                  [--jobs N] [--hz N] [--json OUT.json]
+                  [--size true|FRAME_M] [--jobs N] [--hz N] [--json OUT.json]
   (default)        the Known-limits sweep: every example × every level × every script, then
                    the summary table (runs over 1 mm, runs stopped at a step, tails in steps)
   --slopes-check   every example walks (stick 0.5) right across the level and back, and runs
@@ -59,6 +59,8 @@ const char* kUsage = R"(usage: ossa-sweep [--slopes-check] [--level F]... [--exa
   --known-failures F  with --slopes-check: the animals (one name per line) allowed to fail;
                    any other failing is a regression (exit 1)
   --example NAME   an example animal (repeatable; default: all 44)
+  --size S         the examples' size: true (default: each animal's own size) or a fixed
+                   frame in metres (2: the frame the shipped levels' steps were laid out for)
   --script S       an ossa-sim script (repeatable; default: "walk:0.6:30", "run:1:15",
                    "walk:0.5:6,stop:1,walk:-0.6:6")
   --jobs N         worker threads (default: one per hardware thread); --threads N is the
@@ -81,6 +83,7 @@ struct Args {
   int hz = 120;
   std::optional<std::string> json;
   std::optional<std::string> known_failures;  // --known-failures FILE
+  SizeChoice size;                             // --size
 };
 
 long long parse_int(const std::string& flag, const std::string& text, long long lo, long long hi) {
@@ -108,6 +111,11 @@ Args parse_args(int argc, char** argv) {
     else if (f == "--hz") a.hz = static_cast<int>(parse_int(f, value(), 30, 480));
     else if (f == "--json") a.json = value();
     else if (f == "--known-failures") a.known_failures = value();
+    else if (f == "--size") {
+      Result<SizeChoice> s = parse_size_arg(f, value());
+      if (!s) fail(s.message());
+      a.size = *s;
+    }
     else fail("unknown option " + f + " (see --help)");
   }
   if (a.slopes_check && !a.scripts.empty()) fail("--script: the slopes check makes its own scripts");
@@ -160,8 +168,10 @@ Setup load_setup(const Args& args) {
   if (names.empty()) {
     for (const Animal& animal : gen->dataset().animals) names.push_back(animal.name);
   }
+  GenerateOptions options;
+  args.size.apply_to(options.genome);
   for (const std::string& name : names) {
-    Result<Genome> g = gen->example(name);
+    Result<Genome> g = gen->example(name, 1, options);
     if (!g) fail(g.message());
     Result<Creature> c = build_creature(*g);
     if (!c) fail(name + ": " + c.message());
