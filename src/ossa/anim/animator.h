@@ -88,8 +88,9 @@ class Animator {
 
   // One fixed step of dt seconds towards intent.velocity, jumping when asked. A creature that
   // falls below the level's kill height starts again at the level's spawn. A creature whose
-  // gait cycles in fewer than 24 such steps (a frog at true size) takes the step in up to 8
-  // equal substeps, so that its motion does not depend on the tick rate.
+  // gait cycles in fewer than 24 such steps (a frog at true size), or that falls more than a
+  // tenth of its hip height in one, takes the step in up to 8 equal substeps, so that its
+  // motion does not depend on the tick rate.
   void update(float dt, const AnimatorIntent& intent, const Level& level);
   void update(float dt, float desired_velocity, const Level& level) { update(dt, AnimatorIntent{desired_velocity, false}, level); }
 
@@ -210,6 +211,7 @@ class Animator {
   void tick(float dt, const AnimatorIntent& intent, const Level& level);
   static constexpr int kSubstepsPerCycle = 24;
   static constexpr int kMaxSubsteps = 8;
+  static constexpr float kFallStepOfHip = 0.1f;
   // A part of the body in a box ahead (push_back_from_face): the body goes back out of it,
   // if that takes no more than `most` metres, and is posed again. Whether it went.
   bool go_back_from_face(const anim::AnimContext& ctx, float most);
