@@ -12,7 +12,7 @@ namespace {
 constexpr float kFeetBelowCentre = 0.55f;  // of the half height
 constexpr float kLandingAboveBottom = 0.2f;
 constexpr float kRootBelowTop = 0.15f;
-constexpr float kLookDownMin = 0.5f;       // metres below the feet before the camera looks down
+constexpr float kLookDownOfHip = 0.6f;     // hip heights below the feet before the camera looks down
 constexpr float kMaxZoomOut = 1.6f;
 
 }  // namespace
@@ -22,12 +22,12 @@ glm::vec2 CameraFollow::target(const Level& level, const CameraSubject& s, float
   // The landing: the lowest ground ahead within reach, and in the air the ground below.
   std::optional<float> low;
   const auto consider = [&](std::optional<GroundHit> hit) {
-    if (hit && hit->height_ws < feet - kLookDownMin) low = low ? std::min(*low, hit->height_ws) : hit->height_ws;
+    if (hit && hit->height_ws < feet - kLookDownOfHip * s.hip_height) low = low ? std::min(*low, hit->height_ws) : hit->height_ws;
   };
   const float reach_down = 3.0f * hh;
-  if (std::abs(s.velocity_x) > 0.2f) {
+  if (std::abs(s.velocity_x) > 0.25f * s.hip_height) {
     const float dir = s.velocity_x > 0.0f ? 1.0f : -1.0f;
-    const float reach = std::max(2.0f, 1.2f * std::abs(s.velocity_x));
+    const float reach = std::max(2.5f * s.hip_height, 1.2f * std::abs(s.velocity_x));
     for (int k = 1; k <= 8; ++k) {
       const float x = s.root_ws.x + dir * reach * static_cast<float>(k) / 8.0f;
       consider(level.ground_height_below(x - 0.05f, x + 0.05f, feet + 0.3f, reach_down));

@@ -7,9 +7,11 @@
 //   * ground framing: the creature's feet 0.55 hh below the view's centre;
 //   * look ahead: the centre leads the creature by 0.8 s of its speed, at most 0.35 of the
 //     half width, eased in over about a second;
-//   * look down: the lowest ground within reach ahead (max(2 m, 1.2 s of the speed), in the
-//     direction of motion) and, in the air, the ground under the creature are the "landing":
-//     when it lies more than 0.5 m below the feet, the centre goes down until the landing is
+//   * look down: the lowest ground within reach ahead (max(2.5 hip heights, 1.2 s of the
+//     speed), in the direction of motion, once it moves a quarter hip height a second) and, in
+//     the air, the ground under the creature are the "landing": when it lies more than 0.6 hip
+//     heights below the feet (distances in the creature's size: a 3 cm frog and a 3 m
+//     dinosaur see their drops alike), the centre goes down until the landing is
 //     0.2 hh above the bottom edge — but never so far that the creature's top (half a hip
 //     height over the root) leaves the top 15 % of the view; when both do not fit, the view
 //     zooms out (up to 1.6 times its height; quickly out, slowly back in). Going down eases
@@ -44,7 +46,7 @@ class CameraFollow {
   // The view's half height for a base half height (zoomed out while a landing and the
   // creature would not both fit).
   float half_height(float base) const { return base * zoom_; }
-  // The ground the camera looks down to (nullopt: none more than 0.5 m below the feet).
+  // The ground the camera looks down to (nullopt: none more than 0.6 hip heights below the feet).
   std::optional<float> landing_y() const { return landing_y_; }
 
  private:

@@ -21,6 +21,7 @@
 #include "app/game_impl.h"
 #include "ossa/body/body_mesh.h"
 #include "ossa/gen/skeleton_builder.h"
+#include "ossa/gen/true_size.h"
 #include "ossa/io/data_dir.h"
 #include "ossa/io/file.h"
 #include "ossa/level/level_io.h"
@@ -202,12 +203,19 @@ Status Game::init(const GameOptions& o) {
       m.character_index = static_cast<int>(i);
     }
   }
+  // NPCs stand ahead of the player in a row, each a metre (or a body length, for the small
+  // ones: a rabbit beside a horse) clear of the one before, by their sizes at true size (a
+  // triceratops is 9.5 m long, a rabbit 28 cm), inside the level.
+  const Box npc_bounds = world_->level().bounds();
+  const auto inside = [&](float x) {
+    return std::clamp(x, npc_bounds.min_ws.x + 2.0f, std::max(npc_bounds.min_ws.x + 2.0f, npc_bounds.max_ws.x - 2.0f));
+  };
+  const float player_length = world_->player()->animator().rig().scale.length;
+  float row_x = world_->level().spawn_ws.x + 0.5f * player_length;  // the row's front so far
   for (int i = 0; i < o.npcs; ++i) {
-    // Ahead of the player, a few metres apart, inside the level.
-    const Box npc_bounds = world_->level().bounds();
-    const float npc_x = std::clamp(world_->level().spawn_ws.x + 4.0f + 3.5f * static_cast<float>(i),
-                                   npc_bounds.min_ws.x + 2.0f, std::max(npc_bounds.min_ws.x + 2.0f, npc_bounds.max_ws.x - 2.0f));
     if (o.npc_characters && i % 2 == 1 && !shipped.empty()) {
+      const float npc_x = inside(row_x + 2.0f);
+      row_x += 3.5f;
       auto c = m.character(shipped[static_cast<size_t>(i / 2) % shipped.size()]);
       if (!c.ok()) return c.error();
       world_->spawn_npc(c.value()->loaded.character, {npc_x, world_->level().spawn_ws.y + 2.0f},
@@ -218,6 +226,10 @@ Status Game::init(const GameOptions& o) {
     if (!g.ok()) return g.error();
     auto c = make_creature(g.value());
     if (!c.ok()) return c.error();
+    const float length = size_measure(*c.value(), SizeMeasure::kLength);
+    const float gap = std::min(1.0f, std::max(length, 0.1f));
+    const float npc_x = inside(row_x + gap + 0.5f * length);
+    row_x += gap + length;
     const glm::vec2 at{npc_x, world_->level().spawn_ws.y + 2.0f};
     world_->spawn_npc(c.value(), at, 0x9e3779b97f4a7c15ull * static_cast<uint64_t>(i + 1));
   }

@@ -57,12 +57,14 @@ Image half_size(const Image& src) {
   return out;
 }
 
-// Half the view's height (metres) that frames a creature of hip height h: room for the body
-// and the ground around it, at most 8 m. Below h = 0.3 m it shrinks with the creature (5 h),
-// so the smallest genome the loader accepts (a 5 cm frame) still fills a good part of the
-// picture instead of a few pixels.
-float framing_half_height(float hip_height) {
-  return std::min(std::clamp(1.8f * hip_height + 0.9f, 1.5f, 8.0f), 5.0f * hip_height);
+// Half the view's height (metres) that frames a creature of hip height h and body length L
+// in a view `aspect` times as wide as high: room for the body and the ground around it. Below
+// h = 0.3 m it shrinks with the creature (5 h), so a 3 cm frog at its true size fills a good
+// part of the picture instead of a few pixels; a long body (a 27 m whale) has its length
+// within two thirds of the width.
+float framing_half_height(float hip_height, float length, float aspect) {
+  const float by_height = std::min(std::clamp(1.8f * hip_height + 0.9f, 1.5f, 8.0f), 5.0f * hip_height);
+  return std::max(by_height, 0.75f * length / std::max(aspect, 0.1f));
 }
 
 }  // namespace
@@ -180,7 +182,7 @@ bool Game::Impl::switch_creature(World& world, const Genome& g) {
   world.set_player_creature(std::make_shared<Creature>(std::move(c.value())));
   batch_dirty = true;
   snapshot_all(world, true);
-  base_half_height = framing_half_height(world.player()->animator().hip_height());
+  base_half_height = framing_half_height(world.player()->animator().hip_height(), world.player()->animator().rig().scale.length, window_aspect());
   say(world.player()->creature().name);
   return true;
 }
@@ -213,7 +215,7 @@ Status Game::Impl::switch_character(World& world, const std::string& path, bool 
   world.set_player_character(c.value()->loaded.character);
   batch_dirty = true;
   snapshot_all(world, true);
-  base_half_height = framing_half_height(world.player()->animator().hip_height());
+  base_half_height = framing_half_height(world.player()->animator().hip_height(), world.player()->animator().rig().scale.length, window_aspect());
   say(world.player()->name());
   return {};
 }
@@ -235,7 +237,7 @@ float Game::Impl::window_aspect() const {
 }
 
 void Game::Impl::reset_camera(const World& world) {
-  base_half_height = framing_half_height(world.player()->animator().hip_height());
+  base_half_height = framing_half_height(world.player()->animator().hip_height(), world.player()->animator().rig().scale.length, window_aspect());
   follow.reset(world.level(), camera_subject(world, 1.0f), base_half_height * zoom, window_aspect());
   camera_ws = follow.center_ws();
 }
