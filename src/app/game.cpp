@@ -44,8 +44,9 @@ std::string resolve_data_path(const std::string& path) {
 
 namespace {
 
-// An NPC cast that walks well on box levels; they cycle when there are more NPCs.
-constexpr const char* kNpcExamples[] = {"red deer", "ostrich", "pig", "dromedary", "wildebeest", "triceratops"};
+// An NPC cast that walks well on box levels, first the smallest and one of the biggest beside
+// the default horse (sizes at a glance); they cycle when there are more NPCs.
+constexpr const char* kNpcExamples[] = {"rabbit", "african elephant", "red deer", "ostrich", "pig", "dromedary", "wildebeest", "triceratops"};
 
 Result<std::shared_ptr<const Creature>> make_creature(const Genome& genome) {
   auto c = build_creature(genome);
@@ -230,7 +231,7 @@ Status Game::init(const GameOptions& o) {
     const float gap = std::min(1.0f, std::max(length, 0.1f));
     const float npc_x = inside(row_x + gap + 0.5f * length);
     row_x += gap + length;
-    const glm::vec2 at{npc_x, world_->level().spawn_ws.y + 2.0f};
+    const glm::vec2 at{npc_x, world_->level().spawn_ws.y + 0.5f};  // (within the reset's snap: standing)
     world_->spawn_npc(c.value(), at, 0x9e3779b97f4a7c15ull * static_cast<uint64_t>(i + 1));
   }
   if (o.demo) {
