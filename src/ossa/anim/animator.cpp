@@ -177,9 +177,9 @@ void Animator::update(float dt, const AnimatorIntent& intent, const Level& level
   // times a second, 7 ticks of 120 Hz a hop: a tick that long a part of the cycle left it 4 %
   // short of the commanded speed), and a fall covers much of its height in a tick (a 21 cm
   // hip falling 3 m, 6 cm a tick, touched down with its pelvis 6 cm in the ground). The tick
-  // splits into substeps: at least kSubstepsPerCycle a gait cycle, and no more than
-  // kFallStepOfHip hip heights of fall a substep (none for a creature whose cycle is that
-  // many ticks long and that falls less: every animal from a rabbit up walking at 120 Hz).
+  // splits into substeps: at least kSubstepsPerCycle a gait cycle (16: the speed within 0.6 %
+  // for every example), and no more than kFallStepOfHip hip heights of fall a substep. At
+  // 120 Hz only the frog and the armored shrew take substeps walking on flat ground.
   const float cycles = gait_.frequency * dt * static_cast<float>(kSubstepsPerCycle);
   const float fall = std::fabs(vertical_speed()) * dt / (kFallStepOfHip * rig_->hip_height);
   const int n = std::clamp(static_cast<int>(std::ceil(std::max(cycles, fall))), 1, kMaxSubsteps);

@@ -88,7 +88,7 @@ class Animator {
 
   // One fixed step of dt seconds towards intent.velocity, jumping when asked. A creature that
   // falls below the level's kill height starts again at the level's spawn. A creature whose
-  // gait cycles in fewer than 24 such steps (a frog at true size), or that falls more than a
+  // gait cycles in fewer than 16 such steps (a frog at true size), or that falls more than a
   // tenth of its hip height in one, takes the step in up to 8 equal substeps, so that its
   // motion does not depend on the tick rate.
   void update(float dt, const AnimatorIntent& intent, const Level& level);
@@ -209,7 +209,7 @@ class Animator {
   void finish_tick(const anim::AnimContext& ctx, float dt);
   // One step of the pipeline (update splits a tick into these).
   void tick(float dt, const AnimatorIntent& intent, const Level& level);
-  static constexpr int kSubstepsPerCycle = 24;
+  static constexpr int kSubstepsPerCycle = 16;
   static constexpr int kMaxSubsteps = 8;
   static constexpr float kFallStepOfHip = 0.1f;
   // A part of the body in a box ahead (push_back_from_face): the body goes back out of it,
