@@ -74,15 +74,22 @@ Animator::BlockReport Animator::block_report() const {
   r.step_down_m = params_.max_step_down * rig_->hip_height;
   r.jump_m = params_.jump_height * rig_->hip_height;
   if (!r.blocked || ground_.size() == 0) return r;
-  // Its feet: the lowest standing one, else where its hip height puts them.
-  float feet = INFINITY;
-  for (const anim::FootState& f : step_.feet.feet) {
-    if (f.state == LegState::kStance && !f.air) feet = std::min(feet, f.pos_ws.y);
+  // Its feet: the leading girdle's lowest standing foot (those that must climb: the hind feet
+  // may still stand a step lower), else any standing one, else where its hip height puts them.
+  float feet = INFINITY, any = INFINITY;
+  for (size_t leg = 0; leg < rig_->legs.size(); ++leg) {
+    const anim::FootState& f = step_.feet.of_leg(static_cast<int>(leg));
+    if (f.state != LegState::kStance || f.air) continue;
+    any = std::min(any, f.pos_ws.y);
+    if (rig_->legs[leg].girdle == 0) feet = std::min(feet, f.pos_ws.y);  // (girdles: front first)
   }
+  if (!std::isfinite(feet)) feet = any;
   if (!std::isfinite(feet)) feet = body_.root_y_ws - rig_->hip_height;
+  // The ground ahead: from the root to a body length past its front (a stopped creature's
+  // stride says nothing of how far its next step would go).
   const int dir = motion_.block.dir != 0 ? motion_.block.dir : body_.facing;
-  const float half = 0.5f * rig_->scale.length;
-  const float a = body_.x_ws, b = body_.x_ws + dir * (half + std::max(gait_.stride, half));
+  const float front = dir > 0 ? rig_->body_hi_ws(body_.x_ws, dir) : rig_->body_lo_ws(body_.x_ws, dir);
+  const float a = body_.x_ws, b = front + dir * std::max(gait_.stride, rig_->scale.length);
   const int i0 = ground_.column_of(std::min(a, b)), i1 = ground_.column_of(std::max(a, b));
   for (int i = i0; i <= i1; ++i) {
     const float h = ground_.column(i);

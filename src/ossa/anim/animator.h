@@ -145,12 +145,13 @@ class Animator {
   const std::vector<float>& girdle_bob() const { return gait_.girdle_bob; }
   bool blocked() const { return motion_.block.blocked; }
   // Why it stands blocked, for a HUD or a log (worked out when asked, from the ground the
-  // last tick saw): the ground ahead within a body length and a stride against what its legs
-  // climb and step down and how high its jump rises. A creature small for the level says so.
+  // last tick saw): the ground from its root to a body length past its front, against its
+  // leading feet, what its legs climb and step down and how high its jump rises. A creature
+  // small for the level says so.
   struct BlockReport {
     bool blocked = false;
-    float rise_m = 0.0f;    // the highest ground ahead above its feet (0: none higher)
-    float drop_m = 0.0f;    // the deepest ground ahead below its feet (INFINITY: a gap)
+    float rise_m = 0.0f;    // the highest ground ahead above its leading feet (0: none higher)
+    float drop_m = 0.0f;    // the deepest ground ahead below them (INFINITY: a gap)
     float climb_m = 0.0f;   // the highest step its legs climb (params().max_step_up)
     float step_down_m = 0.0f;  // the deepest step down its legs take (params().max_step_down)
     float jump_m = 0.0f;    // how high its jump rises (params().jump_height)
