@@ -165,8 +165,8 @@ Result<ParsedArgs> parse_game_args(const std::vector<std::string>& args) {
         }
       } else {
         const size_t x = v.find('x');
-        auto w = parse_int_arg(flag + " width", x == std::string::npos ? v : v.substr(0, x), 16, 8192);
-        auto h = parse_int_arg(flag + " height", x == std::string::npos ? "" : v.substr(x + 1), 16, 8192);
+        auto w = parse_int_arg(flag + " width", v.substr(0, x), 16, 8192);
+        auto h = parse_int_arg(flag + " height", v.substr(x + 1), 16, 8192);
         if (!w.ok() || !h.ok()) s = Error{flag + ": expected WIDTHxHEIGHT with sides in [16, 8192], got \"" + v + "\""};
         else o.width = static_cast<int>(w.value()), o.height = static_cast<int>(h.value());
       }

@@ -88,6 +88,12 @@ ContactMode contact_from_proportions(const BodyPlan& plan, const Genome& g, bool
   return heel_draw ? ContactMode::kFlat : ContactMode::kTip;
 }
 
+// The frame's scale: its metres over the skeleton's 1000 frame units.
+void use_frame(Genome& g) {
+  g.options.frame_m = std::clamp(g.options.frame_m, kMinFrameMetres, kMaxFrameMetres);
+  g.scale = g.options.frame_m / 1000.0f;
+}
+
 }  // namespace
 
 SkullShape random_skull_shape(int variant, uint64_t seed) {
@@ -274,8 +280,7 @@ Genome Generator::complete(std::array<double, kPcaDims> pca, Rng& rng, const Gen
   g.skull_shape = random_skull_shape(g.skull_variant, seed);
 
   // Size: the frame for now; apply_size sets the true size once the body is complete.
-  g.options.frame_m = std::clamp(g.options.frame_m, kMinFrameMetres, kMaxFrameMetres);
-  g.scale = g.options.frame_m / 1000.0f;
+  use_frame(g);
 
   // Contact mode: as given (an example's posture), else from the legs' proportions, then the
   // rest pose. The heel draw [Z 7.2.1] is made either way, so that a given contact leaves the
@@ -403,8 +408,7 @@ Genome Generator::variation(const Genome& parent, uint64_t seed, double sigma) c
 }
 
 void Generator::apply_size(Genome& g) const {
-  g.options.frame_m = std::clamp(g.options.frame_m, kMinFrameMetres, kMaxFrameMetres);
-  g.scale = g.options.frame_m / 1000.0f;
+  use_frame(g);
   if (!g.options.true_size || !body_volume_) return;
   // The rule measures the body at the frame's scale; the true scale follows from it.
   Result<Creature> built = build_creature(g);

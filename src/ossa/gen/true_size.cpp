@@ -71,22 +71,36 @@ const PublishedSize* published_size(std::string_view name) {
   return nullptr;
 }
 
+namespace {
+
+// The creature's rest pose, model space.
+std::vector<Mat2x3> rest_matrices(const Creature& c) {
+  const Skeleton& s = c.skeleton;
+  const bool posed = c.rest_pose.locals.size() == static_cast<size_t>(s.bone_count());
+  return model_matrices(s, posed ? c.rest_pose.locals : s.rest_locals());
+}
+
+// The highest joint above the ground of the legs `take` accepts, metres (0: none).
+template <typename Take>
+float legs_height(const Creature& c, const std::vector<Mat2x3>& m, Take take) {
+  float height = 0.0f;
+  for (const Limb& l : c.limbs) {
+    if (l.kind != LimbKind::kLeg || !take(l)) continue;
+    height = std::max(height, bone_start(m[static_cast<size_t>(l.bones[0])]).y - c.ground_y_ms);
+  }
+  return height;
+}
+
+bool hind(const Limb& l) { return l.girdle == GirdleKind::kHip; }
+
+}  // namespace
+
 float size_measure(const Creature& c, SizeMeasure measure) {
   const Skeleton& s = c.skeleton;
-  const int n = s.bone_count();
-  const std::vector<BoneLocal>& locals =
-      c.rest_pose.locals.size() == static_cast<size_t>(n) ? c.rest_pose.locals : s.rest_locals();
-  const std::vector<Mat2x3> m = model_matrices(s, locals);
-  if (measure == SizeMeasure::kHip) {
-    float hip = 0.0f;
-    for (const Limb& l : c.limbs) {
-      if (l.kind != LimbKind::kLeg || l.girdle != GirdleKind::kHip) continue;
-      hip = std::max(hip, bone_start(m[static_cast<size_t>(l.bones[0])]).y - c.ground_y_ms);
-    }
-    return hip;
-  }
+  const std::vector<Mat2x3> m = rest_matrices(c);
+  if (measure == SizeMeasure::kHip) return legs_height(c, m, hind);
   float lo = 1e30f, hi = -1e30f;
-  for (int b = 0; b < n; ++b) {
+  for (int b = 0; b < s.bone_count(); ++b) {
     const BoneKind k = s.kind(b);
     if (k != BoneKind::kSkull && k != BoneKind::kNeckVertebra && k != BoneKind::kBackVertebra &&
         k != BoneKind::kTailVertebra) {
@@ -101,17 +115,9 @@ float size_measure(const Creature& c, SizeMeasure measure) {
 }
 
 float leg_height(const Creature& c) {
-  const float hip = size_measure(c, SizeMeasure::kHip);
-  if (hip > 0.0f) return hip;
-  const std::vector<Mat2x3> m = model_matrices(c.skeleton, c.rest_pose.locals.size() == static_cast<size_t>(c.skeleton.bone_count())
-                                                               ? c.rest_pose.locals
-                                                               : c.skeleton.rest_locals());
-  float height = 0.0f;
-  for (const Limb& l : c.limbs) {
-    if (l.kind != LimbKind::kLeg) continue;
-    height = std::max(height, bone_start(m[static_cast<size_t>(l.bones[0])]).y - c.ground_y_ms);
-  }
-  return height;
+  const std::vector<Mat2x3> m = rest_matrices(c);
+  const float hip = legs_height(c, m, hind);
+  return hip > 0.0f ? hip : legs_height(c, m, [](const Limb&) { return true; });
 }
 
 float true_size_scale(const Creature& c, double weight_kg, double body_volume_m3) {

@@ -114,12 +114,12 @@ ExportMesh rigid_quads(const Creature& creature, const std::vector<Mat2x3>& mode
   const Skeleton& s = creature.skeleton;
   ExportMesh out;
   static constexpr float kCorner[4][2] = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
+  // A bone without a length or width gets a square 1 % of the creature's frame (2 cm in the
+  // 2 m frame), in its own size: not at least 1 cm, a fifth of a 5 cm creature.
+  const float unit = creature.scale > 0.0f && std::isfinite(creature.scale) ? creature.scale : 0.002f;
+  const float fallback = 10.0f * unit;
   for (int i = 0; i < s.bone_count(); ++i) {
     const Mat2x3& m = model[static_cast<size_t>(i)];
-    // A bone without a length or width gets a square 1 % of the creature's frame (2 cm in
-    // the 2 m frame), in its own size: not at least 1 cm, a fifth of a 5 cm creature.
-    const float unit = creature.scale > 0.0f && std::isfinite(creature.scale) ? creature.scale : 0.002f;
-    const float fallback = 10.0f * unit;
     float length = s.length(i), width = s.width(i);
     if (!(length > 0.0f) || !std::isfinite(length)) length = std::max(width, fallback);
     if (!(width > 0.0f) || !std::isfinite(width)) width = std::max(0.15f * length, fallback);
