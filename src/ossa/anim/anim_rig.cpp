@@ -579,8 +579,9 @@ std::shared_ptr<const AnimRig> build_anim_rig(const Skeleton& skeleton, const Po
   for (const RigGirdle& g : rig->girdles) hip += g.rest_height;
   hip = rig->girdles.empty() ? std::max(rig->root_rest_y, 0.05f) : hip / static_cast<float>(rig->girdles.size());
   rig->hip_height = std::max(hip, 0.02f);
-  float x_min = 0.0f, x_max = 0.0f;
+  float x_min = 0.0f, x_max = 0.0f, y_max = 0.0f;
   for (int b = 0; b < sk.bone_count(); ++b) {
+    y_max = std::max({y_max, bone_start(rig->model_rest[b]).y, bone_end(rig->model_rest[b], sk.length(b)).y});
     const glm::vec2 p = bone_start(rig->model_rest[b]);
     x_min = std::min(x_min, p.x);
     x_max = std::max(x_max, p.x);
@@ -595,6 +596,7 @@ std::shared_ptr<const AnimRig> build_anim_rig(const Skeleton& skeleton, const Po
   const float root_x = bone_start(rig->model_rest[roles.root]).x;
   rig->body_back = std::min(x_min - root_x, -0.025f);
   rig->body_front = std::max(x_max - root_x, 0.025f);
+  rig->body_top = std::max(y_max, 0.01f);
   rig->outline_arms = distinct_outlines(*rig, rig->arms);
   rig->outline_fins = distinct_outlines(*rig, rig->fins);
   rig->outline_wings = distinct_outlines(*rig, rig->wings);

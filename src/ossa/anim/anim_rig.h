@@ -118,6 +118,8 @@ struct AnimRig {
   // The rest pose's extent along x from the root (_fs: + ahead), metres; a long tail makes it
   // lopsided (a snake's root is near its head).
   float body_back = -0.5f, body_front = 0.5f;
+  // The rest pose's highest point above the ground it stands on, metres.
+  float body_top = 1.0f;
   // World x range the rest pose covers with the root at x_ws, facing `facing`.
   float body_lo_ws(float x_ws, int facing) const { return x_ws + (facing > 0 ? body_back : -body_front); }
   float body_hi_ws(float x_ws, int facing) const { return x_ws + (facing > 0 ? body_front : -body_back); }

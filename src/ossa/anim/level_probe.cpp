@@ -16,6 +16,41 @@ std::optional<GroundHit> ground_below(const Level& level, float x0, float x1, fl
   return level.ground_height_below(std::min(x0, x1), std::max(x0, x1), from_y, std::max(max_drop, 0.0f));
 }
 
+namespace {
+
+// Pushes the body towards `dir` past every box its standing region overlaps until it overlaps
+// none; nullopt beyond `reach` or after too many boxes.
+std::optional<float> push_clear(const Level& level, float x, float back, float front, float top, float from_y,
+                                float max_drop, float reach, int dir, std::vector<int>& hits) {
+  constexpr int kMaxPushes = 64;
+  const float start = x;
+  for (int i = 0; i < kMaxPushes && std::abs(x - start) <= reach; ++i) {
+    const float lo = x + back, hi = x + front;
+    const auto ground = ground_below(level, lo, hi, from_y, max_drop);
+    const float base = ground ? ground->height_ws : from_y - max_drop;
+    hits.clear();
+    level.overlapping(Box{{lo, base + 1e-3f}, {hi, base + std::max(top, 2e-3f)}}, hits);
+    if (hits.empty()) return x;
+    float shift = 0.0f;
+    for (int h : hits) {
+      const Box& b = level.box(h);
+      shift = std::max(shift, dir > 0 ? b.max_ws.x - lo : hi - b.min_ws.x);
+    }
+    x += static_cast<float>(dir) * (shift + 1e-3f);
+  }
+  return std::nullopt;
+}
+
+}  // namespace
+
+float clear_standing_x(const Level& level, float x, float back, float front, float top, float from_y, float max_drop,
+                       float reach, std::vector<int>& hits) {
+  const auto right = push_clear(level, x, back, front, top, from_y, max_drop, reach, 1, hits);
+  const auto left = push_clear(level, x, back, front, top, from_y, max_drop, reach, -1, hits);
+  if (right && left) return *right - x <= x - *left ? *right : *left;
+  return right ? *right : left ? *left : x;
+}
+
 bool polyline_hits_level(const Level& level, const glm::vec2* p, int n, std::vector<int>& hits) {
   glm::vec2 lo = p[0], hi = p[0];
   for (int i = 1; i < n; ++i) {

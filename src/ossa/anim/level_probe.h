@@ -20,6 +20,14 @@ namespace ossa::anim {
 // in either order and a drop that may come out negative, which mean the same span and no drop.
 std::optional<GroundHit> ground_below(const Level& level, float x0, float x1, float from_y, float max_drop);
 
+// Where a body may stand near x: the root x nearest to `x` at which the body's extent
+// [x + back, x + front] (world offsets, back < front), standing on the highest ground below
+// `from_y` in that span and rising `top` above it, meets no box — a wall taller than the search
+// or a platform at the body's height. Tries pushing the body clear to either side and takes
+// the shorter shift; `x` itself when it fits, or when no place within `reach` does.
+float clear_standing_x(const Level& level, float x, float back, float front, float top, float from_y, float max_drop,
+                       float reach, std::vector<int>& hits);
+
 // Does the polyline p[0] - p[1] - ... pass through the interior of a collider (shrunk by a
 // little under a millimetre, 0.99 mm)? One query for its bounds, then a Liang-Barsky clip per segment and box.
 // `hits` is scratch.
