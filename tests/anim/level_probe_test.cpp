@@ -93,3 +93,26 @@ TEST_CASE("level probe: a clearance knows the highest top above its base near a 
   CHECK(far.clear_above(0.01f));        // flat ground only
   CHECK_FALSE(anim::Clearance{}.clear_above(100.0f));  // the default knows nothing
 }
+
+TEST_CASE("level probe: a body that would stand in a wall is placed clear of it, on ground", "[anim][probe]") {
+  // Floor from x = 0 to 20 with a 4 m wall at [-1, 0] (default.json's left end) and a 2 m
+  // post at [8, 8.5]. A body reaching 5 m behind its root and 1 m ahead, 1.5 m tall.
+  const Level level({Box::from_corner(0.0f, -1.0f, 20.0f, 1.0f), Box::from_corner(-1.0f, -1.0f, 1.0f, 5.0f),
+                     Box::from_corner(8.0f, 0.0f, 0.5f, 2.0f)},
+                    {2.0f, 0.0f});
+  std::vector<int> hits;
+  const float back = -5.0f, front = 1.0f, top = 1.5f, from = 1.0f, drop = 3.0f, reach = 20.0f;
+  // Fits: unchanged.
+  CHECK(anim::clear_standing_x(level, 6.0f, back, front, top, from, drop, reach, hits) == 6.0f);
+  // Its tail in the end wall: pushed forwards until the tail clears it (left of x 0 there is
+  // no floor, so not backwards however short that is).
+  const float x = anim::clear_standing_x(level, 2.0f, back, front, top, from, drop, reach, hits);
+  CHECK(x + back >= 0.0f);
+  CHECK(x + back < 0.01f);
+  // Its front in the post: the shorter way, backwards (x 7.5 → 6.999).
+  const float y = anim::clear_standing_x(level, 7.5f, back, front, top, from, drop, reach, hits);
+  CHECK(y + front <= 8.0f);
+  CHECK(y + front > 7.99f);
+  // Nowhere within reach: unchanged.
+  CHECK(anim::clear_standing_x(level, 2.0f, back, front, top, from, drop, 0.5f, hits) == 2.0f);
+}

@@ -174,6 +174,27 @@ TEST_CASE("a horse at full run (galloping) covers drops.json's gap with a runnin
   CHECK(probe.nan_count == 0);
 }
 
+TEST_CASE("the trunk's own bones stay out of the steps and the ground", "[game][anim][locomotion]") {
+  // Ribs, neck and skull take part in the body's height (body placement's clamp 5, the trunk):
+  // cases where they went into the level before, at true size, from the spawn — landings with
+  // the rib cage in the floor (red deer, chamois), heads and chests climbing steps (harbour
+  // seal, thrinaxodon, eared seal, tyrannosaurus, pigeon), and a whale whose tail lay in the
+  // level's end wall from the first tick (the reset now places it clear). Every bone within
+  // 1 mm, no stance foot sliding.
+  struct Case { const char* name; const char* level; const char* script; };
+  const Case cases[] = {{"red deer", "drops.json", "walk:0.6:30"},      {"chamois", "drops.json", "walk:0.6:30"},
+                        {"harbour seal", "stairs.json", "walk:0.6:30"}, {"thrinaxodon", "rough.json", "walk:0.6:30"},
+                        {"eared seal", "stairs.json", "run:1:15"},      {"tyrannosaurus", "default.json", "walk:0.6:30"},
+                        {"pigeon", "default.json", "run:1:15"},         {"sperm whale", "rough.json", "walk:0.6:30"}};
+  for (const Case& k : cases) {
+    const SimResult r = run_from_spawn(k.name, load_level(scenes::source_path(std::string("levels/") + k.level)).value(), k.script);
+    INFO(k.name << " on " << k.level << ", " << k.script << ": deepest " << r.probe.deepest_bone << " at " << r.probe.deepest_at_s << " s");
+    CHECK(r.probe.max_penetration_m <= 0.001f);
+    CHECK(r.probe.max_stance_slip_m <= 0.001f);
+    CHECK(r.probe.nan_count == 0);
+  }
+}
+
 TEST_CASE("a creature spawned 5 m up falls and stands planted within 2 s", "[game][anim][locomotion]") {
   const Level flat = scenes::flat_level(40.0f);
   for (const char* name : {"horse", "ostrich", "tortoise", "frog"}) {

@@ -226,6 +226,44 @@ void build_body_outline(AnimRig& rig, const Mat2x3& root_inv) {
   }
 }
 
+// The trunk's segments (AnimRig::trunk): every bone neither a limb's nor the tail's, the
+// skull's and what hangs from it last.
+void build_trunk(AnimRig& rig) {
+  if (rig.legs.empty()) return;
+  const Skeleton& sk = rig.skeleton;
+  std::vector<uint8_t> tail(sk.bone_count(), 0), skull(sk.bone_count(), 0);
+  for (int b : rig.tail) tail[b] = 1;
+  if (rig.skull >= 0) skull[rig.skull] = 1;
+  for (int b = 0; b < sk.bone_count(); ++b) {  // parents precede children
+    if (sk.parent(b) < 0) continue;
+    tail[b] |= tail[sk.parent(b)];
+    skull[b] |= skull[sk.parent(b)];
+  }
+  std::vector<AnimRig::TrunkSegment> body, head;
+  auto add = [&](std::vector<AnimRig::TrunkSegment>& to, int b) {
+    const AnimRig::TrunkSegment seg{bone_start(rig.model_rest[b]), bone_end(rig.model_rest[b], sk.length(b))};
+    if (glm::distance(seg.a, seg.b) < 1e-4f * rig.body_half_length) return;
+    for (const AnimRig::TrunkSegment& t : to) {
+      if (glm::distance(t.a, seg.a) + glm::distance(t.b, seg.b) < 1e-5f * rig.body_half_length) return;
+    }
+    to.push_back(seg);
+  };
+  for (int b = 0; b < sk.bone_count(); ++b) {
+    if (rig.limb_bone[b] || tail[b]) continue;
+    add(skull[b] ? head : body, b);
+  }
+  rig.trunk = body;
+  rig.trunk_level_from = body.size();
+  rig.trunk.insert(rig.trunk.end(), head.begin(), head.end());
+  const glm::vec2 root{0.0f, rig.root_rest_y};
+  rig.trunk_lo = glm::vec2(1e30f);
+  rig.trunk_hi = glm::vec2(-1e30f);
+  for (const AnimRig::TrunkSegment& t : rig.trunk) {
+    rig.trunk_lo = glm::min(rig.trunk_lo, glm::min(t.a, t.b) - root);
+    rig.trunk_hi = glm::max(rig.trunk_hi, glm::max(t.a, t.b) - root);
+  }
+}
+
 // A legless body's drape (AnimRig::drape_bones): which spine bone each ends at, and the depth of
 // what hangs below each joint, at rest.
 void build_drape(const RigRoles& roles, AnimRig& rig) {
@@ -614,6 +652,7 @@ std::shared_ptr<const AnimRig> build_anim_rig(const Skeleton& skeleton, const Po
     }
   }
   build_fk_plan(roles, *rig);
+  build_trunk(*rig);
   build_flex(*rig);
   anim::build_pentapedal(*rig);
   rig->weight_kg = roles.weight_kg;

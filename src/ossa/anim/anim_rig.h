@@ -207,6 +207,20 @@ struct AnimRig {
   glm::vec2 skull_rel{0.0f}, skull_span{0.0f};
   glm::vec2 body_lo{0.0f}, body_hi{0.0f};  // extent of the hull and the skull joint
 
+  // The trunk's own bones — the root, back, neck and what hangs from them (ribs), the skull
+  // and its jaw; no limb, no tail — as segments at rest (model space), one of each pair that
+  // coincides in the side view, zero-length bones left out: body placement keeps them out of
+  // the ground (clamp 5). The skull's (from trunk_level_from on) stay level with the head:
+  // they turn with the skull, not with the body. trunk_lo/trunk_hi bound them relative to the
+  // root's rest joint. Legged rigs only.
+  struct TrunkSegment {
+    glm::vec2 a{0.0f}, b{0.0f};
+  };
+  std::vector<TrunkSegment> trunk;
+
+  size_t trunk_level_from = 0;
+  glm::vec2 trunk_lo{0.0f}, trunk_hi{0.0f};
+
   // Tail: it hangs from the nearest ancestor kept current each tick through the bones between
   // (or their rest product when none bends).
   int tail_base_bone = -1;

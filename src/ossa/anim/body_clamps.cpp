@@ -316,13 +316,49 @@ void pitch_for_front_shoulder(Placement& p) {
   }
 }
 
+// The trunk's bones (ribs, spine, neck, skull) cut no step either: how far the body must rise
+// (lifted by `lift` already) so that each keeps kTrunkKeepOfHip clear of the boxes it is in.
+// A bone needing kMaxTrunkRaiseOfHip or more meets a wall, not a step (the wall sweep's
+// business). The bones as at rest, the body placed as now; the skull's kept level.
+constexpr float kTrunkKeepOfHip = 0.01f, kMaxTrunkRaiseOfHip = 0.5f;
+struct TrunkNeed {
+  float raise = 0.0f;  // metres
+  float pitch = 0.0f;  // radians up about `pivot`: the same for the bones ahead of it
+};
+TrunkNeed trunk_need(const Placement& p, float lift, glm::vec2 pivot_ws) {
+  const AnimRig& rig = p.ctx.rig;
+  if (rig.trunk.empty()) return {};
+  const BodyFrame& body = p.body;
+  const float hip = rig.hip_height, keep = kTrunkKeepOfHip * hip;
+  // One look at the ground profile under the trunk's whole bound first (on flat ground and
+  // away from steps, all the work there is).
+  glm::vec2 lo, hi;
+  body.trunk_bound_ws(rig, lift, &lo, &hi);
+  if (!p.ctx.ground.may_rise_above(lo.x, hi.x, lo.y - keep, hi.y + kMaxTrunkRaiseOfHip * hip)) return {};
+  const float pivot = body.to_fs(pivot_ws).x;
+  TrunkNeed need;
+  for (size_t i = 0; i < rig.trunk.size(); ++i) {
+    auto [a, b] = body.trunk_segment_ws(rig, i, lift);
+    a.y -= keep;
+    b.y -= keep;
+    if (!p.ctx.ground.may_rise_above(std::min(a.x, b.x), std::max(a.x, b.x), std::min(a.y, b.y), std::max(a.y, b.y) + kMaxTrunkRaiseOfHip * hip)) continue;
+    const float n = raise_to_clear(a, b, p.ctx.level, p.ctx.hits);
+    if (!(n > 0.0f) || n >= kMaxTrunkRaiseOfHip * hip) continue;
+    need.raise = std::max(need.raise, n);
+    const float ahead = std::max(body.to_fs(a).x, body.to_fs(b).x) - pivot;
+    if (ahead > 0.1f * hip) need.pitch = std::max(need.pitch, std::asin(std::min(n / ahead, 0.9f)));
+  }
+  return need;
+}
+
 // 5. Whatever the legs ask, a girdle never sinks into the ground under it: it keeps an
 // eighth of its standing height above the highest ground there (a leg may stretch, the body
 // stays out). Ground the body came down past on this tick (`fell`) counts too (clamp 1 may
 // pull it down further than the queries look up). Shoulders carrying arms, wings or fins too,
 // and folded wings do not cut a step's corner (a wall, too high to rise over, is the wall
-// sweep's business).
-void keep_body_out_of_ground(Placement& p, float fell) {
+// sweep's business). Nor do the trunk's own bones (trunk_need), as far as the stance legs reach;
+// a single girdle's body turns up about it for the rest.
+void keep_body_out_of_ground(Placement& p, float fell, const std::vector<float>& room) {
   const AnimRig& rig = p.ctx.rig;
   float raise = 0.0f;
   for (size_t g = 0; g < rig.girdles.size(); ++g) {
@@ -352,6 +388,26 @@ void keep_body_out_of_ground(Placement& p, float fell) {
     }
   }
   for (const RigLimb& f : rig.outline_fins) keep_shoulder_out(f);
+  // The trunk rises no further than every stance foot stays in reach (a body pitched down a
+  // ledge, its feet below, would pull them off their footholds).
+  float least_room = 1e30f;
+  for (float r : room) least_room = std::min(least_room, r);
+  if (rig.trunk.empty()) {
+    p.body.root_y_ws += raise;
+    return;
+  }
+  const glm::vec2 pivot = p.body.girdle_ws(rig, static_cast<int>(rig.girdles.size()) - 1);
+  TrunkNeed trunk = trunk_need(p, raise, pivot);
+  if (trunk.raise > least_room - raise && rig.girdles.size() == 1 && trunk.pitch > 0.0f) {
+    // More than the legs allow: a single girdle's body turns up about it instead (a biped's
+    // chest over the stairs ahead), the feet where they were.
+    const glm::vec2 rel = rig.girdles.front().joint_ms - glm::vec2(0.0f, rig.root_rest_y);
+    const float girdle_y = p.body.rotate_body(rel).y;
+    p.body.pitch = std::min(p.body.pitch + trunk.pitch, std::max(kMaxPitch, p.body.pitch));
+    p.body.root_y_ws += girdle_y - p.body.rotate_body(rel).y;
+    trunk = trunk_need(p, raise, pivot);
+  }
+  raise += std::min(trunk.raise, std::max(least_room - raise, 0.0f));
   p.body.root_y_ws += raise;
 }
 

@@ -191,7 +191,7 @@ void place_body(const AnimContext& ctx, const PlacementInputs& in, const FootSet
   keep_stance_legs_unfolded(p, fold, room);
   keep_knees_off_ground(p, need, swing_up, room);
   pitch_for_front_shoulder(p);
-  keep_body_out_of_ground(p, rig.girdles.empty() ? 0.0f : std::max(old_root - body.root_y_ws, 0.0f));
+  keep_body_out_of_ground(p, rig.girdles.empty() ? 0.0f : std::max(old_root - body.root_y_ws, 0.0f), room);
   release_overstretched_feet(p);
   state.root_vy = in.dt > 0.0f ? (body.root_y_ws - old_root) / in.dt : 0.0f;
 }

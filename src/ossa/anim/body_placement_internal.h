@@ -86,7 +86,7 @@ void keep_stance_legs_in_reach(Placement& p, std::vector<float>& need, std::vect
 void keep_stance_legs_unfolded(Placement& p, std::vector<float>& fold_raise, std::vector<float>& room);
 void keep_knees_off_ground(Placement& p, std::vector<float>& stance_up, std::vector<float>& swing_up, std::vector<float>& room);
 void pitch_for_front_shoulder(Placement& p);
-void keep_body_out_of_ground(Placement& p, float fell);
+void keep_body_out_of_ground(Placement& p, float fell, const std::vector<float>& room);
 void release_overstretched_feet(Placement& p);
 
 }  // namespace ossa::anim::placement

@@ -27,7 +27,8 @@ std::optional<float> push_clear(const Level& level, float x, float back, float f
   for (int i = 0; i < kMaxPushes && std::abs(x - start) <= reach; ++i) {
     const float lo = x + back, hi = x + front;
     const auto ground = ground_below(level, lo, hi, from_y, max_drop);
-    const float base = ground ? ground->height_ws : from_y - max_drop;
+    if (!ground) return std::nullopt;  // off the level's edge: no place to stand this way
+    const float base = ground->height_ws;
     hits.clear();
     level.overlapping(Box{{lo, base + 1e-3f}, {hi, base + std::max(top, 2e-3f)}}, hits);
     if (hits.empty()) return x;

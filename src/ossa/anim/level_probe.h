@@ -24,7 +24,8 @@ std::optional<GroundHit> ground_below(const Level& level, float x0, float x1, fl
 // [x + back, x + front] (world offsets, back < front), standing on the highest ground below
 // `from_y` in that span and rising `top` above it, meets no box — a wall taller than the search
 // or a platform at the body's height. Tries pushing the body clear to either side and takes
-// the shorter shift; `x` itself when it fits, or when no place within `reach` does.
+// the shorter shift (a side with no ground under the body is no place); `x` itself when it
+// fits, or when no place within `reach` does.
 float clear_standing_x(const Level& level, float x, float back, float front, float top, float from_y, float max_drop,
                        float reach, std::vector<int>& hits);
 
