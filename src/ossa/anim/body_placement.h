@@ -14,7 +14,9 @@
 //                                  stance leg it leaves across an edge lifts at the next
 //                                  chance (TickHandoff::release_next);
 //   4. pitch_for_front_shoulder    a single girdle's shoulder far ahead turns the body up;
-//   5. keep_body_out_of_ground     girdles, shoulders and folded wings stay above the ground;
+//   5. keep_body_out_of_ground     girdles, shoulders and folded wings stay above the ground,
+//                                  and the trunk's bones (ribs, neck, skull) as far as the
+//                                  stance legs reach (a single girdle's body turns up);
 //   6. release_overstretched_feet  a stance leg the raising clamps stretched past its reach
 //                                  lifts at the next chance (TickHandoff::release_next).
 // The other stages move the body only through the transitions below, each where
