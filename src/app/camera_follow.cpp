@@ -17,6 +17,11 @@ constexpr float kMaxZoomOut = 1.6f;
 
 }  // namespace
 
+float framing_half_height(float hip_height, float length, float aspect) {
+  const float by_height = std::min(std::clamp(1.8f * hip_height + 0.9f, 1.5f, 8.0f), 5.0f * hip_height);
+  return std::max(by_height, 0.75f * length / std::max(aspect, 0.1f));
+}
+
 glm::vec2 CameraFollow::target(const Level& level, const CameraSubject& s, float hh) {
   const float feet = s.root_ws.y - s.hip_height;
   // The landing: the lowest ground ahead within reach, and in the air the ground below.

@@ -29,6 +29,13 @@ namespace ossa {
 
 class Level;
 
+// Half the view's height (metres) that frames a creature of hip height h and body length L
+// in a view `aspect` times as wide as high: room for the body and the ground around it. Below
+// h = 0.3 m it shrinks with the creature (5 h), so a 3 cm frog at its true size fills a good
+// part of the picture instead of a few pixels; a long body (a 27 m whale) has its length
+// within two thirds of the width.
+float framing_half_height(float hip_height, float length, float aspect);
+
 struct CameraSubject {
   glm::vec2 root_ws{0.0f};   // the creature's root (interpolated for the frame)
   float hip_height = 1.0f;   // metres: the feet are this far below the root

@@ -57,16 +57,6 @@ Image half_size(const Image& src) {
   return out;
 }
 
-// Half the view's height (metres) that frames a creature of hip height h and body length L
-// in a view `aspect` times as wide as high: room for the body and the ground around it. Below
-// h = 0.3 m it shrinks with the creature (5 h), so a 3 cm frog at its true size fills a good
-// part of the picture instead of a few pixels; a long body (a 27 m whale) has its length
-// within two thirds of the width.
-float framing_half_height(float hip_height, float length, float aspect) {
-  const float by_height = std::min(std::clamp(1.8f * hip_height + 0.9f, 1.5f, 8.0f), 5.0f * hip_height);
-  return std::max(by_height, 0.75f * length / std::max(aspect, 0.1f));
-}
-
 }  // namespace
 
 // ---- Window and ImGui -----------------------------------------------------------------------

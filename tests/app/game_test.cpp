@@ -21,10 +21,14 @@
 
 #include <glm/geometric.hpp>
 
+#include "app/camera_follow.h"
 #include "app/game.h"
 #include "app/game_editors.h"
 #include "app/options.h"
 #include "ossa/io/json.h"
+#include "ossa/anim/animator.h"
+#include "ossa/gen/skeleton_builder.h"
+#include "shared/scenes.h"
 #include "ossa/level/level_load.h"
 #include "ossa/platform/image.h"
 #include "ossa/platform/input.h"
@@ -281,6 +285,29 @@ TEST_CASE("F2 pressed and released within one frame shows and hides the editors,
   auto saved = load_level(o.level, LevelLoadOptions{});
   REQUIRE(saved.ok());
   CHECK(saved->colliders().size() == boxes + 1);
+}
+
+TEST_CASE("the camera frames every example at its true size: small ones fill the view, long ones fit in it", "[app]") {
+  // For each example animal at its true size (hip 3 cm to 3.5 m, length 4 cm to 27 m) in a
+  // 16:9 view: the body's length within two thirds of the width, and the creature's height
+  // (its hip) at least a tenth of the view's height (a frog is not a few pixels) where its
+  // length does not need the room.
+  const float aspect = 16.0f / 9.0f;
+  for (const Animal& animal : scenes::generator().dataset().animals) {
+    const std::string& name = animal.name;
+    const Creature c = build_creature(scenes::generator().example(name).value()).value();
+    const Animator a(c, SplinePrototypes::defaults());
+    const float hip = a.hip_height(), length = a.rig().scale.length;
+    const float hh = framing_half_height(hip, length, aspect);
+    INFO(name << ": hip " << hip << " m, length " << length << " m, half height " << hh << " m");
+    const float width = 2.0f * hh * aspect;
+    CHECK(length <= (2.0f / 3.0f) * width + 1e-4f);
+    // Unless its length takes the room (the whales, the snake, the trout): a tenth or more.
+    if (length < 0.99f * (2.0f / 3.0f) * width) CHECK(hip >= 0.099f * 2.0f * hh);
+  }
+  // A 27 m whale lies within two thirds of the width, a 3 cm frog stands a fifth of the height.
+  CHECK(framing_half_height(1.0f, 27.0f, aspect) * 2.0f * aspect * (2.0f / 3.0f) == Approx(27.0f));
+  CHECK(framing_half_height(0.03f, 0.04f, aspect) == Approx(0.15f));
 }
 
 TEST_CASE("the camera shows the landing of every ledge of drops.json 0.3 s before touch-down and rests still",
