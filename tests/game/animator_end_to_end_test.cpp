@@ -248,6 +248,41 @@ TEST_CASE("small creatures stop at steps their legs cannot climb, say so, and ju
   }
 }
 
+TEST_CASE("a blocked creature's report holds while it tries the way ahead again", "[game][anim]") {
+  // Every half second a blocked creature tests the way ahead; a test that finds a landing its
+  // body then cannot reach used to clear the report for a tick (the HUD line blinked, a
+  // segment could end without its reason). Once the frog (default.json's 10 cm step) and the
+  // rock hyrax (held at the next riser after jumping onto the first) are blocked, every tick
+  // reports it while the stick keeps pushing.
+  const Level level = shipped("default.json");
+  for (const char* name : {"frog", "rock hyrax"}) {
+    INFO(name);
+    Walker w = make_walker(build_creature(scenes::generator().example(name).value()).value(), level,
+                           level.spawn_ws + glm::vec2(0.0f, 1.0f));
+    const Animator& a = w.player->animator();
+    int blocked_ticks = 0, blinks = 0, retries = 0;
+    bool was_blocked = false;
+    float hold_x = NAN;  // where the report last said blocked
+    for (int t = 0; t < 25 * 120; ++t) {
+      w.player->step(1.0f / 120.0f, {0.6f, false, t == 20 * 120}, level);
+      const bool now = a.blocked();
+      if (was_blocked && !now) ++retries;
+      was_blocked = now;
+      if (a.block_report().blocked) {
+        ++blocked_ticks;
+        hold_x = a.x();
+      } else if (a.locomotion() != Locomotion::kGrounded) {
+        hold_x = NAN;  // a jump: a new hold begins where it lands and is blocked again
+      } else if (std::fabs(a.x() - hold_x) < 0.02f) {
+        ++blinks;  // not blocked by the report, yet still where it stood blocked
+      }
+    }
+    CHECK(blocked_ticks > 3 * 120);
+    CHECK(retries > 0);  // it did try again (and the report held through it)
+    CHECK(blinks == 0);
+  }
+}
+
 TEST_CASE("long bodies at the steep flight keep wings and flippers out of the steps, feet planted", "[game][anim]") {
   // The swan's folded wing reaches ahead of its chest, over the steps its short legs have not
   // climbed yet: the body turns up about its hips rather than cut the corners of the steps

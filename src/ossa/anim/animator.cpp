@@ -70,7 +70,7 @@ const Limb& Animator::leg_limb(int leg) const { return creature().limbs[leg_limb
 
 Animator::BlockReport Animator::block_report() const {
   BlockReport r;
-  r.blocked = motion_.block.blocked;
+  r.blocked = motion_.block.blocked || motion_.block.trial > 0.0f;
   r.climb_m = params_.max_step_up * rig_->climb_height;
   r.step_down_m = params_.max_step_down * rig_->hip_height;
   r.jump_m = params_.jump_height * rig_->hip_height;

@@ -149,7 +149,7 @@ class Animator {
   // leading feet, what its legs climb and step down and how high its jump rises. A creature
   // small for the level says so.
   struct BlockReport {
-    bool blocked = false;
+    bool blocked = false;   // blocked(), or trying the way ahead again for up to half a second
     float rise_m = 0.0f;    // the highest ground ahead above its leading feet (0: none higher)
     float drop_m = 0.0f;    // the deepest ground ahead below them (INFINITY: a gap)
     float climb_m = 0.0f;   // the highest step its legs climb (params().max_step_up)

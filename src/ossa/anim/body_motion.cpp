@@ -400,6 +400,7 @@ void command_speed(const FootholdInputs& in, float desired_velocity, float dt, b
   MotionState::Block& b = motion.block;
   const int want = desired_velocity > kStandingSpeed ? 1 : desired_velocity < -kStandingSpeed ? -1 : 0;
   float target = std::fabs(desired_velocity);
+  b.trial = want == b.dir ? std::max(b.trial - dt, 0.0f) : 0.0f;
   if (b.blocked) {
     if (want != b.dir) {
       b.blocked = false;
@@ -411,6 +412,7 @@ void command_speed(const FootholdInputs& in, float desired_velocity, float dt, b
         glm::vec2 landing_at;
         if (find_landing(in, b.leg, step_from(in.feet->of_leg(b.leg)), landing_x(in, b.leg, std::fabs(desired_velocity)), &landing_at)) {
           b.blocked = false;
+          b.trial = kBlockedRetrySeconds;
         }
       }
     }

@@ -30,6 +30,9 @@ struct MotionState {
     int dir = 0;                   // the facing it stopped in
     int leg = 0;                   // the leg that found no foothold
     float retry = 0.0f;            // seconds until the way ahead is tested again
+    // Seconds a retry that found a way ahead still counts as blocked for the report (the way
+    // may turn out not to be one a tick later: the message does not blink off meanwhile).
+    float trial = 0.0f;
   } block;
   // Steps under or a stride ahead of the body (steps_ahead): the fast gait gives way to the
   // middle one (gait clock).
@@ -63,7 +66,10 @@ inline void halt_if_blocked(MotionState& motion) {
   if (motion.block.blocked) motion.speed = 0.0f;
 }
 // Stage 11: a jump takes off whatever blocked the way; A1: in the air the speed is the path's.
-inline void clear_block(MotionState& motion) { motion.block.blocked = false; }
+inline void clear_block(MotionState& motion) {
+  motion.block.blocked = false;
+  motion.block.trial = 0.0f;
+}
 inline void follow_path(float vx, MotionState& motion) { motion.speed = std::fabs(vx); }
 
 struct BodyMotionResult {
