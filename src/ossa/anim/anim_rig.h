@@ -217,7 +217,6 @@ struct AnimRig {
     glm::vec2 a{0.0f}, b{0.0f};
   };
   std::vector<TrunkSegment> trunk;
-
   size_t trunk_level_from = 0;
   glm::vec2 trunk_lo{0.0f}, trunk_hi{0.0f};
 
