@@ -20,7 +20,6 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
-#include <utility>
 #include <vector>
 
 #include <glm/common.hpp>
@@ -70,31 +69,6 @@ struct BodyFrame {
   glm::vec2 body_point_ws(const AnimRig& rig, glm::vec2 rest_ms, float lift = 0.0f) const {
     const glm::vec2 j = rotate_body(rest_ms - glm::vec2(0.0f, rig.root_rest_y));
     return to_ws({j.x, j.y + root_y_ws + lift});
-  }
-  // The trunk's segment i (AnimRig::trunk) where the body is now, lifted by `lift`: a body
-  // point, or from trunk_level_from on kept level with the skull's joint.
-  std::pair<glm::vec2, glm::vec2> trunk_segment_ws(const AnimRig& rig, size_t i, float lift = 0.0f) const {
-    const AnimRig::TrunkSegment& t = rig.trunk[i];
-    if (i < rig.trunk_level_from) return {body_point_ws(rig, t.a, lift), body_point_ws(rig, t.b, lift)};
-    const glm::vec2 skull_ms = bone_start(rig.model_rest[rig.skull]);
-    const glm::vec2 skull_fs = to_fs(body_point_ws(rig, skull_ms, lift));
-    return {to_ws(skull_fs + (t.a - skull_ms)), to_ws(skull_fs + (t.b - skull_ms))};
-  }
-  // A box holding every trunk segment where the body is now, lifted by `lift` (its rest
-  // bound turned with the body, widened by the skull's reach against the body's turn).
-  void trunk_bound_ws(const AnimRig& rig, float lift, glm::vec2* lo, glm::vec2* hi) const {
-    *lo = glm::vec2(1e30f);
-    *hi = glm::vec2(-1e30f);
-    for (glm::vec2 c : {rig.trunk_lo, rig.trunk_hi, glm::vec2(rig.trunk_lo.x, rig.trunk_hi.y), glm::vec2(rig.trunk_hi.x, rig.trunk_lo.y)}) {
-      const glm::vec2 w = body_point_ws(rig, c + glm::vec2(0.0f, rig.root_rest_y), lift);
-      *lo = glm::min(*lo, w);
-      *hi = glm::max(*hi, w);
-    }
-    if (rig.trunk_level_from < rig.trunk.size()) {
-      const float reach = rig.skeleton.length(rig.skull) + glm::length(rig.trunk_hi - rig.trunk_lo) * std::fabs(std::sin(pitch + lean));
-      *lo -= glm::vec2(reach);
-      *hi += glm::vec2(reach);
-    }
   }
   // Girdle joint g with the spine as flexed now (model space) and from the current body
   // placement (world).

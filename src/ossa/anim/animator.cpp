@@ -144,10 +144,9 @@ void Animator::reset(glm::vec2 position_ws, const Level& level, int facing) {
   // stand in a wall (a whale's length behind a spawn point a metre from the level's end)
   // starts clear of it, as near the position as it fits.
   const int dir = facing < 0 ? -1 : 1;
-  std::vector<int> hits;
   const float reach = 4.0f * rig.body_half_length + 1.0f;
   position_ws.x = clear_standing_x(level, position_ws.x, rig.body_lo_ws(0.0f, dir), rig.body_hi_ws(0.0f, dir),
-                                   rig.body_top, from, depth, reach, hits);
+                                   rig.body_top, from, depth, reach, hits_);
   const auto ground = ground_below(level, rig.body_lo_ws(position_ws.x, dir), rig.body_hi_ws(position_ws.x, dir), from, depth);
   const bool falling = !ground;
   reset_body(position_ws.x, (ground ? ground->height_ws : position_ws.y) + rig.root_rest_y, dir, body_, body_state_);

@@ -318,8 +318,9 @@ void pitch_for_front_shoulder(Placement& p) {
 
 // The trunk's bones (ribs, spine, neck, skull) cut no step either: how far the body must rise
 // (lifted by `lift` already) so that each keeps kTrunkKeepOfHip clear of the boxes it is in.
-// A bone needing kMaxTrunkRaiseOfHip or more meets a wall, not a step (the wall sweep's
-// business). The bones as at rest, the body placed as now; the skull's kept level.
+// A bone needing kMaxTrunkRaiseOfHip or more meets a wall, which this clamp does not climb
+// (the wall sweep stops the body's hull and skull there, not its ribs: README Known limits).
+// The bones as at rest, the body placed as now; the skull's kept level.
 constexpr float kTrunkKeepOfHip = 0.01f, kMaxTrunkRaiseOfHip = 0.5f;
 struct TrunkNeed {
   float raise = 0.0f;  // metres
@@ -331,16 +332,32 @@ TrunkNeed trunk_need(const Placement& p, float lift, glm::vec2 pivot_ws) {
   const BodyFrame& body = p.body;
   const float hip = rig.hip_height, keep = kTrunkKeepOfHip * hip;
   // One look at the ground profile under the trunk's whole bound first (on flat ground and
-  // away from steps, all the work there is).
-  glm::vec2 lo, hi;
-  body.trunk_bound_ws(rig, lift, &lo, &hi);
+  // away from steps, all the work there is): its rest bound turned with the body, widened by
+  // the level skull's reach against the body's turn.
+  glm::vec2 lo(1e30f), hi(-1e30f);
+  for (glm::vec2 c : {rig.trunk_lo, rig.trunk_hi, glm::vec2(rig.trunk_lo.x, rig.trunk_hi.y), glm::vec2(rig.trunk_hi.x, rig.trunk_lo.y)}) {
+    const glm::vec2 w = body.body_point_ws(rig, c + glm::vec2(0.0f, rig.root_rest_y), lift);
+    lo = glm::min(lo, w);
+    hi = glm::max(hi, w);
+  }
+  const bool head = rig.trunk_level_from < rig.trunk.size();
+  if (head) {
+    const float reach = rig.skeleton.length(rig.skull) + glm::length(rig.trunk_hi - rig.trunk_lo) * std::fabs(std::sin(body.pitch + body.lean));
+    lo -= glm::vec2(reach);
+    hi += glm::vec2(reach);
+  }
   if (!p.ctx.ground.may_rise_above(lo.x, hi.x, lo.y - keep, hi.y + kMaxTrunkRaiseOfHip * hip)) return {};
+  // The skull's segments hang from its joint where the body puts it, kept level.
+  const glm::vec2 skull_ms = head ? bone_start(rig.model_rest[rig.skull]) : glm::vec2(0.0f);
+  const glm::vec2 skull_fs = head ? body.to_fs(body.body_point_ws(rig, skull_ms, lift)) : glm::vec2(0.0f);
+  auto point_ws = [&](size_t i, glm::vec2 p_ms) {
+    return i < rig.trunk_level_from ? body.body_point_ws(rig, p_ms, lift) : body.to_ws(skull_fs + (p_ms - skull_ms));
+  };
   const float pivot = body.to_fs(pivot_ws).x;
   TrunkNeed need;
   for (size_t i = 0; i < rig.trunk.size(); ++i) {
-    auto [a, b] = body.trunk_segment_ws(rig, i, lift);
-    a.y -= keep;
-    b.y -= keep;
+    const glm::vec2 a = point_ws(i, rig.trunk[i].a) - glm::vec2(0.0f, keep);
+    const glm::vec2 b = point_ws(i, rig.trunk[i].b) - glm::vec2(0.0f, keep);
     if (!p.ctx.ground.may_rise_above(std::min(a.x, b.x), std::max(a.x, b.x), std::min(a.y, b.y), std::max(a.y, b.y) + kMaxTrunkRaiseOfHip * hip)) continue;
     const float n = raise_to_clear(a, b, p.ctx.level, p.ctx.hits);
     if (!(n > 0.0f) || n >= kMaxTrunkRaiseOfHip * hip) continue;
