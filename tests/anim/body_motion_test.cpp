@@ -54,6 +54,17 @@ TEST_CASE("body motion: no girdle passes over the face of a ledge its legs canno
     const Level bumpy({Box::from_corner(-20.0f, -1.0f, 40.0f, 1.0f), Box::from_corner(bump - 0.05f, 0.0f, 0.1f, 1.0f)});
     test::StageScene b(scenes::biped(), bumpy, 5.0f, facing);
     CHECK(anim::limit_by_ledges(b.ctx, b.body, feet_at(*b.rig, b.body, 0.0f), b.gait.stride, far) == far);
+    // The same narrow riser at the level's end (no ground behind it to step down to) is an end
+    // wall: it stops the body as the ledge does (a brachiosaurus walked its shoulder into the
+    // end walls of default.json, rough.json and stairs.json, lifted its chest onto their tops
+    // and drew its front feet 0.3-0.5 m off the ground).
+    const Level end({facing > 0 ? Box::from_corner(-20.0f, -1.0f, face + 20.0f, 1.0f) : Box::from_corner(face, -1.0f, 20.0f - face, 1.0f),
+                     facing > 0 ? Box::from_corner(face, -1.0f, 0.1f, 2.0f) : Box::from_corner(face - 0.1f, -1.0f, 0.1f, 2.0f)});
+    test::StageScene e(scenes::biped(), end, 5.0f, facing);
+    const float to_end = anim::limit_by_ledges(e.ctx, e.body, feet_at(*e.rig, e.body, 0.0f), e.gait.stride, far);
+    CHECK(to_end * facing >= 0.0f);
+    CHECK(std::fabs(to_end) < std::fabs(face - joint) - knee);
+    CHECK(std::fabs(to_end) > std::fabs(face - joint) - knee - 0.1f);
   }
 }
 

@@ -361,12 +361,13 @@ float limit_by_ledges(const AnimContext& ctx, const BodyFrame& body, const FootS
       const int i = at + dir * k;
       if (i < 0 || i >= ground.size()) break;
       if (!(ground.column(i) > high)) continue;
-      // A riser: a ledge if the ground stays high for a stride beyond it.
+      // A riser: a ledge if the ground stays high for a stride beyond it (or ends: a level's
+      // end wall has no ground behind it to step down to).
       bool ledge = true;
       for (int j = 0; j < span && ledge; ++j) {
         const int c = i + dir * j;
         if (c < 0 || c >= ground.size()) break;
-        ledge = ground.column(c) > high;
+        ledge = !(ground.column(c) <= high);
       }
       if (!ledge) continue;
       const float face = ground.x0() + ground.step() * static_cast<float>(dir > 0 ? i : i + 1);
