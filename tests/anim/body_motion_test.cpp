@@ -28,7 +28,7 @@ anim::FootSet feet_at(const AnimRig& rig, const anim::BodyFrame& body, float y) 
 
 }  // namespace
 
-TEST_CASE("body motion: no girdle passes over the face of a ledge its legs cannot climb, a bump it can step over is no ledge",
+TEST_CASE("body motion: no girdle passes over the face of a ledge its legs cannot climb, a bump it can step over is no ledge, a post taller than its hip is",
           "[anim][motion]") {
   for (const int facing : {1, -1}) {
     INFO("facing " << facing);
@@ -49,11 +49,21 @@ TEST_CASE("body motion: no girdle passes over the face of a ledge its legs canno
     CHECK(std::fabs(dx) > std::fabs(face - joint) - knee - 0.1f);  // within the wall margin of it
     // A small move far from the face is not limited.
     CHECK(anim::limit_by_ledges(s.ctx, s.body, feet, s.gait.stride, facing * 0.01f) == facing * 0.01f);
-    // A 1 m bump narrower than a stride (stepped over) does not limit the body.
+    // A bump narrower than a stride, higher than the legs climb but lower than the girdle's
+    // joint (stepped over), does not limit the body.
     const float bump = 5.0f + facing * 1.0f;
-    const Level bumpy({Box::from_corner(-20.0f, -1.0f, 40.0f, 1.0f), Box::from_corner(bump - 0.05f, 0.0f, 0.1f, 1.0f)});
+    const float bump_height = 0.9f * s.body.girdle_ws(*s.rig, 0).y;
+    REQUIRE(bump_height > s.params.max_step_up * s.rig->climb_height);
+    const Level bumpy({Box::from_corner(-20.0f, -1.0f, 40.0f, 1.0f), Box::from_corner(bump - 0.05f, 0.0f, 0.1f, bump_height)});
     test::StageScene b(scenes::biped(), bumpy, 5.0f, facing);
     CHECK(anim::limit_by_ledges(b.ctx, b.body, feet_at(*b.rig, b.body, 0.0f), b.gait.stride, far) == far);
+    // A post as narrow but taller than the girdle's joint is no bump: no foot steps over it.
+    const float post_height = s.body.girdle_ws(*s.rig, 0).y + 0.5f;
+    const Level post({Box::from_corner(-20.0f, -1.0f, 40.0f, 1.0f), Box::from_corner(bump - 0.05f, 0.0f, 0.1f, post_height)});
+    test::StageScene q(scenes::biped(), post, 5.0f, facing);
+    const float to_post = anim::limit_by_ledges(q.ctx, q.body, feet_at(*q.rig, q.body, 0.0f), q.gait.stride, far);
+    CHECK(to_post * facing >= 0.0f);
+    CHECK(std::fabs(to_post) < std::fabs(bump - 0.05f * facing - joint) - knee);
     // The same narrow riser at the level's end (no ground behind it to step down to) is an end
     // wall: it stops the body as the ledge does (a brachiosaurus walked its shoulder into the
     // end walls of default.json, rough.json and stairs.json, lifted its chest onto their tops

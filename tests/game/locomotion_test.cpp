@@ -195,19 +195,25 @@ TEST_CASE("the trunk's own bones stay out of the steps and the ground", "[game][
   }
 }
 
-TEST_CASE("a big creature walks up to a level's end wall and stands there, its feet planted", "[game][anim][locomotion]") {
-  // The brachiosaurus (hip 3.5 m) against the 4 m end walls, narrower than its stride with no
-  // ground behind them: it stood with its shoulder in the wall, its chest lifted onto the
-  // wall's top and a front foot drawn 0.3-0.5 m off the ground. Both ends, every bone.
-  struct Case { const char* level; const char* script; };
-  const Case cases[] = {{"default.json", "walk:0.6:30"},
-                        {"rough.json", "walk:0.6:30"},
-                        {"stairs.json", "walk:0.6:30"},
-                        {"default.json", "walk:0.5:6,stop:1,walk:-0.6:6"}};
+TEST_CASE("a big creature walks up to a level's end wall or a post taller than its hip and stands there, its feet planted",
+          "[game][anim][locomotion]") {
+  // Risers narrower than a stride it cannot step over: the brachiosaurus (hip 3.5 m) against
+  // the 4 m end walls, with no ground behind them, and the parasaurolophus (hip 1.7 m) at
+  // default.json's 1.8 m post. Both stood with a shoulder or hip at the face; the knee and
+  // trunk clamps lifted the body onto the top (the parasaurolophus 1 m in one tick) and drew a
+  // front foot 0.2-0.5 m off the ground. Both ends of the levels, every bone.
+  struct Case { const char* name; const char* level; const char* script; };
+  const Case cases[] = {{"brachiosaurus", "default.json", "walk:0.6:30"},
+                        {"brachiosaurus", "rough.json", "walk:0.6:30"},
+                        {"brachiosaurus", "stairs.json", "walk:0.6:30"},
+                        {"brachiosaurus", "default.json", "walk:0.5:6,stop:1,walk:-0.6:6"},
+                        {"parasaurolophus", "default.json", "walk:0.6:30"},
+                        {"parasaurolophus", "default.json", "run:1:15"}};
   for (const Case& k : cases) {
     const Level level = load_level(scenes::source_path(std::string("levels/") + k.level)).value();
-    const SimResult r = run_from_spawn("brachiosaurus", level, k.script);
-    INFO(k.level << ", " << k.script << ": deepest " << r.probe.deepest_bone << " at " << r.probe.deepest_at_s << " s, x " << r.x_reached);
+    const SimResult r = run_from_spawn(k.name, level, k.script);
+    INFO(k.name << " on " << k.level << ", " << k.script << ": deepest " << r.probe.deepest_bone << " at " << r.probe.deepest_at_s
+                << " s, x " << r.x_reached);
     CHECK(r.probe.max_penetration_m <= 0.001f);
     CHECK(r.probe.max_stance_slip_m <= 0.001f);
     CHECK(r.probe.max_stance_gap_m <= 0.001f);

@@ -362,14 +362,17 @@ float limit_by_ledges(const AnimContext& ctx, const BodyFrame& body, const FootS
       if (i < 0 || i >= ground.size()) break;
       if (!(ground.column(i) > high)) continue;
       // A riser: a ledge if the ground stays high for a stride beyond it (or ends: a level's
-      // end wall has no ground behind it to step down to).
+      // end wall has no ground behind it to step down to), or if it rises above the girdle's
+      // joint (no foot steps over a post taller than its hip).
       bool ledge = true;
+      float top = -1e30f;
       for (int j = 0; j < span && ledge; ++j) {
         const int c = i + dir * j;
         if (c < 0 || c >= ground.size()) break;
         ledge = !(ground.column(c) <= high);
+        if (ledge) top = std::max(top, ground.column(c));
       }
-      if (!ledge) continue;
+      if (!ledge && !(top > joint.y)) continue;
       const float face = ground.x0() + ground.step() * static_cast<float>(dir > 0 ? i : i + 1);
       const float below = ground.column(i - dir);
       const bool wall = std::isnan(below) || ground.column(i) - below > up;
