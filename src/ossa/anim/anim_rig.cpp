@@ -488,6 +488,16 @@ void build_fk_plan(const RigRoles& roles, AnimRig& rig) {
         rig.dynamic_bone[rig.nod_bones[i]] = 1;
         rig.nod_reach[i] = reach(rig.nod_bones[i]);
       }
+      std::vector<char> under(static_cast<size_t>(sk.bone_count()), 0);
+      for (int b = base; b < sk.bone_count(); ++b) {
+        if (b != base && (sk.parent(b) < 0 || !under[static_cast<size_t>(sk.parent(b))])) continue;
+        under[static_cast<size_t>(b)] = 1;
+        rig.head_bones.push_back(b);
+      }
+      int kept = sk.parent(base);
+      for (; kept >= 0 && !rig.tick_bone[kept]; kept = sk.parent(kept)) rig.head_between.push_back(kept);
+      std::reverse(rig.head_between.begin(), rig.head_between.end());
+      rig.head_kept_bone = kept;
     }
   }
   for (int b = 0; b < sk.bone_count(); ++b) {

@@ -15,6 +15,8 @@ constexpr size_t kMaxTailBones = 48;   // keep_tail_clear curls at most this man
 constexpr float kMaxTailCurl = 1.6f;   // radians over the tail's length
 constexpr float kMaxTailLift = 1.6f;   // radians at the tail's root, when curling is not enough
 constexpr size_t kMaxFinBones = 7;
+constexpr float kMaxHeadLift = 1.2f;    // radians at the neck's base
+constexpr float kHeadKeepOfHip = 0.005f;
 constexpr int kClearBisections = 6;
 constexpr int kFinBisections = 7;
 
@@ -216,6 +218,50 @@ void keep_tail_clear(const AnimContext& ctx, const BodyFrame& body, const std::v
     }
   }
   for (size_t k = 0; k < n; ++k) pose.locals[rig.tail[k]].angle_ls += curl / static_cast<float>(n) + (k == 0 ? lift : 0.0f);
+}
+
+void keep_head_clear(const AnimContext& ctx, const BodyFrame& body, std::vector<Mat2x3>& model, Pose& pose) {
+  const AnimRig& rig = ctx.rig;
+  const Skeleton& sk = rig.skeleton;
+  const int base = rig.nod_bones[0];
+  if (base < 0 || rig.head_kept_bone < 0) return;
+  // The neck's base hangs from the spine: from the nearest bone the body's pass keeps current.
+  Mat2x3 parent = model[rig.head_kept_bone];
+  for (int b : rig.head_between) parent = parent * local_matrix(pose.locals[b]);
+  // Only asked when ground rises to within the head's reach of the neck's base.
+  const glm::vec2 root = body.to_ws(parent.apply(pose.locals[base].offset_ls));
+  const float reach = glm::length(rig.nod_reach[0]) + sk.length(rig.skull);
+  const auto ground = ground_below(ctx.level, root.x - reach, root.x + reach, root.y + reach, 2.0f * reach);
+  if (!ground || ground->height_ws < root.y - reach) return;
+  // Each bone kept kHeadKeepOfHip clear: its segment tested that much lower.
+  const glm::vec2 keep(0.0f, kHeadKeepOfHip * rig.hip_height);
+  thread_local std::vector<Mat2x3> m;  // facing space, by bone (the head's only)
+  m.resize(static_cast<size_t>(sk.bone_count()));
+  auto hits = [&](float lift) {
+    for (const int b : rig.head_bones) {
+      BoneLocal local = pose.locals[b];
+      if (b == base) local.angle_ls += lift;
+      if (b == rig.skull) local.angle_ls -= lift;  // the head stays level
+      m[b] = (b == base ? parent : m[sk.parent(b)]) * local_matrix(local);
+      const float len = sk.length(b);
+      if (!(len > 0.0f)) continue;
+      const glm::vec2 seg[2] = {body.to_ws(bone_start(m[b])) - keep, body.to_ws(bone_end(m[b], len)) - keep};
+      if (polyline_hits_level(ctx.level, seg, 2, ctx.hits)) return true;
+    }
+    return false;
+  };
+  if (!hits(0.0f)) return;
+  // Turned up: towards the way the neck reaches from its base at rest (forward, for almost
+  // every neck; a neck curled back under the body turns the other way).
+  const float most = rig.nod_reach[0].x >= 0.0f ? kMaxHeadLift : -kMaxHeadLift;
+  float lo = 0.0f, hi = 1.0f;  // fractions of the most: lo hits, hi clears (or is the last resort)
+  bisect(lo, hi, kClearBisections, [&](float mid) { return hits(mid * most); });
+  pose.locals[base].angle_ls += hi * most;
+  pose.locals[rig.skull].angle_ls -= hi * most;
+  // The bones the body's pass keeps current (a bending spine's neck and skull) follow now.
+  for (const int b : rig.head_bones) {
+    if (rig.tick_bone[b]) model[b] = model[sk.parent(b)] * local_matrix(pose.locals[b]);
+  }
 }
 
 void keep_fin_clear(const AnimContext& ctx, const BodyFrame& body, const RigLimb& fin, const std::vector<Mat2x3>& model, Pose& pose) {

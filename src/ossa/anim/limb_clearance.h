@@ -2,8 +2,8 @@
 // Limb clearance (DESIGN.md §7 "limbs"; part of the pose stage, pose_stage.h, stage 12 of
 // Animator::update): the limbs that do not stand keep out of the level —
 // arms lift their wrists above the ground or fold (tucked under the shoulder, up in front,
-// up behind), fins and folded wings turn up at the root, a tail curls up out of a step, and a
-// legless body bent by its wave rises out of the ground.
+// up behind), fins and folded wings turn up at the root, a tail curls up out of a step, a head
+// lifts on its neck, and a legless body bent by its wave rises out of the ground.
 //
 // Each works on the joint values of `pose` (the limb's bones) and the facing-space matrices
 // of the body already placed; world queries through the body frame. Metres, radians.
@@ -22,6 +22,9 @@ void keep_arm_above_ground(const AnimContext& ctx, const BodyFrame& body, const 
 void keep_fin_clear(const AnimContext& ctx, const BodyFrame& body, const RigLimb& fin, const std::vector<Mat2x3>& model_fs,
                     Pose& pose);
 void keep_tail_clear(const AnimContext& ctx, const BodyFrame& body, const std::vector<Mat2x3>& model_fs, Pose& pose);
+// A head (neck, skull, jaw) the body placed in the ground or a step lifts at the neck's base
+// (AnimRig::nod_bones[0]), the least that clears, the skull kept level.
+void keep_head_clear(const AnimContext& ctx, const BodyFrame& body, std::vector<Mat2x3>& model_fs, Pose& pose);
 // Legless bodies: returns how far the whole body must rise (metres, >= 0) so the spine and
 // the roots of its limbs stay out of the ground.
 float body_out_of_ground(const AnimContext& ctx, const BodyFrame& body, const std::vector<Mat2x3>& model_fs, const Pose& pose);

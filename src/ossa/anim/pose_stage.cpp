@@ -126,6 +126,7 @@ void pose_limbs(const AnimContext& ctx, const SplinePrototypes& prototypes, cons
   std::vector<Mat2x3>& model = state.facing;
   press_tail(ctx, body, feet, gait, model, pose);
   if (rig.tail_length > 0.0f) keep_tail_clear(ctx, body, model, pose);
+  if (rig.nod_bones[0] >= 0) keep_head_clear(ctx, body, model, pose);
   const LegIkJob ik{&ctx, &body, &feet, &pose, &model, &state.leg_dirs, gait.moving};
   ik.run();
   // Arms swing counter to the same-side leg (or stand on the ground in the pentapedal walk);
