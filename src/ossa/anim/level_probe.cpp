@@ -107,13 +107,14 @@ float keep_out_height(const Level& level, float x, float half, float keep, float
   return need;
 }
 
-float raise_to_clear(glm::vec2 a, glm::vec2 b, const Level& level, std::vector<int>& hits) {
+float raise_to_clear(glm::vec2 a, glm::vec2 b, const Level& level, std::vector<int>& hits, float max_top) {
   // Over the part of the box's width the segment spans, its lowest point to the box's top.
   hits.clear();
   level.overlapping(Box{glm::min(a, b) - glm::vec2(1e-4f), glm::max(a, b) + glm::vec2(1e-4f)}, hits);
   float need = 0.0f;
   for (int h : hits) {
     const Box& box = level.box(h);
+    if (box.top() > max_top) continue;
     const float lo = std::max(std::min(a.x, b.x), box.min_ws.x), hi = std::min(std::max(a.x, b.x), box.max_ws.x);
     if (lo > hi) continue;
     auto y_at = [&](float x) { return std::fabs(b.x - a.x) < 1e-6f ? std::min(a.y, b.y) : a.y + (b.y - a.y) * (x - a.x) / (b.x - a.x); };

@@ -4,6 +4,7 @@
 // bones cuts a collider, how far a segment must rise to clear, and what may rise near a foot.
 // Inputs and outputs in world space (_ws), metres.
 
+#include <cmath>
 #include <optional>
 #include <vector>
 
@@ -42,8 +43,9 @@ bool polyline_hits_level(const Level& level, const glm::vec2* p, int n, std::vec
 float keep_out_height(const Level& level, float x, float half, float keep, float fade, float from_y, float max_drop,
                       std::vector<int>& hits);
 
-// How far the segment a-b must rise (straight up) to leave every box it cuts.
-float raise_to_clear(glm::vec2 a, glm::vec2 b, const Level& level, std::vector<int>& hits);
+// How far the segment a-b must rise (straight up) to leave every box it cuts whose top is no
+// higher than max_top (a higher one is a wall, which rising does not clear).
+float raise_to_clear(glm::vec2 a, glm::vec2 b, const Level& level, std::vector<int>& hits, float max_top = INFINITY);
 
 // What a limb near a foot can meet: colliders whose tops are at most `base` (the ground the
 // foot stands or steps on) and, above that, none higher than `top`. A limb entirely above

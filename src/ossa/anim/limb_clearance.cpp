@@ -141,6 +141,8 @@ float body_out_of_ground(const AnimContext& ctx, const BodyFrame& body, const st
     const glm::vec2 p = bone_start(model[b]), e = bone_end(model[b], rig.skeleton.length(b));
     keep_out(p, p.y);
     keep_out(e, e.y);
+    // Over steps a long bone (a whale's skull) may cut a riser's corner between its ends.
+    if (std::isnan(flat)) raise = std::max(raise, raise_to_clear(body.to_ws(p), body.to_ws(e), ctx.level, ctx.hits, top));
   }
   for (size_t i = 0; i < rig.drape_bones.size(); ++i) {
     const Mat2x3& m = model[rig.drape_bones[i]];
