@@ -92,7 +92,11 @@ void keep_arm_above_ground(const AnimContext& ctx, const BodyFrame& body, const 
       }
     }
   }
-  set_wrist(p, p.shoulder + glm::normalize(glm::vec2(-1.0f, -0.3f)) * tuck_len);
+  // Nothing clears (the shoulder itself against a face ahead: a body falling beside a gap's
+  // far wall): tucked back under the shoulder, the hand trailing back, away from the face.
+  ArmPose q = p;
+  q.hand_abs = kPi + 0.3f;
+  set_wrist(q, p.shoulder + glm::normalize(glm::vec2(-1.0f, -0.3f)) * tuck_len);
 }
 
 float body_out_of_ground(const AnimContext& ctx, const BodyFrame& body, const std::vector<Mat2x3>& model, const Pose& pose) {
