@@ -5,6 +5,7 @@
 
 #include <cmath>
 #include <memory>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -22,6 +23,10 @@ using namespace ossa;
 namespace {
 
 constexpr float kDt = 1.0f / 120.0f;
+// Of the 250 runs of "random creatures walk and run then turn back and jump on every shipped level", how
+// many put a bone more than 1 mm into a box or slide a foot by more (measured 2026-11-27; lower
+// it as the animator gets better).
+constexpr int kRandomRunsOver1mm = 50;
 
 Level drops() { return load_level(scenes::source_path("levels/drops.json")).value(); }
 
@@ -278,6 +283,41 @@ TEST_CASE("a flipper that finds no clear tuck trails back from the face it meets
   INFO("deepest " << r.probe.deepest_bone << " at " << r.probe.deepest_at_s << " s: " << r.probe.max_penetration_m << " m");
   CHECK(r.probe.max_penetration_m <= 0.05f);
   CHECK(r.probe.nan_count == 0);
+}
+
+TEST_CASE("random creatures walk and run then turn back and jump on every shipped level", "[game][anim][locomotion]") {
+  // Issue 27's sweep of creatures nobody tuned for: random creatures 1-50 at their true size,
+  // from each shipped level's spawn, walk, run, stop and turn back, jump and walk on. The goal
+  // is every bone within 1 mm and no stance foot sliding; not yet reached (README Known
+  // limits: bodies whose spine lies below their feet, necks and arms in ledges after a jump,
+  // tails at a turn), so the test holds the count of runs over 1 mm to what it is now and
+  // every run free of NaN. Under the sanitizers its sample (sweep_sample.h).
+  const char* script = "walk:0.6:8,run:1:6,stop:1,walk:-0.6:6,jump,walk:0.5:3";
+  const std::vector<uint64_t> seeds = test::sweep_seeds("game:random levels", 50);
+  const char* levels[] = {"default.json", "drops.json", "rough.json", "slopes.json", "stairs.json"};
+  std::vector<Level> loaded;
+  for (const char* name : levels) loaded.push_back(load_level(scenes::source_path(std::string("levels/") + name)).value());
+  int runs = 0, over = 0;
+  std::ostringstream worst;
+  for (const uint64_t seed : seeds) {
+    const auto creature = std::make_shared<const Creature>(build_creature(scenes::generator().random(seed)).value());
+    for (size_t l = 0; l < loaded.size(); ++l) {
+      Player player(creature, SplinePrototypes::defaults());
+      player.animator().reset(loaded[l].spawn_ws + glm::vec2(0.0f, 1.0f), loaded[l]);
+      const SimResult r = run_script(player, loaded[l], parse_script(script).value(), 120);
+      ++runs;
+      INFO("random " << seed << " on " << levels[l] << ": deepest " << r.probe.deepest_bone << " " << r.probe.max_penetration_m
+                     << " m at " << r.probe.deepest_at_s << " s, slide " << r.probe.max_stance_slip_m << " m");
+      CHECK(r.probe.nan_count == 0);
+      if (r.probe.max_penetration_m > 0.001f || r.probe.max_stance_slip_m > 0.001f) {
+        ++over;
+        worst << " " << seed << "/" << levels[l];
+      }
+    }
+  }
+  INFO(over << " of " << runs << " runs over 1 mm:" << worst.str());
+  CHECK(runs == 5 * static_cast<int>(seeds.size()));
+  if (seeds.size() == 50) CHECK(over <= kRandomRunsOver1mm);
 }
 
 TEST_CASE("a creature spawned 5 m up falls and stands planted within 2 s", "[game][anim][locomotion]") {
