@@ -4,6 +4,7 @@
 #include <catch2/catch.hpp>
 
 #include <cmath>
+#include <initializer_list>
 #include <memory>
 #include <sstream>
 #include <string>
@@ -57,6 +58,27 @@ SimResult run_from_spawn(const std::string& name, const Level& level, const char
                 SplinePrototypes::defaults());
   player.animator().reset(level.spawn_ws + glm::vec2(0.0f, 1.0f), level);
   return run_script(player, level, parse_script(script).value(), 120);
+}
+
+// An example animal's run from a shipped level's spawn, at its true size.
+struct ShippedRun {
+  const char* name;
+  const char* level;
+  const char* script;
+};
+
+// Each run: every bone within 1 mm of the level, no stance foot sliding or standing short of
+// its foothold by more, no NaN.
+void check_clean(std::initializer_list<ShippedRun> runs) {
+  for (const ShippedRun& k : runs) {
+    const SimResult r = run_from_spawn(k.name, load_level(scenes::source_path(std::string("levels/") + k.level)).value(), k.script);
+    INFO(k.name << " on " << k.level << ", " << k.script << ": deepest " << r.probe.deepest_bone << " at " << r.probe.deepest_at_s
+                << " s, x " << r.x_reached);
+    CHECK(r.probe.max_penetration_m <= 0.001f);
+    CHECK(r.probe.max_stance_slip_m <= 0.001f);
+    CHECK(r.probe.max_stance_gap_m <= 0.001f);
+    CHECK(r.probe.nan_count == 0);
+  }
 }
 
 }  // namespace
@@ -186,18 +208,14 @@ TEST_CASE("the trunk's own bones stay out of the steps and the ground", "[game][
   // seal, thrinaxodon, eared seal, tyrannosaurus, pigeon), and a whale whose tail lay in the
   // level's end wall from the first tick (the reset now places it clear). Every bone within
   // 1 mm, no stance foot sliding.
-  struct Case { const char* name; const char* level; const char* script; };
-  const Case cases[] = {{"red deer", "drops.json", "walk:0.6:30"},      {"chamois", "drops.json", "walk:0.6:30"},
-                        {"harbour seal", "stairs.json", "walk:0.6:30"}, {"thrinaxodon", "rough.json", "walk:0.6:30"},
-                        {"eared seal", "stairs.json", "run:1:15"},      {"tyrannosaurus", "default.json", "walk:0.6:30"},
-                        {"pigeon", "default.json", "run:1:15"},         {"sperm whale", "rough.json", "walk:0.6:30"}};
-  for (const Case& k : cases) {
-    const SimResult r = run_from_spawn(k.name, load_level(scenes::source_path(std::string("levels/") + k.level)).value(), k.script);
-    INFO(k.name << " on " << k.level << ", " << k.script << ": deepest " << r.probe.deepest_bone << " at " << r.probe.deepest_at_s << " s");
-    CHECK(r.probe.max_penetration_m <= 0.001f);
-    CHECK(r.probe.max_stance_slip_m <= 0.001f);
-    CHECK(r.probe.nan_count == 0);
-  }
+  check_clean({{"red deer", "drops.json", "walk:0.6:30"},
+               {"chamois", "drops.json", "walk:0.6:30"},
+               {"harbour seal", "stairs.json", "walk:0.6:30"},
+               {"thrinaxodon", "rough.json", "walk:0.6:30"},
+               {"eared seal", "stairs.json", "run:1:15"},
+               {"tyrannosaurus", "default.json", "walk:0.6:30"},
+               {"pigeon", "default.json", "run:1:15"},
+               {"sperm whale", "rough.json", "walk:0.6:30"}});
 }
 
 TEST_CASE("a big creature walks up to a level's end wall or a post taller than its hip and stands there, its feet planted",
@@ -207,23 +225,12 @@ TEST_CASE("a big creature walks up to a level's end wall or a post taller than i
   // default.json's 1.8 m post. Both stood with a shoulder or hip at the face; the knee and
   // trunk clamps lifted the body onto the top (the parasaurolophus 1 m in one tick) and drew a
   // front foot 0.2-0.5 m off the ground. Both ends of the levels, every bone.
-  struct Case { const char* name; const char* level; const char* script; };
-  const Case cases[] = {{"brachiosaurus", "default.json", "walk:0.6:30"},
-                        {"brachiosaurus", "rough.json", "walk:0.6:30"},
-                        {"brachiosaurus", "stairs.json", "walk:0.6:30"},
-                        {"brachiosaurus", "default.json", "walk:0.5:6,stop:1,walk:-0.6:6"},
-                        {"parasaurolophus", "default.json", "walk:0.6:30"},
-                        {"parasaurolophus", "default.json", "run:1:15"}};
-  for (const Case& k : cases) {
-    const Level level = load_level(scenes::source_path(std::string("levels/") + k.level)).value();
-    const SimResult r = run_from_spawn(k.name, level, k.script);
-    INFO(k.name << " on " << k.level << ", " << k.script << ": deepest " << r.probe.deepest_bone << " at " << r.probe.deepest_at_s
-                << " s, x " << r.x_reached);
-    CHECK(r.probe.max_penetration_m <= 0.001f);
-    CHECK(r.probe.max_stance_slip_m <= 0.001f);
-    CHECK(r.probe.max_stance_gap_m <= 0.001f);
-    CHECK(r.probe.nan_count == 0);
-  }
+  check_clean({{"brachiosaurus", "default.json", "walk:0.6:30"},
+               {"brachiosaurus", "rough.json", "walk:0.6:30"},
+               {"brachiosaurus", "stairs.json", "walk:0.6:30"},
+               {"brachiosaurus", "default.json", "walk:0.5:6,stop:1,walk:-0.6:6"},
+               {"parasaurolophus", "default.json", "walk:0.6:30"},
+               {"parasaurolophus", "default.json", "run:1:15"}});
 }
 
 TEST_CASE("a head the body brings down into a step lifts on its neck", "[game][anim][locomotion]") {
@@ -233,18 +240,10 @@ TEST_CASE("a head the body brings down into a step lifts on its neck", "[game][a
   // random creature 12's (a long, low biped) 25 cm into default.json's stairs. The neck now
   // turns up at its base, the least that clears, the head kept level (keep_head_clear).
   // Every bone within 1 mm, no stance foot sliding.
-  struct Case { const char* name; const char* level; const char* script; };
-  const Case cases[] = {{"stegosaurus", "default.json", "run:1:15"},
-                        {"stegosaurus", "default.json", "walk:0.6:30"},
-                        {"triceratops", "drops.json", "walk:0.5:6,stop:1,walk:-0.6:6"},
-                        {"pig", "stairs.json", "walk:0.6:30"}};
-  for (const Case& k : cases) {
-    const SimResult r = run_from_spawn(k.name, load_level(scenes::source_path(std::string("levels/") + k.level)).value(), k.script);
-    INFO(k.name << " on " << k.level << ", " << k.script << ": deepest " << r.probe.deepest_bone << " at " << r.probe.deepest_at_s << " s");
-    CHECK(r.probe.max_penetration_m <= 0.001f);
-    CHECK(r.probe.max_stance_slip_m <= 0.001f);
-    CHECK(r.probe.nan_count == 0);
-  }
+  check_clean({{"stegosaurus", "default.json", "run:1:15"},
+               {"stegosaurus", "default.json", "walk:0.6:30"},
+               {"triceratops", "drops.json", "walk:0.5:6,stop:1,walk:-0.6:6"},
+               {"pig", "stairs.json", "walk:0.6:30"}});
   const Level level = load_level(scenes::source_path("levels/default.json")).value();
   Player player(std::make_shared<const Creature>(build_creature(scenes::generator().random(12)).value()), SplinePrototypes::defaults());
   player.animator().reset(level.spawn_ws + glm::vec2(0.0f, 1.0f), level);
@@ -260,17 +259,10 @@ TEST_CASE("a legless body's long bones stay out of the steps' corners", "[game][
   // stairs.json's flight, the bowhead's 25 cm into default.json's stairs, the sperm whale's
   // 31 cm, the trout's 5 cm. Each bone now rises clear of every box it crosses. Every bone
   // within 1 mm.
-  struct Case { const char* name; const char* level; const char* script; };
-  const Case cases[] = {{"blue whale", "stairs.json", "walk:0.6:30"},
-                        {"bowhead whale", "default.json", "run:1:15"},
-                        {"sperm whale", "stairs.json", "walk:0.6:30"},
-                        {"trout", "stairs.json", "run:1:15"}};
-  for (const Case& k : cases) {
-    const SimResult r = run_from_spawn(k.name, load_level(scenes::source_path(std::string("levels/") + k.level)).value(), k.script);
-    INFO(k.name << " on " << k.level << ", " << k.script << ": deepest " << r.probe.deepest_bone << " at " << r.probe.deepest_at_s << " s");
-    CHECK(r.probe.max_penetration_m <= 0.001f);
-    CHECK(r.probe.nan_count == 0);
-  }
+  check_clean({{"blue whale", "stairs.json", "walk:0.6:30"},
+               {"bowhead whale", "default.json", "run:1:15"},
+               {"sperm whale", "stairs.json", "walk:0.6:30"},
+               {"trout", "stairs.json", "run:1:15"}});
 }
 
 TEST_CASE("a flipper that finds no clear tuck trails back from the face it meets", "[game][anim][locomotion]") {
