@@ -200,9 +200,11 @@ struct AnimRig {
   std::array<glm::vec2, 2> nod_reach{};
   // nod_bones[0] and every bone hanging from it (the neck, its ribs, the skull, the jaw),
   // parents first: the head lifts out of the ground about the neck's base (keep_head_clear).
+  // None is kept every tick (the nod needs a rigid body); the matrices start from
+  // head_kept_bone, the nearest bone above them that is, through head_between (parents first).
   std::vector<int> head_bones;
-  int head_kept_bone = -1;        // the nearest bone above them kept every tick (tick_bone)
-  std::vector<int> head_between;  // the bones from there to the neck's base, parents first
+  int head_kept_bone = -1;
+  std::vector<int> head_between;
 
   // Wall sweep: hulls of the root, back and neck in slabs along the body, relative to the root
   // bone's frame, and the skull (kept level) as its joint in that frame plus its rest span.

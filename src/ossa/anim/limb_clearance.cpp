@@ -16,7 +16,7 @@ constexpr float kMaxTailCurl = 1.6f;   // radians over the tail's length
 constexpr float kMaxTailLift = 1.6f;   // radians at the tail's root, when curling is not enough
 constexpr size_t kMaxFinBones = 7;
 constexpr float kMaxHeadLift = 1.2f;    // radians at the neck's base
-constexpr float kHeadKeepOfHip = 0.005f;
+constexpr float kHeadKeepOfHip = 0.005f;  // keep_head_clear: each head bone this clear of the level
 constexpr int kClearBisections = 6;
 constexpr int kFinBisections = 7;
 
@@ -226,7 +226,7 @@ void keep_tail_clear(const AnimContext& ctx, const BodyFrame& body, const std::v
   for (size_t k = 0; k < n; ++k) pose.locals[rig.tail[k]].angle_ls += curl / static_cast<float>(n) + (k == 0 ? lift : 0.0f);
 }
 
-void keep_head_clear(const AnimContext& ctx, const BodyFrame& body, std::vector<Mat2x3>& model, Pose& pose) {
+void keep_head_clear(const AnimContext& ctx, const BodyFrame& body, const std::vector<Mat2x3>& model, Pose& pose) {
   const AnimRig& rig = ctx.rig;
   const Skeleton& sk = rig.skeleton;
   const int base = rig.nod_bones[0];
@@ -264,10 +264,6 @@ void keep_head_clear(const AnimContext& ctx, const BodyFrame& body, std::vector<
   bisect(lo, hi, kClearBisections, [&](float mid) { return hits(mid * most); });
   pose.locals[base].angle_ls += hi * most;
   pose.locals[rig.skull].angle_ls -= hi * most;
-  // The bones the body's pass keeps current (a bending spine's neck and skull) follow now.
-  for (const int b : rig.head_bones) {
-    if (rig.tick_bone[b]) model[b] = model[sk.parent(b)] * local_matrix(pose.locals[b]);
-  }
 }
 
 void keep_fin_clear(const AnimContext& ctx, const BodyFrame& body, const RigLimb& fin, const std::vector<Mat2x3>& model, Pose& pose) {

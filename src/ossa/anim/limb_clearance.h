@@ -24,7 +24,7 @@ void keep_fin_clear(const AnimContext& ctx, const BodyFrame& body, const RigLimb
 void keep_tail_clear(const AnimContext& ctx, const BodyFrame& body, const std::vector<Mat2x3>& model_fs, Pose& pose);
 // A head (neck, skull, jaw) the body placed in the ground or a step lifts at the neck's base
 // (AnimRig::nod_bones[0]), the least that clears, the skull kept level.
-void keep_head_clear(const AnimContext& ctx, const BodyFrame& body, std::vector<Mat2x3>& model_fs, Pose& pose);
+void keep_head_clear(const AnimContext& ctx, const BodyFrame& body, const std::vector<Mat2x3>& model_fs, Pose& pose);
 // Legless bodies: returns how far the whole body must rise (metres, >= 0) so the spine and
 // the roots of its limbs stay out of the ground.
 float body_out_of_ground(const AnimContext& ctx, const BodyFrame& body, const std::vector<Mat2x3>& model_fs, const Pose& pose);
