@@ -145,8 +145,14 @@ float body_out_of_ground(const AnimContext& ctx, const BodyFrame& body, const st
     const glm::vec2 p = bone_start(model[b]), e = bone_end(model[b], rig.skeleton.length(b));
     keep_out(p, p.y);
     keep_out(e, e.y);
-    // Over steps a long bone (a whale's skull) may cut a riser's corner between its ends.
-    if (std::isnan(flat)) raise = std::max(raise, raise_to_clear(body.to_ws(p), body.to_ws(e), ctx.level, ctx.hits, top));
+    // Over steps a long bone (a whale's skull) may cut a riser's corner between its ends (the
+    // profile first: no ground above the bone, no level query).
+    if (std::isnan(flat)) {
+      const glm::vec2 a = body.to_ws(p), c = body.to_ws(e);
+      if (ground.may_rise_above(std::min(a.x, c.x), std::max(a.x, c.x), std::min(a.y, c.y), top)) {
+        raise = std::max(raise, raise_to_clear(a, c, ctx.level, ctx.hits, top));
+      }
+    }
   }
   for (size_t i = 0; i < rig.drape_bones.size(); ++i) {
     const Mat2x3& m = model[rig.drape_bones[i]];
@@ -234,21 +240,30 @@ void keep_head_clear(const AnimContext& ctx, const BodyFrame& body, const std::v
   // The neck's base hangs from the spine: from the nearest bone the body's pass keeps current.
   Mat2x3 parent = model[rig.head_kept_bone];
   for (int b : rig.head_between) parent = parent * local_matrix(pose.locals[b]);
-  // Only asked when ground rises to within the head's reach of the neck's base.
-  const glm::vec2 root = body.to_ws(parent.apply(pose.locals[base].offset_ls));
-  const float reach = glm::length(rig.nod_reach[0]) + sk.length(rig.skull);
-  const auto ground = ground_below(ctx.level, root.x - reach, root.x + reach, root.y + reach, 2.0f * reach);
-  if (!ground || ground->height_ws < root.y - reach) return;
   // Each bone kept kHeadKeepOfHip clear: its segment tested that much lower.
   const glm::vec2 keep(0.0f, kHeadKeepOfHip * rig.hip_height);
   thread_local std::vector<Mat2x3> m;  // facing space, by bone (the head's only)
   m.resize(static_cast<size_t>(sk.bone_count()));
+  auto pose_head = [&](int b, float lift) {
+    BoneLocal local = pose.locals[b];
+    if (b == base) local.angle_ls += lift;
+    if (b == rig.skull) local.angle_ls -= lift;  // the head stays level
+    m[b] = (b == base ? parent : m[sk.parent(b)]) * local_matrix(local);
+  };
+  // The head as it is, bounded: where the ground profile says no ground rises into that
+  // bound (flat ground, the common case), no level query.
+  glm::vec2 bound_lo(1e30f), bound_hi(-1e30f);
+  for (const int b : rig.head_bones) {
+    pose_head(b, 0.0f);
+    for (glm::vec2 q : {body.to_ws(bone_start(m[b])), body.to_ws(bone_end(m[b], sk.length(b)))}) {
+      bound_lo = glm::min(bound_lo, q);
+      bound_hi = glm::max(bound_hi, q);
+    }
+  }
+  if (!ctx.ground.may_rise_above(bound_lo.x, bound_hi.x, bound_lo.y - keep.y, bound_hi.y)) return;
   auto hits = [&](float lift) {
     for (const int b : rig.head_bones) {
-      BoneLocal local = pose.locals[b];
-      if (b == base) local.angle_ls += lift;
-      if (b == rig.skull) local.angle_ls -= lift;  // the head stays level
-      m[b] = (b == base ? parent : m[sk.parent(b)]) * local_matrix(local);
+      pose_head(b, lift);
       const float len = sk.length(b);
       if (!(len > 0.0f)) continue;
       const glm::vec2 seg[2] = {body.to_ws(bone_start(m[b])) - keep, body.to_ws(bone_end(m[b], len)) - keep};
