@@ -103,16 +103,43 @@ TEST_CASE("level probe: a body that would stand in a wall is placed clear of it,
   std::vector<int> hits;
   const float back = -5.0f, front = 1.0f, top = 1.5f, from = 1.0f, drop = 3.0f, reach = 20.0f;
   // Fits: unchanged.
-  CHECK(anim::clear_standing_x(level, 6.0f, back, front, top, from, drop, reach, hits) == 6.0f);
+  CHECK(anim::clear_standing_x(level, 6.0f, back, front, top, from, drop, INFINITY, reach, hits) == 6.0f);
   // Its tail in the end wall: pushed forwards until the tail clears it (left of x 0 there is
   // no floor, so not backwards however short that is).
-  const float x = anim::clear_standing_x(level, 2.0f, back, front, top, from, drop, reach, hits);
+  const float x = anim::clear_standing_x(level, 2.0f, back, front, top, from, drop, INFINITY, reach, hits);
   CHECK(x + back >= 0.0f);
   CHECK(x + back < 0.01f);
   // Its front in the post: the shorter way, backwards (x 7.5 → 6.999).
-  const float y = anim::clear_standing_x(level, 7.5f, back, front, top, from, drop, reach, hits);
+  const float y = anim::clear_standing_x(level, 7.5f, back, front, top, from, drop, INFINITY, reach, hits);
   CHECK(y + front <= 8.0f);
   CHECK(y + front > 7.99f);
   // Nowhere within reach: unchanged.
-  CHECK(anim::clear_standing_x(level, 2.0f, back, front, top, from, drop, 0.5f, hits) == 2.0f);
+  CHECK(anim::clear_standing_x(level, 2.0f, back, front, top, from, drop, INFINITY, 0.5f, hits) == 2.0f);
+}
+
+TEST_CASE("level probe: a body that climbs little does not lie on an end wall beside it", "[anim][probe]") {
+  // default.json's left end: a 4 m wall at [-1, 0] over a floor at 0. A legless body reaching
+  // 5 m behind its root, 1 m ahead and 1.5 m tall, searched from 5 m up (above the wall).
+  const Level level({Box::from_corner(0.0f, -1.0f, 20.0f, 1.0f), Box::from_corner(-1.0f, -1.0f, 1.0f, 5.0f)}, {2.0f, 0.0f});
+  std::vector<int> hits;
+  const float back = -5.0f, front = 1.0f, top = 1.5f, from = 5.0f, drop = 6.0f, reach = 20.0f;
+  // Climbing anything, it would lie on the wall's top with its root over the floor.
+  CHECK(anim::standing_ground(level, 2.0f, 2.0f + back, 2.0f + front, from, drop, INFINITY) == Approx(4.0f));
+  CHECK(anim::clear_standing_x(level, 2.0f, back, front, top, from, drop, INFINITY, reach, hits) == 2.0f);
+  // Climbing 1 m, the wall is a wall: it lies on the floor, its tail clear of the wall.
+  CHECK(anim::standing_ground(level, 2.0f, 2.0f + back, 2.0f + front, from, drop, 1.0f) == Approx(0.0f));
+  const float x = anim::clear_standing_x(level, 2.0f, back, front, top, from, drop, 1.0f, reach, hits);
+  CHECK(x + back >= 0.0f);
+  CHECK(x + back < 0.01f);
+  CHECK(anim::standing_ground(level, x, x + back, x + front, from, drop, 1.0f) == Approx(0.0f));
+  // No ground under the root (a gap): the span's highest, as before.
+  const Level gap({Box::from_corner(0.0f, -1.0f, 1.0f, 1.0f), Box::from_corner(3.0f, -1.0f, 1.0f, 1.5f)}, {2.0f, 0.0f});
+  CHECK(anim::standing_ground(gap, 2.0f, 0.5f, 3.5f, from, drop, 0.1f) == Approx(0.5f));
+  // A flight of 0.3 m steps up to 3 m ahead of the root is ground to lie on, climbing 0.5 m;
+  // the 4 m wall behind is not.
+  std::vector<Box> flight{Box::from_corner(-1.0f, -1.0f, 1.0f, 5.0f), Box::from_corner(0.0f, -1.0f, 30.0f, 1.0f)};
+  for (int i = 1; i <= 10; ++i) flight.push_back(Box::from_corner(4.0f + 0.5f * static_cast<float>(i), 0.0f, 30.0f, 0.3f * static_cast<float>(i)));
+  const Level stairs(flight, {2.0f, 0.0f});
+  CHECK(anim::standing_ground(stairs, 2.0f, -3.0f, 12.0f, 5.0f, 6.0f, 0.5f) == Approx(3.0f));
+  CHECK(anim::standing_ground(stairs, 2.0f, -3.0f, 12.0f, 5.0f, 6.0f, 0.2f) == Approx(0.0f));
 }

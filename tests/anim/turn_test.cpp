@@ -50,7 +50,7 @@ TEST_CASE("turn: the girdles swap places over the feet, which keep their world p
       const float front_x = s.body.girdle_ws(*s.rig, 0).x;
       const float back_x = s.body.girdle_ws(*s.rig, static_cast<int>(s.rig->girdles.size()) - 1).x;
 
-      anim::mirror_body(*s.rig, s.body);
+      anim::mirror_body(*s.rig, {}, s.body);
       CHECK(s.body.facing == -facing);
       CHECK(s.body.lean == 0.0f);
       // The front girdle now stands where the back one stood, and the other way round.
@@ -86,11 +86,43 @@ TEST_CASE("turn: a foot hanging over a drop stops hanging and steps under its gi
   anim::hang(s.ctx, s.body, 0, 1.0f, hanging);
   hanging.hang_beyond = hanging.pos_ws.x + 0.1f;
   REQUIRE(anim::foot_consistent(hanging));
-  anim::mirror_body(*s.rig, s.body);
+  anim::mirror_body(*s.rig, {}, s.body);
   anim::turn_feet(s.ctx, SplinePrototypes::defaults(), s.gait, s.body, feet);
   for (const anim::FootState& f : feet.feet) {
     CHECK_FALSE(f.air);
     CHECK(std::isnan(f.hang_beyond));
     CHECK(anim::foot_consistent(f));
+  }
+}
+
+TEST_CASE("turn: a legless body turns within the stretch of ground it lies on", "[anim][turn]") {
+  // The snake's root lies off its middle, so turning about the root would swing its tail
+  // over ground ahead of its head (into the wall that stopped it). Its pose: the
+  // rest pose, the root at x = 0 as in facing space.
+  for (int facing : {1, -1}) {
+    INFO("facing " << facing);
+    test::StageScene s(scenes::example_in_frame("snake"), scenes::flat_level(200.0f), 100.0f, facing);
+    const Skeleton& sk = s.rig->skeleton;
+    std::vector<Mat2x3> model_fs = s.rig->model_rest;
+    const float root_x = bone_start(model_fs[s.rig->root]).x;
+    for (Mat2x3& m : model_fs) m.m[4] -= root_x;
+    auto span = [&] {
+      float lo = 1e30f, hi = -1e30f;
+      for (int b = 0; b < sk.bone_count(); ++b) {
+        for (glm::vec2 p : {bone_start(model_fs[b]), bone_end(model_fs[b], sk.length(b))}) {
+          lo = std::min(lo, s.body.to_ws(p).x);
+          hi = std::max(hi, s.body.to_ws(p).x);
+        }
+      }
+      return glm::vec2(lo, hi);
+    };
+    const glm::vec2 before = span();
+    REQUIRE(before.y - before.x > 1.0f);
+    REQUIRE(std::fabs((before.x + before.y) * 0.5f - s.body.x_ws) > 0.05f);  // the root is off the middle
+    anim::mirror_body(*s.rig, model_fs, s.body);
+    CHECK(s.body.facing == -facing);
+    const glm::vec2 after = span();
+    CHECK(after.x == Approx(before.x).margin(1e-4));
+    CHECK(after.y == Approx(before.y).margin(1e-4));
   }
 }

@@ -20,6 +20,8 @@ constexpr float kMinRestHeightOfReach = 0.25f;
 constexpr float kMinRestHeight = 0.001f;
 // The wall sweep cuts the body into this many slabs along its length.
 constexpr int kBodySlabs = 4;
+// AnimRig::crawl_climb: of the legless root's rest height, and of the body's length.
+constexpr float kCrawlClimbOfRest = 2.0f, kCrawlClimbOfLength = 0.25f;
 
 // The convex hull of points (Andrew's monotone chain), counter-clockwise.
 std::vector<glm::vec2> convex_hull(std::vector<glm::vec2> p) {
@@ -661,7 +663,10 @@ std::shared_ptr<const AnimRig> build_anim_rig(const Skeleton& skeleton, const Po
       }
     }
   }
-  build_fk_plan(roles, *rig);
+  build_fk_plan(roles, *rig);  // (a legless rig's root_rest_y: build_drape)
+  if (rig->legs.empty()) {
+    rig->crawl_climb = std::min(kCrawlClimbOfRest * rig->root_rest_y, kCrawlClimbOfLength * (rig->body_front - rig->body_back));
+  }
   build_trunk(*rig);
   build_flex(*rig);
   anim::build_pentapedal(*rig);

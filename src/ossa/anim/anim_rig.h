@@ -120,6 +120,11 @@ struct AnimRig {
   float body_back = -0.5f, body_front = 0.5f;
   // The rest pose's highest point above the ground it stands on, metres.
   float body_top = 1.0f;
+  // A legless body crawls onto a riser no higher than this (metres); a higher one is a wall:
+  // twice the height its root rests at (it lifts its front end onto the step), and no more
+  // than a quarter of its length (it falls off a drop that deep, locomotion.cpp). A snake climbs
+  // stairs; a whale stops at a level's end wall. 0 for a rig with legs.
+  float crawl_climb = 0.0f;
   // World x range the rest pose covers with the root at x_ws, facing `facing`.
   float body_lo_ws(float x_ws, int facing) const { return x_ws + (facing > 0 ? body_back : -body_front); }
   float body_hi_ws(float x_ws, int facing) const { return x_ws + (facing > 0 ? body_front : -body_back); }

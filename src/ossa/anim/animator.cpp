@@ -143,13 +143,17 @@ void Animator::reset(glm::vec2 position_ws, const Level& level, int facing) {
   // creature starts in the air, its feet where the position is, and falls. A body that would
   // stand in a wall (a whale's length behind a spawn point a metre from the level's end)
   // starts clear of it, as near the position as it fits.
+  // A legless body lies on no ground higher than it crawls onto (a whale's tail beside an end
+  // wall lower than the search).
   const int dir = facing < 0 ? -1 : 1;
   const float reach = 4.0f * rig.body_half_length + 1.0f;
+  const float climb = rig.legs.empty() ? rig.crawl_climb : INFINITY;
   position_ws.x = clear_standing_x(level, position_ws.x, rig.body_lo_ws(0.0f, dir), rig.body_hi_ws(0.0f, dir),
-                                   rig.body_top, from, depth, reach, hits_);
-  const auto ground = ground_below(level, rig.body_lo_ws(position_ws.x, dir), rig.body_hi_ws(position_ws.x, dir), from, depth);
+                                   rig.body_top, from, depth, climb, reach, hits_);
+  const auto ground = standing_ground(level, position_ws.x, rig.body_lo_ws(position_ws.x, dir), rig.body_hi_ws(position_ws.x, dir),
+                                      from, depth, climb);
   const bool falling = !ground;
-  reset_body(position_ws.x, (ground ? ground->height_ws : position_ws.y) + rig.root_rest_y, dir, body_, body_state_);
+  reset_body(position_ws.x, (ground ? *ground : position_ws.y) + rig.root_rest_y, dir, body_, body_state_);
   motion_ = {};
   gait_.phase = gait_.frequency = 0.0f;
   gait_.moving = false;
@@ -237,7 +241,7 @@ void Animator::tick(float dt, const AnimatorIntent& intent, const Level& level) 
   begin_tick(rig, params_, intent.jump, dt, loco_);                             //  3 locomotion: the crouch
   handoff_.turned = turn_wanted(intent.velocity, body_.facing, landing);
   if (handoff_.turned) {                                                        //  4 turn
-    mirror_body(rig, body_);
+    mirror_body(rig, pose_.facing, body_);
     turn_feet(ctx, spline_prototypes_, gait_, body_, step_.feet);
   }
   command_speed(planner(ctx, body_, gait_, step_.feet), intent.velocity, dt, landing, motion_);  //  5 body motion: speed

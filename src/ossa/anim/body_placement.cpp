@@ -127,6 +127,22 @@ void body_target(Placement& p, const std::vector<float>& height, float* target_r
   *target_root = height.front() - rotate(d, *target_pitch + angle_extra).y;
 }
 
+// The ground a legless body lies on over [lo, hi] (world x): the highest box top under it no
+// higher than a hip above the root, and of those only what it can crawl onto from the ground
+// under its root, riser by riser, and what it lies on now (GroundProfile::climbable_top, no
+// riser higher than AnimRig::crawl_climb): a level's end wall ahead of a whale, lower than its
+// root, is a wall, not ground it rides up onto. `lift`: how far the body is held above its
+// resting height. Where nothing is found, the ground it rests on now.
+float legless_ground(const AnimContext& ctx, const BodyFrame& body, float lo, float hi, float lift) {
+  const AnimRig& rig = ctx.rig;
+  const float resting = body.root_y_ws - rig.root_rest_y - lift;
+  auto hit = ground_below(ctx.level, lo, hi, body.root_y_ws + rig.hip_height, rig.scale.search_depth);
+  if (!hit) return resting;
+  const float climbable = ctx.ground.climbable_top(body.x_ws, lo, hi, rig.body_lo_ws(body.x_ws, body.facing),
+                                                   rig.body_hi_ws(body.x_ws, body.facing), resting, rig.crawl_climb);
+  return climbable < hit->height_ws ? climbable : hit->height_ws;  // (NaN: the profile cannot tell)
+}
+
 }  // namespace
 
 // [SECTION] place_body --------------------------------------------------------------------------
@@ -155,10 +171,10 @@ void place_body(const AnimContext& ctx, const PlacementInputs& in, const FootSet
     // The span looks kLeglessLookAhead seconds ahead, so that at speed the body has risen to a
     // step by the time it reaches it (the root height is smoothed).
     const float ahead = body.facing * in.speed * kLeglessLookAhead;
-    auto hit = ground_below(ctx.level, rig.body_lo_ws(body.x_ws, body.facing) + std::min(ahead, 0.0f),
-                            rig.body_hi_ws(body.x_ws, body.facing) + std::max(ahead, 0.0f), body.root_y_ws + rig.hip_height, ctx.rig.scale.search_depth);
+    const float ground = legless_ground(ctx, body, rig.body_lo_ws(body.x_ws, body.facing) + std::min(ahead, 0.0f),
+                                        rig.body_hi_ws(body.x_ws, body.facing) + std::max(ahead, 0.0f), state.body_lift);
     if (in.dt > 0.0f) state.body_lift *= std::exp(-in.dt);
-    target_root = (hit ? hit->height_ws : body.root_y_ws - rig.root_rest_y) + rig.root_rest_y + state.body_lift;
+    target_root = ground + rig.root_rest_y + state.body_lift;
   } else {
     girdle_heights(p, height);
     body_target(p, height, &target_root, &target_pitch);
@@ -200,9 +216,8 @@ float standing_root(const AnimContext& ctx, const PlacementInputs& in, const Foo
                     const BodyFrame& body) {
   const AnimRig& rig = ctx.rig;
   if (rig.girdles.empty()) {
-    auto hit = ground_below(ctx.level, rig.body_lo_ws(body.x_ws, body.facing), rig.body_hi_ws(body.x_ws, body.facing),
-                            body.root_y_ws + rig.hip_height, ctx.rig.scale.search_depth);
-    return (hit ? hit->height_ws : body.root_y_ws - rig.root_rest_y) + rig.root_rest_y;
+    return legless_ground(ctx, body, rig.body_lo_ws(body.x_ws, body.facing), rig.body_hi_ws(body.x_ws, body.facing), 0.0f) +
+           rig.root_rest_y;
   }
   BodyFrame frame = body;
   BodyState state;
@@ -227,11 +242,24 @@ void reset_body(float x, float root_y, int facing, BodyFrame& body, BodyState& s
   state.bob_root = state.bob_pitch = 0.0f;
 }
 
-void mirror_body(const AnimRig& rig, BodyFrame& body) {
+void mirror_body(const AnimRig& rig, const std::vector<Mat2x3>& model_fs, BodyFrame& body) {
+  // The girdles swap places; a legless body keeps the stretch of ground it lies on as it lies
+  // now (its tail comes to lie where its head was, not swung into the wall its head was
+  // blocked at; a long neck laid along the ground reaches further than at rest).
+  float shift = 0.0f;
   if (!rig.girdles.empty()) {
-    const float shift = rig.girdles.front().joint_ms.x + rig.girdles.back().joint_ms.x;
-    body.x_ws += body.facing * shift;
+    shift = rig.girdles.front().joint_ms.x + rig.girdles.back().joint_ms.x;
+  } else if (!model_fs.empty()) {
+    float lo = 0.0f, hi = 0.0f;
+    for (int b = 0; b < rig.skeleton.bone_count(); ++b) {
+      for (float x : {bone_start(model_fs[b]).x, bone_end(model_fs[b], rig.skeleton.length(b)).x}) {
+        lo = std::min(lo, x);
+        hi = std::max(hi, x);
+      }
+    }
+    shift = lo + hi;
   }
+  body.x_ws += body.facing * shift;
   body.facing = -body.facing;
   body.lean = 0.0f;
 }

@@ -84,8 +84,10 @@ float standing_root(const AnimContext& ctx, const PlacementInputs& in, const Foo
 
 // The reset: the root at (x, root_y), facing `facing`, level, still.
 void reset_body(float x, float root_y, int facing, BodyFrame& body, BodyState& state);
-// The turn (turn.h): the front and back girdles swap places, the facing flips, no lean.
-void mirror_body(const AnimRig& rig, BodyFrame& body);
+// The turn (turn.h): the front and back girdles swap places (a legless body keeps the stretch
+// of ground it lies on in its pose `model_fs`, facing-space model matrices), the facing flips,
+// no lean.
+void mirror_body(const AnimRig& rig, const std::vector<Mat2x3>& model_fs, BodyFrame& body);
 // Stage 7: the lean into the motion eases towards `lean` (radians; keep = exp(-rate·dt)).
 void lean_body(float lean, float keep, BodyFrame& body);
 // Stages 7 and A2: the root moves dx along x (world metres, signed), as body motion allowed.

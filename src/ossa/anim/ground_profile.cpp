@@ -185,6 +185,31 @@ float GroundProfile::slope_top(float from_ws, float a_ws, float b_ws, const Slop
   return top;
 }
 
+float GroundProfile::climbable_top(float from_ws, float a_ws, float b_ws, float lying_lo_ws, float lying_hi_ws, float from_height,
+                                  float climb) const {
+  if (a_ws > b_ws) std::swap(a_ws, b_ws);
+  if (!spans(a_ws, b_ws) || from_ws < a_ws || from_ws > b_ws) return kNoGround;
+  const int lo = tread_of_[column_of(a_ws)], hi = tread_of_[column_of(b_ws)], start = tread_of_[column_of(from_ws)];
+  // The tread under from_ws, unless a gap or a wall itself, is where the walk starts.
+  const float first = treads_[start].height;
+  const bool first_ground = first <= from_height + climb;
+  float top = first_ground ? first : kNoGround;
+  for (int dir : {-1, 1}) {
+    float prev = first_ground ? first : from_height;
+    for (int t = start + dir; t >= lo && t <= hi; t += dir) {
+      const Tread& tread = treads_[t];
+      const float y = tread.height;
+      if (std::isnan(y)) continue;  // a gap: bridged
+      const bool lying = x0_ + static_cast<float>(tread.first) * step_ <= lying_hi_ws &&
+                         x0_ + static_cast<float>(tread.last + 1) * step_ >= lying_lo_ws;
+      if (y > std::max(prev, lying ? from_height : -INFINITY) + climb) break;  // a wall
+      if (!(top >= y)) top = y;
+      prev = y;
+    }
+  }
+  return top;
+}
+
 namespace anim {
 
 namespace {

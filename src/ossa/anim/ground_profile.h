@@ -141,6 +141,17 @@ class GroundProfile {
   // profile. What the legs climb without a step (the hill ahead) — the wall sweep's floor.
   float slope_top(float from_ws, float a_ws, float b_ws, const SlopeReading& reading) const;
 
+  // The ground as it stands (no slope reading), walked a tread at a time from x = from_ws
+  // either way over [a_ws, b_ws], for as long as no tread rises more than `climb` above the last
+  // ground walked (a gap is bridged, a drop taken) — or, over [lying_lo_ws, lying_hi_ws] (where
+  // the body lies now), above `from_height` (the ground it lies on now: the ledge a body came
+  // down from stays ground under its tail, and under its head once it turns): the highest tread
+  // walked. What a body lying along the ground can have under it without climbing a wall (a
+  // legless body nearing a level's end wall). NaN when the range leaves the profile or holds no
+  // ground the walk reaches.
+  float climbable_top(float from_ws, float a_ws, float b_ws, float lying_lo_ws, float lying_hi_ws, float from_height,
+                      float climb) const;
+
  private:
   struct Span {
     int first = 0, last = 0;  // columns

@@ -1,5 +1,7 @@
 #include "ossa/anim/level_probe.h"
 
+#include "ossa/anim/ground_profile.h"
+
 #include <algorithm>
 #include <cmath>
 
@@ -16,19 +18,35 @@ std::optional<GroundHit> ground_below(const Level& level, float x0, float x1, fl
   return level.ground_height_below(std::min(x0, x1), std::max(x0, x1), from_y, std::max(max_drop, 0.0f));
 }
 
+std::optional<float> standing_ground(const Level& level, float x, float lo, float hi, float from_y, float max_drop, float climb) {
+  const auto span = ground_below(level, lo, hi, from_y, max_drop);
+  if (!span || !(climb < INFINITY)) return span ? std::optional<float>(span->height_ws) : std::nullopt;
+  const auto under = ground_below(level, x, x, from_y, max_drop);
+  if (!under) return span->height_ws;
+  // Walked from the ground under x riser by riser (a flight of steps lower than `climb` is
+  // ground, a wall is not), in columns of at most kStandingColumns over the span. (A reset's
+  // question: the profile is built for it.)
+  constexpr float kStandingColumns = 1024.0f, kStandingStepMin = 0.005f;
+  const float step = std::max((hi - lo) / kStandingColumns, kStandingStepMin);
+  thread_local GroundProfile profile;
+  profile.build(level, lo - step, hi + 2.0f * step, from_y, std::max(max_drop, 0.0f), step);
+  const float top = profile.climbable_top(x, lo, hi, hi, lo, under->height_ws, climb);
+  return std::isnan(top) ? span->height_ws : std::min(top, span->height_ws);
+}
+
 namespace {
 
 // Pushes the body towards `dir` past every box its standing region overlaps until it overlaps
 // none; nullopt beyond `reach` or after too many boxes.
 std::optional<float> push_clear(const Level& level, float x, float back, float front, float top, float from_y,
-                                float max_drop, float reach, int dir, std::vector<int>& hits) {
+                                float max_drop, float climb, float reach, int dir, std::vector<int>& hits) {
   constexpr int kMaxPushes = 64;
   const float start = x;
   for (int i = 0; i < kMaxPushes && std::abs(x - start) <= reach; ++i) {
     const float lo = x + back, hi = x + front;
-    const auto ground = ground_below(level, lo, hi, from_y, max_drop);
+    const auto ground = standing_ground(level, x, lo, hi, from_y, max_drop, climb);
     if (!ground) return std::nullopt;  // off the level's edge: no place to stand this way
-    const float base = ground->height_ws;
+    const float base = *ground;
     hits.clear();
     level.overlapping(Box{{lo, base + 1e-3f}, {hi, base + std::max(top, 2e-3f)}}, hits);
     if (hits.empty()) return x;
@@ -45,9 +63,9 @@ std::optional<float> push_clear(const Level& level, float x, float back, float f
 }  // namespace
 
 float clear_standing_x(const Level& level, float x, float back, float front, float top, float from_y, float max_drop,
-                       float reach, std::vector<int>& hits) {
-  const auto right = push_clear(level, x, back, front, top, from_y, max_drop, reach, 1, hits);
-  const auto left = push_clear(level, x, back, front, top, from_y, max_drop, reach, -1, hits);
+                       float climb, float reach, std::vector<int>& hits) {
+  const auto right = push_clear(level, x, back, front, top, from_y, max_drop, climb, reach, 1, hits);
+  const auto left = push_clear(level, x, back, front, top, from_y, max_drop, climb, reach, -1, hits);
   if (right && left) return *right - x <= x - *left ? *right : *left;
   return right ? *right : left ? *left : x;
 }

@@ -21,14 +21,21 @@ namespace ossa::anim {
 // in either order and a drop that may come out negative, which mean the same span and no drop.
 std::optional<GroundHit> ground_below(const Level& level, float x0, float x1, float from_y, float max_drop);
 
+// The ground a body over [lo, hi] stands on with its root at x: the highest box top below
+// `from_y` (down to max_drop below it) in that span — with a finite `climb` (a legless body's
+// AnimRig::crawl_climb; INFINITY for a body on legs) only what is reached from the ground under
+// x by risers no higher than climb (GroundProfile::climbable_top: a flight of steps is ground,
+// an end wall beside its tail is not). nullopt: no ground in the span.
+std::optional<float> standing_ground(const Level& level, float x, float lo, float hi, float from_y, float max_drop, float climb);
+
 // Where a body may stand near x: the root x nearest to `x` at which the body's extent
-// [x + back, x + front] (world offsets, back < front), standing on the highest ground below
-// `from_y` in that span and rising `top` above it, meets no box — a wall taller than the search
-// or a platform at the body's height. Tries pushing the body clear to either side and takes
-// the shorter shift (a side with no ground under the body is no place); `x` itself when it
-// fits, or when no place within `reach` does.
+// [x + back, x + front] (world offsets, back < front), standing on its standing_ground (with
+// `climb`) and rising `top` above it, meets no box — a wall taller than the search, a wall
+// higher than it climbs, or a platform at the body's height. Tries pushing the body clear to
+// either side and takes the shorter shift (a side with no ground under the body is no place);
+// `x` itself when it fits, or when no place within `reach` does.
 float clear_standing_x(const Level& level, float x, float back, float front, float top, float from_y, float max_drop,
-                       float reach, std::vector<int>& hits);
+                       float climb, float reach, std::vector<int>& hits);
 
 // Does the polyline p[0] - p[1] - ... pass through the interior of a collider (shrunk by a
 // little under a millimetre, 0.99 mm)? One query for its bounds, then a Liang-Barsky clip per segment and box.
