@@ -170,10 +170,14 @@ void place_body(const AnimContext& ctx, const PlacementInputs& in, const FootSet
     // and lifted again every tick).
     // The span looks kLeglessLookAhead seconds ahead, so that at speed the body has risen to a
     // step by the time it reaches it (the root height is smoothed).
+    // On level ground the wave needs the same lift every wave: it settles slower there.
     const float ahead = body.facing * in.speed * kLeglessLookAhead;
-    const float ground = legless_ground(ctx, body, rig.body_lo_ws(body.x_ws, body.facing) + std::min(ahead, 0.0f),
-                                        rig.body_hi_ws(body.x_ws, body.facing) + std::max(ahead, 0.0f), state.body_lift);
-    if (in.dt > 0.0f) state.body_lift *= std::exp(-in.dt);
+    const float lo = rig.body_lo_ws(body.x_ws, body.facing) + std::min(ahead, 0.0f);
+    const float hi = rig.body_hi_ws(body.x_ws, body.facing) + std::max(ahead, 0.0f);
+    const float ground = legless_ground(ctx, body, lo, hi, state.body_lift);
+    float level_height;
+    const bool level = ctx.ground.spans(lo, hi) && ctx.ground.level_over(lo, hi, &level_height);
+    if (in.dt > 0.0f) state.body_lift *= std::exp(-(level ? kLeglessLiftSettleLevel : kLeglessLiftSettle) * in.dt);
     target_root = ground + rig.root_rest_y + state.body_lift;
   } else {
     girdle_heights(p, height);

@@ -39,6 +39,11 @@ inline constexpr float kShoulderLookAhead = 0.25f;
 inline constexpr float kHangGroundOfReach = 1.5f, kHangDipOfRest = 0.35f;
 // A legless body follows the ground under it and this many seconds of travel ahead.
 inline constexpr float kLeglessLookAhead = 0.2f;
+// The lift the legless wave last needed settles back at this rate (1/s), so that the body
+// follows the ground down a step; on level ground, where every wave needs the same lift,
+// slower: held, the body is not pulled down and lifted again at every wave (the
+// ichthyosaurus's crawl jolted 1.6 g at 1/s).
+inline constexpr float kLeglessLiftSettle = 1.0f, kLeglessLiftSettleLevel = 0.5f;
 // One tick raises no girdle by more than this many hip heights to clear a knee, in at most
 // kKneePasses passes.
 inline constexpr float kMaxKneeRaiseOfHip = 0.5f;
