@@ -143,3 +143,31 @@ TEST_CASE("a whale crawling to a level's end wall stops at it and stays on the l
     CHECK(r.probe.nan_count == 0);
   }
 }
+
+TEST_CASE("a whale spawned beside a level's end wall lies clear of it and crawls off from any spawn height", "[game][legless]") {
+  // stairs.json's spawn is 2 m from its 4 m end wall: the sperm whale (17.7 m) must lie
+  // further in, over the first flight. The reset looked for ground only 2.6 m above the spawn,
+  // read the flight's upper steps as walls to push past and, finding no place, left the whale
+  // at the spawn with its tail over the wall, blocked for good (the game spawns 0.5 m up). A
+  // legless body now looks up to half its length, its crawl climb telling ground from wall;
+  // and a reset clears walls by a margin (a tail touching the wall's face lifted the bowhead
+  // 4 m over it).
+  const Level level = load_level(scenes::source_path("levels/stairs.json")).value();
+  for (const char* name : {"sperm whale", "bowhead whale"}) {
+    auto creature = std::make_shared<const Creature>(build_creature(scenes::generator().example(name).value()).value());
+    for (float up : {0.0f, 0.5f, 1.0f}) {
+      Player player(creature, SplinePrototypes::defaults());
+      player.animator().reset(level.spawn_ws + glm::vec2(0.0f, up), level);
+      const Animator& a = player.animator();
+      const float x0 = a.x(), lying = a.root_y() - a.rig().root_rest_y;
+      const SimResult r = run_script(player, level, parse_script("walk:0.6:3").value(), 120);
+      INFO(name << " spawned " << up << " m up: at x " << x0 << ", tail at " << a.rig().body_lo_ws(x0, 1) << ", moved to "
+                << a.x() << ", lying at " << lying << ", deepest " << r.probe.max_penetration_m << " m");
+      CHECK(a.rig().body_lo_ws(x0, 1) >= 0.0f);  // clear of the wall's face at x 0
+      CHECK(a.x() > x0 + 1.0f);
+      CHECK(r.blocked_s == 0.0f);
+      CHECK(lying < 3.5f);  // on the flight (its steps under the body rise to 3 m), not on the 4 m wall
+      CHECK(r.probe.max_penetration_m <= 0.001f);
+    }
+  }
+}

@@ -29,6 +29,8 @@ constexpr float kLeanRate = 6.0f, kRunRate = 5.0f, kGaitRate = 4.0f, kPitchRate 
 constexpr float kBobRate = 40.0f;
 // A reset looks for ground from this many hip heights (and at least 1 m) above the position.
 constexpr float kResetSearchOfHip = 2.0f;
+// A reset places the body clear of walls by this share of its half length.
+constexpr float kResetClearOfHalfLength = 0.05f;
 // The most a standing body goes back out of a step in one tick, of the hip height.
 constexpr float kStandingPushOfHip = 0.03f;
 
@@ -136,7 +138,10 @@ void Animator::reset(glm::vec2 position_ws, const Level& level, int facing) {
   const AnimRig& rig = *rig_;
   // A position inside a box (a spawn placed in the ground) stands on the ground above it.
   position_ws = level.free_point_above(position_ws);
-  const float search = std::max(kResetSearchOfHip * rig.hip_height, 1.0f);
+  // A legless body lies along the ground of its whole length (a whale over a flight of stairs):
+  // it looks for ground up to half its length above the position, and its crawl climb, not
+  // the search, tells the ground from a wall (standing_ground).
+  const float search = std::max({kResetSearchOfHip * rig.hip_height, 1.0f, rig.legs.empty() ? rig.body_half_length : 0.0f});
   const float snap = std::max(kResetSnapOfHip * rig.hip_height, kResetSnapMin);
   const float from = position_ws.y + search, depth = search + snap;
   // The body over the ground below the whole of it; no ground within the snap below: the
@@ -148,7 +153,10 @@ void Animator::reset(glm::vec2 position_ws, const Level& level, int facing) {
   const int dir = facing < 0 ? -1 : 1;
   const float reach = 4.0f * rig.body_half_length + 1.0f;
   const float climb = rig.legs.empty() ? rig.crawl_climb : INFINITY;
-  position_ws.x = clear_standing_x(level, position_ws.x, rig.body_lo_ws(0.0f, dir), rig.body_hi_ws(0.0f, dir),
+  // (Clear by a margin: a body draped along the ground reaches a little further than at rest,
+  // and a tail touching the wall's face would lift the body over the wall.)
+  const float margin = kResetClearOfHalfLength * rig.body_half_length;
+  position_ws.x = clear_standing_x(level, position_ws.x, rig.body_lo_ws(0.0f, dir) - margin, rig.body_hi_ws(0.0f, dir) + margin,
                                    rig.body_top, from, depth, climb, reach, hits_);
   const auto ground = standing_ground(level, position_ws.x, rig.body_lo_ws(position_ws.x, dir), rig.body_hi_ws(position_ws.x, dir),
                                       from, depth, climb);
