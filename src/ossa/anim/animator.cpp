@@ -147,9 +147,8 @@ void Animator::reset(glm::vec2 position_ws, const Level& level, int facing) {
   // The body over the ground below the whole of it; no ground within the snap below: the
   // creature starts in the air, its feet where the position is, and falls. A body that would
   // stand in a wall (a whale's length behind a spawn point a metre from the level's end)
-  // starts clear of it, as near the position as it fits.
-  // A legless body lies on no ground higher than it crawls onto (a whale's tail beside an end
-  // wall lower than the search).
+  // starts clear of it, as near the position as it fits; a legless body lies on no ground
+  // higher than it crawls onto (a whale's tail beside an end wall lower than the search).
   const int dir = facing < 0 ? -1 : 1;
   const float reach = 4.0f * rig.body_half_length + 1.0f;
   const float climb = rig.legs.empty() ? rig.crawl_climb : INFINITY;

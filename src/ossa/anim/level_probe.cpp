@@ -1,9 +1,9 @@
 #include "ossa/anim/level_probe.h"
 
-#include "ossa/anim/ground_profile.h"
-
 #include <algorithm>
 #include <cmath>
+
+#include "ossa/anim/ground_profile.h"
 
 namespace ossa::anim {
 
