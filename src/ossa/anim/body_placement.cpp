@@ -165,7 +165,8 @@ void place_body(const AnimContext& ctx, const PlacementInputs& in, const FootSet
     for (std::vector<float>* v : {&height, &need, &room, &fold, &swing_up}) v->resize(n);
   }
   if (rig.girdles.empty()) {
-    // Legless: follow the highest ground under the body, lifted lately so that the wave keeps
+    // Legless: follow the highest ground under the body that it can crawl onto (legless_ground:
+    // not a wall it has come up to), lifted lately so that the wave keeps
     // the body out of the ground (held there, settling back slowly, rather than pulled down
     // and lifted again every tick).
     // The span looks kLeglessLookAhead seconds ahead, so that at speed the body has risen to a
