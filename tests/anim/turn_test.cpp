@@ -126,3 +126,32 @@ TEST_CASE("turn: a legless body turns within the stretch of ground it lies on", 
     CHECK(after.y == Approx(before.y).margin(1e-4));
   }
 }
+
+TEST_CASE("turn: a body pitched down a ledge turns along it", "[anim][turn]") {
+  // Each girdle comes to stand where the other stood, as high over that ground as it stood
+  // over its own (the stegosaurus turned pitched 40° down drops.json's 2 m ledge, kept at its
+  // pitch, put its new front girdle half a metre out over the lower floor, its forefeet swung
+  // down there and a stance foot slid 86 cm). Turned level, it stands as before.
+  for (int facing : {1, -1}) {
+    for (float pitch : {-0.7f, 0.0f, 0.4f}) {
+      INFO("facing " << facing << ", pitch " << pitch);
+      test::StageScene s(scenes::quadruped(), scenes::flat_level(200.0f), 100.0f, facing);
+      s.body.pitch = pitch;
+      const AnimRig& rig = *s.rig;
+      const int back = static_cast<int>(rig.girdles.size()) - 1;
+      const float rise = rig.girdles.front().rest_height - rig.girdles[back].rest_height;
+      const glm::vec2 front_ws = s.body.girdle_ws(rig, 0), back_ws = s.body.girdle_ws(rig, back);
+      const float level_pitch = s.body.pitch;
+      anim::mirror_body(rig, {}, s.body);
+      CHECK(s.body.facing == -facing);
+      CHECK(s.body.girdle_ws(rig, 0).x == Approx(back_ws.x).margin(1e-4));
+      CHECK(s.body.girdle_ws(rig, 0).y == Approx(back_ws.y + rise).margin(1e-4));
+      CHECK(s.body.girdle_ws(rig, back).y == Approx(front_ws.y - rise).margin(1e-4));
+      // Near where the front girdle stood: at the heights asked for, the span between the
+      // girdles lies steeper or flatter than it did (within a quarter of the span).
+      const float span = glm::length(rig.girdle_joint(0, 0.0f) - rig.girdle_joint(back, 0.0f));
+      CHECK(s.body.girdle_ws(rig, back).x == Approx(front_ws.x).margin(0.25f * span));
+      if (pitch == 0.0f) CHECK(s.body.pitch == Approx(level_pitch).margin(0.02f));
+    }
+  }
+}

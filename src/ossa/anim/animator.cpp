@@ -316,7 +316,6 @@ PlacementInputs Animator::placement_inputs(float dt) const {
   in.stepping = gait_.moving;
   in.bob = gait_.girdle_bob;
   in.extra_bob = gait_.extra_bob;
-  in.snap = handoff_.turned;
   in.turning = handoff_.turned;
   in.keep_pitch = decay_.pitch;
   in.keep_root = decay_.root;

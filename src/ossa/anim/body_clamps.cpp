@@ -33,8 +33,15 @@ void move_girdle(Placement& p, int g, float dy) {
     const float s = std::asin(std::clamp((v_before.y + dy) / len, -0.95f, 0.95f));
     const float turned = (std::cos(a + phi) >= 0.0f ? s : kPi - s) - phi;
     const float step = std::clamp(wrap_angle(turned - a), -kMaxPitchStep, kMaxPitchStep);
-    body.pitch = std::clamp(body.pitch + step, std::max(p.state.pitch_target - kMaxPitchOff, -kMaxPitch),
-                            std::min(p.state.pitch_target + kMaxPitchOff, kMaxPitch));
+    float lo = std::max(p.state.pitch_target - kMaxPitchOff, -kMaxPitch);
+    float hi = std::min(p.state.pitch_target + kMaxPitchOff, kMaxPitch);
+    if (p.in.turning) {
+      // On a turn's tick a body the turn left further off turns no further off, rather than
+      // at once into the bounds: that would swing its girdles off the feet just handed over.
+      lo = std::min(lo, body.pitch);
+      hi = std::max(hi, body.pitch);
+    }
+    body.pitch = std::clamp(body.pitch + step, lo, hi);
   }
   const float moved = body.rotate_body(v).y - v_before.y;
   body.root_y_ws += o_before.y - body.rotate_body(o).y + (dy - moved);
@@ -237,7 +244,7 @@ void keep_knees_off_ground(Placement& p, std::vector<float>& stance_up, std::vec
         // ground at a touch-down does not step the body up.
         const float need = ground - knee.y;
         const bool flat = !steps_near && !corner_near && ground - margin <= f.pos_ws.y + 1e-3f;
-        const float ease = flat && p.in.dt > 0.0f && !p.in.snap ? 1.0f - p.in.keep_root : 1.0f;
+        const float ease = flat && p.in.dt > 0.0f ? 1.0f - p.in.keep_root : 1.0f;
         up = std::max(up, std::max(need - margin, need * ease));
       }
       // On steps a thigh or shin may cross the edge of a step beside the knee (a swinging leg

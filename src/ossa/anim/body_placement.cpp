@@ -196,7 +196,7 @@ void place_body(const AnimContext& ctx, const PlacementInputs& in, const FootSet
     bob_root = target_root - root0, bob_pitch = target_pitch - pitch0;
     target_root = root0, target_pitch = pitch0;
   }
-  const bool snap = in.snap || in.dt <= 0.0f;
+  const bool snap = in.dt <= 0.0f;  // (a standing body placed at once)
   bob_root = approach(state.bob_root, bob_root, snap ? 0.0f : in.keep_bob);
   bob_pitch = approach(state.bob_pitch, bob_pitch, snap ? 0.0f : in.keep_bob);
   body.pitch = approach(body.pitch - state.bob_pitch, target_pitch, snap ? 0.0f : in.keep_pitch) + bob_pitch;
@@ -253,8 +253,30 @@ void mirror_body(const AnimRig& rig, const std::vector<Mat2x3>& model_fs, BodyFr
   // blocked at; a long neck laid along the ground reaches further than at rest).
   float shift = 0.0f;
   if (!rig.girdles.empty()) {
-    shift = rig.girdles.front().joint_ms.x + rig.girdles.back().joint_ms.x;
-  } else if (!model_fs.empty()) {
+    // The front girdle comes to stand where the back one stands and the back one where the
+    // front one stands, each as high over that ground as it stands now over its own (by their
+    // rest heights): a body pitched down a ledge turns along it, and one turned on level
+    // ground stands as before. (Kept at its pitch and shifted by the rest girdles' x, a
+    // stegosaurus turned pitched 40° down drops.json's 2 m ledge put its new front girdle
+    // half a metre out over the lower floor: its forefeet swung down there and a stance foot
+    // slid 86 cm.)
+    const int back = static_cast<int>(rig.girdles.size()) - 1;
+    const glm::vec2 front_ws = body.girdle_ws(rig, 0), back_ws = body.girdle_ws(rig, back);
+    const float rest_rise = rig.girdles.front().rest_height - rig.girdles[back].rest_height;
+    const glm::vec2 along = body.girdle_ms(rig, 0) - body.girdle_ms(rig, back);
+    const float span = glm::length(along);
+    body.facing = -body.facing;
+    body.lean = 0.0f;
+    if (span > 1e-4f) {
+      const float rise = back_ws.y - front_ws.y + 2.0f * rest_rise;
+      body.pitch = std::asin(std::clamp(rise / span, -0.95f, 0.95f)) - std::atan2(along.y, along.x);
+    }
+    const glm::vec2 now = body.girdle_ws(rig, 0);
+    body.x_ws += back_ws.x - now.x;
+    body.root_y_ws += back_ws.y + rest_rise - now.y;
+    return;
+  }
+  if (!model_fs.empty()) {
     float lo = 0.0f, hi = 0.0f;
     for (int b = 0; b < rig.skeleton.bone_count(); ++b) {
       for (float x : {bone_start(model_fs[b]).x, bone_end(model_fs[b], rig.skeleton.length(b)).x}) {

@@ -59,8 +59,8 @@ struct PlacementInputs {
   bool stepping = false;      // the gait clock runs this tick (a released foot lifts, not resteps)
   std::span<const float> bob;  // per girdle: the footfalls' bob (trunk_bob.h), metres, unsmoothed
   float extra_bob = 0.0f;      // every girdle: the pelvis_y prototype's bob or idle breathing, metres
-  bool snap = false;          // take the new height and pitch at once (a turn)
-  bool turning = false;       // this tick mirrored the creature (swinging feet count as stance)
+  bool turning = false;       // this tick mirrored the creature (swinging feet count as stance; the
+                              // pitch may stay as the turn left it: move_girdle)
   float keep_pitch = 0.0f;    // smoothing exp(-rate·dt) of the pitch and the root height
   float keep_root = 0.0f;
   float keep_bob = 0.0f;      // smoothing of the bob's part (BodyState::bob_root, bob_pitch)
@@ -84,9 +84,10 @@ float standing_root(const AnimContext& ctx, const PlacementInputs& in, const Foo
 
 // The reset: the root at (x, root_y), facing `facing`, level, still.
 void reset_body(float x, float root_y, int facing, BodyFrame& body, BodyState& state);
-// The turn (turn.h): the front and back girdles swap places (a legless body keeps the stretch
-// of ground it lies on in its pose `model_fs`, facing-space model matrices), the facing flips,
-// no lean.
+// The turn (turn.h): the front and back girdles swap places, each as high over the other's
+// ground as it stood over its own, the pitch following (a body pitched down a ledge stays along
+// it); a legless body keeps the stretch of ground it lies on in its pose `model_fs`
+// (facing-space model matrices). The facing flips, no lean.
 void mirror_body(const AnimRig& rig, const std::vector<Mat2x3>& model_fs, BodyFrame& body);
 // Stage 7: the lean into the motion eases towards `lean` (radians; keep = exp(-rate·dt)).
 void lean_body(float lean, float keep, BodyFrame& body);
