@@ -431,8 +431,33 @@ void keep_body_out_of_ground(Placement& p, float fell, const std::vector<float>&
     p.body.root_y_ws += girdle_y - p.body.rotate_body(rel).y;
     trunk = trunk_need(p, raise, pivot);
   }
-  raise += std::min(trunk.raise, std::max(least_room - raise, 0.0f));
+  const float trunk_raise = std::min(trunk.raise, std::max(least_room - raise, 0.0f));
   p.body.root_y_ws += raise;
+  if (!(trunk_raise > 0.0f)) return;
+  // The room was measured before this clamp (a rolling foot's reach moves with its joint): a
+  // stance foot the trunk's raise still puts further out of reach than it was takes it back,
+  // as far as needed (it would be released, and each foot released frees more room for the
+  // next raise: a deer blocked at a ledge, its skull over the top, lifted off all four feet).
+  thread_local std::vector<float> before;
+  before.resize(rig.legs.size());
+  GirdleJointFs joints;
+  for (size_t i = 0; i < rig.legs.size(); ++i) before[i] = std::max(stance_excess(p, i, joints), 0.0f);
+  auto worse = [&] {
+    GirdleJointFs now;
+    float most = 0.0f;
+    for (size_t i = 0; i < rig.legs.size(); ++i) most = std::max(most, stance_excess(p, i, now) - before[i]);
+    return most;
+  };
+  p.body.root_y_ws += trunk_raise;
+  float back = 0.0f;
+  for (int pass = 0; pass < 4; ++pass) {
+    const float over = worse();
+    if (!(over > 0.0f)) return;
+    const float step = std::min(2.0f * over + kReachCheckSlack, trunk_raise - back);
+    p.body.root_y_ws -= step;
+    back += step;
+  }
+  if (worse() > 0.0f) p.body.root_y_ws -= trunk_raise - back;
 }
 
 // 6. The raising clamps (2, 3, 5) may stretch a stance leg again past its reach (a girdle over
