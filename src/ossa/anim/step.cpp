@@ -32,6 +32,10 @@ constexpr float kAirEaseRate = 12.0f;
 constexpr float kReachDownOfRestPerSecond = 1.0f;
 // A jump's feet leave the ground once their legs are this many times their standing length.
 constexpr float kPushOffOfStanding = 1.15f;
+// A foot touching down after waiting for the body hangs instead if its leg is out of reach by
+// more than this fraction of the leg's contact reach and another foot of its girdle stands
+// higher than this one by more than kHangStraddleOfReach of it.
+constexpr float kHangOverreachOfReach = 0.05f, kHangStraddleOfReach = 0.5f;
 
 }  // namespace
 
@@ -232,7 +236,31 @@ void advance_feet(const AnimContext& ctx, const BodyFrame& body, const GaitState
   const SwingTick swing{dt, speed, gait.moving};
   for (size_t i = 0; i < ctx.rig.legs.size(); ++i) {
     FootState& f = feet.of_leg(static_cast<int>(i));
-    if (f.state == LegState::kSwing && !f.air && advance_swing(in, swing, static_cast<int>(i), f)) ++step.steps;
+    if (f.state != LegState::kSwing || f.air) continue;
+    const bool waited = f.hover >= kMaxHoverSeconds;
+    if (!advance_swing(in, swing, static_cast<int>(i), f)) continue;
+    // A foot that waited in vain for the body to come down to its landing, with no place
+    // below its joint in reach, hangs and reaches down for ground rather than stand out of its
+    // leg's reach, where another foot of its girdle stands higher than the leg straddles (a
+    // ledge between them: body placement would pull the girdle down past that foot to this
+    // one; a hind foot left below a ledge the body walks back up dropped the body 0.4 m in a
+    // tick, its forelegs' knees into the ledge's top). Otherwise it sets down and the girdle
+    // comes down to it.
+    const int leg = static_cast<int>(i);
+    const int girdle = ctx.rig.legs[i].girdle;
+    const float straddle = kHangStraddleOfReach * ctx.rig.legs[i].contact_reach;
+    const bool held_up = std::any_of(ctx.rig.girdles[girdle].legs.begin(), ctx.rig.girdles[girdle].legs.end(), [&](int other) {
+      const FootState& o = feet.of_leg(other);
+      return other != leg && o.state == LegState::kStance && !o.air && o.pos_ws.y - f.pos_ws.y > straddle;
+    });
+    if (waited && held_up &&
+        leg_overreach(ctx, body, leg, f, body.to_fs(body.girdle_ws(ctx.rig, girdle))) >
+            kHangOverreachOfReach * ctx.rig.legs[i].contact_reach) {
+      --f.plantings;
+      hang(ctx, body, leg, 1.0f, f);
+      continue;
+    }
+    ++step.steps;
   }
   update_air_feet(ctx, body, 1.0f, dt, true, feet);  // feet reaching down over a drop, or to land
   for (size_t k = 0; k < feet.feet.size(); ++k) {
