@@ -132,11 +132,15 @@ void body_boxes(const AnimRig& rig, const BodyFrame& body, const std::vector<Mat
       add_point(skull + rig.skull_span);
     }
   } else {
-    begin();
-    add(rig.root);
-    for (int b : rig.back) add(b);
-    for (int b : rig.neck) add(b);
-    if (rig.skull >= 0) add(rig.skull);
+    // (As slabs, a bone each: a legless body's, whose bones each lie over their own ground.)
+    auto part = [&](int b) {
+      if (slabs || !open) begin();
+      add(b);
+    };
+    part(rig.root);
+    for (int b : rig.back) part(b);
+    for (int b : rig.neck) part(b);
+    if (rig.skull >= 0) part(rig.skull);
   }
   // An arm's shoulder is the body's too (the arm itself folds out of the way): it meets a
   // step rising in front of a low chest.
@@ -252,6 +256,40 @@ BodyMotionResult sweep_body(const AnimContext& ctx, const BodyFrame& body, const
     if (t < 1.0f) {
       move = std::min(move, std::max(0.0f, t * std::fabs(dx) - 1e-4f));
       out.hit_wall = true;
+    }
+  }
+  // A legless body lies along the ground: each of its bones also meets, as a wall, a box that
+  // rises above the bone and more than the crawl climb above the ground under the bone itself
+  // (the line above runs through the root, over the highest ground under the whole body: a
+  // blue whale lying over stairs.json's 3.3 m landing, its head over the floor, passed over
+  // the level's 4 m end wall). Ground up to a climb above the bone counts as under it (a bone
+  // draped over a ledge's edge, or lying at the foot of a step it climbs); the body climbs by
+  // as much more as its wave lifts it off the ground under its root, up to that climb again
+  // (the 45 cm trout flops over rough.json's 15 cm blocks; the blue whale's running wave would
+  // carry it over a 4 m wall).
+  if (rig.girdles.empty() && near_something && !whole) {
+    float lift = 0.0f;
+    if (ctx.ground.spans(body.x_ws, body.x_ws)) {
+      const float ground = ctx.ground.highest(body.x_ws, body.x_ws, support);
+      if (ground < support) lift = std::min(support - ground, rig.crawl_climb);
+    }
+    body_boxes(rig, body, model_fs, true, &boxes);
+    for (const Box& part : boxes) {
+      if (!ctx.ground.spans(part.min_ws.x, part.max_ws.x)) continue;
+      const float under = ctx.ground.highest(part.min_ws.x, part.max_ws.x, part.max_ws.y + rig.crawl_climb);
+      if (std::isnan(under)) continue;
+      Box box = part;
+      // (A face the bone lies against behind it is no wall ahead: a fin along the floor below
+      // the ledge the body crawls off.)
+      if (dx > 0.0f) box.min_ws.x = std::min(box.min_ws.x + 1e-3f, box.max_ws.x);
+      else box.max_ws.x = std::max(box.max_ws.x - 1e-3f, box.min_ws.x);
+      box.min_ws.y = std::max(box.min_ws.y + kSweepFloorOfHip * hip, under + rig.crawl_climb + lift);
+      box.max_ws.y = std::max(box.max_ws.y, box.min_ws.y + 1e-3f);
+      if (auto wall = level.sweep_box(Box{box.min_ws - margin_lo, box.max_ws + margin_hi}, {dx, 0.0f});
+          wall && wall->t < 1.0f && level.box(wall->index).top() > part.max_ws.y) {
+        move = std::min(move, std::max(0.0f, wall->t * std::fabs(dx) - 1e-4f));
+        out.hit_wall = true;
+      }
     }
   }
   out.dx = facing * move;

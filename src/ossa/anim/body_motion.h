@@ -92,8 +92,8 @@ float limit_by_legs(const AnimContext& ctx, const BodyFrame& body, const FootSet
 // its legs would cross the ledge's corner. A bump the feet step over is not a ledge.
 float limit_by_ledges(const AnimContext& ctx, const BodyFrame& body, const FootSet& feet, float stride, float dx);
 
-// World boxes of the body's parts: slabs of the spine, head, arms, fins (slabs = true), or one
-// box around them all.
+// World boxes of the body's parts: slabs of the spine (a bone each for a rig without slabs: a
+// legless body), head, arms, fins (slabs = true), or one box around them all.
 void body_boxes(const AnimRig& rig, const BodyFrame& body, const std::vector<Mat2x3>& model_fs, bool slabs,
                 std::vector<Box>* boxes);
 
