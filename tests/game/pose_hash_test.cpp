@@ -34,11 +34,11 @@ struct ExpectedHash {
 };
 
 constexpr ExpectedHash kExpected[] = {
-    {"default.json", 0x282010d275af261eull},
-    {"rough.json", 0x19795ca63f05f0b0ull},
-    {"stairs.json", 0xab98a05bdc0ac876ull},
-    {"slopes.json", 0x4af1faa708e74e9bull},
-    {"drops.json", 0xa47c2518d1d52c60ull},
+    {"default.json", 0xe75c2773d03c9878ull},
+    {"rough.json", 0xf3ecf1535fbfd669ull},
+    {"stairs.json", 0xb56a899f03f2cfeaull},
+    {"slopes.json", 0x17c511bd43f57143ull},
+    {"drops.json", 0xd5a506ab0cbad20cull},
 };
 
 std::string hex(uint64_t v) {
