@@ -127,7 +127,7 @@ TEST_CASE("every example animal turns back at drops.json's 1 m ledge with its fe
   // - the thrinaxodon (hip 9 cm) stops at the 0.3 m ledge (deeper than it steps down) and on
   //   the turn's tick puts a hind foot 6 mm into the ledge it stands on;
   // - the ichthyornis stands a foot 7.6 mm short of its foothold;
-  // - the tyrannosaurus, turned at the 2 m ledge, puts a rib 2.2 cm into it;
+  // - the tyrannosaurus, back over the ledges to the level's start, a rib 2.2 cm into its wall;
   // - the frog in the 2 m frame (hip 0.57 m), pitched down the 1 m ledge, its ribs 23 cm.
   struct Limit { const char* name; bool true_size; float slip, bone, gap; };
   const Limit limits[] = {{"thrinaxodon", true, 0.001f, 0.0065f, 0.001f},
