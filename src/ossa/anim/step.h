@@ -88,7 +88,9 @@ void step_feet(const AnimContext& ctx, const SplinePrototypes& prototypes, const
 void lift_overstretched_feet(const AnimContext& ctx, const SplinePrototypes& prototypes, const BodyFrame& body,
                              const GaitState& gait, float speed, const TickHandoff& handoff, StepState& step);
 // The swings' progress after step_feet (the block may have stopped the creature meanwhile:
-// `speed` 0), then the hanging feet; fills handoff.waiting.
+// `speed` 0), then the hanging feet; fills handoff.waiting. A foot that waited in vain above
+// a landing out of its leg's reach, while another foot of its girdle stands higher than the
+// leg straddles, hangs instead of touching down.
 void advance_feet(const AnimContext& ctx, const BodyFrame& body, const GaitState& gait, float speed, float dt,
                   TickHandoff& handoff, StepState& step);
 
