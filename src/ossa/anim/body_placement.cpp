@@ -248,10 +248,6 @@ void reset_body(float x, float root_y, int facing, BodyFrame& body, BodyState& s
 }
 
 void mirror_body(const AnimRig& rig, const std::vector<Mat2x3>& model_fs, BodyFrame& body) {
-  // The girdles swap places; a legless body keeps the stretch of ground it lies on as it lies
-  // now (its tail comes to lie where its head was, not swung into the wall its head was
-  // blocked at; a long neck laid along the ground reaches further than at rest).
-  float shift = 0.0f;
   if (!rig.girdles.empty()) {
     // The front girdle comes to stand where the back one stands and the back one where the
     // front one stands, each as high over that ground as it stands now over its own (by their
@@ -276,6 +272,10 @@ void mirror_body(const AnimRig& rig, const std::vector<Mat2x3>& model_fs, BodyFr
     body.root_y_ws += back_ws.y + rest_rise - now.y;
     return;
   }
+  // A legless body keeps the stretch of ground it lies on as it lies now (its tail comes to lie
+  // where its head was, not swung into the wall its head was blocked at; a long neck laid along
+  // the ground reaches further than at rest).
+  float shift = 0.0f;
   if (!model_fs.empty()) {
     float lo = 0.0f, hi = 0.0f;
     for (int b = 0; b < rig.skeleton.bone_count(); ++b) {

@@ -239,6 +239,10 @@ void advance_feet(const AnimContext& ctx, const BodyFrame& body, const GaitState
     if (f.state != LegState::kSwing || f.air) continue;
     const bool waited = f.hover >= kMaxHoverSeconds;
     if (!advance_swing(in, swing, static_cast<int>(i), f)) continue;
+    if (!waited) {
+      ++step.steps;
+      continue;
+    }
     // A foot that waited in vain for the body to come down to its landing, with no place
     // below its joint in reach, hangs and reaches down for ground rather than stand out of its
     // leg's reach, where another foot of its girdle stands higher than the leg straddles (a
@@ -253,7 +257,7 @@ void advance_feet(const AnimContext& ctx, const BodyFrame& body, const GaitState
       const FootState& o = feet.of_leg(other);
       return other != leg && o.state == LegState::kStance && !o.air && o.pos_ws.y - f.pos_ws.y > straddle;
     });
-    if (waited && held_up &&
+    if (held_up &&
         leg_overreach(ctx, body, leg, f, body.to_fs(body.girdle_ws(ctx.rig, girdle))) >
             kHangOverreachOfReach * ctx.rig.legs[i].contact_reach) {
       --f.plantings;
