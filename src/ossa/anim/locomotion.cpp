@@ -197,8 +197,10 @@ float push_back_from_face(const AnimContext& ctx, const BodyFrame& body, const s
     ctx.level.overlapping(p, ctx.hits);
     for (int h : ctx.hits) {
       const Box& c = ctx.level.box(h);
-      // Only a face ahead of the part (its near edge inside the part, its far side beyond).
-      const bool ahead = body.facing > 0 ? c.min_ws.x > p.min_ws.x : c.max_ws.x < p.max_ws.x;
+      // Only a face ahead of the part (its near edge inside the part, its far side beyond), or
+      // ahead of the root with the part come down past it (a point: an arm's shoulder, the
+      // eared seal's, falling into drops.json's pit, came down 4.8 cm into the far wall).
+      const bool ahead = body.facing > 0 ? c.min_ws.x > std::min(p.min_ws.x, body.x_ws) : c.max_ws.x < std::max(p.max_ws.x, body.x_ws);
       if (ahead) push = std::max(push, body.facing > 0 ? p.max_ws.x - c.min_ws.x : c.max_ws.x - p.min_ws.x);
     }
   }
