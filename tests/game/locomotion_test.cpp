@@ -27,7 +27,7 @@ constexpr float kDt = 1.0f / 120.0f;
 // Of the 250 runs of "random creatures walk and run then turn back and jump on every shipped level", how
 // many put a bone more than 1 mm into a box or slide a foot by more (measured 2026-11-27; lower
 // it as the animator gets better).
-constexpr int kRandomRunsOver1mm = 44;
+constexpr int kRandomRunsOver1mm = 42;
 
 Level drops() { return load_level(scenes::source_path("levels/drops.json")).value(); }
 
@@ -280,6 +280,19 @@ TEST_CASE("a flipper that finds no clear tuck trails back from the face it meets
   const SimResult r = run_from_spawn("eared seal", load_level(scenes::source_path("levels/drops.json")).value(), "run:1:15");
   INFO("deepest " << r.probe.deepest_bone << " at " << r.probe.deepest_at_s << " s: " << r.probe.max_penetration_m << " m");
   CHECK(r.probe.max_penetration_m <= 0.001f);
+  CHECK(r.probe.nan_count == 0);
+}
+
+TEST_CASE("a foreleg whose elbow points back swings down off a ledge's edge clear of it", "[game][anim][locomotion]") {
+  // The tortoise walking from drops.json's spawn lifts a forefoot off the 0.3 m ledge's edge to
+  // step down. Its elbow points back: the swing's escape path (lifted, tucked, drawn back) only
+  // took the elbow deeper into the ledge, 2.8 cm. The foot is carried forward over the lower
+  // floor instead. Every limb within 1 mm (its ribs still cut the edge's corner, 1.2 cm: README
+  // Known limits).
+  const SimResult r = run_from_spawn("tortoise", load_level(scenes::source_path("levels/drops.json")).value(), "walk:0.6:30");
+  INFO("deepest " << r.probe.deepest_bone << " at " << r.probe.deepest_at_s << " s: " << r.probe.max_penetration_m << " m");
+  CHECK(r.probe.max_limb_penetration_m <= 0.001f);
+  CHECK(r.probe.max_stance_slip_m <= 0.001f);
   CHECK(r.probe.nan_count == 0);
 }
 

@@ -16,6 +16,8 @@ constexpr int kTuckBisections = 6;
 constexpr float kLiftBelowJointOfLeg = 0.3f;
 constexpr float kTuckBelowJointOfLeg = 0.45f;
 constexpr float kDrawBackOfLeg = 0.02f;
+// ... or, when none of those clears, carried forward a foot's length plus this much of the leg.
+constexpr float kCarryAheadOfLeg = 0.5f;
 // A stance leg whose ankle lies further from the joint than the leg's length by more than this
 // fraction of it is stretched (the leg IK cannot reach the foot).
 constexpr float kStretchedOfLeg = 0.01f;
@@ -257,6 +259,21 @@ bool LegIkJob::run() const {
           bisect(lo, hi, kTuckBisections, [&](float mid) { return leg_hits(candidate(mid)); });
           ik = candidate(hi);
           foot_dir = dir;
+        } else {
+          // None clears: carried forward from under the joint instead (a foreleg whose elbow
+          // points back, swinging down off a ledge's edge: drawn back, the elbow only goes
+          // deeper into the ledge; the tortoise's went 2.8 cm into drops.json's first).
+          const glm::vec2 ahead = tuck + glm::vec2(F + kCarryAheadOfLeg * info.reach, 0.0f);
+          auto carried = [&](float s) {
+            dir = info.foot_dir_ms;
+            return leg_ik(glm::mix(tuck, ahead, s));
+          };
+          if (!leg_hits(carried(1.0f))) {
+            float from = 0.0f, to = 1.0f;
+            bisect(from, to, kTuckBisections, [&](float mid) { return leg_hits(carried(mid)); });
+            ik = carried(to);
+            foot_dir = dir;
+          }
         }
       }
     }
