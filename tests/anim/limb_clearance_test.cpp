@@ -103,6 +103,48 @@ TEST_CASE("limb clearance: a tail in a step curls or lifts out of it, a fin turn
   }
 }
 
+TEST_CASE("limb clearance: a tail reaching into a wall that rises far above it curls out of it", "[anim][limbs]") {
+  // A wall behind a body in the air, whose face the tail's far fifth reaches past and whose top
+  // lies three tails above its root (the tarsier falling down drops.json's 1 m ledge trailed its
+  // tail into the face: only ground within a tail's length above its root was looked for).
+  for (const char* name : {"crocodile", "tarsier", "dimetrodon"}) {
+    for (int facing : {1, -1}) {
+      INFO(name << " facing " << facing);
+      const Creature& c = example(name);
+      test::StageScene flat(c, scenes::flat_level(100.0f), 50.0f, facing);
+      REQUIRE(flat.rig->tail_length > 0.0f);
+      anim::PoseState ps;
+      anim::init_pose(*flat.rig, ps);
+      anim::pose_body(flat.ctx, flat.body, 0.0f, 0.0f, 0.0f, 0.0f, ps);
+      const std::vector<Mat2x3> fs = anim::facing_matrices(*flat.rig, ps);
+      const glm::vec2 root = flat.body.to_ws(bone_start(fs[flat.rig->tail.front()]));
+      const glm::vec2 tip = flat.body.to_ws(bone_end(fs[flat.rig->tail.back()], flat.rig->skeleton.length(flat.rig->tail.back())));
+      // (The body in the air, the ground two tails below the tail's root: falling down the face.)
+      const float len = flat.rig->tail_length, floor = root.y - 2.0f * len;
+      const float face = tip.x + 0.2f * (root.x - tip.x), top = root.y + 3.0f * len;
+      const Box wall = tip.x < root.x ? Box{{face - 2.0f, floor}, {face, top}} : Box{{face, floor}, {face + 2.0f, top}};
+      const Level level({Box::from_corner(-50.0f, floor - 1.0f, 200.0f, 1.0f), wall}, {0.0f, 0.0f});
+      test::StageScene s(c, level, 50.0f, facing);
+      s.body.root_y_ws = flat.body.root_y_ws;
+      anim::PoseState pose;
+      anim::init_pose(*s.rig, pose);
+      anim::pose_body(s.ctx, s.body, 0.0f, 0.0f, 0.0f, 0.0f, pose);
+      auto tail_ws = [&] {
+        const std::vector<Mat2x3> m = model_matrices(s.rig->skeleton, pose.pose.locals);
+        std::vector<glm::vec2> tail;
+        for (int b : s.rig->tail) tail.push_back(s.body.to_ws(bone_start(m[b])));
+        tail.push_back(s.body.to_ws(bone_end(m[s.rig->tail.back()], s.rig->skeleton.length(s.rig->tail.back()))));
+        return tail;
+      };
+      std::vector<glm::vec2> tail = tail_ws();
+      REQUIRE(anim::polyline_hits_level(s.level, tail.data(), static_cast<int>(tail.size()), s.hits));
+      anim::keep_tail_clear(s.ctx, s.body, pose.facing, pose.pose);
+      tail = tail_ws();
+      CHECK_FALSE(anim::polyline_hits_level(s.level, tail.data(), static_cast<int>(tail.size()), s.hits));
+    }
+  }
+}
+
 TEST_CASE("limb clearance: a legless body bent into the ground rises by the deepest point", "[anim][limbs]") {
   const Creature& c = example("snake");
   test::StageScene s(c, scenes::flat_level(100.0f), 50.0f);

@@ -181,7 +181,9 @@ float body_out_of_ground(const AnimContext& ctx, const BodyFrame& body, const st
 void keep_tail_clear(const AnimContext& ctx, const BodyFrame& body, const std::vector<Mat2x3>& model, Pose& pose) {
   // A tail hanging into a step (down a flight, or one rising behind) curls up from its root,
   // the least that clears, up to kMaxTailCurl over its length (or, if that is not enough,
-  // lifts at its root). Only asked when ground rises to within a tail's length of its root.
+  // lifts at its root). Only asked when a box comes within a tail's length of its root: ground,
+  // or a wall rising higher (the tarsier falling down drops.json's 1 m ledge trailed its tail
+  // 3.3 cm into the face, whose top lay more than a tail above the tail's root).
   const AnimRig& rig = ctx.rig;
   Mat2x3 base = model[rig.tail_base_bone];
   if (body.flex != 0.0f && !rig.tail_flex_between.empty()) {  // the spine it hangs from flexes
@@ -192,8 +194,7 @@ void keep_tail_clear(const AnimContext& ctx, const BodyFrame& body, const std::v
   }
   const glm::vec2 root = body.to_ws(base.apply(pose.locals[rig.tail[0]].offset_ls));
   const float len = rig.tail_length;
-  const auto ground = ground_below(ctx.level, root.x - len, root.x + len, root.y + len, 2.0f * len);
-  if (!ground || ground->height_ws < root.y - len) return;
+  if (!ctx.level.first_overlap(Box{root - glm::vec2(len), root + glm::vec2(len)})) return;
   const size_t n = std::min<size_t>(rig.tail.size(), kMaxTailBones);
   glm::vec2 p[kMaxTailBones + 1];
   auto hits = [&](float turn, float lift = 0.0f) {
