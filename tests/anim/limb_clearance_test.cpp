@@ -41,6 +41,33 @@ std::vector<glm::vec2> chain_ws(const test::StageScene& s, const std::vector<Mat
   return p;
 }
 
+// A tail at rest, posed on flat ground at x 50: its root's and tip's world points, the root
+// bone's height there and the tail's length.
+struct RestTail {
+  glm::vec2 root, tip;
+  float body_y = 0.0f, len = 0.0f;
+};
+RestTail rest_tail(const Creature& c, int facing) {
+  test::StageScene flat(c, scenes::flat_level(100.0f), 50.0f, facing);
+  REQUIRE(flat.rig->tail_length > 0.0f);
+  anim::PoseState ps;
+  anim::init_pose(*flat.rig, ps);
+  anim::pose_body(flat.ctx, flat.body, 0.0f, 0.0f, 0.0f, 0.0f, ps);
+  const std::vector<Mat2x3> fs = anim::facing_matrices(*flat.rig, ps);
+  const int last = flat.rig->tail.back();
+  return {flat.body.to_ws(bone_start(fs[flat.rig->tail.front()])),
+          flat.body.to_ws(bone_end(fs[last], flat.rig->skeleton.length(last))), flat.body.root_y_ws, flat.rig->tail_length};
+}
+
+// The tail's joints and tip (world) as posed.
+std::vector<glm::vec2> tail_ws(const test::StageScene& s, const Pose& pose) {
+  const std::vector<Mat2x3> m = model_matrices(s.rig->skeleton, pose.locals);
+  std::vector<glm::vec2> tail;
+  for (int b : s.rig->tail) tail.push_back(s.body.to_ws(bone_start(m[b])));
+  tail.push_back(s.body.to_ws(bone_end(m[s.rig->tail.back()], s.rig->skeleton.length(s.rig->tail.back()))));
+  return tail;
+}
+
 }  // namespace
 
 TEST_CASE("limb clearance: an arm reaching into a step in front of the chest folds out of it", "[anim][limbs]") {
@@ -77,15 +104,9 @@ TEST_CASE("limb clearance: a tail in a step curls or lifts out of it, a fin turn
     for (int facing : {1, -1}) {
       INFO(name << " facing " << facing);
       const Creature& c = example(name);
-      test::StageScene flat(c, scenes::flat_level(100.0f), 50.0f, facing);
-      REQUIRE(flat.rig->tail_length > 0.0f);
       // A step behind the body, as high as the tail's root hangs.
-      anim::PoseState ps;
-      anim::init_pose(*flat.rig, ps);
-      anim::pose_body(flat.ctx, flat.body, 0.0f, 0.0f, 0.0f, 0.0f, ps);
-      const std::vector<Mat2x3> fs = anim::facing_matrices(*flat.rig, ps);
-      const glm::vec2 root = flat.body.to_ws(bone_start(fs[flat.rig->tail.front()]));
-      const glm::vec2 tip = flat.body.to_ws(bone_end(fs[flat.rig->tail.back()], flat.rig->skeleton.length(flat.rig->tail.back())));
+      const RestTail t = rest_tail(c, facing);
+      const glm::vec2 root = t.root, tip = t.tip;
       const float x0 = std::min(root.x, tip.x), x1 = std::max(root.x, tip.x);
       const Level step({Box::from_corner(0.0f, -1.0f, 100.0f, 1.0f),
                         Box{{x0 + 0.3f * (x1 - x0), 0.0f}, {x1 + 1.0f, std::max(root.y, tip.y) * 0.8f}}}, {0.0f, 0.0f});
@@ -94,10 +115,7 @@ TEST_CASE("limb clearance: a tail in a step curls or lifts out of it, a fin turn
       anim::init_pose(*s.rig, pose);
       anim::pose_body(s.ctx, s.body, 0.0f, 0.0f, 0.0f, 0.0f, pose);
       anim::keep_tail_clear(s.ctx, s.body, pose.facing, pose.pose);
-      const std::vector<Mat2x3> after = model_matrices(s.rig->skeleton, pose.pose.locals);
-      std::vector<glm::vec2> tail;
-      for (int b : s.rig->tail) tail.push_back(s.body.to_ws(bone_start(after[b])));
-      tail.push_back(s.body.to_ws(bone_end(after[s.rig->tail.back()], s.rig->skeleton.length(s.rig->tail.back()))));
+      const std::vector<glm::vec2> tail = tail_ws(s, pose.pose);
       CHECK_FALSE(anim::polyline_hits_level(s.level, tail.data(), static_cast<int>(tail.size()), s.hits));
     }
   }
@@ -111,35 +129,22 @@ TEST_CASE("limb clearance: a tail reaching into a wall that rises far above it c
     for (int facing : {1, -1}) {
       INFO(name << " facing " << facing);
       const Creature& c = example(name);
-      test::StageScene flat(c, scenes::flat_level(100.0f), 50.0f, facing);
-      REQUIRE(flat.rig->tail_length > 0.0f);
-      anim::PoseState ps;
-      anim::init_pose(*flat.rig, ps);
-      anim::pose_body(flat.ctx, flat.body, 0.0f, 0.0f, 0.0f, 0.0f, ps);
-      const std::vector<Mat2x3> fs = anim::facing_matrices(*flat.rig, ps);
-      const glm::vec2 root = flat.body.to_ws(bone_start(fs[flat.rig->tail.front()]));
-      const glm::vec2 tip = flat.body.to_ws(bone_end(fs[flat.rig->tail.back()], flat.rig->skeleton.length(flat.rig->tail.back())));
+      const RestTail t = rest_tail(c, facing);
+      const glm::vec2 root = t.root, tip = t.tip;
       // (The body in the air, the ground two tails below the tail's root: falling down the face.)
-      const float len = flat.rig->tail_length, floor = root.y - 2.0f * len;
+      const float len = t.len, floor = root.y - 2.0f * len;
       const float face = tip.x + 0.2f * (root.x - tip.x), top = root.y + 3.0f * len;
       const Box wall = tip.x < root.x ? Box{{face - 2.0f, floor}, {face, top}} : Box{{face, floor}, {face + 2.0f, top}};
       const Level level({Box::from_corner(-50.0f, floor - 1.0f, 200.0f, 1.0f), wall}, {0.0f, 0.0f});
       test::StageScene s(c, level, 50.0f, facing);
-      s.body.root_y_ws = flat.body.root_y_ws;
+      s.body.root_y_ws = t.body_y;
       anim::PoseState pose;
       anim::init_pose(*s.rig, pose);
       anim::pose_body(s.ctx, s.body, 0.0f, 0.0f, 0.0f, 0.0f, pose);
-      auto tail_ws = [&] {
-        const std::vector<Mat2x3> m = model_matrices(s.rig->skeleton, pose.pose.locals);
-        std::vector<glm::vec2> tail;
-        for (int b : s.rig->tail) tail.push_back(s.body.to_ws(bone_start(m[b])));
-        tail.push_back(s.body.to_ws(bone_end(m[s.rig->tail.back()], s.rig->skeleton.length(s.rig->tail.back()))));
-        return tail;
-      };
-      std::vector<glm::vec2> tail = tail_ws();
+      std::vector<glm::vec2> tail = tail_ws(s, pose.pose);
       REQUIRE(anim::polyline_hits_level(s.level, tail.data(), static_cast<int>(tail.size()), s.hits));
       anim::keep_tail_clear(s.ctx, s.body, pose.facing, pose.pose);
-      tail = tail_ws();
+      tail = tail_ws(s, pose.pose);
       CHECK_FALSE(anim::polyline_hits_level(s.level, tail.data(), static_cast<int>(tail.size()), s.hits));
     }
   }
