@@ -260,7 +260,7 @@ void advance_feet(const AnimContext& ctx, const BodyFrame& body, const GaitState
     if (held_up &&
         leg_overreach(ctx, body, leg, f, body.to_fs(body.girdle_ws(ctx.rig, girdle))) >
             kHangOverreachOfReach * ctx.rig.legs[i].contact_reach) {
-      --f.plantings;
+      --f.plantings;  // (advance_swing counted the touch-down it hangs from instead)
       hang(ctx, body, leg, 1.0f, f);
       continue;
     }
