@@ -44,6 +44,45 @@ std::vector<glm::vec2> convex_hull(std::vector<glm::vec2> p) {
 
 RigLimb rig_limb(const RigLimbRole& limb) { return {limb.girdle_bone, limb.bones, limb.side}; }
 
+// Can the legs hold the back off the ground? The back — the root, the back's vertebrae and
+// what else hangs from them (ribs), not the neck, head, tail or a limb — must not reach below
+// the ground the legs stand on in the rest pose (the lowest point of the legs and what hangs
+// from them), by more than kBackBelowFeetOfReach of their mean reach (a bone of an imported
+// armature lying at the ground does not count). Legs too short for their body (a random draw
+// can hang a back of many metres on legs of a few decimetres) cannot: the body lies on its
+// belly and crawls, the legs held as fins (AnimRig::legs_as_fins).
+constexpr float kBackBelowFeetOfReach = 0.05f;
+
+bool legs_hold_back_up(const Skeleton& sk, const std::vector<Mat2x3>& rest, const RigRoles& roles) {
+  const int n = sk.bone_count();
+  std::vector<uint8_t> other(n, 0), leg(n, 0);  // other: limbs, the neck, the skull and the tail
+  float reach = 0.0f;
+  int legs = 0;
+  for (const RigLimbRole& limb : roles.limbs) {
+    other[limb.bones[0]] = 1;
+    if (limb.kind != LimbKind::kLeg) continue;
+    leg[limb.bones[0]] = 1;
+    reach += sk.length(limb.bones[0]) + sk.length(limb.bones[1]);
+    ++legs;
+  }
+  if (legs == 0) return true;
+  for (const std::vector<int>* chain : {&roles.neck, &roles.tail}) {
+    for (int b : *chain) other[b] = 1;
+  }
+  if (roles.skull >= 0) other[roles.skull] = 1;
+  float ground = 1e30f, back = 1e30f;
+  for (int b = 0; b < n; ++b) {  // parents precede children
+    if (sk.parent(b) >= 0) {
+      other[b] |= other[sk.parent(b)];
+      leg[b] |= leg[sk.parent(b)];
+    }
+    const float low = std::min(bone_start(rest[b]).y, bone_end(rest[b], sk.length(b)).y);
+    if (leg[b]) ground = std::min(ground, low);
+    if (!other[b]) back = std::min(back, low);
+  }
+  return back >= ground - kBackBelowFeetOfReach * reach / static_cast<float>(legs);
+}
+
 // A quadruped's foot at least this long against the leg above it (upper + lower) is a third
 // segment of the leg (the examples' hooves and paws 0.5–0.79, the elephant's and the big
 // dinosaurs' columnar feet 0.23–0.32; a shorter foot, brachiosaurus's hind 0.16, keeps rolling
@@ -604,18 +643,26 @@ std::shared_ptr<const AnimRig> build_anim_rig(const Creature& creature) {
   return build_anim_rig(creature.skeleton, creature.rest_pose, rig_roles(creature));
 }
 
-std::shared_ptr<const AnimRig> build_anim_rig(const Skeleton& skeleton, const Pose& rest_pose, const RigRoles& roles) {
+std::shared_ptr<const AnimRig> build_anim_rig(const Skeleton& skeleton, const Pose& rest_pose, const RigRoles& asked) {
   auto rig = std::make_shared<AnimRig>();
   rig->skeleton = skeleton;
   rig->rest_pose = rest_pose;
+  const Skeleton& sk = rig->skeleton;
+  rig->model_rest = ossa::model_matrices(sk, rig->rest_pose.locals);
+  RigRoles roles = asked;
+  if (!legs_hold_back_up(sk, rig->model_rest, roles)) {
+    rig->legs_as_fins = true;
+    for (RigLimbRole& limb : roles.limbs) {
+      if (limb.kind == LimbKind::kLeg) limb.kind = LimbKind::kFin;
+    }
+    roles.gait_family = GaitFamily::kLegless;
+  }
   rig->root = roles.root;
   rig->skull = roles.skull;
   rig->back = roles.back;
   rig->neck = roles.neck;
   rig->tail = roles.tail;
   rig->flat_contact = roles.flat_contact;
-  const Skeleton& sk = rig->skeleton;
-  rig->model_rest = ossa::model_matrices(sk, rig->rest_pose.locals);
   rig->root_rest_y = bone_start(rig->model_rest[roles.root]).y;
 
   for (const RigLimbRole& limb : roles.limbs) {

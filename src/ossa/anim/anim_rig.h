@@ -100,6 +100,10 @@ struct AnimRig {
   int skull = -1;                   // -1: none
   std::vector<int> back, neck, tail;// spine chains (head end first), as in Creature
   bool flat_contact = false;        // feet touch with the whole sole (else with the tip)
+  // The roles' legs cannot hold the back off the ground (the back reaches below their feet
+  // in the rest pose): the rig has no legs, it crawls on its belly (kLegless) and holds them
+  // as fins, turned out of the ground as they need.
+  bool legs_as_fins = false;
 
   std::vector<RigLeg> legs;
   std::vector<RigGirdle> girdles;   // front (largest x) to back
