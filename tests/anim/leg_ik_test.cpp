@@ -4,14 +4,16 @@
 
 #include <cmath>
 
+#include "ossa/gen/skeleton_builder.h"
 #include "ossa/math/rng.h"
+#include "ossa/math/two_bone_ik.h"
 #include "shared/level_scenes.h"
 #include "shared/scenes.h"
 #include "stage_scene.h"
 
 using namespace ossa;
 
-TEST_CASE("leg IK: a reachable foot keeps its rest angle, a far one rolls until the leg reaches", "[anim][ik]") {
+TEST_CASE("leg IK: a reachable foot keeps its rest angle, a far or a folded one rolls until the leg reaches", "[anim][ik]") {
   const test::StageScene s(scenes::quadruped(), scenes::flat_level(40.0f), 10.0f);
   const AnimRig& rig = *s.rig;
   const anim::Clearance open;  // knows nothing: the level is asked
@@ -29,13 +31,51 @@ TEST_CASE("leg IK: a reachable foot keeps its rest angle, a far one rolls until 
       // The foot bone keeps its length and ends at the contact point.
       CHECK(glm::length(contact - ankle) == Approx(leg.foot_span).epsilon(1e-4));
       CHECK(glm::length(dir) == Approx(1.0f).epsilon(1e-4));
-      if (glm::length(contact + (-leg.foot_span) * leg.foot_dir_ms - joint) <= leg.leg_reach) {
+      const float standing = glm::length(contact + (-leg.foot_span) * leg.foot_dir_ms - joint);
+      if (standing <= leg.leg_reach && standing >= leg.least_reach) {
         CHECK(dir == leg.foot_dir_ms);  // in reach as it stands: no roll
-      } else {
-        CHECK(glm::length(ankle - joint) <= leg.leg_reach * 1.0001f);  // rolled just enough
+      } else {  // rolled just enough: no further than the leg reaches, no closer than it folds
+        CHECK(glm::length(ankle - joint) <= leg.leg_reach * 1.0001f);
+        CHECK(glm::length(ankle - joint) >= leg.least_reach * 0.9999f);
       }
     }
   }
+}
+
+TEST_CASE("leg IK: a leg with a bone of length 0 rolls its foot so the toe still stands where it stands", "[anim][ik]") {
+  // Random creature 22's thighs have length 0 (a draw the genome limits allow): the leg
+  // reaches its shin's length and no other, so the foot's roll alone brings the toe to its
+  // contact. Before, the stance ankle was planned at 0.985 of the reach, which the chain cannot
+  // make: the toe went 3.7 mm into the ground at every stance.
+  const Creature c = build_creature(scenes::generator().random(22)).value();
+  const test::StageScene s(c, scenes::flat_level(40.0f), 10.0f);
+  const AnimRig& rig = *s.rig;
+  const anim::Clearance open;
+  Rng rng(5);
+  int vanishing = 0;
+  for (size_t i = 0; i < rig.legs.size(); ++i) {
+    const RigLeg& leg = rig.legs[i];
+    if (std::min(leg.upper, leg.lower) > 0.0f) continue;
+    ++vanishing;
+    REQUIRE(leg.foot_span > 0.0f);
+    CHECK(leg.least_reach == Approx(leg.reach));
+    CHECK(leg.leg_reach == Approx(leg.reach));  // not 0.985 of it: the chain reaches only that
+    CHECK(leg.fold <= leg.leg_reach);
+    for (int k = 0; k < 200; ++k) {
+      const glm::vec2 joint(0.0f, rig.girdles[leg.girdle].rest_height);
+      const float angle = rng.uniform(-2.6f, -0.5f);
+      // Any contact the leg and foot reach: from |reach - foot| to reach + foot.
+      const float lo = std::fabs(leg.reach - leg.foot_span), hi = leg.reach + leg.foot_span;
+      const glm::vec2 contact = joint + static_cast<float>(rng.uniform(lo + 0.01f * hi, 0.99f * hi)) * glm::vec2(std::cos(angle), std::sin(angle));
+      glm::vec2 dir;
+      const glm::vec2 ankle = anim::leg_ankle(s.ctx, s.body, static_cast<int>(i), contact, joint, false, open, &dir, nullptr);
+      CHECK(glm::length(contact - ankle) == Approx(leg.foot_span).epsilon(1e-4));
+      CHECK(glm::length(ankle - joint) == Approx(leg.reach).epsilon(1e-3));  // where the chain ends
+      const TwoBoneIkResult ik = solve_two_bone_ik_directions(joint, leg.upper, leg.lower, ankle, leg.bend);
+      CHECK(glm::length(ik.end + leg.foot_span * dir - contact) < 1e-3f * leg.reach);
+    }
+  }
+  CHECK(vanishing > 0);
 }
 
 TEST_CASE("leg IK job: every stance foot is reached, knees bend their way, both facings", "[anim][ik]") {

@@ -137,7 +137,10 @@ void build_legs(const RigRoles& roles, AnimRig& rig) {
     leg.upper = sk.length(limb.bones[0]);
     leg.lower = sk.length(limb.bones[1]);
     leg.reach = leg.upper + leg.lower;
-    leg.fold = 1.02f * std::fabs(leg.upper - leg.lower);
+    leg.least_reach = std::fabs(leg.upper - leg.lower);
+    // (A leg with a vanishing bone reaches only about its length: its stance stops there.)
+    leg.leg_reach = std::max(kReachLimit * leg.reach, leg.least_reach);
+    leg.fold = std::min(1.02f * leg.least_reach, leg.leg_reach);
     leg.bend = static_cast<float>(limb.bend_sign);
     leg.foot_length = sk.length(limb.bones[2]);
     const glm::vec2 joint = bone_start(rest[limb.bones[0]]);
@@ -147,7 +150,6 @@ void build_legs(const RigRoles& roles, AnimRig& rig) {
     leg.foot_offset_ms = rig.flat_contact ? glm::vec2(0.0f) : tip - ankle;
     leg.foot_dir_ms = {std::cos(leg.foot_angle_ms), std::sin(leg.foot_angle_ms)};
     leg.foot_span = glm::length(leg.foot_offset_ms);
-    leg.leg_reach = kReachLimit * leg.reach;
     leg.contact_reach = leg.leg_reach + leg.foot_span;
     leg.contact_bone = rig.flat_contact ? limb.bones[1] : limb.bones[2];
     leg.ankle_rel_ms = -leg.foot_offset_ms;

@@ -37,7 +37,10 @@ struct RigLeg {
   Side side = Side::kNear;
   float upper = 0.0f, lower = 0.0f; // thigh and shin lengths, metres
   float reach = 0.0f;               // upper + lower, metres
-  float fold = 0.0f;                // 1.02 |upper - lower|: the ankle stays this far from the joint
+  // The least the chain reaches, |upper - lower|: the ankle comes no closer to the joint (a
+  // random leg may have a bone of length 0: it reaches its other bone's length only).
+  float least_reach = 0.0f;
+  float fold = 0.0f;                // 1.02 least_reach (at most leg_reach): the ankle stays this far from the joint
   float bend = 1.0f;                // the chain's bend sign
   float foot_length = 0.0f;         // foot bone, metres
   glm::vec2 foot_offset_ms{0.0f};   // ankle → contact point in the rest pose
@@ -45,7 +48,7 @@ struct RigLeg {
   glm::vec2 foot_dir_ms{1.0f, 0.0f};// (cos, sin) of foot_angle_ms
   float girdle_rel_angle = NAN;     // girdle angle relative to the root (NaN: the spine bends)
   float foot_span = 0.0f;           // |foot_offset_ms|: ankle to contact point
-  float leg_reach = 0.0f;           // kReachLimit * reach
+  float leg_reach = 0.0f;           // kReachLimit * reach, at least least_reach
   // Farthest the contact point gets from the girdle joint: the leg at kReachLimit and, for
   // tip contact, the foot pivoted into line with it.
   float contact_reach = 0.0f;

@@ -148,7 +148,10 @@ void keep_stance_legs_unfolded(Placement& p, std::vector<float>& fold_raise, std
     // The ankle lies within a foot's length of the contact point.
     if (glm::length(p.body.to_fs(f.pos_ws) - joint) - rig.legs[i].foot_span >= fold) continue;
     glm::vec2 dir;
-    const glm::vec2 ankle = leg_ankle(p.ctx, p.body, static_cast<int>(i), p.body.to_fs(f.pos_ws), joint, true, f.stance_clear, &dir, nullptr);
+    // (The ankle where the foot holds its angle: how far the leg would fold, not the roll that
+    // keeps it from folding past its least reach.)
+    const glm::vec2 ankle =
+        leg_ankle(p.ctx, p.body, static_cast<int>(i), p.body.to_fs(f.pos_ws), joint, true, f.stance_clear, &dir, nullptr, false);
     const float dx = std::fabs(ankle.x - joint.x);
     if (dx < fold) {
       if (!any) std::fill(fold_raise.begin(), fold_raise.end(), 0.0f);
@@ -229,7 +232,7 @@ void keep_knees_off_ground(Placement& p, std::vector<float>& stance_up, std::vec
       if (!steps_near && !corner_near && joint.y - info.upper > f.pos_ws.y + margin) continue;
       glm::vec2 dir;
       const glm::vec2 ankle = leg_ankle(p.ctx, p.body, static_cast<int>(i), p.body.to_fs(f.pos_ws), joint, true,
-                                        stance ? f.stance_clear : f.swing_clear, &dir, nullptr);
+                                        stance ? f.stance_clear : f.swing_clear, &dir, nullptr, stance);
       if (!steps_near && !corner_near && ankle.y - info.lower > f.pos_ws.y + margin) continue;
       const TwoBoneIkResult ik = solve_two_bone_ik_directions(joint, info.upper, info.lower, ankle, info.bend);
       const glm::vec2 knee = p.body.to_ws(ik.middle);

@@ -26,29 +26,35 @@ bool limit_foot_roll(const AnimContext& ctx, const BodyFrame& body, int leg, glm
 
 // The ankle of leg `leg` for a contact point and girdle joint (_fs), and the foot bone's
 // direction: the rest angle unless that over-extends the leg, else pivoted about the contact
-// (no further than the level allows, when `level_aware`). *limited: the level kept the foot
-// from rolling as far as the leg's reach needs.
+// (no further than the level allows, when `level_aware`), or that brings the ankle closer to
+// the joint than the leg reaches (unless `least` is false: a swinging foot, whose ankle the
+// leg IK lifts and tucks anyway). *limited: the level kept the foot from rolling as far as the
+// leg's reach needs.
 [[gnu::always_inline]] inline glm::vec2 leg_ankle(const AnimContext& ctx, const BodyFrame& body, int leg, glm::vec2 contact_fs,
                                                   glm::vec2 joint_fs, bool level_aware, const Clearance& near,
-                                                  glm::vec2* foot_dir, bool* limited) {
+                                                  glm::vec2* foot_dir, bool* limited, bool least = true) {
   // Hooves and toes roll: with the contact point c fixed, the ankle a(θ) = c - F·u(θ) lies on
-  // a circle of the foot's length F around it. The leg (joint j → ankle) reaches r, so
-  // |a - j| <= r, i.e. u(θ)·d >= q with d = c - j and q = (|d|² + F² - r²) / 2F: an arc of
-  // directions within β = acos(q / |d|) of d. The foot keeps its rest direction inside the
-  // arc and turns to the arc's nearer end outside it (into line with d when it is empty).
+  // a circle of the foot's length F around it. The leg (joint j → ankle) reaches from m to r
+  // (least_reach, leg_reach), so m <= |a - j| <= r, i.e. q_r <= u(θ)·d <= q_m with d = c - j
+  // and q_x = (|d|² + F² - x²) / 2F: a band of directions between β_r = acos(q_r / |d|) and
+  // β_m of d. The foot keeps its rest direction inside the band and turns to its nearer edge
+  // outside it (into line with d when the band is empty; m = r for a leg with a vanishing bone,
+  // whose ankle can only lie at r).
   const RigLeg& info = ctx.rig.legs[leg];
   *foot_dir = info.foot_dir_ms;
   if (limited) *limited = false;
   const float F = info.foot_span;
   if (F <= 0.0f) return contact_fs;  // flat contact: the contact point is the ankle
   const glm::vec2 d = contact_fs - joint_fs;
-  const float r = info.leg_reach;
   const float dd = glm::dot(d, d);
-  const float q = (dd + F * F - r * r) / (2.0f * F);
-  if (glm::dot(d, info.foot_dir_ms) < q && dd > 1e-12f) {
+  const float along = glm::dot(d, info.foot_dir_ms);
+  const float q_r = (dd + F * F - info.leg_reach * info.leg_reach) / (2.0f * F);
+  const float m = least ? info.least_reach : 0.0f;
+  const float q_m = (dd + F * F - m * m) / (2.0f * F);
+  if ((along < q_r || along > q_m) && dd > 1e-12f) {
     const float len = std::sqrt(dd);
     const glm::vec2 n = d / len;
-    const float cos_b = std::min(q / len, 1.0f);
+    const float cos_b = std::clamp((along < q_r ? q_r : q_m) / len, -1.0f, 1.0f);
     const float sin_b = std::sqrt(std::max(1.0f - cos_b * cos_b, 0.0f));
     // The side of d the rest direction lies on.
     const float side = n.x * info.foot_dir_ms.y - n.y * info.foot_dir_ms.x >= 0.0f ? 1.0f : -1.0f;
@@ -72,7 +78,7 @@ bool limit_foot_roll(const AnimContext& ctx, const BodyFrame& body, int leg, glm
     *radius = ctx.rig.legs[leg].contact_reach;
     return contact_fs;
   }
-  *radius = kReachLimit * ctx.rig.legs[leg].reach;
+  *radius = ctx.rig.legs[leg].leg_reach;
   return ankle;
 }
 

@@ -182,7 +182,7 @@ bool LegIkJob::run() const {
       ankle = ik.end;
     }
     if (!solved) {  // the plain pose: the foot rolled about its contact, then upper and lower
-      ankle = leg_ankle(c, b, leg, contact, joint, true, near, &foot_dir, nullptr);
+      ankle = leg_ankle(c, b, leg, contact, joint, true, near, &foot_dir, nullptr, f.state == LegState::kStance);
       if (f.state == LegState::kSwing) {
         // The same for the ankle when the foot could not roll far enough.
         const float r = info.leg_reach;
