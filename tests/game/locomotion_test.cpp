@@ -27,7 +27,7 @@ constexpr float kDt = 1.0f / 120.0f;
 // Of the 250 runs of "random creatures walk and run then turn back and jump on every shipped level", how
 // many put a bone more than 1 mm into a box or slide a foot by more (measured 2026-11-27; lower
 // it as the animator gets better).
-constexpr int kRandomRunsOver1mm = 22;
+constexpr int kRandomRunsOver1mm = 19;
 
 Level drops() { return load_level(scenes::source_path("levels/drops.json")).value(); }
 
@@ -256,6 +256,26 @@ TEST_CASE("a head the body brings down into a step lifts on its neck", "[game][a
   INFO("random creature 12: deepest " << r.probe.deepest_bone << " at " << r.probe.deepest_at_s << " s");
   CHECK(r.probe.max_penetration_m <= 0.001f);
   CHECK(r.probe.nan_count == 0);
+}
+
+TEST_CASE("a single girdle's body turns up until its whole trunk clears the steps", "[game][anim][locomotion]") {
+  // A biped's trunk that the stance legs cannot raise clear turns up about the hips; one turn,
+  // for the deepest bone, left others in: random creature 42's ribs (a long chest ahead of its
+  // hips) 1-2 cm in default.json's and stairs.json's stair tops, the tyrannosaurus's rib 2.2 cm
+  // in drops.json's start wall as it walked back to it. The body now turns again, up to three
+  // times a tick. Every bone within 1 mm.
+  check_clean({{"tyrannosaurus", "drops.json", "walk:0.5:6,stop:1,walk:-0.6:6"}});
+  for (const char* file : {"default.json", "stairs.json"}) {
+    const Level level = load_level(scenes::source_path(std::string("levels/") + file)).value();
+    Player player(std::make_shared<const Creature>(build_creature(scenes::generator().random(42)).value()), SplinePrototypes::defaults());
+    player.animator().reset(level.spawn_ws, level);
+    const SimResult r = run_script(player, level, parse_script("walk:0.6:8,run:1:6,stop:1,walk:-0.6:6,jump,walk:0.5:3").value(), 120);
+    INFO("random creature 42 on " << file << ": deepest " << r.probe.deepest_bone << " at " << r.probe.deepest_at_s << " s, "
+                                  << r.probe.max_penetration_m << " m");
+    CHECK(r.probe.max_penetration_m <= 0.001f);
+    CHECK(r.probe.max_stance_slip_m <= 0.001f);
+    CHECK(r.probe.nan_count == 0);
+  }
 }
 
 TEST_CASE("a legless body's long bones stay out of the steps' corners", "[game][anim][locomotion]") {
