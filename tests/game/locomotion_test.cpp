@@ -27,7 +27,7 @@ constexpr float kDt = 1.0f / 120.0f;
 // Of the 250 runs of "random creatures walk and run then turn back and jump on every shipped level", how
 // many put a bone more than 1 mm into a box or slide a foot by more (measured 2026-11-27; lower
 // it as the animator gets better).
-constexpr int kRandomRunsOver1mm = 19;
+constexpr int kRandomRunsOver1mm = 16;
 
 Level drops() { return load_level(scenes::source_path("levels/drops.json")).value(); }
 
@@ -313,6 +313,26 @@ TEST_CASE("a foreleg whose elbow points back swings down off a ledge's edge clea
   INFO("deepest " << r.probe.deepest_bone << " at " << r.probe.deepest_at_s << " s: " << r.probe.max_penetration_m << " m");
   CHECK(r.probe.max_limb_penetration_m <= 0.001f);
   CHECK(r.probe.max_stance_slip_m <= 0.001f);
+  CHECK(r.probe.nan_count == 0);
+}
+
+TEST_CASE("a swinging leg that no lift, tuck or carry clears turns whole about its hip", "[game][anim][locomotion]") {
+  // A knee pointing far ahead of a low hip swings through a step's corner whatever the foot
+  // does: the kangaroo's thigh 1.2 cm into stairs.json's risers, the pigeon's shin 9.5 mm into
+  // rough.json's blocks, the thrinaxodon's foot 6 mm into drops.json's 0.3 m ledge as it turned
+  // back, random creature 47 (a long-legged biped with folded wings) 2.8 cm into default.json's
+  // 0.2 m step. The planned leg now turns whole about the joint, the least turn that clears.
+  // Every bone within 1 mm, no stance foot sliding.
+  check_clean({{"kangaroo", "stairs.json", "run:1:15"},
+               {"kangaroo", "stairs.json", "walk:0.5:6,stop:1,walk:-0.6:6"},
+               {"pigeon", "rough.json", "run:1:15"},
+               {"thrinaxodon", "drops.json", "walk:0.5:6,stop:1,walk:-0.6:6"}});
+  const Level level = load_level(scenes::source_path("levels/default.json")).value();
+  Player player(std::make_shared<const Creature>(build_creature(scenes::generator().random(47)).value()), SplinePrototypes::defaults());
+  player.animator().reset(level.spawn_ws, level);
+  const SimResult r = run_script(player, level, parse_script("walk:0.6:8,run:1:6").value(), 120);
+  INFO("random creature 47: deepest " << r.probe.deepest_bone << " at " << r.probe.deepest_at_s << " s, " << r.probe.max_penetration_m << " m");
+  CHECK(r.probe.max_penetration_m <= 0.001f);
   CHECK(r.probe.nan_count == 0);
 }
 
