@@ -280,12 +280,9 @@ bool advance_swing(const FootholdInputs& in, const SwingTick& tick, int leg, Foo
       }
     }
   }
-  if (f.progress >= 1.0f) {
+  if (f.progress >= 1.0f && !f.easing && tick.moving) {
     // A foot stepping down further than the leg reaches from the still-high body waits above
     // its landing point while the body comes down to it (body placement lowers the girdle).
-    // Standing too: a foot easing to where it stands (the triceratops at default.json's end
-    // wall, its body lifted 8 cm for its head) set down 7.6 mm beyond its leg's reach a tick
-    // before the body came down to it, and the stance metrics read a slide.
     const RigLeg& info = ctx.rig.legs[leg];
     const glm::vec2 joint = body.to_fs(body.girdle_ws(ctx.rig, info.girdle));
     float r;
