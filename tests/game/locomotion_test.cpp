@@ -60,6 +60,14 @@ SimResult run_from_spawn(const std::string& name, const Level& level, const char
   return run_script(player, level, parse_script(script).value(), 120);
 }
 
+// Random creature `seed` (the generator's, at its true size) from `above` metres over the
+// level's spawn.
+SimResult random_from_spawn(uint64_t seed, const Level& level, const char* script, float above = 0.0f) {
+  Player player(std::make_shared<const Creature>(build_creature(scenes::generator().random(seed)).value()), SplinePrototypes::defaults());
+  player.animator().reset(level.spawn_ws + glm::vec2(0.0f, above), level);
+  return run_script(player, level, parse_script(script).value(), 120);
+}
+
 // An example animal's run from a shipped level's spawn, at its true size.
 struct ShippedRun {
   const char* name;
@@ -249,10 +257,7 @@ TEST_CASE("a head the body brings down into a step lifts on its neck", "[game][a
                {"stegosaurus", "default.json", "walk:0.6:30"},
                {"triceratops", "drops.json", "walk:0.5:6,stop:1,walk:-0.6:6"},
                {"pig", "stairs.json", "walk:0.6:30"}});
-  const Level level = load_level(scenes::source_path("levels/default.json")).value();
-  Player player(std::make_shared<const Creature>(build_creature(scenes::generator().random(12)).value()), SplinePrototypes::defaults());
-  player.animator().reset(level.spawn_ws + glm::vec2(0.0f, 1.0f), level);
-  const SimResult r = run_script(player, level, parse_script("walk:0.6:8").value(), 120);
+  const SimResult r = random_from_spawn(12, load_level(scenes::source_path("levels/default.json")).value(), "walk:0.6:8", 1.0f);
   INFO("random creature 12: deepest " << r.probe.deepest_bone << " at " << r.probe.deepest_at_s << " s");
   CHECK(r.probe.max_penetration_m <= 0.001f);
   CHECK(r.probe.nan_count == 0);
@@ -266,10 +271,8 @@ TEST_CASE("a single girdle's body turns up until its whole trunk clears the step
   // times a tick. Every bone within 1 mm.
   check_clean({{"tyrannosaurus", "drops.json", "walk:0.5:6,stop:1,walk:-0.6:6"}});
   for (const char* file : {"default.json", "stairs.json"}) {
-    const Level level = load_level(scenes::source_path(std::string("levels/") + file)).value();
-    Player player(std::make_shared<const Creature>(build_creature(scenes::generator().random(42)).value()), SplinePrototypes::defaults());
-    player.animator().reset(level.spawn_ws, level);
-    const SimResult r = run_script(player, level, parse_script("walk:0.6:8,run:1:6,stop:1,walk:-0.6:6,jump,walk:0.5:3").value(), 120);
+    const SimResult r = random_from_spawn(42, load_level(scenes::source_path(std::string("levels/") + file)).value(),
+                                          "walk:0.6:8,run:1:6,stop:1,walk:-0.6:6,jump,walk:0.5:3");
     INFO("random creature 42 on " << file << ": deepest " << r.probe.deepest_bone << " at " << r.probe.deepest_at_s << " s, "
                                   << r.probe.max_penetration_m << " m");
     CHECK(r.probe.max_penetration_m <= 0.001f);
@@ -327,10 +330,7 @@ TEST_CASE("a swinging leg that no lift, tuck or carry clears turns whole about i
                {"kangaroo", "stairs.json", "walk:0.5:6,stop:1,walk:-0.6:6"},
                {"pigeon", "rough.json", "run:1:15"},
                {"thrinaxodon", "drops.json", "walk:0.5:6,stop:1,walk:-0.6:6"}});
-  const Level level = load_level(scenes::source_path("levels/default.json")).value();
-  Player player(std::make_shared<const Creature>(build_creature(scenes::generator().random(47)).value()), SplinePrototypes::defaults());
-  player.animator().reset(level.spawn_ws, level);
-  const SimResult r = run_script(player, level, parse_script("walk:0.6:8,run:1:6").value(), 120);
+  const SimResult r = random_from_spawn(47, load_level(scenes::source_path("levels/default.json")).value(), "walk:0.6:8,run:1:6");
   INFO("random creature 47: deepest " << r.probe.deepest_bone << " at " << r.probe.deepest_at_s << " s, " << r.probe.max_penetration_m << " m");
   CHECK(r.probe.max_penetration_m <= 0.001f);
   CHECK(r.probe.nan_count == 0);
