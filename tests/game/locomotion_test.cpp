@@ -77,15 +77,20 @@ struct ShippedRun {
 
 // Each run: every bone within 1 mm of the level, no stance foot sliding or standing short of
 // its foothold by more, no NaN.
+// Every bone within 1 mm, no stance foot sliding or short of its foothold, no NaN.
+void check_clean(const SimResult& r, const std::string& what) {
+  INFO(what << ": deepest " << r.probe.deepest_bone << " at " << r.probe.deepest_at_s << " s, " << r.probe.max_penetration_m
+            << " m, x " << r.x_reached);
+  CHECK(r.probe.max_penetration_m <= 0.001f);
+  CHECK(r.probe.max_stance_slip_m <= 0.001f);
+  CHECK(r.probe.max_stance_gap_m <= 0.001f);
+  CHECK(r.probe.nan_count == 0);
+}
+
 void check_clean(std::initializer_list<ShippedRun> runs) {
   for (const ShippedRun& k : runs) {
     const SimResult r = run_from_spawn(k.name, load_level(scenes::source_path(std::string("levels/") + k.level)).value(), k.script);
-    INFO(k.name << " on " << k.level << ", " << k.script << ": deepest " << r.probe.deepest_bone << " at " << r.probe.deepest_at_s
-                << " s, x " << r.x_reached);
-    CHECK(r.probe.max_penetration_m <= 0.001f);
-    CHECK(r.probe.max_stance_slip_m <= 0.001f);
-    CHECK(r.probe.max_stance_gap_m <= 0.001f);
-    CHECK(r.probe.nan_count == 0);
+    check_clean(r, std::string(k.name) + " on " + k.level + ", " + k.script);
   }
 }
 
@@ -273,11 +278,7 @@ TEST_CASE("a single girdle's body turns up until its whole trunk clears the step
   for (const char* file : {"default.json", "stairs.json"}) {
     const SimResult r = random_from_spawn(42, load_level(scenes::source_path(std::string("levels/") + file)).value(),
                                           "walk:0.6:8,run:1:6,stop:1,walk:-0.6:6,jump,walk:0.5:3");
-    INFO("random creature 42 on " << file << ": deepest " << r.probe.deepest_bone << " at " << r.probe.deepest_at_s << " s, "
-                                  << r.probe.max_penetration_m << " m");
-    CHECK(r.probe.max_penetration_m <= 0.001f);
-    CHECK(r.probe.max_stance_slip_m <= 0.001f);
-    CHECK(r.probe.nan_count == 0);
+    check_clean(r, std::string("random creature 42 on ") + file);
   }
 }
 
@@ -299,11 +300,9 @@ TEST_CASE("a flipper that finds no clear tuck trails back from the face it meets
   // resort kept the flipper pointing ahead, 28.6 cm into the wall. It now trails back under the
   // shoulder. The shoulder itself, over the wall's top as the body fell past its face, came
   // down 4.8 cm into it: the body goes back out of a box ahead of its root that a part came
-  // down into (push_back_from_face), the shoulder too. Every bone within 1 mm.
-  const SimResult r = run_from_spawn("eared seal", load_level(scenes::source_path("levels/drops.json")).value(), "run:1:15");
-  INFO("deepest " << r.probe.deepest_bone << " at " << r.probe.deepest_at_s << " s: " << r.probe.max_penetration_m << " m");
-  CHECK(r.probe.max_penetration_m <= 0.001f);
-  CHECK(r.probe.nan_count == 0);
+  // down into (push_back_from_face), the shoulder too. Every bone within 1 mm, no stance foot
+  // sliding.
+  check_clean({{"eared seal", "drops.json", "run:1:15"}});
 }
 
 TEST_CASE("a foreleg whose elbow points back swings down off a ledge's edge clear of it", "[game][anim][locomotion]") {
@@ -330,10 +329,8 @@ TEST_CASE("a swinging leg that no lift, tuck or carry clears turns whole about i
                {"kangaroo", "stairs.json", "walk:0.5:6,stop:1,walk:-0.6:6"},
                {"pigeon", "rough.json", "run:1:15"},
                {"thrinaxodon", "drops.json", "walk:0.5:6,stop:1,walk:-0.6:6"}});
-  const SimResult r = random_from_spawn(47, load_level(scenes::source_path("levels/default.json")).value(), "walk:0.6:8,run:1:6");
-  INFO("random creature 47: deepest " << r.probe.deepest_bone << " at " << r.probe.deepest_at_s << " s, " << r.probe.max_penetration_m << " m");
-  CHECK(r.probe.max_penetration_m <= 0.001f);
-  CHECK(r.probe.nan_count == 0);
+  check_clean(random_from_spawn(47, load_level(scenes::source_path("levels/default.json")).value(), "walk:0.6:8,run:1:6"),
+              "random creature 47 on default.json");
 }
 
 TEST_CASE("random creatures walk and run then turn back and jump on every shipped level", "[game][anim][locomotion]") {
