@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "ossa/anim/anim_rig.h"
 #include "ossa/game/player.h"
 #include "ossa/game/sim.h"
 #include "ossa/gen/generator.h"
@@ -25,9 +26,9 @@ namespace {
 
 constexpr float kDt = 1.0f / 120.0f;
 // Of the 250 runs of "random creatures walk and run then turn back and jump on every shipped level", how
-// many put a bone more than 1 mm into a box or slide a foot by more (measured 2026-11-27; lower
+// many put a bone more than 1 mm into a box or slide a foot by more (measured 2026-11-28; lower
 // it as the animator gets better).
-constexpr int kRandomRunsOver1mm = 16;
+constexpr int kRandomRunsOver1mm = 12;
 
 Level drops() { return load_level(scenes::source_path("levels/drops.json")).value(); }
 
@@ -331,6 +332,30 @@ TEST_CASE("a swinging leg that no lift, tuck or carry clears turns whole about i
                {"thrinaxodon", "drops.json", "walk:0.5:6,stop:1,walk:-0.6:6"}});
   check_clean(random_from_spawn(47, load_level(scenes::source_path("levels/default.json")).value(), "walk:0.6:8,run:1:6"),
               "random creature 47 on default.json");
+}
+
+TEST_CASE("a leg with no thigh or shin is carried as an arm and a chest that comes down first lands the body",
+          "[game][anim][locomotion]") {
+  // Random creature 28 hangs a 24 cm forefoot from its shoulder on a thigh and a shin of
+  // length 0: no solve places that foot, which stood 1.5-10 cm in the ground on every level.
+  // Its forelimbs are now carried as arms and it hops on its hind legs (a kangaroo's plan).
+  const Genome genome = scenes::generator().random(28);
+  const Creature creature = build_creature(genome).value();
+  const auto rig = build_anim_rig(creature);
+  CHECK(rig->legs.size() == 2);
+  CHECK(rig->arms.size() == 2);
+  for (const char* file : {"default.json", "rough.json", "slopes.json", "stairs.json"}) {
+    check_clean(random_from_spawn(28, load_level(scenes::source_path(std::string("levels/") + file)).value(),
+                                  "walk:0.6:8,run:1:6,stop:1,walk:-0.6:6,jump,walk:0.5:3"),
+                std::string("random creature 28 on ") + file);
+  }
+  // Its chest, 0.57 m below its hips, met drops.json's floor while the hind feet still reached
+  // down, and went 0.54 m into it: a falling trunk over ground lands the body. (Its stance
+  // feet set down 3.9 mm late as it stops there: README Known limits.)
+  const SimResult r = random_from_spawn(28, drops(), "walk:0.6:8,run:1:6,stop:1,walk:-0.6:6,jump,walk:0.5:3");
+  INFO("deepest " << r.probe.deepest_bone << " at " << r.probe.deepest_at_s << " s");
+  CHECK(r.probe.max_penetration_m <= 0.001f);
+  CHECK(r.probe.nan_count == 0);
 }
 
 TEST_CASE("random creatures walk and run then turn back and jump on every shipped level", "[game][anim][locomotion]") {

@@ -83,6 +83,24 @@ bool legs_hold_back_up(const Skeleton& sk, const std::vector<Mat2x3>& rest, cons
   return back >= ground - kBackBelowFeetOfReach * reach / static_cast<float>(legs);
 }
 
+// A leg's thigh and shin place its foot: where the two together are shorter than this share
+// of the foot (a random draw may give a limb of length-0 bones and a long foot), the foot can
+// only turn about the girdle, it cannot stand while the body passes over it. Such a limb is no
+// leg: it is carried as an arm, the body on its other legs, and the gait is chosen from those.
+constexpr float kLegBonesOfFoot = 0.1f;
+
+bool legs_without_reach_to_arms(const Skeleton& sk, RigRoles& roles) {
+  bool any = false;
+  for (RigLimbRole& limb : roles.limbs) {
+    if (limb.kind != LimbKind::kLeg) continue;
+    const float bones = sk.length(limb.bones[0]) + sk.length(limb.bones[1]);
+    if (bones >= kLegBonesOfFoot * sk.length(limb.bones[2])) continue;
+    limb.kind = LimbKind::kArm;
+    any = true;
+  }
+  return any;
+}
+
 // A quadruped's foot at least this long against the leg above it (upper + lower) is a third
 // segment of the leg (the examples' hooves and paws 0.5–0.79, the elephant's and the big
 // dinosaurs' columnar feet 0.23–0.32; a shorter foot, brachiosaurus's hind 0.16, keeps rolling
@@ -652,6 +670,7 @@ std::shared_ptr<const AnimRig> build_anim_rig(const Skeleton& skeleton, const Po
   const Skeleton& sk = rig->skeleton;
   rig->model_rest = ossa::model_matrices(sk, rig->rest_pose.locals);
   RigRoles roles = asked;
+  if (legs_without_reach_to_arms(sk, roles)) roles.gait_family = GaitFamily::kAuto;  // chosen from the legs it has
   if (!legs_hold_back_up(sk, rig->model_rest, roles)) {
     rig->legs_as_fins = true;
     for (RigLimbRole& limb : roles.limbs) {

@@ -334,14 +334,9 @@ void pitch_for_front_shoulder(Placement& p) {
 constexpr float kTrunkKeepOfHip = 0.01f, kMaxTrunkRaiseOfHip = 0.5f;
 // A single girdle's body turns up for its trunk at most this many times a tick.
 constexpr int kTrunkPitchPasses = 3;
-struct TrunkNeed {
-  float raise = 0.0f;  // metres
-  float pitch = 0.0f;  // radians up about `pivot`: the same for the bones ahead of it
-};
-TrunkNeed trunk_need(const Placement& p, float lift, glm::vec2 pivot_ws) {
-  const AnimRig& rig = p.ctx.rig;
+TrunkNeed trunk_need(const AnimContext& ctx, const BodyFrame& body, float lift, glm::vec2 pivot_ws) {
+  const AnimRig& rig = ctx.rig;
   if (rig.trunk.empty()) return {};
-  const BodyFrame& body = p.body;
   const float hip = rig.hip_height, keep = kTrunkKeepOfHip * hip;
   // One look at the ground profile under the trunk's whole bound first (on flat ground and
   // away from steps, all the work there is): its rest bound turned with the body, widened by
@@ -358,7 +353,7 @@ TrunkNeed trunk_need(const Placement& p, float lift, glm::vec2 pivot_ws) {
     lo -= glm::vec2(reach);
     hi += glm::vec2(reach);
   }
-  if (!p.ctx.ground.may_rise_above(lo.x, hi.x, lo.y - keep, hi.y + kMaxTrunkRaiseOfHip * hip)) return {};
+  if (!ctx.ground.may_rise_above(lo.x, hi.x, lo.y - keep, hi.y + kMaxTrunkRaiseOfHip * hip)) return {};
   // The skull's segments hang from its joint where the body puts it, kept level.
   const glm::vec2 skull_ms = head ? bone_start(rig.model_rest[rig.skull]) : glm::vec2(0.0f);
   const glm::vec2 skull_fs = head ? body.to_fs(body.body_point_ws(rig, skull_ms, lift)) : glm::vec2(0.0f);
@@ -370,8 +365,8 @@ TrunkNeed trunk_need(const Placement& p, float lift, glm::vec2 pivot_ws) {
   for (size_t i = 0; i < rig.trunk.size(); ++i) {
     const glm::vec2 a = point_ws(i, rig.trunk[i].a) - glm::vec2(0.0f, keep);
     const glm::vec2 b = point_ws(i, rig.trunk[i].b) - glm::vec2(0.0f, keep);
-    if (!p.ctx.ground.may_rise_above(std::min(a.x, b.x), std::max(a.x, b.x), std::min(a.y, b.y), std::max(a.y, b.y) + kMaxTrunkRaiseOfHip * hip)) continue;
-    const float n = raise_to_clear(a, b, p.ctx.level, p.ctx.hits);
+    if (!ctx.ground.may_rise_above(std::min(a.x, b.x), std::max(a.x, b.x), std::min(a.y, b.y), std::max(a.y, b.y) + kMaxTrunkRaiseOfHip * hip)) continue;
+    const float n = raise_to_clear(a, b, ctx.level, ctx.hits);
     if (!(n > 0.0f) || n >= kMaxTrunkRaiseOfHip * hip) continue;
     need.raise = std::max(need.raise, n);
     const float ahead = std::max(body.to_fs(a).x, body.to_fs(b).x) - pivot;
@@ -426,7 +421,7 @@ void keep_body_out_of_ground(Placement& p, float fell, const std::vector<float>&
     return;
   }
   const glm::vec2 pivot = p.body.girdle_ws(rig, static_cast<int>(rig.girdles.size()) - 1);
-  TrunkNeed trunk = trunk_need(p, raise, pivot);
+  TrunkNeed trunk = trunk_need(p.ctx, p.body, raise, pivot);
   for (int pass = 0; pass < kTrunkPitchPasses && trunk.raise > least_room - raise && rig.girdles.size() == 1 && trunk.pitch > 0.0f;
        ++pass) {
     // More than the legs allow: a single girdle's body turns up about it instead (a biped's
@@ -439,7 +434,7 @@ void keep_body_out_of_ground(Placement& p, float fell, const std::vector<float>&
     const float was = p.body.pitch;
     p.body.pitch = std::min(p.body.pitch + trunk.pitch, std::max(kMaxPitch, p.body.pitch));
     p.body.root_y_ws += girdle_y - p.body.rotate_body(rel).y;
-    trunk = trunk_need(p, raise, pivot);
+    trunk = trunk_need(p.ctx, p.body, raise, pivot);
     if (p.body.pitch == was) break;  // at the steepest already
   }
   const float trunk_raise = std::min(trunk.raise, std::max(least_room - raise, 0.0f));

@@ -322,6 +322,10 @@ void tip_about_front(const AnimRig& rig, int g, float dy, BodyFrame& body) {
 
 }  // namespace
 
+// A falling trunk lands on the ground (rest_body_on_ground) only while every girdle is within
+// this many of its rest heights above the ground under it.
+constexpr float kTrunkLandsOverGroundOfRest = 1.5f;
+
 bool rest_body_on_ground(const AnimContext& ctx, float floor, BodyFrame& body) {
   const AnimRig& rig = ctx.rig;
   if (rig.girdles.empty()) {
@@ -336,12 +340,13 @@ bool rest_body_on_ground(const AnimContext& ctx, float floor, BodyFrame& body) {
   }
   // Each girdle keeps out of the ground as clamp 5 keeps it (kGirdleKeepOutOfRest of its rest
   // height above the ground within kGirdleKeepOutHalfOfRest of it).
-  bool landed = false;
+  bool landed = false, over_ground = true;
   for (int g = static_cast<int>(rig.girdles.size()) - 1; g >= 0; --g) {
     const glm::vec2 joint = body.girdle_ws(rig, g);
     const float rest = rig.girdles[g].rest_height;
     const float half = kGirdleKeepOutHalfOfRest * rest;
     auto hit = ground_below(ctx.level, joint.x - half, joint.x + half, joint.y + 0.5f * rest, ctx.rig.scale.search_depth);
+    over_ground = over_ground && hit && joint.y - hit->height_ws <= kTrunkLandsOverGroundOfRest * rest;
     if (!hit) continue;
     const float need = hit->height_ws + kGirdleKeepOutOfRest * rest - joint.y;
     if (need <= 0.0f) continue;
@@ -351,6 +356,17 @@ bool rest_body_on_ground(const AnimContext& ctx, float floor, BodyFrame& body) {
       body.root_y_ws += need;
       landed = true;
     }
+  }
+  // The trunk lands too: a chest or head hanging below the hips (a long neck, a body sloping
+  // to short forelegs) comes down on the ground before the feet do, and lies on it (random
+  // creature 28's chest went 0.54 m into drops.json's floor while its hind feet reached down).
+  // Only over ground its legs are about to stand on: a head meeting the far side of a pit the
+  // body falls into is the wall sweep's (go_back_from_face), not a landing.
+  const placement::TrunkNeed trunk = placement::trunk_need(ctx, body, 0.0f, body.girdle_ws(rig, 0));
+  if (!over_ground) return landed;
+  if (trunk.raise > 0.0f) {
+    body.root_y_ws += trunk.raise;
+    landed = true;
   }
   return landed;
 }

@@ -85,6 +85,15 @@ void move_girdle(Placement& p, int g, float dy);
 // A girdle joint's keep-out (body_clamps.cpp, clamp 5).
 float girdle_keep_out_top(const AnimContext& ctx, glm::vec2 joint_ws, float rest, float extra);
 float girdle_keep_out(const AnimContext& ctx, glm::vec2 joint_ws, float rest, float extra);
+// How far the trunk's bones (AnimRig::trunk, the skull kept level), with the body placed as
+// now and lifted by `lift`, need the body to rise to keep clear of the boxes they are in, and
+// the turn up about `pivot_ws` that would do it for the bones ahead of it (body_clamps.cpp).
+// A bone needing half a hip height or more meets a wall and is left to the wall sweep.
+struct TrunkNeed {
+  float raise = 0.0f;  // metres
+  float pitch = 0.0f;  // radians up about `pivot`: the same for the bones ahead of it
+};
+TrunkNeed trunk_need(const AnimContext& ctx, const BodyFrame& body, float lift, glm::vec2 pivot_ws);
 
 // The clamps, in their order (body_placement.h).
 void keep_stance_legs_in_reach(Placement& p, std::vector<float>& need, std::vector<float>& room);
