@@ -170,6 +170,17 @@ void body_boxes(const AnimRig& rig, const BodyFrame& body, const std::vector<Mat
   if (open) boxes->push_back(box);
 }
 
+void add_trunk_boxes(const AnimRig& rig, const BodyFrame& body, std::vector<Box>* boxes) {
+  const size_t at = boxes->size() - std::min(boxes->size(), rig.arms.size());
+  thread_local std::vector<Box> trunk;
+  trunk.clear();
+  for (size_t i = 0; i < rig.trunk_level_from; ++i) {
+    const glm::vec2 a = body.body_point_ws(rig, rig.trunk[i].a), b = body.body_point_ws(rig, rig.trunk[i].b);
+    trunk.push_back(Box{glm::min(a, b), glm::max(a, b)});
+  }
+  boxes->insert(boxes->begin() + static_cast<std::ptrdiff_t>(at), trunk.begin(), trunk.end());
+}
+
 BodyMotionResult sweep_body(const AnimContext& ctx, const BodyFrame& body, const std::vector<Mat2x3>& model_fs, float dx,
                             std::vector<Box>& boxes, bool whole) {
   BodyMotionResult out;
@@ -237,6 +248,12 @@ BodyMotionResult sweep_body(const AnimContext& ctx, const BodyFrame& body, const
     auto hit = level.sweep_box(Box{all.min_ws - margin_lo, all.max_ws + margin_hi}, {dx, 0.0f});
     if (hit && hit->t < 1.0f) body_boxes(rig, body, model_fs, !rig.body_slabs.empty(), &boxes);
     else boxes.clear();
+  }
+  // In the air the rib cage hanging below the spine's outline takes part as well (random
+  // creature 41 fell into drops.json's pit with its chest past the far wall's face).
+  if (whole && !rig.trunk.empty()) {
+    body_boxes(rig, body, model_fs, true, &boxes);
+    add_trunk_boxes(rig, body, &boxes);
   }
   float move = std::fabs(dx);
   const size_t first_arm = boxes.empty() ? 0 : boxes.size() - rig.arms.size();

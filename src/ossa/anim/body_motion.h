@@ -96,5 +96,9 @@ float limit_by_ledges(const AnimContext& ctx, const BodyFrame& body, const FootS
 // legless body), head, arms, fins (slabs = true), or one box around them all.
 void body_boxes(const AnimRig& rig, const BodyFrame& body, const std::vector<Mat2x3>& model_fs, bool slabs,
                 std::vector<Box>* boxes);
+// The trunk's bones (AnimRig::trunk: ribs below the spine's outline too; not the head, a slab
+// already) as a box each, the body rigid as at rest, put before the arms' reach boxes (which
+// come last). A body in the air sweeps them too: a rib cage falling past a wall's face.
+void add_trunk_boxes(const AnimRig& rig, const BodyFrame& body, std::vector<Box>* boxes);
 
 }  // namespace ossa::anim

@@ -362,8 +362,8 @@ bool rest_body_on_ground(const AnimContext& ctx, float floor, BodyFrame& body) {
   // creature 28's chest went 0.54 m into drops.json's floor while its hind feet reached down).
   // Only over ground its legs are about to stand on: a head meeting the far side of a pit the
   // body falls into is the wall sweep's (go_back_from_face), not a landing.
-  const placement::TrunkNeed trunk = placement::trunk_need(ctx, body, 0.0f, body.girdle_ws(rig, 0));
   if (!over_ground) return landed;
+  const placement::TrunkNeed trunk = placement::trunk_need(ctx, body, 0.0f, body.girdle_ws(rig, 0));
   if (trunk.raise > 0.0f) {
     body.root_y_ws += trunk.raise;
     landed = true;

@@ -188,6 +188,7 @@ float push_back_from_face(const AnimContext& ctx, const BodyFrame& body, const s
   const AnimRig& rig = ctx.rig;
   if (rig.body_slabs.empty()) return 0.0f;
   body_boxes(rig, body, model_fs, true, &boxes);
+  add_trunk_boxes(rig, body, &boxes);
   // (The arms' reach boxes come last: the arms fold out of the way.)
   const size_t parts = boxes.size() - std::min(boxes.size(), rig.arms.size());
   float push = 0.0f;
