@@ -28,7 +28,7 @@ constexpr float kDt = 1.0f / 120.0f;
 // Of the 250 runs of "random creatures walk and run then turn back and jump on every shipped level", how
 // many put a bone more than 1 mm into a box, slide a stance foot by more or stand it further
 // from its foothold (measured 2026-11-28; lower it as the animator gets better).
-constexpr int kRandomRunsOver1mm = 12;
+constexpr int kRandomRunsOver1mm = 11;
 
 Level drops() { return load_level(scenes::source_path("levels/drops.json")).value(); }
 
@@ -303,6 +303,21 @@ TEST_CASE("a rib cage falling past a wall's face stays out of it", "[game][anim]
   // foot sliding.
   check_clean(random_from_spawn(42, drops(), "walk:0.6:8,run:1:6,stop:1,walk:-0.6:6,jump,walk:0.5:3"),
               "random creature 42 on drops.json");
+}
+
+TEST_CASE("a foot stepping down stands clear of a small step its shin would cross", "[game][anim][locomotion]") {
+  // Down a step the foothold keeps the foot off the riser behind it, as far as a line rising at
+  // 45 degrees from the ankle clears the step. The line began a tenth of the girdle's rest height
+  // above the foot, so a step lower than that right behind a foot did not count: the rabbit's
+  // forearm in the 2 m frame went 5.8 mm into the corner of a block of rough.json as it turned
+  // back, random creature 25's 1.1 mm into default.json's 2 cm step. It now begins at the
+  // ankle's height. Every bone within 1 mm, no stance foot sliding.
+  const SimResult rabbit =
+      run_from_spawn("rabbit", load_level(scenes::source_path("levels/rough.json")).value(), "walk:0.5:6,stop:1,walk:-0.6:6", false);
+  check_clean(rabbit, "the rabbit in the 2 m frame on rough.json");
+  check_clean(random_from_spawn(25, load_level(scenes::source_path("levels/default.json")).value(),
+                                "walk:0.6:8,run:1:6,stop:1,walk:-0.6:6,jump,walk:0.5:3", 1.0f),
+              "random creature 25 on default.json");
 }
 
 TEST_CASE("a flipper that finds no clear tuck trails back from the face it meets", "[game][anim][locomotion]") {

@@ -21,7 +21,7 @@ constexpr float kShortestAheadOfStride = 0.05f;
 
 // Down a step the shin comes from above and behind: the ground within this fraction of the
 // girdle's rest height behind a landing must stay below the line rising at kShinSlope from
-// the foot, kRiserOfRest of the rest height (or the ankle's height, if more) above it. The
+// the foot, the ankle's height (or the foot's box, if more) above it. The
 // ground is read from the profile as a slope where it is a run of small steps (foothold.h),
 // so a tile hill is walked down like a ramp, and a real step keeps its riser.
 constexpr float kRiserGapOfRest = 0.25f;
@@ -43,7 +43,9 @@ bool riser_behind(const FootholdInputs& in, const RigLeg& info, float rest_heigh
     // tick): no ground between a tread's height and a step above it.
     return in.ctx.level.overlaps(Box{{lo, y + in.ctx.rig.scale.foot_box}, {hi, y + up}});
   }
-  const float tol = std::max(info.ankle_rel_ms.y, kRiserOfRest * rest_height);
+  // (A tenth of the rest height, as it was, let a 2 cm step right behind a hand stand under
+  // random creature 25's forearm, 1.1 mm into its corner.)
+  const float tol = std::max(info.ankle_rel_ms.y, in.ctx.rig.scale.foot_box);
   // A real riser behind (a step, not a slope's tile): no ground between the tread's height and
   // a step above it, as the shin would cut its edge.
   if (ground.largest_jump(lo, hi, reading) > reading.riser) return in.ctx.level.overlaps(Box{{lo, y + in.ctx.rig.scale.foot_box}, {hi, y + up}});
