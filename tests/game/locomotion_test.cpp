@@ -320,6 +320,16 @@ TEST_CASE("a foot stepping down stands clear of a small step its shin would cros
               "random creature 25 on default.json");
 }
 
+TEST_CASE("a blocked body whose shoulder turns against a riser keeps its feet down", "[game][anim][locomotion]") {
+  // The rock hyrax in the 2 m frame runs up to drops.json's 0.7 m step and stands blocked at it,
+  // its body pitch easing down: the turn brings its shoulders forward onto the riser's face.
+  // The knee clamp read the upper arm from a joint on the face as crossing the box by the
+  // riser's height above it and lifted the body 16 cm in a tick, the forefeet off their
+  // footholds (a 16 cm slide, the forearm 2.7 cm in the step). A joint at or in a face is the
+  // body's business now. Every bone within 1 mm, no stance foot sliding or short.
+  check_clean(run_from_spawn("rock hyrax", drops(), "run:1:15", false), "the rock hyrax in the 2 m frame on drops.json");
+}
+
 TEST_CASE("a flipper that finds no clear tuck trails back from the face it meets", "[game][anim][locomotion]") {
   // The eared seal runs off drops.json's ledge into the 3 m pit and falls beside its far wall,
   // its shoulder against the wall's face: no tuck of the front flipper clears, and the last

@@ -256,7 +256,12 @@ void keep_knees_off_ground(Placement& p, std::vector<float>& stance_up, std::vec
       // far as the stance legs reach (swing_up's limit), lest a foot slide.
       if (steps_near || corner_near || knee.y < f.pos_ws.y + margin) {
         const glm::vec2 hip = p.body.to_ws(joint), heel = p.body.to_ws(ik.end);
-        const float cross = std::max(raise_to_clear(hip, knee, level, p.ctx.hits), raise_to_clear(knee, heel, level, p.ctx.hits));
+        // (A joint itself at a box's face, or in it, is the body's business, not its thigh's: a
+        // blocked body's pitch easing turned the 2 m-frame rock hyrax's shoulders forward onto
+        // drops.json's 0.7 m riser, and lifting the body by the riser's height above them took
+        // the forefeet 16 cm off the ground in a tick. The face push-back moves the body out.)
+        const bool joint_in = level.overlaps(Box{hip - glm::vec2(1e-4f), hip + glm::vec2(1e-4f)});
+        const float cross = std::max(joint_in ? 0.0f : raise_to_clear(hip, knee, level, p.ctx.hits), raise_to_clear(knee, heel, level, p.ctx.hits));
         float& cross_up = corner_near && knee.y >= f.pos_ws.y + margin ? swing_up[info.girdle] : up;
         cross_up = std::max(cross_up, cross);
         // Only a foot left behind its girdle (it lifts soon anyway): a leading foot released
