@@ -98,7 +98,8 @@ void body_boxes(const AnimRig& rig, const BodyFrame& body, const std::vector<Mat
                 std::vector<Box>* boxes);
 // The trunk's bones (AnimRig::trunk: ribs below the spine's outline too; not the head, a slab
 // already) as a box each, the body rigid as at rest, put before the arms' reach boxes (which
-// come last). A body in the air sweeps them too: a rib cage falling past a wall's face.
+// come last). The sweep in the air and the push-back from a face (a fall, a standing or
+// blocked body) take them in: a rib cage falling past a wall's face.
 void add_trunk_boxes(const AnimRig& rig, const BodyFrame& body, std::vector<Box>* boxes);
 
 }  // namespace ossa::anim
