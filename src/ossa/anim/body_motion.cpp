@@ -222,40 +222,43 @@ BodyMotionResult sweep_body(const AnimContext& ctx, const BodyFrame& body, const
     box.max_ws = glm::max(box.max_ws, box.min_ws + glm::vec2(1e-3f));
     return box;
   };
-  // Cheaper still, and before that: a box around the body from the root and the hull's extent
-  // alone (body_bound_ws), swept as a box holding the ones swept below. Its bottom is the
-  // bound's: a part lower than kSweepFloorOfHip keeps its top in the sweep, so a small low part
-  // (a grazing head) may be swept from as low as the body reaches. Whatever it does not meet,
-  // the body does not meet either.
-  Box bound;
-  bool near_something = true;
-  if (body_bound_ws(rig, body, model_fs, &bound)) {
-    const Box swept{{bound.min_ws.x - margin_lo.x, bound.min_ws.y}, {bound.max_ws.x + 1e-3f + margin_hi.x, bound.max_ws.y + 1e-3f}};
-    auto hit = level.sweep_box(swept, {dx, 0.0f});
-    near_something = hit && hit->t < 1.0f;
-  }
   boxes.clear();
-  if (near_something) {
-    slope = std::tan(body.pitch);
-    reading = body_slope_reading(ctx);
-    // (The one box is raised kSweepFloorOfHip from the body's lowest point, so it can pass a
-    // small low part the parts' sweep would stop: a grazing head just under a step's top. Swept
-    // from its lowest point, it stops the cape buffalo's skull 18 cm short of drops.json's 1 m
-    // ledge, but also random creature 42's low skull at default.json's stairs before it can
-    // jump, and scrambles the propalaeotherium's climb back up the ledge: left for the issue.)
-    body_boxes(rig, body, model_fs, false, &boxes);
-    const Box all = swept_part(boxes[0]);
-    auto hit = level.sweep_box(Box{all.min_ws - margin_lo, all.max_ws + margin_hi}, {dx, 0.0f});
-    if (hit && hit->t < 1.0f) body_boxes(rig, body, model_fs, !rig.body_slabs.empty(), &boxes);
-    else boxes.clear();
-  }
-  // In the air the rib cage hanging below the spine's outline takes part as well (random
-  // creature 42's ribs went 1.8 cm into the far wall of drops.json's pit as it fell past the
-  // face). (On the ground it does not: the trunk clamp lifts the ribs over a step, and sweeping
-  // them stopped the eared seal half-way up stairs.json's flight.)
+  bool near_something = true;
   if (whole && !rig.trunk.empty()) {
+    // In the air every part is swept, and the rib cage hanging below the spine's outline
+    // takes part as well (random creature 42's ribs went 1.8 cm into the far wall of
+    // drops.json's pit as it fell past the face). (On the ground it does not: the trunk clamp
+    // lifts the ribs over a step, and sweeping them stopped the eared seal half-way up
+    // stairs.json's flight.)
     body_boxes(rig, body, model_fs, true, &boxes);
     add_trunk_boxes(rig, body, &boxes);
+  } else {
+    // Cheaper still, and before that: a box around the body from the root and the hull's extent
+    // alone (body_bound_ws), swept as a box holding the ones swept below. Its bottom is the
+    // bound's: a part lower than kSweepFloorOfHip keeps its top in the sweep, so a small low part
+    // (a grazing head) may be swept from as low as the body reaches. Whatever it does not meet,
+    // the body does not meet either.
+    Box bound;
+    if (body_bound_ws(rig, body, model_fs, &bound)) {
+      const Box swept{{bound.min_ws.x - margin_lo.x, bound.min_ws.y}, {bound.max_ws.x + 1e-3f + margin_hi.x, bound.max_ws.y + 1e-3f}};
+      auto hit = level.sweep_box(swept, {dx, 0.0f});
+      near_something = hit && hit->t < 1.0f;
+    }
+    if (near_something) {
+      slope = std::tan(body.pitch);
+      reading = body_slope_reading(ctx);
+      // (The one box is raised kSweepFloorOfHip from the body's lowest point, so it can pass a
+      // small low part the parts' sweep would stop: a grazing head just under a step's top.
+      // Swept from its lowest point, it stops the cape buffalo's skull 18 cm short of
+      // drops.json's 1 m ledge, but also random creature 42's low skull at default.json's
+      // stairs before it can jump, and scrambles the propalaeotherium's climb back up the
+      // ledge: left for the issue.)
+      body_boxes(rig, body, model_fs, false, &boxes);
+      const Box all = swept_part(boxes[0]);
+      auto hit = level.sweep_box(Box{all.min_ws - margin_lo, all.max_ws + margin_hi}, {dx, 0.0f});
+      if (hit && hit->t < 1.0f) body_boxes(rig, body, model_fs, !rig.body_slabs.empty(), &boxes);
+      else boxes.clear();
+    }
   }
   float move = std::fabs(dx);
   const size_t first_arm = boxes.empty() ? 0 : boxes.size() - rig.arms.size();
