@@ -330,6 +330,21 @@ TEST_CASE("a blocked body whose shoulder turns against a riser keeps its feet do
   check_clean(run_from_spawn("rock hyrax", drops(), "run:1:15", false), "the rock hyrax in the 2 m frame on drops.json");
 }
 
+TEST_CASE("a foot left below a riser at a turn steps clear of it", "[game][anim][locomotion]") {
+  // Turned back on a flight or a tile slope, a foot that stood just below the riser it faced is
+  // handed to the leg of the other girdle (or the other way round), which comes down to it from
+  // above and behind: its shin crossed the step's edge, and the knee clamp lifted the body until
+  // it cleared, the foot drawn short of its foothold (the 2 m-frame parasaurolophus 15.7 cm on
+  // stairs.json, the sinornis 13.9 cm on slopes.json, the ichthyornis 8.8 mm at true size). Such
+  // a foot now takes a turn step. Every bone within 1 mm, no stance foot sliding or short.
+  const char* const kStopTurn = "walk:0.5:6,stop:1,walk:-0.6:6";
+  check_clean(run_from_spawn("parasaurolophus", load_level(scenes::source_path("levels/stairs.json")).value(), kStopTurn, false),
+              "the parasaurolophus in the 2 m frame on stairs.json");
+  const Level slopes = load_level(scenes::source_path("levels/slopes.json")).value();
+  check_clean(run_from_spawn("sinornis", slopes, kStopTurn, false), "the sinornis in the 2 m frame on slopes.json");
+  check_clean(run_from_spawn("ichthyornis", slopes, kStopTurn, true), "the ichthyornis on slopes.json");
+}
+
 TEST_CASE("a flipper that finds no clear tuck trails back from the face it meets", "[game][anim][locomotion]") {
   // The eared seal runs off drops.json's ledge into the 3 m pit and falls beside its far wall,
   // its shoulder against the wall's face: no tuck of the front flipper clears, and the last

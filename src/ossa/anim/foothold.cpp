@@ -118,6 +118,14 @@ bool foot_fits(const FootholdInputs& in, int leg, glm::vec2 contact_ws) {
   return !in.ctx.level.overlaps(foot_box);
 }
 
+bool shin_clears_riser(const FootholdInputs& in, int leg, glm::vec2 contact_ws) {
+  const RigLeg& info = in.ctx.rig.legs[leg];
+  const FootSpan span = foot_span_ws(info, in.body.facing);
+  const float back = contact_ws.x + (in.body.facing > 0 ? span.lo - in.ctx.rig.scale.landing_side : span.hi + in.ctx.rig.scale.landing_side);
+  return !riser_behind(in, info, in.ctx.rig.girdles[info.girdle].rest_height, girdle_slope_reading(in.ctx, info.girdle), back,
+                       contact_ws.y, step_limits(in, leg, contact_ws).up);
+}
+
 bool reaches(const FootholdInputs& in, int leg, glm::vec2 p_ws, float reach_use) {
   const RigLeg& info = in.ctx.rig.legs[leg];
   return glm::length(in.body.to_fs(p_ws) - in.body.to_fs(in.body.girdle_ws(in.ctx.rig, info.girdle))) <=

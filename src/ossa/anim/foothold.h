@@ -60,6 +60,11 @@ float landing_x(const FootholdInputs& in, int leg, float speed, float swing_phas
 // Does leg `leg`'s foot, standing at contact_ws as the creature now faces, clear every box?
 bool foot_fits(const FootholdInputs& in, int leg, glm::vec2 contact_ws);
 
+// Does leg `leg`'s shin, coming down from above and behind to its foot at contact_ws as the
+// creature now faces, clear the ground behind the foot (no riser there that find_landing keeps
+// a landing off)?
+bool shin_clears_riser(const FootholdInputs& in, int leg, glm::vec2 contact_ws);
+
 // The nearest place to near_ws (either way along the ground, up to half a leg's length) where
 // leg `leg`'s foot fits; prefer_reach: one the leg reaches (within reach_use of its reach)
 // from where its girdle is now, if there is one.

@@ -53,7 +53,10 @@ void turn_feet(const AnimContext& ctx, const SplinePrototypes& prototypes, const
   // Girdles spaced unevenly along the body (three leg pairs) cannot all land on feet: a leg
   // whose foot (standing or in the air) is now out of reach lifts from the nearest foot on the
   // ground it reaches and steps under its girdle. A foot in the air heading out of reach (to
-  // where the body was going) steps under its girdle from where it is.
+  // where the body was going) steps under its girdle from where it is. A foot standing just
+  // below a riser it faced, now behind it, steps too: the leg that takes it over comes down to
+  // it from above and behind, and its shin would cut the step's edge (the knee clamp lifted the
+  // 2 m-frame parasaurolophus turned on stairs.json until a forefoot stood 16 cm short).
   for (size_t i = 0; i < rig.legs.size(); ++i) {
     const int leg = static_cast<int>(i);
     FootState& f = feet.of_leg(leg);
@@ -63,7 +66,7 @@ void turn_feet(const AnimContext& ctx, const SplinePrototypes& prototypes, const
     const float joint_x = body.girdle_ws(rig, info.girdle).x;
     const bool foot_in_reach = std::fabs(f.pos_ws.x - joint_x) <= reach_x;
     if (!was_air[feet.foot_of_leg[i]] && foot_in_reach &&
-        (f.state == LegState::kStance || std::fabs(f.to_ws.x - joint_x) <= reach_x)) {
+        (f.state == LegState::kStance ? shin_clears_riser(in, leg, f.pos_ws) : std::fabs(f.to_ws.x - joint_x) <= reach_x)) {
       continue;
     }
     if (!foot_in_reach) {  // from the nearest foot on the ground in reach, else from where it is
