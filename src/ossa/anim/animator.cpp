@@ -303,6 +303,10 @@ bool Animator::go_back_from_face(const AnimContext& ctx, float most) {
   const float push = push_back_from_face(ctx, body_, pose_.facing, body_boxes_);
   if (!(push > 0.0f) || push > most) return false;
   move_body(-body_.facing * push, body_);
+  // On the ground the stance legs must still reach their feet from where the body went (the
+  // brachiosaurus retrying the way ahead at drops.json's end wall went 10 cm back, a hind foot
+  // drawn 4 mm off its foothold until the next tick's placement).
+  if (loco_.mode == Locomotion::kGrounded) keep_stance_feet_in_reach(ctx, placement_inputs(0.0f), step_.feet, handoff_, body_, body_state_);
   finish_tick(ctx, 0.0f);
   return true;
 }

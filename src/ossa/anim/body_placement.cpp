@@ -217,6 +217,17 @@ void place_body(const AnimContext& ctx, const PlacementInputs& in, const FootSet
   state.root_vy = in.dt > 0.0f ? (body.root_y_ws - old_root) / in.dt : 0.0f;
 }
 
+void keep_stance_feet_in_reach(const AnimContext& ctx, const PlacementInputs& in, const FootSet& feet, TickHandoff& handoff,
+                               BodyFrame& body, BodyState& state) {
+  if (ctx.rig.girdles.empty()) return;
+  Placement p{ctx, in, feet, body, state, handoff.waiting, &handoff.release_next};
+  thread_local std::vector<float> need, room;
+  need.resize(ctx.rig.girdles.size());
+  room.resize(ctx.rig.girdles.size());
+  keep_stance_legs_in_reach(p, need, room);
+  release_overstretched_feet(p);
+}
+
 float standing_root(const AnimContext& ctx, const PlacementInputs& in, const FootSet& feet, const TickHandoff& handoff,
                     const BodyFrame& body) {
   const AnimRig& rig = ctx.rig;

@@ -75,6 +75,11 @@ struct PlacementInputs {
 void place_body(const AnimContext& ctx, const PlacementInputs& in, const FootSet& feet, TickHandoff& handoff, BodyFrame& body,
                 BodyState& state);
 
+// The body moved along the ground after place_body (pushed back out of a face, standing):
+// clamp 1 again, its stance legs kept in reach, and clamp 6's release of any it cannot keep.
+void keep_stance_feet_in_reach(const AnimContext& ctx, const PlacementInputs& in, const FootSet& feet, TickHandoff& handoff,
+                               BodyFrame& body, BodyState& state);
+
 // The root height place_body aims for with the feet where they are, before its smoothing and
 // clamps (the standing height a landing comes down towards), metres.
 float standing_root(const AnimContext& ctx, const PlacementInputs& in, const FootSet& feet, const TickHandoff& handoff,
