@@ -354,6 +354,16 @@ TEST_CASE("a standing body pushed back from a face keeps its feet in reach", "[g
   check_clean(run_from_spawn("brachiosaurus", drops(), "run:1:15"), "the brachiosaurus on drops.json");
 }
 
+TEST_CASE("a body standing blocked beside a post sets its feet down where its legs reach", "[game][anim][locomotion]") {
+  // The triceratops runs up to default.json's 1.8 m post and stands blocked, its shoulders
+  // beside it, its pitch easing down. The girdle's keep-out margin over the post held the front
+  // up beyond what the forelegs reach: a forefoot eased down to its place stood 7.6 mm short of
+  // it and slid there a tick later. Standing, the margin now yields to the stance legs' reach
+  // (not the box tops under a joint). Every bone within 1 mm, no stance foot sliding or short.
+  check_clean(run_from_spawn("triceratops", load_level(scenes::source_path("levels/default.json")).value(), "run:1:15"),
+              "the triceratops on default.json");
+}
+
 TEST_CASE("a flipper that finds no clear tuck trails back from the face it meets", "[game][anim][locomotion]") {
   // The eared seal runs off drops.json's ledge into the 3 m pit and falls beside its far wall,
   // its shoulder against the wall's face: no tuck of the front flipper clears, and the last

@@ -28,6 +28,8 @@ inline constexpr float kGirdleKeepOutOfRest = 0.12f;
 inline constexpr float kGirdleKeepOutHalfOfRest = 0.1f;
 // Beyond that window the ground's claim fades by this many rest heights below its top.
 inline constexpr float kKeepOutFadeOfRest = 0.25f;
+// The box tops alone (no fade to speak of), where a girdle's keep-out margin yields.
+inline constexpr float kNoFadeOfRest = 1e-6f;
 // A shoulder keeps this many hip heights above the ground under it.
 inline constexpr float kShoulderKeepOutOfHip = 0.1f;
 // A knee keeps this fraction of its leg's reach above the ground within kKneeHalfWidth (m).
