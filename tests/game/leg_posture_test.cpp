@@ -33,6 +33,15 @@ std::shared_ptr<const Creature> example(const char* name) {
   return std::make_shared<const Creature>(build_creature(scenes::generator().example(name).value()).value());
 }
 
+// Random creature `seed` asked for two leg pairs, if it stands on its tips (else nullptr).
+std::shared_ptr<const Creature> random_on_tiptoe(uint64_t seed) {
+  GenerateOptions options;
+  options.leg_pairs = 2;
+  const Genome g = scenes::generator().random(seed, options);
+  if (g.contact != ContactMode::kTip) return nullptr;
+  return std::make_shared<const Creature>(build_creature(g).value());
+}
+
 constexpr int kAnkle = 2;  // SimProbe's joint order: hip, knee, ankle
 
 }  // namespace
@@ -92,11 +101,8 @@ TEST_CASE("random quadrupeds on tiptoe keep a straight loaded foreleg and an unb
   // whose joint angles have no meaning and whose feet cannot reach the ground they stand on.
   int tested = 0;
   for (uint64_t seed = 1; seed <= 400 && tested < 12; ++seed) {
-    GenerateOptions options;
-    options.leg_pairs = 2;
-    const Genome g = scenes::generator().random(seed, options);
-    if (g.contact != ContactMode::kTip) continue;
-    const auto creature = std::make_shared<const Creature>(build_creature(g).value());
+    const auto creature = random_on_tiptoe(seed);
+    if (!creature) continue;
     Player probe_player(creature, SplinePrototypes::defaults());
     const AnimRig& rig = probe_player.animator().rig();
     bool degenerate = false;
@@ -129,11 +135,8 @@ TEST_CASE("random quadrupeds stand on the tip of a steep forefoot with the carpu
   // checked here: the swing of the flat feet and the hind legs (README Known limits).
   int tested = 0, steep = 0;
   for (uint64_t seed = 1; seed <= 400; ++seed) {
-    GenerateOptions options;
-    options.leg_pairs = 2;
-    const Genome g = scenes::generator().random(seed, options);
-    if (g.contact != ContactMode::kTip) continue;
-    const auto creature = std::make_shared<const Creature>(build_creature(g).value());
+    const auto creature = random_on_tiptoe(seed);
+    if (!creature) continue;
     Player probe_player(creature, SplinePrototypes::defaults());
     const AnimRig& rig = probe_player.animator().rig();
     if (rig.girdles.size() != 2) continue;

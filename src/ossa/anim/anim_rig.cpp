@@ -112,7 +112,7 @@ constexpr float kCoupledBoneOfLeg = 0.05f;
 // ... and with the foot standing at least this steep at rest (the sine of its angle to the
 // ground). A foot the rest pose lays flat on the ground stands on its sole, as a plantigrade's
 // does, and is drawn so (draw/sprite_choice.cpp, the same rule): stood on its tip in line with
-// the forearm, the crouched forelegs of 10 of the 132 random tiptoe quadrupeds of seeds 1-400
+// the forearm, the crouched forelegs of 10 of the 140 random tiptoe quadrupeds of seeds 1-400
 // found no pose and folded the carpus to 5-95° all through the stance.
 constexpr float kSteepFootAtRest = 0.5f;
 // The lower joint's fold at mid-swing, chosen: the carpus 63°, at the low end of a horse's
