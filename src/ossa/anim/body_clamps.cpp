@@ -389,37 +389,34 @@ TrunkNeed trunk_need(const AnimContext& ctx, const BodyFrame& body, float lift, 
 // a single girdle's body turns up about it for the rest.
 void keep_body_out_of_ground(Placement& p, float fell, const std::vector<float>& room) {
   const AnimRig& rig = p.ctx.rig;
-  float raise = 0.0f;
+  // The trunk rises no further than every stance foot stays in reach (a body pitched down a
+  // ledge, its feet below, would pull them off their footholds); standing, nor does the girdles'
+  // margin.
+  float least_room = 1e30f;
+  for (float r : room) least_room = std::min(least_room, r);
+  const bool standing = !p.in.stepping;
+  float raise = 0.0f, tops = 0.0f;  // tops: the box tops under the joints alone
   for (size_t g = 0; g < rig.girdles.size(); ++g) {
     const glm::vec2 joint = p.body.girdle_ws(rig, static_cast<int>(g));
     const float rest = rig.girdles[g].rest_height;
     // Ground within the window (twice its half, where claims fade) no higher than the keep
     // below the joint cannot raise it: the ground profile says so without a level query.
     const float half = 2.0f * kGirdleKeepOutHalfOfRest * rest;
-    if (!p.ctx.ground.may_rise_above(joint.x - half, joint.x + half, joint.y - kGirdleKeepOutOfRest * rest,
-                                     girdle_keep_out_top(p.ctx, joint, rest, fell))) {
-      continue;
-    }
+    const float top = girdle_keep_out_top(p.ctx, joint, rest, fell);
+    if (!p.ctx.ground.may_rise_above(joint.x - half, joint.x + half, joint.y - kGirdleKeepOutOfRest * rest, top)) continue;
     raise = std::max(raise, girdle_keep_out(p.ctx, joint, rest, fell) - joint.y);
+    if (standing) {
+      tops = std::max(tops, keep_out_height(p.ctx.level, joint.x, kGirdleKeepOutHalfOfRest * rest, 0.0f, kNoFadeOfRest * rest, top,
+                                            rig.scale.search_depth, p.ctx.hits) -
+                                joint.y);
+    }
   }
   // Standing, the girdles' margin over the boxes (and its fade beyond them) yields to the
   // stance legs' reach; the box tops under a joint do not. (The triceratops blocked at
   // default.json's 1.8 m post, its shoulders beside it, was held up by the post's margin while
   // its pitch eased down: a forefoot set down where the leg no longer reached stood 7.6 mm
   // short of its foothold and slid there a tick later.)
-  if (!p.in.stepping && raise > 0.0f) {
-    float least_room = 1e30f;
-    for (float r : room) least_room = std::min(least_room, r);
-    float tops = 0.0f;
-    for (size_t g = 0; g < rig.girdles.size(); ++g) {
-      const glm::vec2 joint = p.body.girdle_ws(rig, static_cast<int>(g));
-      const float rest = rig.girdles[g].rest_height;
-      tops = std::max(tops, keep_out_height(p.ctx.level, joint.x, kGirdleKeepOutHalfOfRest * rest, 0.0f, kNoFadeOfRest * rest,
-                                            girdle_keep_out_top(p.ctx, joint, rest, fell), rig.scale.search_depth, p.ctx.hits) -
-                                joint.y);
-    }
-    raise = std::max(tops, std::min(raise, std::max(least_room, 0.0f)));
-  }
+  if (standing && raise > 0.0f) raise = std::max(tops, std::min(raise, std::max(least_room, 0.0f)));
   auto keep_shoulder_out = [&](const RigLimb& limb) {
     raise = std::max(raise, shoulder_need(p, p.body.body_point_ws(rig, bone_start(rig.model_rest[limb.bones[0]])), fell));
   };
@@ -435,10 +432,6 @@ void keep_body_out_of_ground(Placement& p, float fell, const std::vector<float>&
     }
   }
   for (const RigLimb& f : rig.outline_fins) keep_shoulder_out(f);
-  // The trunk rises no further than every stance foot stays in reach (a body pitched down a
-  // ledge, its feet below, would pull them off their footholds).
-  float least_room = 1e30f;
-  for (float r : room) least_room = std::min(least_room, r);
   if (rig.trunk.empty()) {
     p.body.root_y_ws += raise;
     return;

@@ -43,7 +43,7 @@ SpriteId sprite_for_bone(const Creature& creature, int bone) {
   // Tip contact: the rest-pose direction of the bone is the sum of the joint angles up the
   // chain (rest locals carry no scale or mirror). Same rule as export_svg's hand_shape. A foot
   // lying nearly flat on the ground (a kangaroo's, a resting bird's tarsus) is drawn flat, its
-  // sole on the ground.
+  // sole on the ground; the animator stands it so (anim_rig.cpp kSteepFootAtRest, the same rule).
   const std::vector<BoneLocal>& locals =
       creature.rest_pose.locals.size() == static_cast<size_t>(s.bone_count()) ? creature.rest_pose.locals
                                                                              : s.rest_locals();
