@@ -85,6 +85,10 @@ void turn_feet(const AnimContext& ctx, const SplinePrototypes& prototypes, const
     // ledge's face as the body walks back.
     if (was_air[feet.foot_of_leg[i]] && (!found || !reaches(in, leg, landing))) {
       hang(ctx, body, leg, 0.0f, f);  // tucked: the girdle goes back over the ledge it hangs from
+      // and it plants on that ledge once it meets it (it no longer steps off it: random 12
+      // walked back from drops.json's pit on forefeet hanging along the top, and fell when its
+      // hind feet stepped off the far side).
+      f.floor = 1e30f;
       continue;
     }
     if (!found) landing = f.pos_ws;
