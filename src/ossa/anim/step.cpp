@@ -36,6 +36,10 @@ constexpr float kPushOffOfStanding = 1.15f;
 // more than this fraction of the leg's contact reach and another foot of its girdle stands
 // higher than this one by more than kHangStraddleOfReach of it.
 constexpr float kHangOverreachOfReach = 0.05f, kHangStraddleOfReach = 0.5f;
+// A falling foot reaches for a ledge ahead (ledge_ahead) whose top lies at least this many of
+// its leg's reach below the girdle joint; onto it this many foot lengths past the edge, from
+// this many of its leg's reach above the top.
+constexpr float kLedgeBelowJointOfReach = 0.3f, kLedgeMarginOfFoot = 0.25f, kLedgeLiftOfReach = 0.05f;
 
 }  // namespace
 
@@ -284,6 +288,40 @@ bool stance_reaches(const AnimContext& ctx, const BodyFrame& body, int leg, glm:
   const glm::vec2 anchor = leg_anchor(ctx, body, leg, body.to_fs(p_ws), joint_fs, Clearance{}, &r);
   return glm::length(anchor - joint_fs) <= kFootReach * r;
 }
+
+// Falling, a foot with no ground below it within its leg's reach, short of a ledge ahead whose
+// top lies below its girdle and no higher than the foot, within the leg's reach of the joint
+// (across, on the girdle's side): where on that top it reaches for (the nearest such ledge;
+// *over: the foot is over its top already). A jump that falls short of the far side of a gap
+// lands its feet on the edge, rather than the body coming down into the ledge's top.
+bool ledge_ahead(const AnimContext& ctx, const BodyFrame& body, int leg, const FootState& f, glm::vec2* onto, bool* over) {
+  const RigLeg& info = ctx.rig.legs[leg];
+  const glm::vec2 joint = body.girdle_ws(ctx.rig, info.girdle);
+  const float R = kFootReach * info.contact_reach, facing = static_cast<float>(body.facing);
+  const FootSpan span = foot_span_ws(info, body.facing);
+  if (ground_below(ctx.level, f.pos_ws.x + span.lo, f.pos_ws.x + span.hi, f.pos_ws.y + 1e-3f, R)) return false;
+  const float lowest = joint.y - R, highest = std::min(joint.y - kLedgeBelowJointOfReach * R, f.pos_ws.y);
+  if (!(highest > lowest)) return false;
+  const float far = joint.x + facing * R;
+  ctx.hits.clear();
+  ctx.level.overlapping(Box{{std::min(f.pos_ws.x, far), lowest}, {std::max(f.pos_ws.x, far), highest}}, ctx.hits);
+  float best = 1e30f;
+  for (int h : ctx.hits) {
+    const Box& c = ctx.level.box(h);
+    const float top = c.max_ws.y, face = facing > 0.0f ? c.min_ws.x : c.max_ws.x;
+    if (top < lowest || top > highest) continue;
+    // The whole foot on the top, a little past its edge.
+    const float x = face - (facing > 0.0f ? span.lo : span.hi) + facing * kLedgeMarginOfFoot * info.foot_length;
+    const float ahead = facing * (face - (f.pos_ws.x + (facing > 0.0f ? span.lo : span.hi)));
+    if (facing * (x - joint.x) > R || ahead > best) continue;
+    auto hit = ground_below(ctx.level, x + span.lo, x + span.hi, f.pos_ws.y + 1e-3f, f.pos_ws.y + 1e-3f - lowest);
+    if (!hit || std::fabs(hit->height_ws - top) > 1e-3f) continue;  // another box stands on it there
+    best = ahead;
+    *onto = {x, top};
+    *over = ahead <= 0.0f;
+  }
+  return best < 1e29f;
+}
 }  // namespace
 
 int update_air_feet(const AnimContext& ctx, const BodyFrame& body, float extension, float dt, bool reach_ground, FootSet& feet,
@@ -304,6 +342,16 @@ int update_air_feet(const AnimContext& ctx, const BodyFrame& body, float extensi
     glm::vec2 next = target + f.air_offset;
     const RigLeg& info = ctx.rig.legs[i];
     const FootSpan span = foot_span_ws(info, body.facing);
+    glm::vec2 onto;
+    bool over;
+    if (may_land && !reach_ground && ledge_ahead(ctx, body, leg, f, &onto, &over)) {
+      // Over the ledge's top the foot comes down onto it (and is planted there below); short of
+      // it, it goes over its edge a little above it. From where it is, at the rate the air
+      // offset eases.
+      const float lift = kLedgeLiftOfReach * info.contact_reach;
+      next = f.pos_ws + (onto + glm::vec2(0.0f, over ? -lift : lift) - f.pos_ws) * (1.0f - keep);
+      f.air_offset = next - target;
+    }
     if (reach_ground) {
       // On the ground (stepping off, landing) a hanging foot reaches down to ground its leg
       // reaches below it, so a drop within the legs' reach is stepped down, not fallen.

@@ -111,7 +111,9 @@ void set_down_after_landing(const AnimContext& ctx, const BodyFrame& body, const
 // Feet hanging in the air follow their targets and are planted where they meet the top of a
 // box on the way down; reach_ground (on the ground: stepping off, landing): a foot reaches
 // down to ground its leg reaches below it; may_land false (the body still rising): a foot
-// meeting ground is carried along it, not planted. Returns how many were planted.
+// meeting ground is carried along it, not planted; in the air and falling, a foot with no
+// ground below it in its leg's reach goes over the edge of a ledge ahead that the leg reaches
+// and comes down on its top. Returns how many were planted.
 int update_air_feet(const AnimContext& ctx, const BodyFrame& body, float extension, float dt, bool reach_ground,
                     FootSet& feet, bool may_land = true);
 
