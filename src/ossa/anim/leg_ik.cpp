@@ -28,6 +28,9 @@ constexpr float kStretchedOfLeg = 0.01f;
 // bends no closer than this multiple of its fold.
 constexpr float kCoupledReach = 0.999f;
 constexpr float kCoupledFold = 1.02f;
+// A swinging foot that holds its angle folds its lower joint (hock, intertarsal joint) to no
+// less than this angle between shin and foot (radians), or its rest angle where that is less.
+constexpr float kLeastSwingAnkle = 0.2f;
 
 
 }  // namespace
@@ -175,6 +178,23 @@ bool LegIkJob::run() const {
       const glm::vec2 p[4] = {b.to_ws(joint), b.to_ws(r.middle), b.to_ws(r.end), b.to_ws(contact)};
       return !polyline_hits_level(c.level, p, 4, c.hits);
     };
+    // A swinging foot that holds its angle folds its lower joint no tighter than
+    // kLeastSwingAnkle (or its rest angle): random hind legs with a tight rest hock folded the
+    // foot through the shin, reading 0 to 360° in the swing (the plain pose, below).
+    const bool hold = f.state == LegState::kSwing && !info.coupled && info.foot_span > 0.0f;
+    const float most_fold =
+        hold ? kPi - std::min(kLeastSwingAnkle, kPi - std::fabs(wrap_angle(info.foot_angle_ms - bone_angle(c.rig.model_rest[info.bones[1]]))))
+             : kPi;
+    // The turn from shin to foot, positive the way the joint bends at rest: beyond most_fold
+    // folded tighter, and beyond pi through shut (where it reads below -pi/2).
+    auto fold_of = [&](glm::vec2 shin, glm::vec2 foot) {
+      return std::atan2(info.fold_sign * (shin.x * foot.y - shin.y * foot.x), glm::dot(shin, foot));
+    };
+    auto too_tight = [&](float turn) { return hold && (turn > most_fold || turn < -0.5f * kPi); };
+    // A foot folded through the shin turns back to most_fold, about the ankle.
+    auto unfold = [&](glm::vec2 shin, glm::vec2 foot) {
+      return hold && fold_of(shin, foot) < -0.5f * kPi ? turned(shin, unit(info.fold_sign * most_fold)) : foot;
+    };
     // A three-segment leg is solved whole, its foot coupled to the leg.
     TwoBoneIkResult ik;
     glm::vec2 foot_dir, ankle;
@@ -203,14 +223,32 @@ bool LegIkJob::run() const {
       }
       ik = leg_ik(ankle);
       // A foot holding its angle that would bend the ankle (hock, intertarsal joint) past
-      // straight has the ankle straight instead (the same pose where it is just straight).
+      // straight (not folded through shut) has the ankle straight instead (the same pose where
+      // it is just straight).
+      const float turn = fold_of(ik.lower_dir, foot_dir);
       TwoBoneIkResult straight;
       glm::vec2 straight_dir;
-      if (!info.coupled && info.foot_span > 0.0f && info.fold_sign * (ik.lower_dir.x * foot_dir.y - ik.lower_dir.y * foot_dir.x) < 0.0f &&
+      if (!info.coupled && info.foot_span > 0.0f && turn < 0.0f && turn > -0.5f * kPi &&
           solve_straight_ankle(info, joint, contact, &straight, &straight_dir) && clear_in_stance(straight)) {
         ik = straight;
         foot_dir = straight_dir;
         ankle = straight.end;
+      }
+      // Swinging, nor does it fold tighter than most_fold: it turns with the shin about its
+      // ankle; where that takes its contact point below its swing path (a bird's toe dipped
+      // into the ground at lift-off), about the contact instead, the leg reaching the ankle
+      // there, if that holds it; else not at all, unless it would fold through the shin.
+      if (const float turn = fold_of(ik.lower_dir, foot_dir); too_tight(turn)) {
+        const glm::vec2 held = turned(ik.lower_dir, unit(info.fold_sign * most_fold));
+        if ((ik.end + info.foot_span * held).y >= contact.y) {
+          foot_dir = held;
+        } else if (const TwoBoneIkResult r = leg_ik(contact - info.foot_span * held); !too_tight(fold_of(r.lower_dir, held))) {
+          ik = r;
+          ankle = r.end;
+          foot_dir = held;
+        } else {
+          foot_dir = unfold(ik.lower_dir, foot_dir);
+        }
       }
     }
     // A stance leg the body placement stretched past its reach (its clamps 3 and 5 may, and
@@ -247,8 +285,9 @@ bool LegIkJob::run() const {
           const glm::vec2 d = t <= 1.0f   ? glm::mix(foot_dir, info.foot_dir_ms, t)
                               : t <= 2.0f ? info.foot_dir_ms
                                           : glm::mix(info.foot_dir_ms, folded, t - 2.0f);
-          dir = d / std::max(glm::length(d), 1e-6f);
-          return leg_ik(a);
+          const TwoBoneIkResult r = leg_ik(a);
+          dir = unfold(r.lower_dir, d / std::max(glm::length(d), 1e-6f));
+          return r;
         };
         float lo = 0.0f, hi = -1.0f;
         for (float t : {1.0f, 2.0f, 3.0f}) {
@@ -268,8 +307,9 @@ bool LegIkJob::run() const {
           // deeper into the ledge; the tortoise's went 2.8 cm into drops.json's first).
           const glm::vec2 ahead = tuck + glm::vec2(F + kCarryAheadOfLeg * info.reach, 0.0f);
           auto carried = [&](float s) {
-            dir = info.foot_dir_ms;
-            return leg_ik(glm::mix(tuck, ahead, s));
+            const TwoBoneIkResult r = leg_ik(glm::mix(tuck, ahead, s));
+            dir = unfold(r.lower_dir, info.foot_dir_ms);
+            return r;
           };
           if (!leg_hits(carried(1.0f))) {
             float from = 0.0f, to = 1.0f;
@@ -283,8 +323,9 @@ bool LegIkJob::run() const {
             // the step's corner, 2.8 cm in; turned up, the knee rises over the tread).
             const glm::vec2 planned_ankle = ankle - joint, planned_dir = foot_dir;
             auto turned = [&](float a) {
-              dir = rotate(planned_dir, a);
-              return leg_ik(joint + rotate(planned_ankle, a));
+              const TwoBoneIkResult r = leg_ik(joint + rotate(planned_ankle, a));
+              dir = unfold(r.lower_dir, rotate(planned_dir, a));
+              return r;
             };
             float from = 0.0f, to = 0.0f;
             for (float step = 1.0f; step <= kWholeTurnSteps && to == 0.0f; step += 1.0f) {

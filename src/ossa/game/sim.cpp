@@ -254,8 +254,9 @@ void SimProbe::observe(const Animator& a, const Level& level) {
     for (size_t j = 0; j < 3; ++j) {
       const Mat2x3& p = world[static_cast<size_t>(chain[j])];
       const Mat2x3& q = world[static_cast<size_t>(chain[j + 1])];
+      // (The ankle: the way the animator folds it, which for one straight at rest is the knee's.)
       const float rest = turn_of(rig.model_rest[static_cast<size_t>(chain[j])], rig.model_rest[static_cast<size_t>(chain[j + 1])]);
-      const float way = (rest < 0.0f ? -1.0f : 1.0f) * static_cast<float>(a.facing());
+      const float way = (j == 2 ? leg.fold_sign : rest < 0.0f ? -1.0f : 1.0f) * static_cast<float>(a.facing());
       const float angle = 180.0f - way * turn_of(p, q) * (180.0f / 3.14159265f);
       if (!std::isfinite(angle)) continue;
       stats[j].min = std::min(stats[j].min, angle);

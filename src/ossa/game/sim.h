@@ -125,8 +125,9 @@ class SimProbe {
   uint64_t pose_hash = 1469598103934665603ull;
   // Per leg (AnimRig::legs): the angle at its hip (girdle bone to thigh), knee (thigh to shin)
   // and ankle (shin to foot) between the two bones' directions, degrees (180: in line; over
-  // 180: bent past straight, the other way from the rest pose), over the ticks its foot stood
-  // and those it swung: the least, the largest and the mean.
+  // 180: bent past straight, the other way from the rest pose, or for the ankle from the way
+  // the animator folds it, RigLeg::fold_sign), over the ticks its foot stood and those it
+  // swung: the least, the largest and the mean.
   struct AngleStats {
     float min = 360.0f;
     float max = 0.0f;
