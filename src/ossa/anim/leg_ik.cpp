@@ -179,8 +179,9 @@ bool LegIkJob::run() const {
       return !polyline_hits_level(c.level, p, 4, c.hits);
     };
     // A swinging foot that holds its angle folds its lower joint no tighter than
-    // kLeastSwingAnkle (or its rest angle): random hind legs with a tight rest hock folded the
-    // foot through the shin, reading 0 to 360° in the swing (the plain pose, below).
+    // kLeastSwingAnkle (or its rest angle), nor bends it past straight: random hind legs with a
+    // tight rest hock folded the foot through the shin, reading 0 to 360° in the swing (the
+    // plain pose, below).
     const bool hold = f.state == LegState::kSwing && !info.coupled && info.foot_span > 0.0f;
     const float most_fold =
         hold ? kPi - std::min(kLeastSwingAnkle, kPi - std::fabs(wrap_angle(info.foot_angle_ms - bone_angle(c.rig.model_rest[info.bones[1]]))))
@@ -234,15 +235,17 @@ bool LegIkJob::run() const {
         foot_dir = straight_dir;
         ankle = straight.end;
       }
-      // Swinging, nor does it fold tighter than most_fold: it turns with the shin about its
-      // ankle; where that takes its contact point below its swing path (a bird's toe dipped
-      // into the ground at lift-off), about the contact instead, the leg reaching the ankle
-      // there, if that holds it; else not at all, unless it would fold through the shin.
-      if (const float turn = fold_of(ik.lower_dir, foot_dir); too_tight(turn)) {
-        const glm::vec2 held = turned(ik.lower_dir, unit(info.fold_sign * most_fold));
+      // Swinging, nor does it fold tighter than most_fold, nor stay bent past straight (where
+      // the straight leg reaches no pose): it turns with the shin about its ankle; where that
+      // takes its contact point below its swing path (a bird's toe dipped into the ground at
+      // lift-off), about the contact instead, the leg reaching the ankle there, if that holds
+      // it; else not at all, unless it would fold through the shin.
+      if (const float turn = fold_of(ik.lower_dir, foot_dir); too_tight(turn) || (hold && turn < 0.0f)) {
+        const glm::vec2 held = turn < 0.0f && turn > -0.5f * kPi ? ik.lower_dir : turned(ik.lower_dir, unit(info.fold_sign * most_fold));
+        auto holds = [&](float t) { return !too_tight(t) && t >= -1e-3f; };
         if ((ik.end + info.foot_span * held).y >= contact.y) {
           foot_dir = held;
-        } else if (const TwoBoneIkResult r = leg_ik(contact - info.foot_span * held); !too_tight(fold_of(r.lower_dir, held))) {
+        } else if (const TwoBoneIkResult r = leg_ik(contact - info.foot_span * held); holds(fold_of(r.lower_dir, held))) {
           ik = r;
           ankle = r.end;
           foot_dir = held;
