@@ -44,6 +44,31 @@ std::shared_ptr<const Creature> random_on_tiptoe(uint64_t seed, int leg_pairs = 
 
 constexpr int kAnkle = 2;  // SimProbe's joint order: hip, knee, ankle
 
+// Has a leg a bone of (nearly) no length (random 13's forelegs are a foot alone)? Its joint
+// angles have no meaning, and its feet cannot reach the ground they stand on.
+bool vanishing_leg_bone(const AnimRig& rig) {
+  return std::any_of(rig.legs.begin(), rig.legs.end(),
+                     [](const RigLeg& leg) { return !(leg.reach > 0.0f && std::min(leg.upper, leg.lower) >= 0.05f * leg.reach); });
+}
+
+// Walks and gallops each random creature of seeds 1..400 asked for `leg_pairs` leg pairs that
+// stands on its tips with no vanishing leg bone, the first `most` of them, on flat ground, and
+// hands each run to check(seed, rig, result). Returns how many ran.
+template <typename Check>
+int each_on_tiptoe(int leg_pairs, int most, Check check) {
+  int tested = 0;
+  for (uint64_t seed = 1; seed <= 400 && tested < most; ++seed) {
+    const auto creature = random_on_tiptoe(seed, leg_pairs);
+    if (!creature) continue;
+    Player probe_player(creature, SplinePrototypes::defaults());
+    const AnimRig& rig = probe_player.animator().rig();
+    if (vanishing_leg_bone(rig)) continue;
+    check(seed, rig, run(creature, "walk:0.5:5,run:1:4"));
+    ++tested;
+  }
+  return tested;
+}
+
 }  // namespace
 
 TEST_CASE("hooved and columnar-footed animals stand on a straight foreleg and a hock that never bends past straight", "[game][anim][legs]") {
@@ -97,18 +122,8 @@ TEST_CASE("a foot holding its angle straightens its ankle rather than bend it pa
 
 TEST_CASE("random quadrupeds on tiptoe keep a straight loaded foreleg and an unbroken hock", "[game][anim][legs]") {
   // Cases nobody tuned for: random four-legged creatures standing on their tips. Left out: a
-  // creature with a leg bone of (nearly) no length (random 13's forelegs are a foot alone),
-  // whose joint angles have no meaning and whose feet cannot reach the ground they stand on.
-  int tested = 0;
-  for (uint64_t seed = 1; seed <= 400 && tested < 12; ++seed) {
-    const auto creature = random_on_tiptoe(seed);
-    if (!creature) continue;
-    Player probe_player(creature, SplinePrototypes::defaults());
-    const AnimRig& rig = probe_player.animator().rig();
-    bool degenerate = false;
-    for (const RigLeg& leg : rig.legs) degenerate = degenerate || !(leg.reach > 0.0f && std::min(leg.upper, leg.lower) >= 0.05f * leg.reach);
-    if (degenerate) continue;
-    const SimResult r = run(creature, "walk:0.5:5,run:1:4");
+  // creature with a leg bone of (nearly) no length (vanishing_leg_bone).
+  const int tested = each_on_tiptoe(2, 12, [](uint64_t seed, const AnimRig& rig, const SimResult& r) {
     for (size_t i = 0; i < rig.legs.size(); ++i) {
       const RigLeg& leg = rig.legs[i];
       const SimProbe::LegJointAngles& a = r.probe.joint_angles[i];
@@ -120,8 +135,7 @@ TEST_CASE("random quadrupeds on tiptoe keep a straight loaded foreleg and an unb
       CHECK(a.swing[kAnkle].max <= 180.5f);
     }
     CHECK(r.probe.max_stance_slip_m <= 0.001f);
-    ++tested;
-  }
+  });
   CHECK(tested == 12);
 }
 
@@ -178,15 +192,7 @@ TEST_CASE("random creatures swinging a foot fold it against the shin, never thro
   // 1 and 14 of them).
   int tested = 0;
   for (int pairs : {2, 1}) {
-    for (uint64_t seed = 1; seed <= 400; ++seed) {
-      const auto creature = random_on_tiptoe(seed, pairs);
-      if (!creature) continue;
-      Player probe_player(creature, SplinePrototypes::defaults());
-      const AnimRig& rig = probe_player.animator().rig();
-      bool degenerate = false;
-      for (const RigLeg& leg : rig.legs) degenerate = degenerate || !(leg.reach > 0.0f && std::min(leg.upper, leg.lower) >= 0.05f * leg.reach);
-      if (degenerate) continue;
-      const SimResult r = run(creature, "walk:0.5:5,run:1:4");
+    tested += each_on_tiptoe(pairs, 400, [pairs](uint64_t seed, const AnimRig& rig, const SimResult& r) {
       for (size_t i = 0; i < rig.legs.size(); ++i) {
         const SimProbe::LegJointAngles& a = r.probe.joint_angles[i];
         INFO("random " << seed << " on " << pairs << " leg pairs, " << rig.skeleton.name(rig.legs[i].bones[0])
@@ -195,8 +201,7 @@ TEST_CASE("random creatures swinging a foot fold it against the shin, never thro
         CHECK(a.swing[kAnkle].max <= 180.5f);
       }
       CHECK(r.probe.max_stance_slip_m <= 0.001f);
-      ++tested;
-    }
+    });
   }
   CHECK(tested == 227 + 267);
 }
