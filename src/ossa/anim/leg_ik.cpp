@@ -31,6 +31,8 @@ constexpr float kCoupledFold = 1.02f;
 // A swinging foot that holds its angle folds its lower joint (hock, intertarsal joint) to no
 // less than this angle between shin and foot (radians), or its rest angle where that is less.
 constexpr float kLeastSwingAnkle = 0.2f;
+// A foot that folded through the shin lies this far open from it (radians).
+constexpr float kShutAnkle = 0.02f;
 
 
 }  // namespace
@@ -192,9 +194,10 @@ bool LegIkJob::run() const {
       return std::atan2(info.fold_sign * (shin.x * foot.y - shin.y * foot.x), glm::dot(shin, foot));
     };
     auto too_tight = [&](float turn) { return hold && (turn > most_fold || turn < -0.5f * kPi); };
-    // A foot folded through the shin turns back to most_fold, about the ankle.
+    // A foot folded through the shin turns back to lie against it (kShutAnkle open), about the
+    // ankle: the least turn that uncrosses it.
     auto unfold = [&](glm::vec2 shin, glm::vec2 foot) {
-      return hold && fold_of(shin, foot) < -0.5f * kPi ? turned(shin, unit(info.fold_sign * most_fold)) : foot;
+      return hold && fold_of(shin, foot) < -0.5f * kPi ? turned(shin, unit(info.fold_sign * (kPi - kShutAnkle))) : foot;
     };
     // A three-segment leg is solved whole, its foot coupled to the leg.
     TwoBoneIkResult ik;
