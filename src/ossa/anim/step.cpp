@@ -342,8 +342,8 @@ int update_air_feet(const AnimContext& ctx, const BodyFrame& body, float extensi
     glm::vec2 next = target + f.air_offset;
     const RigLeg& info = ctx.rig.legs[i];
     const FootSpan span = foot_span_ws(info, body.facing);
-    glm::vec2 onto;
-    bool over;
+    glm::vec2 onto(0.0f);
+    bool over = false;
     if (may_land && !reach_ground && ledge_ahead(ctx, body, leg, f, &onto, &over)) {
       // Over the ledge's top the foot comes down onto it (and is planted there below); short of
       // it, it goes over its edge a little above it. From where it is, at the rate the air
