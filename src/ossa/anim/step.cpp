@@ -290,9 +290,9 @@ bool stance_reaches(const AnimContext& ctx, const BodyFrame& body, int leg, glm:
 }
 
 // Falling, a foot with no ground below it within its leg's reach, short of a ledge ahead whose
-// top lies below its girdle and no higher than the foot, within the leg's reach of the joint
-// (across, on the girdle's side): where on that top it reaches for (the nearest such ledge;
-// *over: the foot is over its top already). A jump that falls short of the far side of a gap
+// top lies below its girdle and no higher than the foot, its edge within the leg's reach ahead
+// of the joint: where on that top it reaches for (the nearest such ledge; *over: the foot is
+// over its top already). A jump that falls short of the far side of a gap
 // lands its feet on the edge, rather than the body coming down into the ledge's top.
 bool ledge_ahead(const AnimContext& ctx, const BodyFrame& body, int leg, const FootState& f, glm::vec2* onto, bool* over) {
   const RigLeg& info = ctx.rig.legs[leg];
