@@ -137,6 +137,7 @@ void couple_legs(AnimRig& rig) {
     // The way the rest pose bends the lower joint (a zigzag leg: against the knee).
     const float rest_turn = wrap_angle(leg.foot_angle_ms - anim::bone_angle(rest[leg.bones[1]]));
     leg.fold_sign = std::fabs(rest_turn) > kBentAnkle ? (rest_turn > 0.0f ? 1.0f : -1.0f) : leg.bend;
+    leg.rest_fold = std::fabs(rest_turn);
     leg.swing_fold = leg.hind ? kHindSwingFold : kForeSwingFold;
     // A hind foot's rest turn from the thigh (the hock bends and straightens with the knee).
     if (leg.hind) leg.couple_angle = wrap_angle(leg.foot_angle_ms - anim::bone_angle(rest[leg.bones[0]]));

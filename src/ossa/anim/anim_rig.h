@@ -72,6 +72,7 @@ struct RigLeg {
   float couple_length = 0.0f;
   glm::vec2 couple_dir{1.0f, 0.0f};
   float fold_sign = 1.0f;           // the turn that flexes the lower joint (carpus, hock), as at rest
+  float rest_fold = 0.0f;           // radians that joint turns at rest, shin to foot (0: in line)
   float swing_fold = 0.0f;          // radians, at mid-swing
 };
 

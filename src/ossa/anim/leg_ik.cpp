@@ -185,9 +185,7 @@ bool LegIkJob::run() const {
     // tight rest hock folded the foot through the shin, reading 0 to 360° in the swing (the
     // plain pose, below).
     const bool hold = f.state == LegState::kSwing && !info.coupled && info.foot_span > 0.0f;
-    const float most_fold =
-        hold ? kPi - std::min(kLeastSwingAnkle, kPi - std::fabs(wrap_angle(info.foot_angle_ms - bone_angle(c.rig.model_rest[info.bones[1]]))))
-             : kPi;
+    const float most_fold = kPi - std::min(kLeastSwingAnkle, kPi - info.rest_fold);
     // The turn from shin to foot, positive the way the joint bends at rest: beyond most_fold
     // folded tighter, and beyond pi through shut (where it reads below -pi/2).
     auto fold_of = [&](glm::vec2 shin, glm::vec2 foot) {
@@ -227,12 +225,12 @@ bool LegIkJob::run() const {
       }
       ik = leg_ik(ankle);
       // A foot holding its angle that would bend the ankle (hock, intertarsal joint) past
-      // straight (not folded through shut) has the ankle straight instead (the same pose where
-      // it is just straight).
-      const float turn = fold_of(ik.lower_dir, foot_dir);
+      // straight (not folded through shut: the foot not turned back against the shin) has the
+      // ankle straight instead (the same pose where it is just straight).
       TwoBoneIkResult straight;
       glm::vec2 straight_dir;
-      if (!info.coupled && info.foot_span > 0.0f && turn < 0.0f && turn > -0.5f * kPi &&
+      if (!info.coupled && info.foot_span > 0.0f && info.fold_sign * (ik.lower_dir.x * foot_dir.y - ik.lower_dir.y * foot_dir.x) < 0.0f &&
+          glm::dot(ik.lower_dir, foot_dir) > 0.0f &&
           solve_straight_ankle(info, joint, contact, &straight, &straight_dir) && clear_in_stance(straight)) {
         ik = straight;
         foot_dir = straight_dir;
@@ -243,7 +241,7 @@ bool LegIkJob::run() const {
       // takes its contact point below its swing path (a bird's toe dipped into the ground at
       // lift-off), about the contact instead, the leg reaching the ankle there, if that holds
       // it; else not at all, unless it would fold through the shin.
-      if (const float turn = fold_of(ik.lower_dir, foot_dir); too_tight(turn) || (hold && turn < 0.0f)) {
+      if (const float turn = hold ? fold_of(ik.lower_dir, foot_dir) : 0.0f; too_tight(turn) || turn < 0.0f) {
         const glm::vec2 held = turn < 0.0f && turn > -0.5f * kPi ? ik.lower_dir : turned(ik.lower_dir, unit(info.fold_sign * most_fold));
         auto holds = [&](float t) { return !too_tight(t) && t >= -1e-3f; };
         if ((ik.end + info.foot_span * held).y >= contact.y) {
