@@ -28,7 +28,7 @@ constexpr float kDt = 1.0f / 120.0f;
 // Of the 250 runs of "random creatures walk and run then turn back and jump on every shipped level", how
 // many put a bone more than 1 mm into a box, slide a stance foot by more or stand it further
 // from its foothold (measured 2026-11-28; lower it as the animator gets better).
-constexpr int kRandomRunsOver1mm = 10;
+constexpr int kRandomRunsOver1mm = 9;
 
 Level drops() { return load_level(scenes::source_path("levels/drops.json")).value(); }
 
@@ -379,6 +379,20 @@ TEST_CASE("a jump that falls short of a ledge lands its feet on the ledge's edge
   CHECK(r.locomotion.respawns == 0);
   CHECK(r.x_reached > 41.0f);  // on the far ledge
   check_clean(r, "random 41 on drops.json");
+}
+
+TEST_CASE("a rib cage hanging below the hips meets a riser it cannot be lifted over", "[game][anim][locomotion]") {
+  // Random creature 22 hangs 35 cm ribs below a spine its 18 cm legs carry. Running up
+  // stairs.json's flight, the trunk clamp lifts the ribs over each step the legs climb, but
+  // not over the top step's 25 cm riser: the wall sweep on the ground swept the spine's outline
+  // only, and the ribs ran 15 cm into the riser. They now meet it as a wall (the parts of them
+  // lower under a box's top than the clamp lifts), and standing there, a rib the body's pitch
+  // turns into the face is pushed back out of it, measured along the rib, not its box.
+  const SimResult r = random_from_spawn(22, load_level(scenes::source_path("levels/stairs.json")).value(),
+                                        "walk:0.6:8,run:1:6,stop:1,walk:-0.6:6,jump,walk:0.5:3", 1.0f);
+  INFO("furthest x " << r.x_max_m);
+  CHECK(r.x_max_m > 10.5f);  // up the flight to its top step (riser at x 11.7)
+  check_clean(r, "random 22 on stairs.json");
 }
 
 TEST_CASE("a standing body pushed back from a face keeps its feet in reach", "[game][anim][locomotion]") {

@@ -34,6 +34,17 @@ constexpr float kResetClearOfHalfLength = 0.05f;
 // The most a standing body goes back out of a step in one tick, of the hip height.
 constexpr float kStandingPushOfHip = 0.03f;
 
+// Does a bone of the trunk (AnimRig::trunk, the skull's left out) lie in a wall
+// (kMaxTrunkRaiseOfHip)?
+bool trunk_in_wall(const AnimContext& ctx, const BodyFrame& body) {
+  const AnimRig& rig = ctx.rig;
+  for (size_t i = 0; i < rig.trunk_level_from; ++i) {
+    const glm::vec2 a = body.body_point_ws(rig, rig.trunk[i].a), b = body.body_point_ws(rig, rig.trunk[i].b);
+    if (raise_to_clear(a, b, ctx.level, ctx.hits) >= kMaxTrunkRaiseOfHip * rig.hip_height) return true;
+  }
+  return false;
+}
+
 }  // namespace
 
 Animator::Animator(const Creature& creature, SplinePrototypes prototypes, AnimatorParams params)
@@ -248,7 +259,17 @@ void Animator::tick(float dt, const AnimatorIntent& intent, const Level& level) 
   begin_tick(rig, params_, intent.jump, dt, loco_);                             //  3 locomotion: the crouch
   handoff_.turned = turn_wanted(intent.velocity, body_.facing, landing);
   if (handoff_.turned) {                                                        //  4 turn
+    const float was_x = body_.x_ws;
     mirror_body(rig, pose_.facing, body_);
+    // A turn that swings the trunk round into a wall ahead (random creature 10 of the hour's
+    // set, a biped blocked with its back to a riser, turned its chest and ribs 1.1 cm into the
+    // riser's top, more than the trunk clamp lifts) takes the body along the ground only as far
+    // as the wall sweep lets it.
+    const float shift = body_.x_ws - was_x;
+    if (shift * static_cast<float>(body_.facing) > 0.0f && trunk_in_wall(ctx, body_)) {
+      body_.x_ws = was_x;
+      move_body(sweep_body(ctx, body_, pose_.facing, shift, body_boxes_).dx, body_);
+    }
     turn_feet(ctx, spline_prototypes_, gait_, body_, step_.feet);
   }
   command_speed(planner(ctx, body_, gait_, step_.feet), intent.velocity, dt, landing, motion_);  //  5 body motion: speed

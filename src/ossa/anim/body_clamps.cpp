@@ -5,6 +5,7 @@
 
 #include "ossa/anim/anim_math.h"
 #include "ossa/anim/animator_params.h"
+#include "ossa/anim/body_motion.h"
 #include "ossa/anim/body_placement_internal.h"
 #include "ossa/anim/foothold.h"
 #include "ossa/anim/leg_geometry.h"
@@ -334,9 +335,10 @@ void pitch_for_front_shoulder(Placement& p) {
 // The trunk's bones (ribs, spine, neck, skull) cut no step either: how far the body must rise
 // (lifted by `lift` already) so that each keeps kTrunkKeepOfHip clear of the boxes it is in.
 // A bone needing kMaxTrunkRaiseOfHip or more meets a wall, which this clamp does not climb
-// (the wall sweep stops the body's hull and skull there, not its ribs: README Known limits).
+// (the wall sweep stops the body there: its hull, its skull, and a trunk bone lying more than
+// kMaxTrunkRaiseOfHip under a riser's top where it crosses it).
 // The bones as at rest, the body placed as now; the skull's kept level.
-constexpr float kTrunkKeepOfHip = 0.01f, kMaxTrunkRaiseOfHip = 0.5f;
+constexpr float kTrunkKeepOfHip = 0.01f;  // (kMaxTrunkRaiseOfHip: body_motion.h)
 // A single girdle's body turns up for its trunk at most this many times a tick.
 constexpr int kTrunkPitchPasses = 3;
 TrunkNeed trunk_need(const AnimContext& ctx, const BodyFrame& body, float lift, glm::vec2 pivot_ws) {

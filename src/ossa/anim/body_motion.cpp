@@ -22,6 +22,47 @@ constexpr float kLegLineMarginOfHip = 0.08f;
 // business); it meets walls RigScale::wall_margin early.
 constexpr float kSweepFloorOfHip = 0.3f;
 
+// How far (at most `move`, along dx's sign) the segment a-b goes before a part of it lying more
+// than `rise` under the top of a box comes over that box. Boxes no higher than `floor_y` (ground
+// the legs step up on) do not count, nor does one the segment is nearer leaving than entering.
+// A box reaching above the whole segment (a wall) is met `margin` early.
+float segment_advance(const Level& level, glm::vec2 a, glm::vec2 b, float dx, float move, float rise, float floor_y,
+                      float margin, std::vector<int>& hits) {
+  const float lo_y = std::min(a.y, b.y), hi_y = std::max(a.y, b.y);
+  const float lo_x = std::min(a.x, b.x), hi_x = std::max(a.x, b.x);
+  const float reach = move + margin;
+  hits.clear();
+  level.overlapping(Box{{lo_x - (dx < 0.0f ? reach : 0.0f), std::max(lo_y + rise, floor_y)},
+                        {hi_x + (dx > 0.0f ? reach : 0.0f), std::max(hi_y, std::max(lo_y + rise, floor_y) + 1e-3f)}},
+                    hits);
+  for (int index : hits) {
+    const Box& box = level.box(index);
+    const float under = box.top() - rise;  // the part of the segment lower than this meets the box
+    // The x-interval of the segment below `under` (the segment is straight).
+    float l0, l1;
+    if (a.y < under && b.y < under) {
+      l0 = lo_x;
+      l1 = hi_x;
+    } else if (a.y < under || b.y < under) {
+      const glm::vec2 low = a.y < under ? a : b, high = a.y < under ? b : a;
+      const float x = low.x + (high.x - low.x) * (under - low.y) / (high.y - low.y);
+      l0 = std::min(low.x, x);
+      l1 = std::max(low.x, x);
+    } else {
+      continue;
+    }
+    // Ahead of the part: it goes as far as the box's near face. Entering it already (a slanting
+    // rib at a riser's face, further in than out of it): no further. Nearer the far side: it
+    // goes on out of it.
+    const float gap = dx > 0.0f ? box.min_ws.x - l1 : l0 - box.max_ws.x;
+    const float out = dx > 0.0f ? box.max_ws.x - l0 : l1 - box.min_ws.x;
+    if (gap < 0.0f && -gap >= out) continue;
+    const float early = box.top() > hi_y ? margin : 0.0f;
+    move = std::min(move, std::max(0.0f, gap - early - 1e-4f));
+  }
+  return move;
+}
+
 // A box holding body_boxes(false, ·)'s single box, from the root and the hull's extent (no
 // hull points); false if fins or arms take part.
 bool body_bound_ws(const AnimRig& rig, const BodyFrame& body, const std::vector<Mat2x3>& model_fs, Box* bound) {
@@ -88,6 +129,31 @@ bool on_slope(const AnimContext& ctx, const BodyFrame& body, const RigLeg& info,
   }
   return leg_line_clears(ctx, body, anchor_fs, joint_fs, kLegLineMarginOfHip * ctx.rig.hip_height, info.foot_span,
                          std::max(info.lower, 1e-3f));
+}
+
+// The trunk's bones' rest bound (AnimRig::trunk_lo/trunk_hi) turned with the body, world space.
+Box trunk_bound_ws(const AnimRig& rig, const BodyFrame& body) {
+  Box box{glm::vec2(1e30f), glm::vec2(-1e30f)};
+  for (glm::vec2 c : {rig.trunk_lo, rig.trunk_hi, glm::vec2(rig.trunk_lo.x, rig.trunk_hi.y), glm::vec2(rig.trunk_hi.x, rig.trunk_lo.y)}) {
+    const glm::vec2 w = body.body_point_ws(rig, c + glm::vec2(0.0f, rig.root_rest_y));
+    box.min_ws = glm::min(box.min_ws, w);
+    box.max_ws = glm::max(box.max_ws, w);
+  }
+  return box;
+}
+
+// The trunk's bones (AnimRig::trunk: ribs below the spine's outline too; not the head, a slab
+// already) as a box each, the body rigid as at rest, put before the arms' reach boxes (which
+// come last): the sweep in the air takes them in (a rib cage falling past a wall's face).
+void add_trunk_boxes(const AnimRig& rig, const BodyFrame& body, std::vector<Box>* boxes) {
+  const size_t at = boxes->size() - std::min(boxes->size(), rig.arms.size());
+  thread_local std::vector<Box> trunk;
+  trunk.clear();
+  for (size_t i = 0; i < rig.trunk_level_from; ++i) {
+    const glm::vec2 a = body.body_point_ws(rig, rig.trunk[i].a), b = body.body_point_ws(rig, rig.trunk[i].b);
+    trunk.push_back(Box{glm::min(a, b), glm::max(a, b)});
+  }
+  boxes->insert(boxes->begin() + static_cast<std::ptrdiff_t>(at), trunk.begin(), trunk.end());
 }
 
 }  // namespace
@@ -170,17 +236,6 @@ void body_boxes(const AnimRig& rig, const BodyFrame& body, const std::vector<Mat
   if (open) boxes->push_back(box);
 }
 
-void add_trunk_boxes(const AnimRig& rig, const BodyFrame& body, std::vector<Box>* boxes) {
-  const size_t at = boxes->size() - std::min(boxes->size(), rig.arms.size());
-  thread_local std::vector<Box> trunk;
-  trunk.clear();
-  for (size_t i = 0; i < rig.trunk_level_from; ++i) {
-    const glm::vec2 a = body.body_point_ws(rig, rig.trunk[i].a), b = body.body_point_ws(rig, rig.trunk[i].b);
-    trunk.push_back(Box{glm::min(a, b), glm::max(a, b)});
-  }
-  boxes->insert(boxes->begin() + static_cast<std::ptrdiff_t>(at), trunk.begin(), trunk.end());
-}
-
 BodyMotionResult sweep_body(const AnimContext& ctx, const BodyFrame& body, const std::vector<Mat2x3>& model_fs, float dx,
                             std::vector<Box>& boxes, bool whole) {
   BodyMotionResult out;
@@ -227,9 +282,8 @@ BodyMotionResult sweep_body(const AnimContext& ctx, const BodyFrame& body, const
   if (whole && !rig.trunk.empty()) {
     // In the air every part is swept, and the rib cage hanging below the spine's outline
     // takes part as well (random creature 42's ribs went 1.8 cm into the far wall of
-    // drops.json's pit as it fell past the face). (On the ground it does not: the trunk clamp
-    // lifts the ribs over a step, and sweeping them stopped the eared seal half-way up
-    // stairs.json's flight.)
+    // drops.json's pit as it fell past the face). (On the ground the trunk's bones are swept
+    // below, as segments.)
     body_boxes(rig, body, model_fs, true, &boxes);
     add_trunk_boxes(rig, body, &boxes);
   } else {
@@ -278,6 +332,25 @@ BodyMotionResult sweep_body(const AnimContext& ctx, const BodyFrame& body, const
     if (t < 1.0f) {
       move = std::min(move, std::max(0.0f, t * std::fabs(dx) - 1e-4f));
       out.hit_wall = true;
+    }
+  }
+  // On the ground the trunk's bones below the spine's outline (the rib cage) meet what rises
+  // more than the trunk clamp lifts them over and more than the legs step up (random creature
+  // 22's 35 cm ribs, hanging below its 18 cm hips, ran 15 cm into the riser of stairs.json's
+  // top step). Swept as the hull is, from kSweepFloorOfHip above their lowest point, they
+  // stopped the eared seal half-way up the flight; a bone slanting over a step's corner needs
+  // lifting only where it crosses it.
+  if (!whole && rig.trunk_level_from > 0 && move > 0.0f) {
+    const Box bound = trunk_bound_ws(rig, body);
+    if (auto near = level.sweep_box(Box{bound.min_ws - margin_lo, bound.max_ws + margin_hi}, {dx, 0.0f}); near && near->t < 1.0f) {
+      const float pitch_slope = std::tan(body.pitch);
+      for (size_t i = 0; i < rig.trunk_level_from && move > 0.0f; ++i) {
+        const glm::vec2 a = body.body_point_ws(rig, rig.trunk[i].a), b = body.body_point_ws(rig, rig.trunk[i].b);
+        const float line = support + pitch_slope * facing * (std::min(a.x, b.x) - body.x_ws);
+        const float before = move;
+        move = segment_advance(level, a, b, dx, move, kMaxTrunkRaiseOfHip * hip, std::max(line, support) + step_up, m, ctx.hits);
+        if (move < before) out.hit_wall = true;
+      }
     }
   }
   // A legless body lies along the ground: each of its bones also meets, as a wall, a box that

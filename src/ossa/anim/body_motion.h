@@ -77,6 +77,11 @@ struct BodyMotionResult {
   bool hit_wall = false;   // the sweep met a wall (the creature is blocked)
 };
 
+// A trunk bone (AnimRig::trunk) lying more than this many hip heights under the top of a box
+// where it crosses it lies in a wall: the trunk clamp (body placement, clamp 5) lifts it out by
+// less, and on the ground the wall sweep stops the body before a bone comes so deep.
+inline constexpr float kMaxTrunkRaiseOfHip = 0.5f;
+
 // The wall sweep of dx. `boxes` is scratch. whole: every part from its bottom (in the air,
 // where no obstacle is the legs' business).
 BodyMotionResult sweep_body(const AnimContext& ctx, const BodyFrame& body, const std::vector<Mat2x3>& model_fs, float dx,
@@ -96,10 +101,5 @@ float limit_by_ledges(const AnimContext& ctx, const BodyFrame& body, const FootS
 // legless body), head, arms, fins (slabs = true), or one box around them all.
 void body_boxes(const AnimRig& rig, const BodyFrame& body, const std::vector<Mat2x3>& model_fs, bool slabs,
                 std::vector<Box>* boxes);
-// The trunk's bones (AnimRig::trunk: ribs below the spine's outline too; not the head, a slab
-// already) as a box each, the body rigid as at rest, put before the arms' reach boxes (which
-// come last). The sweep in the air and the push-back from a face (a fall, a standing or
-// blocked body) take them in: a rib cage falling past a wall's face.
-void add_trunk_boxes(const AnimRig& rig, const BodyFrame& body, std::vector<Box>* boxes);
 
 }  // namespace ossa::anim

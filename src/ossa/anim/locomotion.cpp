@@ -188,29 +188,68 @@ float push_back_from_face(const AnimContext& ctx, const BodyFrame& body, const s
   const AnimRig& rig = ctx.rig;
   if (rig.body_slabs.empty()) return 0.0f;
   body_boxes(rig, body, model_fs, true, &boxes);
-  add_trunk_boxes(rig, body, &boxes);
   // (The arms' reach boxes come last: the arms fold out of the way.)
   const size_t parts = boxes.size() - std::min(boxes.size(), rig.arms.size());
+  // The trunk's bones (the rib cage below the spine's outline) as segments: a box around a
+  // slanting rib reaches past the face by more than the rib does.
+  thread_local std::vector<glm::vec2> trunk;
+  trunk.clear();
+  for (size_t i = 0; i < rig.trunk_level_from; ++i) {
+    trunk.push_back(body.body_point_ws(rig, rig.trunk[i].a));
+    trunk.push_back(body.body_point_ws(rig, rig.trunk[i].b));
+  }
+  // The x-range of segment a-b within collider c's height (false: none, or not inside c).
+  auto within = [](glm::vec2 a, glm::vec2 b, const Box& c, float* x0, float* x1) {
+    float t0 = 0.0f, t1 = 1.0f;
+    if (a.y != b.y) {
+      const float u = (c.min_ws.y - a.y) / (b.y - a.y), v = (c.max_ws.y - a.y) / (b.y - a.y);
+      t0 = std::max(t0, std::min(u, v));
+      t1 = std::min(t1, std::max(u, v));
+    } else if (!(a.y > c.min_ws.y && a.y < c.max_ws.y)) {
+      return false;
+    }
+    if (!(t0 < t1)) return false;
+    *x0 = std::min(a.x + (b.x - a.x) * t0, a.x + (b.x - a.x) * t1);
+    *x1 = std::max(a.x + (b.x - a.x) * t0, a.x + (b.x - a.x) * t1);
+    return *x1 > c.min_ws.x && *x0 < c.max_ws.x;
+  };
   float push = 0.0f;
+  // Only a face ahead of the part (its near edge inside the part, its far side beyond), or
+  // ahead of the root with the part come down past it (a point: an arm's shoulder, the eared
+  // seal's, falling into drops.json's pit, came down 4.8 cm into the far wall).
+  auto meet = [&](const Box& c, float lo, float hi) {
+    const bool ahead = body.facing > 0 ? c.min_ws.x > std::min(lo, body.x_ws) : c.max_ws.x < std::max(hi, body.x_ws);
+    if (ahead) push = std::max(push, body.facing > 0 ? hi - c.min_ws.x : c.max_ws.x - lo);
+  };
   for (size_t k = 0; k < parts; ++k) {
     const Box& p = boxes[k];
     ctx.hits.clear();
     ctx.level.overlapping(p, ctx.hits);
+    for (int h : ctx.hits) meet(ctx.level.box(h), p.min_ws.x, p.max_ws.x);
+  }
+  for (size_t k = 0; k < trunk.size(); k += 2) {
+    ctx.hits.clear();
+    ctx.level.overlapping(Box{glm::min(trunk[k], trunk[k + 1]), glm::max(trunk[k], trunk[k + 1])}, ctx.hits);
+    float x0, x1;
     for (int h : ctx.hits) {
-      const Box& c = ctx.level.box(h);
-      // Only a face ahead of the part (its near edge inside the part, its far side beyond), or
-      // ahead of the root with the part come down past it (a point: an arm's shoulder, the
-      // eared seal's, falling into drops.json's pit, came down 4.8 cm into the far wall).
-      const bool ahead = body.facing > 0 ? c.min_ws.x > std::min(p.min_ws.x, body.x_ws) : c.max_ws.x < std::max(p.max_ws.x, body.x_ws);
-      if (ahead) push = std::max(push, body.facing > 0 ? p.max_ws.x - c.min_ws.x : c.max_ws.x - p.min_ws.x);
+      if (within(trunk[k], trunk[k + 1], ctx.level.box(h), &x0, &x1)) meet(ctx.level.box(h), x0, x1);
     }
   }
   if (!(push > 0.0f)) return 0.0f;
   push += 1e-3f;
   // Back there, nothing of the body may be in a box (a gap narrower than the body: it stays).
+  const glm::vec2 shift(-body.facing * push, 0.0f);
   for (size_t k = 0; k < parts; ++k) {
-    const glm::vec2 shift(-body.facing * push, 0.0f);
     if (ctx.level.first_overlap(Box{boxes[k].min_ws + shift, boxes[k].max_ws + shift})) return 0.0f;
+  }
+  for (size_t k = 0; k < trunk.size(); k += 2) {
+    const glm::vec2 a = trunk[k] + shift, b = trunk[k + 1] + shift;
+    ctx.hits.clear();
+    ctx.level.overlapping(Box{glm::min(a, b), glm::max(a, b)}, ctx.hits);
+    float x0, x1;
+    for (int h : ctx.hits) {
+      if (within(a, b, ctx.level.box(h), &x0, &x1)) return 0.0f;
+    }
   }
   return push;
 }

@@ -111,11 +111,11 @@ bool fly_along(const AnimContext& ctx, float dt, const BodyFrame& body, const st
 // ballistic one); a ceiling stops the rise. Sets loco.vy.
 float path_height(const AnimContext& ctx, const BodyFrame& body, const std::vector<Mat2x3>& model_fs, std::vector<Box>& boxes,
                   LocomotionState& loco);
-// A part of the body (its hull's slabs, the skull; `model_fs` the pose just made) that came
-// into a box ahead of it — falling, a head held over the far side of a gap the body falls
-// into; standing, a chest leant into the corner of a ledge — takes the body back, away from
-// that box's face, so far as it came in (world metres, >= 0; 0 when clear, or where the body
-// there would meet another box).
+// A part of the body (its hull's slabs, the skull, the trunk's bones as segments; `model_fs`
+// the pose just made) that came into a box ahead of it — falling, a head held over the far
+// side of a gap the body falls into; standing, a chest leant into the corner of a ledge —
+// takes the body back, away from that box's face, so far as it came in (world metres, >= 0; 0
+// when clear, or where the body there would meet another box).
 float push_back_from_face(const AnimContext& ctx, const BodyFrame& body, const std::vector<Mat2x3>& model_fs, std::vector<Box>& boxes);
 // How far the legs reach for the ground, in [0, 1]: tucked while rising or high above it.
 float reach_extension(const AnimContext& ctx, const BodyFrame& body, const LocomotionState& loco);
