@@ -305,11 +305,11 @@ MotionReport run(const std::string& name, int dir) {
 
   MotionReport r;
   r.height_m = bounds.max_ws.y - bounds.min_ws.y;
-  // After the jump: its crouch, its flight (a jump rises a hip height h: 2·√(2h/g)) and 0.5 s
-  // more — 1.4 s for the 2 m frame's 0.8 m hips, 2.8 s for the brachiosaurus' 3.2 m at its
-  // true size.
-  const float h = a.params().jump_height * a.hip_height();
-  const float after = std::max(1.4f, a.params().jump_crouch_time * std::sqrt(h / 9.81f) + 2.0f * std::sqrt(2.0f * h / 9.81f) + 0.5f);
+  // After the jump: its crouch (√ of the hip height), its flight (a jump rises h: 2·√(2h/g))
+  // and 0.5 s more — 1.4 s for the 2 m frame's 0.8 m hips, 2.8 s for the brachiosaurus' 3.2 m
+  // at its true size.
+  const float h = anim::jump_rise(a.rig(), a.params());
+  const float after = std::max(1.4f, a.params().jump_crouch_time * std::sqrt(a.hip_height() / 9.81f) + 2.0f * std::sqrt(2.0f * h / 9.81f) + 0.5f);
   const std::string script = (dir > 0 ? "walk:0.6:0.3,run:1:0.3,jump,run:1:" : "walk:-0.6:0.3,run:-1:0.3,jump,run:-1:") + std::to_string(after);
   run_script(player, level, parse_script(script).value(), kTickHz, [&](long long tick) {
     if (a.airborne()) r.airborne = true;

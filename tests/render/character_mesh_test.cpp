@@ -233,7 +233,7 @@ TEST_CASE("both characters walk off each ledge of drops.json, land clean and jum
           probe.observe(a, level);
         }
         CHECK(a.locomotion_stats().jumps == 1);
-        CHECK(a.locomotion_stats().max_jump_height_m == Approx(a.params().jump_height * a.hip_height()).epsilon(0.02));
+        CHECK(a.locomotion_stats().max_jump_height_m == Approx(anim::jump_rise(a.rig(), a.params())).epsilon(0.02));
         CHECK(a.locomotion() == Locomotion::kGrounded);
         CHECK(probe.max_limb_penetration_m <= 0.001f);
       }

@@ -86,7 +86,7 @@ Animator::BlockReport Animator::block_report() const {
   r.blocked = motion_.block.blocked || motion_.block.trial > 0.0f;
   r.climb_m = params_.max_step_up * rig_->climb_height;
   r.step_down_m = params_.max_step_down * rig_->hip_height;
-  r.jump_m = params_.jump_height * rig_->hip_height;
+  r.jump_m = jump_rise(*rig_, params_);
   if (!r.blocked || ground_.size() == 0) return r;
   // Its feet: the leading girdle's lowest standing foot (those that must climb: the hind feet
   // may still stand a step lower), else any standing one, else where its hip height puts them.

@@ -154,7 +154,7 @@ class Animator {
     float drop_m = 0.0f;    // the deepest ground ahead below them (INFINITY: a gap)
     float climb_m = 0.0f;   // the highest step its legs climb (params().max_step_up)
     float step_down_m = 0.0f;  // the deepest step down its legs take (params().max_step_down)
-    float jump_m = 0.0f;    // how high its jump rises (params().jump_height)
+    float jump_m = 0.0f;    // how high its jump rises (jump_rise, locomotion.h)
   };
   BlockReport block_report() const;
   int steps() const { return step_.steps; }            // touch-downs so far

@@ -59,8 +59,9 @@ struct AnimatorParams {
   float fin_beat = 0.12f;
   // Period of the idle breathing (prototype idle_y), seconds. [0.5, 10].
   float idle_period = 2.4f;
-  // Jump (DESIGN.md §7): the root rises this many hip heights above where it takes off.
-  // [0.1, 4].
+  // Jump (DESIGN.md §7): the root rises this many hip heights above where it takes off, and
+  // a creature smaller than kLeastJumpRiseM at the hip this many times that (jump_rise,
+  // locomotion.h). [0.1, 4].
   float jump_height = 1.0f;
   // The crouch before a jump lowers the girdles by this many hip heights; it lasts
   // jump_crouch_time √(hip height / g) seconds, so it follows the creature's size. [0, 0.5]

@@ -51,9 +51,11 @@ float reach_extension(const AnimContext& ctx, const BodyFrame& body, const Locom
 }
 
 
-float jump_speed(const AnimRig& rig, const AnimatorParams& params) {
-  return std::sqrt(2.0f * params.gravity * std::max(params.jump_height, 0.0f) * rig.hip_height);
+float jump_rise(const AnimRig& rig, const AnimatorParams& params) {
+  return std::max(params.jump_height, 0.0f) * std::max(rig.hip_height, kLeastJumpRiseM);
 }
+
+float jump_speed(const AnimRig& rig, const AnimatorParams& params) { return std::sqrt(2.0f * params.gravity * jump_rise(rig, params)); }
 
 void begin_crouch(const AnimRig& rig, const AnimatorParams& params, LocomotionState& loco) {
   loco.mode = Locomotion::kCrouch;

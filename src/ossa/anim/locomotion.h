@@ -64,7 +64,13 @@ struct LocomotionState {
   LocomotionStats stats;
 };
 
-// The vertical take-off speed that lifts the root params.jump_height hip heights, m/s.
+// How high a jump lifts the root, metres: params.jump_height hip heights, and a small
+// creature's at least params.jump_height × kLeastJumpRiseM (Borelli's law: animals of any size
+// jump about as high, a flea, a locust or a rabbit some tenths of a metre, as their muscle's
+// work grows with their mass; large ones jump about their hip height).
+inline constexpr float kLeastJumpRiseM = 0.5f;
+float jump_rise(const AnimRig& rig, const AnimatorParams& params);
+// The vertical take-off speed that lifts the root jump_rise, m/s.
 float jump_speed(const AnimRig& rig, const AnimatorParams& params);
 
 // The jump button, grounded: the crouch begins; its depth and length follow the creature's

@@ -32,7 +32,7 @@ std::span<const TuningField> tuning_fields() {
       {"crawl_waves", "waves/body", 0.25f, 4.0f, &P::crawl_waves, "waves along a legless body"},
       {"fin_beat", "rad", 0.0f, 0.5f, &P::fin_beat, "amplitude of a fin's slow beat while moving"},
       {"idle_period", "s", 0.5f, 10.0f, &P::idle_period, "period of the idle breathing"},
-      {"jump_height", "x hip", 0.1f, 4.0f, &P::jump_height, "how high a jump lifts the body, in hip heights"},
+      {"jump_height", "x hip", 0.1f, 4.0f, &P::jump_height, "how high a jump lifts the body, in hip heights (a small creature's: at least this many half metres)"},
       {"jump_crouch", "x hip", 0.0f, 0.5f, &P::jump_crouch, "how low the body crouches before a jump"},
       {"jump_crouch_time", "x sqrt(h/g)", 0.5f, 4.0f, &P::jump_crouch_time, "how long the crouch lasts (follows the size)"},
       {"landing_compression", "x hip", 0.0f, 0.5f, &P::landing_compression, "how far the legs give landing from one hip height"},
