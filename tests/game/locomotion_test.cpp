@@ -395,6 +395,40 @@ TEST_CASE("a rib cage hanging below the hips meets a riser it cannot be lifted o
   check_clean(r, "random 22 on stairs.json");
 }
 
+TEST_CASE("a foot coming down beside a riser with its toe in it sets down where the whole foot fits", "[game][anim][locomotion]") {
+  // Random creature 11 (hip 25 cm, hind feet 16 cm long standing on their heels) jumps half a
+  // metre on rough.json and comes down with a hind foot's heel over one block and its toe over
+  // the next, higher block, already 6.3 mm inside its riser: the touch-down planted it on the
+  // ground under its heel, the toe left in the riser. It now sets down where the whole foot
+  // fits. Every hind-foot bone within 1 mm of every box on every tick (exact per segment; the
+  // run's deepest bone, a foreleg's shin stepping up a block's corner by 1.6 mm, is another
+  // matter: README Known limits).
+  const Level level = load_level(scenes::source_path("levels/rough.json")).value();
+  Player player(std::make_shared<const Creature>(build_creature(scenes::generator().random(11)).value()), SplinePrototypes::defaults());
+  Animator& a = player.animator();
+  a.reset(level.spawn_ws + glm::vec2(0.0f, 1.0f), level);
+  const Skeleton& sk = a.rig().skeleton;
+  std::vector<int> feet, all(static_cast<size_t>(level.size()));
+  for (int b = 0; b < sk.bone_count(); ++b) {
+    if (sk.name(b).starts_with("leg_hand_hip")) feet.push_back(b);
+  }
+  for (int i = 0; i < level.size(); ++i) all[static_cast<size_t>(i)] = i;
+  REQUIRE(feet.size() == 2);
+  float deepest = 0.0f, at = 0.0f;
+  const SimResult r = run_script(player, level, parse_script("walk:0.6:8,run:1:6,stop:1,walk:-0.6:6,jump,walk:0.5:3").value(), 120,
+                                 [&](long long tick) {
+                                   const std::vector<Mat2x3>& world = a.world_matrices();
+                                   for (int b : feet) {
+                                     const float d = segment_penetration(level, bone_start(world[b]), bone_end(world[b], sk.length(b)), all);
+                                     if (d > deepest) deepest = d, at = static_cast<float>(tick + 1) * kDt;
+                                   }
+                                 });
+  INFO("deepest hind foot " << deepest << " m at " << at << " s");
+  REQUIRE(r.locomotion.jumps == 1);
+  CHECK(r.locomotion.max_jump_height_m > 0.45f);
+  CHECK(deepest <= 0.001f);
+}
+
 TEST_CASE("a standing body pushed back from a face keeps its feet in reach", "[game][anim][locomotion]") {
   // The brachiosaurus runs up to drops.json's end wall and stands blocked, its neck over the
   // wall. Retrying the way ahead every half second it steps its body forward, and the push-back

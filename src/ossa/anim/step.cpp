@@ -382,7 +382,12 @@ int update_air_feet(const AnimContext& ctx, const BodyFrame& body, float extensi
       if (auto hit = ground_below(ctx.level, next.x + span.lo, next.x + span.hi, from, from - next.y + 1e-3f);
           hit && hit->height_ws >= next.y - 1e-3f) {
         if ((hit->height_ws < f.floor || across) && may_land && stance_reaches(ctx, body, leg, {next.x, hit->height_ws})) {
-          plant(ctx, f, {next.x, hit->height_ws});
+          // A foot come down beside a riser with its toe or heel already in it (random 11's hind
+          // toe, 6.3 mm, after a jump on rough.json) sets down where the whole foot fits.
+          glm::vec2 at(next.x, hit->height_ws), spot;
+          const FootholdInputs fit{ctx, body};
+          if (!foot_fits(fit, leg, at) && nearest_fit(fit, leg, at, &spot, true) && stance_reaches(ctx, body, leg, spot)) at = spot;
+          plant(ctx, f, at);
           ++planted;
           continue;
         }
