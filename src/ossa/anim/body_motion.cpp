@@ -38,19 +38,8 @@ float segment_advance(const Level& level, glm::vec2 a, glm::vec2 b, float dx, fl
   for (int index : hits) {
     const Box& box = level.box(index);
     const float under = box.top() - rise;  // the part of the segment lower than this meets the box
-    // The x-interval of the segment below `under` (the segment is straight).
-    float l0, l1;
-    if (a.y < under && b.y < under) {
-      l0 = lo_x;
-      l1 = hi_x;
-    } else if (a.y < under || b.y < under) {
-      const glm::vec2 low = a.y < under ? a : b, high = a.y < under ? b : a;
-      const float x = low.x + (high.x - low.x) * (under - low.y) / (high.y - low.y);
-      l0 = std::min(low.x, x);
-      l1 = std::max(low.x, x);
-    } else {
-      continue;
-    }
+    float l0, l1;  // the x-range of the segment below `under`
+    if (!segment_x_within(a, b, -INFINITY, under, &l0, &l1)) continue;
     // Ahead of the part: it goes as far as the box's near face. Entering it already (a slanting
     // rib at a riser's face, further in than out of it): no further. Nearer the far side: it
     // goes on out of it.

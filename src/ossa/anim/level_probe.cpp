@@ -125,6 +125,22 @@ float keep_out_height(const Level& level, float x, float half, float keep, float
   return need;
 }
 
+bool segment_x_within(glm::vec2 a, glm::vec2 b, float y0, float y1, float* x0, float* x1) {
+  float t0 = 0.0f, t1 = 1.0f;
+  if (a.y != b.y) {
+    const float u = (y0 - a.y) / (b.y - a.y), v = (y1 - a.y) / (b.y - a.y);
+    t0 = std::max(t0, std::min(u, v));
+    t1 = std::min(t1, std::max(u, v));
+  } else if (!(a.y > y0 && a.y < y1)) {
+    return false;
+  }
+  if (!(t0 < t1)) return false;
+  const float xa = a.x + (b.x - a.x) * t0, xb = a.x + (b.x - a.x) * t1;
+  *x0 = std::min(xa, xb);
+  *x1 = std::max(xa, xb);
+  return true;
+}
+
 float raise_to_clear(glm::vec2 a, glm::vec2 b, const Level& level, std::vector<int>& hits, float max_top) {
   // Over the part of the box's width the segment spans, its lowest point to the box's top.
   hits.clear();

@@ -50,6 +50,10 @@ bool polyline_hits_level(const Level& level, const glm::vec2* p, int n, std::vec
 float keep_out_height(const Level& level, float x, float half, float keep, float fade, float from_y, float max_drop,
                       std::vector<int>& hits);
 
+// The x-range [*x0, *x1] of the part of segment a-b whose height lies in (y0, y1); false when
+// none does.
+bool segment_x_within(glm::vec2 a, glm::vec2 b, float y0, float y1, float* x0, float* x1);
+
 // How far the segment a-b must rise (straight up) to leave every box it cuts whose top is no
 // higher than max_top (a higher one is a wall, which rising does not clear).
 float raise_to_clear(glm::vec2 a, glm::vec2 b, const Level& level, std::vector<int>& hits, float max_top = INFINITY);

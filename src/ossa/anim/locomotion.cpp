@@ -200,20 +200,9 @@ float push_back_from_face(const AnimContext& ctx, const BodyFrame& body, const s
     trunk.push_back(body.body_point_ws(rig, rig.trunk[i].a));
     trunk.push_back(body.body_point_ws(rig, rig.trunk[i].b));
   }
-  // The x-range of segment a-b within collider c's height (false: none, or not inside c).
+  // Is segment a-b inside collider c? Its x-range there in *x0, *x1.
   auto within = [](glm::vec2 a, glm::vec2 b, const Box& c, float* x0, float* x1) {
-    float t0 = 0.0f, t1 = 1.0f;
-    if (a.y != b.y) {
-      const float u = (c.min_ws.y - a.y) / (b.y - a.y), v = (c.max_ws.y - a.y) / (b.y - a.y);
-      t0 = std::max(t0, std::min(u, v));
-      t1 = std::min(t1, std::max(u, v));
-    } else if (!(a.y > c.min_ws.y && a.y < c.max_ws.y)) {
-      return false;
-    }
-    if (!(t0 < t1)) return false;
-    *x0 = std::min(a.x + (b.x - a.x) * t0, a.x + (b.x - a.x) * t1);
-    *x1 = std::max(a.x + (b.x - a.x) * t0, a.x + (b.x - a.x) * t1);
-    return *x1 > c.min_ws.x && *x0 < c.max_ws.x;
+    return segment_x_within(a, b, c.min_ws.y, c.max_ws.y, x0, x1) && *x1 > c.min_ws.x && *x0 < c.max_ws.x;
   };
   float push = 0.0f;
   // Only a face ahead of the part (its near edge inside the part, its far side beyond), or
