@@ -2,6 +2,7 @@
 // through Player on levels/drops.json and small levels of our own.
 
 #include <catch2/catch.hpp>
+#include <algorithm>
 
 #include <cmath>
 #include <initializer_list>
@@ -28,7 +29,7 @@ constexpr float kDt = 1.0f / 120.0f;
 // Of the 250 runs of "random creatures walk and run then turn back and jump on every shipped level", how
 // many put a bone more than 1 mm into a box, slide a stance foot by more or stand it further
 // from its foothold (measured 2026-11-28; lower it as the animator gets better).
-constexpr int kRandomRunsOver1mm = 10;
+constexpr int kRandomRunsOver1mm = 9;
 
 Level drops() { return load_level(scenes::source_path("levels/drops.json")).value(); }
 
@@ -99,8 +100,10 @@ void check_clean(std::initializer_list<ShippedRun> runs) {
 
 TEST_CASE("every example animal walks off each ledge of drops.json and lands clean", "[game][anim][locomotion]") {
   // The ledges drop 0.3, 1, 2 and 4 m at x 6, 12, 18 and 26. Each animal starts a little before
-  // each edge, walks over it and on until its whole body is past the edge and it stands on the
-  // ground below: no limb more than 1 mm in a box, no NaN. (Stance slip is reported by
+  // each edge (its hind girdle no further back than over the level's start: the brachiosaurus
+  // placed 0.6 m before x 6 stood over the 10 m start wall, its hind feet beyond the level),
+  // walks over it and on until its whole body is past the edge and it stands on the ground
+  // below: no limb more than 1 mm in a box, no NaN. (Stance slip is reported by
   // ossa-sim on drops.json; a landing may still slide a foot: README, Known limits.)
   const Level level = drops();
   const float edges[] = {6.0f, 12.0f, 18.0f, 26.0f};
@@ -110,7 +113,8 @@ TEST_CASE("every example animal walks off each ledge of drops.json and lands cle
     for (int e = 0; e < 4; ++e) {
       Player player(creature, SplinePrototypes::defaults());
       Animator& a = player.animator();
-      a.reset({edges[e] - 0.6f - a.rig().body_front, tops[e] + 0.5f}, level);
+      const float hind_x = a.rig().girdles.empty() ? 0.0f : a.rig().girdles.back().joint_ms.x;
+      a.reset({std::max(edges[e] - 0.6f - a.rig().body_front, 0.5f - hind_x), tops[e] + 0.5f}, level);
       SimProbe probe;
       const float past = edges[e] + a.rig().body_front - a.rig().body_back + 0.3f;
       int grounded = 0;
@@ -136,18 +140,19 @@ TEST_CASE("every example animal turns back at drops.json's 1 m ledge with its fe
   // skull, tail) enters a box meanwhile. A body pitched down the ledge turns along it (turned
   // about its root at the pitch it had, the stegosaurus standing with its forefeet down the
   // 2 m ledge swung them down over the edge and slid a stance foot 86 cm; the rock hyrax in the
-  // 2 m frame put its ribs 22 cm into the 1 m ledge, the dimetrodon 14 cm).
+  // 2 m frame put its ribs 22 cm into the 1 m ledge, the dimetrodon 14 cm). A forefoot standing
+  // out over the ledge's edge, its heel on the top, no longer reads the ground below the edge
+  // as the slope it walks on (find_landing): the frog in the 2 m frame (hip 0.57 m) stepped it
+  // down the 1 m ledge, its body pitched down after it and its ribs went 23 cm into the ledge.
   // Each of these is held to what it does now (README Known limits):
   // - the thrinaxodon (hip 9 cm) stops at the 0.3 m ledge (deeper than it steps down) and on
   //   the turn's tick puts a hind foot 6 mm into the ledge it stands on;
   // - the ichthyornis stands a foot 7.6 mm short of its foothold;
-  // - the tyrannosaurus, back over the ledges to the level's start, a rib 2.2 cm into its wall;
-  // - the frog in the 2 m frame (hip 0.57 m), pitched down the 1 m ledge, its ribs 23 cm.
+  // - the tyrannosaurus, back over the ledges to the level's start, a rib 2.2 cm into its wall.
   struct Limit { const char* name; bool true_size; float slip, bone, gap; };
   const Limit limits[] = {{"thrinaxodon", true, 0.001f, 0.0065f, 0.001f},
                           {"ichthyornis", true, 0.001f, 0.001f, 0.008f},
-                          {"tyrannosaurus", true, 0.001f, 0.023f, 0.001f},
-                          {"frog", false, 0.001f, 0.23f, 0.001f}};
+                          {"tyrannosaurus", true, 0.001f, 0.023f, 0.001f}};
   const Level level = drops();
   for (const bool true_size : {true, false}) {
     for (const std::string& name : sampled_animals("game:turn back")) {
@@ -379,6 +384,42 @@ TEST_CASE("a jump that falls short of a ledge lands its feet on the ledge's edge
   CHECK(r.locomotion.respawns == 0);
   CHECK(r.x_reached > 41.0f);  // on the far ledge
   check_clean(r, "random 41 on drops.json");
+}
+
+TEST_CASE("a body whose forefeet step down a ledge turns up about its hind feet until its trunk clears the edge",
+          "[game][anim][locomotion]") {
+  // The tortoise's shell hangs low between its girdles. Stepping its forefeet down
+  // drops.json's 0.3 m ledge, its body pitched down after them and the front of the shell came
+  // down on the ledge's corner; the trunk clamp could not lift it, the hind legs on the top
+  // being stretched already, and it went 1.2 cm in (2.1 cm once the forefoot no longer read the
+  // ground below the edge as a slope). With its forefeet off the ground the body is held by its
+  // hind girdle alone and turns up about it, as a single girdle's does.
+  const SimResult r = run_from_spawn("tortoise", drops(), "walk:0.6:30");
+  INFO("furthest x " << r.x_max_m << "; deepest " << r.probe.deepest_bone << " at " << r.probe.deepest_at_s << " s");
+  CHECK(r.x_max_m > 7.0f);  // down the ledge at x 6
+  check_clean(r, "the tortoise on drops.json");
+}
+
+TEST_CASE("a creature turned back from a ledge its forefeet hung over keeps its hips over the ledge", "[game][anim][locomotion]") {
+  // The dimetrodon (hip 0.56 m) stops at drops.json's 1 m ledge with its forefeet hanging over
+  // the drop, and turns back: those feet, now its hind feet, hang on tucked until they meet the
+  // ledge's top. They drew their girdle down towards the ground below the drop, as feet
+  // stepping off it do: the hips sank 0.47 m in a tenth of a second and a rib went into the
+  // ledge's corner. A tucked foot now holds its girdle nowhere.
+  const Level level = drops();
+  Player player(example("dimetrodon"), SplinePrototypes::defaults());
+  Animator& a = player.animator();
+  a.reset(level.spawn_ws + glm::vec2(0.0f, 1.0f), level);
+  const float hip = a.rig().hip_height;
+  float lowest = 1e30f, at = 0.0f;
+  const SimResult r = run_script(player, level, parse_script("walk:0.5:6,stop:1,walk:-0.6:6").value(), 120, [&](long long tick) {
+    const float t = static_cast<float>(tick + 1) * kDt;
+    if (t > 6.5f && t < 9.0f && a.root_y() < lowest) lowest = a.root_y(), at = t;
+  });
+  INFO("lowest root " << lowest << " m at " << at << " s; deepest " << r.probe.deepest_bone << " at " << r.probe.deepest_at_s << " s");
+  CHECK(r.x_max_m > 11.5f);  // it reached the ledge at x 12
+  CHECK(lowest > 7.0f + 0.75f * hip);  // the ledge's top is at 7 m
+  check_clean(r, "the dimetrodon turned back at drops.json's 1 m ledge");
 }
 
 TEST_CASE("a rib cage hanging below the hips meets a riser it cannot be lifted over", "[game][anim][locomotion]") {

@@ -99,6 +99,7 @@ struct GirdleJointFs {
 // their invariants, checked by foot_consistent():
 //   air (hanging, no landing)  ⇒ state == kSwing, not easing, hover == 0;
 //   hang_beyond is a number    ⇒ air (a foot stepping off a ledge);
+//   tucked                     ⇒ air;
 //   easing                     ⇒ state == kSwing.
 struct FootState {
   LegState state = LegState::kStance;
@@ -121,6 +122,8 @@ struct FootState {
   bool air = false;
   glm::vec2 air_offset{0.0f};       // metres (_ws)
   float hang_beyond = NAN;          // stepping off: the world x the hanging foot reaches past
+  bool tucked = false;              // hung over a drop, tucked up at a turn that took its girdle
+                                    // back over the ledge: it draws the girdle down nowhere
   float floor = 1e30f;              // a fall's feet are planted only on ground below this (_ws)
   float stood_y = NAN;               // the height it last stood at (_ws), for note_ledge
   // Stepped down off a ledge this high, more than a step up (_ws; NaN: none): while a foot still

@@ -339,7 +339,7 @@ void pitch_for_front_shoulder(Placement& p) {
 // kMaxTrunkRaiseOfHip under a riser's top where it crosses it).
 // The bones as at rest, the body placed as now; the skull's kept level.
 constexpr float kTrunkKeepOfHip = 0.01f;  // (kMaxTrunkRaiseOfHip: body_motion.h)
-// A single girdle's body turns up for its trunk at most this many times a tick.
+// A body held by its hind girdle alone turns up for its trunk at most this many times a tick.
 constexpr int kTrunkPitchPasses = 3;
 TrunkNeed trunk_need(const AnimContext& ctx, const BodyFrame& body, float lift, glm::vec2 pivot_ws) {
   const AnimRig& rig = ctx.rig;
@@ -388,7 +388,8 @@ TrunkNeed trunk_need(const AnimContext& ctx, const BodyFrame& body, float lift, 
 // pull it down further than the queries look up). Shoulders carrying arms, wings or fins too,
 // and folded wings do not cut a step's corner (a wall, too high to rise over, is the wall
 // sweep's business). Nor do the trunk's own bones (trunk_need), as far as the stance legs reach;
-// a single girdle's body turns up about it for the rest.
+// a body its hind girdle alone holds up (a single girdle's, or one whose other girdles' feet
+// are all off the ground) turns up about it for the rest.
 void keep_body_out_of_ground(Placement& p, float fell, const std::vector<float>& room) {
   const AnimRig& rig = p.ctx.rig;
   // The trunk rises no further than every stance foot stays in reach (a body pitched down a
@@ -440,14 +441,19 @@ void keep_body_out_of_ground(Placement& p, float fell, const std::vector<float>&
   }
   const glm::vec2 pivot = p.body.girdle_ws(rig, static_cast<int>(rig.girdles.size()) - 1);
   TrunkNeed trunk = trunk_need(p.ctx, p.body, raise, pivot);
-  for (int pass = 0; pass < kTrunkPitchPasses && trunk.raise > least_room - raise && rig.girdles.size() == 1 && trunk.pitch > 0.0f;
+  // A body held by its hind girdle alone turns up about it too: a single girdle's, or one whose
+  // other girdles have no foot on the ground (a quadruped's forefeet stepping down a ledge).
+  bool hind_holds = true;
+  for (size_t g = 0; g + 1 < rig.girdles.size(); ++g) hind_holds = hind_holds && !(room[g] < 1e29f);
+  for (int pass = 0; pass < kTrunkPitchPasses && trunk.raise > least_room - raise && hind_holds && trunk.pitch > 0.0f;
        ++pass) {
-    // More than the legs allow: a single girdle's body turns up about it instead (a biped's
-    // chest over the stairs ahead), the feet where they were. The turn for the deepest bone
+    // More than the legs allow: the body turns up about the hind girdle instead (a biped's
+    // chest over the stairs ahead, a tortoise's shell over the corner of the ledge its forefeet
+    // step down: 2.1 cm in), the feet where they were. The turn for the deepest bone
     // may leave another in (a rib further back, which the turn raises less): again, up to
     // kTrunkPitchPasses turns (one left random creature 42's ribs 1-2 cm in the stair tops and
     // the tyrannosaurus's 2.2 cm in drops.json's start wall).
-    const glm::vec2 rel = rig.girdles.front().joint_ms - glm::vec2(0.0f, rig.root_rest_y);
+    const glm::vec2 rel = rig.girdles.back().joint_ms - glm::vec2(0.0f, rig.root_rest_y);
     const float girdle_y = p.body.rotate_body(rel).y;
     const float was = p.body.pitch;
     p.body.pitch = std::min(p.body.pitch + trunk.pitch, std::max(kMaxPitch, p.body.pitch));

@@ -38,7 +38,11 @@ void girdle_heights(Placement& p, std::vector<float>& height) {
       if (f.air) {
         // Hanging over a drop: the ground a leg's reach and a half below it, if any, draws the
         // girdle down to it and a little lower, so the foot reaches it (a drop the legs can
-        // step down); else it holds nothing up.
+        // step down); else it holds nothing up. Nor does a foot tucked up at a turn: its girdle
+        // goes back over the ledge it hung from (the dimetrodon, turned back at drops.json's
+        // 1 m ledge, pitched its hips 0.5 m down into the drop and its ribs into the ledge's
+        // corner before the tucked feet met the top).
+        if (f.tucked) continue;
         const float r = rig.legs[leg].contact_reach;
         const float span = 0.5f * rig.scale.ground_span;
         if (auto below = ground_below(p.ctx.level, f.pos_ws.x - span, f.pos_ws.x + span, std::min(f.pos_ws.y, f.floor), kHangGroundOfReach * r)) {

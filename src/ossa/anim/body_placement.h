@@ -16,7 +16,8 @@
 //   4. pitch_for_front_shoulder    a single girdle's shoulder far ahead turns the body up;
 //   5. keep_body_out_of_ground     girdles, shoulders and folded wings stay above the ground,
 //                                  and the trunk's bones (ribs, neck, skull) as far as the
-//                                  stance legs reach (a single girdle's body turns up);
+//                                  stance legs reach (a body its hind girdle alone holds
+//                                  up turns up about it);
 //   6. release_overstretched_feet  a stance leg the raising clamps stretched past its reach
 //                                  lifts at the next chance (TickHandoff::release_next).
 // The other stages move the body only through the transitions below, each where

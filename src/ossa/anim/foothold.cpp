@@ -227,6 +227,15 @@ bool find_landing(const FootholdInputs& in, int leg, glm::vec2 foot_ws, float x_
   // A foot left down a ledge its body stands on (step_limits) looks for a landing back up on
   // the ledge first (ground within a step of it), and only then below it.
   const bool ledge = top > foot_ws.y + up;
+  // The slope is walked from the ground under the foot's contact, which must be the ground the
+  // foot stands on: a contact out over a ledge's edge, its heel on the top, read the ground
+  // below the edge as its slope (the frog's forefoot stepped 1 m down drops.json's ledge, a
+  // 10 g bird's foot at a riser's foot up a riser taller than its step). Asked once, if at all.
+  int slope_from_foot = -1;
+  auto on_slope = [&] {
+    if (slope_from_foot < 0) slope_from_foot = std::fabs(in.ctx.ground.surface_line(foot_ws.x, reading) - foot_ws.y) <= up;
+    return slope_from_foot == 1;
+  };
   for (int pass = ledge ? 0 : 1; pass < 2; ++pass) {
     const float floor_y = pass == 0 ? top - 2.0f * up : -1e30f;
     for (int k = 0; k <= kLandingCandidates; ++k) {
@@ -246,7 +255,7 @@ bool find_landing(const FootholdInputs& in, int leg, glm::vec2 foot_ws, float x_
       // (Asked only when the plain step limits find no ground there.)
       float slope_top = top, bottom = lowest;
       auto hit = ground_below(in.ctx.level, x + span_lo, x + span_hi, top, top - lowest);
-      if (!hit) {
+      if (!hit && on_slope()) {
         const float along = in.ctx.ground.slope_top(foot_ws.x, x + span_lo, x + span_hi, reading);
         if (!std::isnan(along)) {
           slope_top = std::max(top, along + up);

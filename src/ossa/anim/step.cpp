@@ -67,6 +67,7 @@ void hang(const AnimContext& ctx, const BodyFrame& body, int leg, float extensio
   f.hover = 0.0f;
   f.progress = 0.0f;
   f.air_offset = f.pos_ws - target;
+  f.tucked = false;
   f.from_ws = f.to_ws = f.pos_ws;
   f.swing_clear = Clearance{};  // knows nothing: the leg IK tests the hanging leg against the level
 }
@@ -80,6 +81,7 @@ void plant(const AnimContext& ctx, FootState& f, glm::vec2 p) {
   f.easing = false;
   f.hover = 0.0f;
   f.hang_beyond = NAN;
+  f.tucked = false;
   note_ledge(ctx, f, f.floor < 1e29f ? f.floor + ctx.rig.scale.ledge_gap : NAN);
   f.floor = 1e30f;
   update_stance_clearance(ctx, f);
@@ -88,12 +90,13 @@ void plant(const AnimContext& ctx, FootState& f, glm::vec2 p) {
 void unhang(FootState& f) {
   f.air = false;
   f.hang_beyond = NAN;
+  f.tucked = false;
   f.from_ws = f.to_ws = f.pos_ws;
 }
 
 bool foot_consistent(const FootState& f) {
   if (f.air && (f.state != LegState::kSwing || f.easing || f.hover != 0.0f)) return false;
-  if (!std::isnan(f.hang_beyond) && !f.air) return false;
+  if ((!std::isnan(f.hang_beyond) || f.tucked) && !f.air) return false;
   return !(f.easing && f.state != LegState::kSwing);
 }
 
@@ -447,6 +450,11 @@ void set_down_after_landing(const AnimContext& ctx, const BodyFrame& body, const
   for (size_t i = 0; i < ctx.rig.legs.size(); ++i) {
     FootState& f = step.feet.of_leg(static_cast<int>(i));
     if (!f.air) continue;
+    // A foot with no ground to step to hangs on (a hind foot in drops.json's gap, the forefeet
+    // on the far ledge: set down where it hung, it stood on nothing, and the horse stood blocked
+    // over the gap); it reaches for the ground as the body moves on (update_air_feet).
+    glm::vec2 landing;
+    if (!find_landing(in, static_cast<int>(i), f.pos_ws, f.pos_ws.x, &landing)) continue;
     unhang(f);
     start_ease(in, static_cast<int>(i), f);
   }

@@ -105,7 +105,8 @@ void leave_ground(const AnimContext& ctx, const BodyFrame& body, bool jump, floa
 // reach_extension), and those that meet it on the way down are planted (handoff.planted).
 void push_off_and_reach(const AnimContext& ctx, const BodyFrame& body, float vy, float extension, float dt,
                         TickHandoff& handoff, StepState& step);
-// The landing is over: feet that found no ground as the body came down set down where they can.
+// The landing is over: feet that found no ground as the body came down set down where they can;
+// one with no ground to step to hangs on.
 void set_down_after_landing(const AnimContext& ctx, const BodyFrame& body, const GaitState& gait, StepState& step);
 
 // Feet hanging in the air follow their targets and are planted where they meet the top of a

@@ -89,6 +89,7 @@ void turn_feet(const AnimContext& ctx, const SplinePrototypes& prototypes, const
       // walked back from drops.json's pit on forefeet hanging along the top, and fell when its
       // hind feet stepped off the far side).
       f.floor = 1e30f;
+      f.tucked = true;
       continue;
     }
     if (!found) landing = f.pos_ws;
