@@ -72,7 +72,9 @@ struct AnimatorParams {
   // with the speed of the fall (at most twice as much). [0, 0.5].
   float landing_compression = 0.12f;
   // A fall of more than this many hip heights (from the highest point to touch-down) is a
-  // hard landing: it still lands, giving twice as far, and is counted. [1, 100].
+  // hard landing: it still lands, giving twice as far, and is counted. A creature under
+  // kLeastJumpRiseM at the hip counts that much instead: small animals land as they jump
+  // (locomotion.h jump_rise). [1, 100].
   float hard_landing = 8.0f;
 
   // Gravity for the Froude number and the airborne path, m/s².

@@ -259,7 +259,9 @@ void begin_landing(const AnimContext& ctx, const BodyFrame& body, float standing
   const float fall = loco.top_y - body.root_y_ws;
   loco.stats.max_fall_m = std::max(loco.stats.max_fall_m, fall);
   if (loco.jumped) loco.stats.max_jump_height_m = std::max(loco.stats.max_jump_height_m, loco.top_y - loco.start_y);
-  const bool hard = fall > params.hard_landing * rig.hip_height;
+  // A small creature lands as it jumps (jump_rise: its muscles' work grows with its mass, as
+  // the fall's does): its own half-metre jump, 15 hip heights for the frog, is no hard landing.
+  const bool hard = fall > params.hard_landing * std::max(rig.hip_height, kLeastJumpRiseM);
   loco.stats.hard_landings += hard ? 1 : 0;
   // The legs give with the speed of the fall: landing_compression hip heights after a fall of
   // one hip height, growing with the speed, at most kMaxCompressionOfHip (twice both, hard).

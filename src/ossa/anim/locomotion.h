@@ -41,6 +41,7 @@ struct LocomotionStats {
   int falls = 0;                   // airborne phases not begun by a jump
   int jumps = 0;
   int hard_landings = 0;           // landings after a fall of more than params.hard_landing
+                                   // hip heights (at least that many kLeastJumpRiseM)
   int respawns = 0;                // falls below the level's kill height
   float max_fall_m = 0.0f;         // the largest drop of the root, highest point to touch-down
   float max_jump_height_m = 0.0f;  // the highest rise of the root above its take-off

@@ -36,7 +36,7 @@ std::span<const TuningField> tuning_fields() {
       {"jump_crouch", "x hip", 0.0f, 0.5f, &P::jump_crouch, "how low the body crouches before a jump"},
       {"jump_crouch_time", "x sqrt(h/g)", 0.5f, 4.0f, &P::jump_crouch_time, "how long the crouch lasts (follows the size)"},
       {"landing_compression", "x hip", 0.0f, 0.5f, &P::landing_compression, "how far the legs give landing from one hip height"},
-      {"hard_landing", "x hip", 1.0f, 100.0f, &P::hard_landing, "a fall of more hip heights is a hard landing"},
+      {"hard_landing", "x hip", 1.0f, 100.0f, &P::hard_landing, "a fall of more hip heights is a hard landing (a small creature's: more than this many half metres)"},
       {"gravity", "m/s^2", 1.0f, 30.0f, &P::gravity, "gravity of the Froude number and of falls"},
   }};
   return kFields;
