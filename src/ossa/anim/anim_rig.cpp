@@ -389,24 +389,26 @@ void build_drape(const RigRoles& roles, AnimRig& rig) {
     rig.tip_belly.push_back(std::max(0.5f * sk.width(b), lowest[b] < 1e29f ? end - lowest[b] : 0.0f));
     rig.hang_begin.push_back(static_cast<int>(rig.hang_points.size()));
     const Mat2x3 to_bone = inverse(rig.model_rest[b]);
+    for (const auto& [o, p] : roots) {
+      if (o == b) rig.hang_points.push_back(to_bone.apply(p));
+    }
+    rig.hang_pairs.push_back(static_cast<int>(rig.hang_points.size()));
     for (int h = 0; h < n; ++h) {
       if (owner[h] != b || h == b || in_head[h]) continue;
       rig.hang_points.push_back(to_bone.apply(bone_start(rig.model_rest[h])));
       rig.hang_points.push_back(to_bone.apply(bone_end(rig.model_rest[h], sk.length(h))));
     }
-    for (const auto& [o, p] : roots) {
-      if (o == b) rig.hang_points.push_back(to_bone.apply(p));
-    }
   }
   rig.hang_begin.push_back(static_cast<int>(rig.hang_points.size()));
   const Mat2x3 to_root = inverse(rig.model_rest[rig.root]);
+  for (const auto& [o, p] : roots) {
+    if (o == rig.root) rig.root_hang_points.push_back(to_root.apply(p));
+  }
+  rig.root_hang_pairs = static_cast<int>(rig.root_hang_points.size());
   for (int h = 0; h < n; ++h) {
     if (owner[h] != rig.root || h == rig.root) continue;
     rig.root_hang_points.push_back(to_root.apply(bone_start(rig.model_rest[h])));
     rig.root_hang_points.push_back(to_root.apply(bone_end(rig.model_rest[h], sk.length(h))));
-  }
-  for (const auto& [o, p] : roots) {
-    if (o == rig.root) rig.root_hang_points.push_back(to_root.apply(p));
   }
   if (rig.skull >= 0) {
     const Mat2x3 to_skull = inverse(rig.model_rest[rig.skull]);

@@ -191,12 +191,14 @@ struct AnimRig {
   // same below the far end of a tip. A legless rig's root_rest_y is the height its root rests at.
   std::vector<int> drape_bones, drape_next;
   std::vector<float> belly, tip_belly;
-  // Per drape bone i: the ends of the bones hanging from it, in its own frame at rest
+  // Per drape bone i: the roots of the limbs hanging from it, then the two ends of each bone
+  // hanging from it (from hang_pairs[i]), in its own frame at rest
   // (hang_points[hang_begin[i] .. hang_begin[i + 1]]).
   std::vector<glm::vec2> hang_points;
-  std::vector<int> hang_begin;
+  std::vector<int> hang_begin, hang_pairs;
   std::vector<glm::vec2> root_hang_points;   // the same for the root, in its frame
-  std::vector<glm::vec2> skull_hang_points;  // and for the skull (a jaw), in its frame
+  int root_hang_pairs = 0;
+  std::vector<glm::vec2> skull_hang_points;  // and for the skull (a jaw), in its frame: pairs
   // The bones the drape places each tick, parents first: the spine, the skull and the chains to
   // the limbs' girdles (what hangs from them follows on demand, as their rest shape).
   std::vector<int> drape_fk;

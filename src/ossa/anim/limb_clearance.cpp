@@ -154,20 +154,29 @@ float body_out_of_ground(const AnimContext& ctx, const BodyFrame& body, const st
       }
     }
   }
-  for (size_t i = 0; i < rig.drape_bones.size(); ++i) {
-    const Mat2x3& m = model[rig.drape_bones[i]];
-    for (int k = rig.hang_begin[i]; k < rig.hang_begin[i + 1]; ++k) {
-      const glm::vec2 p = m.apply(rig.hang_points[k]);
+  // What hangs from a bone: its points, and over steps each hanging bone whole (a rib
+  // slanting across a block's corner, its ends clear: the ichthyosaurus's, 1.1 cm into
+  // rough.json's blocks for a tick as its body rose onto one).
+  auto keep_hangers_out = [&](const Mat2x3& m, const glm::vec2* q, int n, int pairs) {
+    for (int k = 0; k < n; ++k) {
+      const glm::vec2 p = m.apply(q[k]);
       keep_out(p, p.y);
     }
+    if (!std::isnan(flat)) return;
+    for (int k = pairs; k + 1 < n; k += 2) {
+      const glm::vec2 a = body.to_ws(m.apply(q[k])), c = body.to_ws(m.apply(q[k + 1]));
+      if (ground.may_rise_above(std::min(a.x, c.x), std::max(a.x, c.x), std::min(a.y, c.y), top)) {
+        raise = std::max(raise, raise_to_clear(a, c, ctx.level, ctx.hits, top));
+      }
+    }
+  };
+  for (size_t i = 0; i < rig.drape_bones.size(); ++i) {
+    const int begin = rig.hang_begin[i];
+    keep_hangers_out(model[rig.drape_bones[i]], rig.hang_points.data() + begin, rig.hang_begin[i + 1] - begin, rig.hang_pairs[i] - begin);
   }
-  for (glm::vec2 q : rig.root_hang_points) {
-    const glm::vec2 p = model[rig.root].apply(q);
-    keep_out(p, p.y);
-  }
-  for (glm::vec2 q : rig.skull_hang_points) {
-    const glm::vec2 p = model[rig.skull].apply(q);
-    keep_out(p, p.y);
+  keep_hangers_out(model[rig.root], rig.root_hang_points.data(), static_cast<int>(rig.root_hang_points.size()), rig.root_hang_pairs);
+  if (rig.skull >= 0) {
+    keep_hangers_out(model[rig.skull], rig.skull_hang_points.data(), static_cast<int>(rig.skull_hang_points.size()), 0);
   }
   for (const std::vector<RigLimb>* limbs : {&ctx.rig.arms, &ctx.rig.fins, &ctx.rig.wings}) {
     for (const RigLimb& limb : *limbs) {
