@@ -206,14 +206,23 @@ float stance_reach_excess(const Placement& p) {
 // must not slide); past that the swing itself lifts and tucks the leg (leg IK). With the foot
 // in place a raised joint lifts the knee by less than itself: up to kKneePasses passes, as
 // long as some girdle moves.
+// A stance raise is scaled by what the last one gained only when it gained more than this
+// fraction of itself, and to at most this many times the need.
+constexpr float kKneeSecantLeast = 0.05f, kKneeSecantMost = 8.0f;
 void keep_knees_off_ground(Placement& p, std::vector<float>& stance_up, std::vector<float>& swing_up, std::vector<float>& room) {
   const AnimRig& rig = p.ctx.rig;
   const Level& level = p.ctx.level;
   // How far each stance leg's thigh or shin still crossed the edge of a step on the last pass
   // (vertically, metres).
   thread_local std::vector<float> crossed;
+  // Per girdle: a stance thigh's or shin's crossing of a step's edge this pass (its raise), and
+  // the stance raise for one the last pass made (0: none) and the need it was made for.
+  thread_local std::vector<float> crossing, last_up, last_need;
+  last_up.assign(rig.girdles.size(), 0.0f);
+  last_need.assign(rig.girdles.size(), 0.0f);
   for (int pass = 0; pass < kKneePasses; ++pass) {
     crossed.assign(rig.legs.size(), 0.0f);
+    crossing.assign(rig.girdles.size(), 0.0f);
     std::fill(stance_up.begin(), stance_up.end(), 0.0f);
     std::fill(swing_up.begin(), swing_up.end(), 0.0f);
     GirdleJointFs joints;
@@ -265,6 +274,7 @@ void keep_knees_off_ground(Placement& p, std::vector<float>& stance_up, std::vec
         const float cross = std::max(joint_in ? 0.0f : raise_to_clear(hip, knee, level, p.ctx.hits), raise_to_clear(knee, heel, level, p.ctx.hits));
         float& cross_up = corner_near && knee.y >= f.pos_ws.y + margin ? swing_up[info.girdle] : up;
         cross_up = std::max(cross_up, cross);
+        if (&cross_up == &stance_up[info.girdle]) crossing[info.girdle] = std::max(crossing[info.girdle], cross);
         // Only a foot left behind its girdle (it lifts soon anyway): a leading foot released
         // leaves the body to the feet behind, which the next raise stretches.
         if (stance && p.body.to_fs(f.pos_ws).x < joint.x) crossed[i] = cross;
@@ -272,9 +282,21 @@ void keep_knees_off_ground(Placement& p, std::vector<float>& stance_up, std::vec
     }
     bool moved = false;
     for (size_t g = 0; g < rig.girdles.size(); ++g) {
-      const float up = std::min(std::max(stance_up[g], std::min(swing_up[g], room[g])), kMaxKneeRaiseOfHip * rig.hip_height);
+      // A raise lifts a stance shin's crossing near its foot by much less than itself (the shin
+      // turns about the ankle): from the last pass's raise and what it gained, the raise that
+      // clears (a secant step), at most kKneeSecantMost times the need. (Raised by the need each
+      // pass, the ichthyostega's forearm stood 2.4 mm across a block's corner after the last
+      // pass as its forefoot stepped up.) Only where a crossing asks the raise: a knee's own
+      // need on level ground is eased on purpose.
+      float stance = stance_up[g];
+      const bool crossing_asks = stance > 0.0f && crossing[g] >= stance;
+      if (crossing_asks && last_up[g] > 0.0f && last_need[g] - stance > kKneeSecantLeast * last_up[g]) {
+        stance = std::min(stance * last_up[g] / (last_need[g] - stance), kKneeSecantMost * stance);
+      }
+      last_up[g] = 0.0f;
+      const float up = std::min(std::max(stance, std::min(swing_up[g], room[g])), kMaxKneeRaiseOfHip * rig.hip_height);
       if (up <= 0.0f) continue;
-      if (up > stance_up[g]) {
+      if (up > stance) {
         // A raised end girdle turns the body about the other one, whose joint moves sideways
         // a little: a swinging knee's raise must not take a stance foot out of reach (halved
         // until it does not; a stance knee's raise stands, and its foot lifts, clamp 6).
@@ -293,6 +315,7 @@ void keep_knees_off_ground(Placement& p, std::vector<float>& stance_up, std::vec
       }
       move_girdle(p, static_cast<int>(g), up);
       room[g] = std::max(room[g] - up, 0.0f);
+      if (crossing_asks) last_up[g] = up, last_need[g] = stance_up[g];
       moved = true;
     }
     if (!moved) break;
