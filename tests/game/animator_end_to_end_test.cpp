@@ -225,7 +225,7 @@ TEST_CASE("small creatures stop at steps their legs cannot climb, say so, and ju
   // default.json's first step is 10 cm high. The frog (hip 3 cm), the sinornis (4 cm) and the
   // rock hyrax (15 cm) stop at its foot, say why, and jump onto it: an animal of any size jumps
   // about half a metre (Borelli's law; jump_rise), the frog some 17 of its hip heights. The next
-  // riser, 15 cm more, holds them there. They land as they jump: the fall from their own jump
+  // riser, 15 cm more, holds them there, and they say so. They land as they jump: the fall from their own jump
   // is no hard landing (it was, at 8 hip heights, for the frog and the sinornis). The red deer (hip 71 cm) walks on to the 1.8 m post,
   // which its jump of a hip height does not reach: it says so and stays in front of it.
   const Level level = shipped("default.json");
@@ -253,6 +253,9 @@ TEST_CASE("small creatures stop at steps their legs cannot climb, say so, and ju
       CHECK(r.locomotion.hard_landings == 0);
       CHECK(r.x_reached > 10.0f);  // past the riser at x 10 it was held at
       CHECK(r.x_reached < 11.2f);  // the next riser (at x 10.6) holds it
+      // and it says so (the riser rises above the ground profile's window: it read as a gap)
+      CHECK(r.segments[2].blocked.starts_with("blocked: a step "));
+      CHECK(r.segments[2].blocked.find("; jump: a jump rises 0.50 m") != std::string::npos);
     } else {
       CHECK(at_step.blocked.find("too high to jump") != std::string::npos);
       CHECK(r.segments[2].blocked.starts_with(k.step));

@@ -105,8 +105,17 @@ Animator::BlockReport Animator::block_report() const {
   const float front = dir > 0 ? rig_->body_hi_ws(body_.x_ws, dir) : rig_->body_lo_ws(body_.x_ws, dir);
   const float a = body_.x_ws, b = front + dir * std::max(gait_.stride, rig_->scale.length);
   const int i0 = ground_.column_of(std::min(a, b)), i1 = ground_.column_of(std::max(a, b));
+  // The profile holds the heights of its window only (a few hip heights about the root): a
+  // column with none may hold ground above it, a step or a wall (the frog, on default.json's
+  // first step after jumping onto it, read the next riser, 15 cm up, as a gap). Asked of the
+  // level, up to twice its jump or four hip heights above its feet.
+  const float look_up = feet + std::max(2.0f * r.jump_m, 4.0f * rig_->hip_height);
   for (int i = i0; i <= i1; ++i) {
-    const float h = ground_.column(i);
+    float h = ground_.column(i);
+    if (std::isnan(h) && ground_.level() != nullptr && look_up > ground_.top()) {
+      const float x = ground_.x0() + static_cast<float>(i) * ground_.step();
+      if (auto above = anim::ground_below(*ground_.level(), x, x + ground_.step(), look_up, look_up - ground_.top())) h = above->height_ws;
+    }
     if (std::isnan(h)) {
       r.drop_m = INFINITY;
       continue;

@@ -67,6 +67,7 @@ class GroundProfile {
   float step() const { return step_; }
   float x0() const { return x0_; }
   float top() const { return top_; }
+  const Level* level() const { return level_; }  // the level it was built from (null: none yet)
   // Column i's ground height, or NaN where there is none.
   float column(int i) const { return treads_[tread_of_[i]].height; }
   // Does the profile hold the columns of [a_ws, b_ws]?
