@@ -231,9 +231,10 @@ bool find_landing(const FootholdInputs& in, int leg, glm::vec2 foot_ws, float x_
   // foot stands on: a contact out over a ledge's edge, its heel on the top, read the ground
   // below the edge as its slope (the frog's forefoot stepped 1 m down drops.json's ledge, a
   // 10 g bird's foot at a riser's foot up a riser taller than its step). Asked once, if at all.
+  // (A copy of the step: clang 14 lets no lambda capture a structured binding.)
   int slope_from_foot = -1;
-  auto on_slope = [&] {
-    if (slope_from_foot < 0) slope_from_foot = std::fabs(in.ctx.ground.surface_line(foot_ws.x, reading) - foot_ws.y) <= up;
+  auto on_slope = [&, step_up = up] {
+    if (slope_from_foot < 0) slope_from_foot = std::fabs(in.ctx.ground.surface_line(foot_ws.x, reading) - foot_ws.y) <= step_up;
     return slope_from_foot == 1;
   };
   for (int pass = ledge ? 0 : 1; pass < 2; ++pass) {
