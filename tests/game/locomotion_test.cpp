@@ -29,7 +29,7 @@ constexpr float kDt = 1.0f / 120.0f;
 // Of the 250 runs of "random creatures walk and run then turn back and jump on every shipped level", how
 // many put a bone more than 1 mm into a box, slide a stance foot by more or stand it further
 // from its foothold (measured 2026-11-28; lower it as the animator gets better).
-constexpr int kRandomRunsOver1mm = 5;
+constexpr int kRandomRunsOver1mm = 4;
 
 Level drops() { return load_level(scenes::source_path("levels/drops.json")).value(); }
 
@@ -301,6 +301,16 @@ TEST_CASE("a legless body's long bones stay out of the steps' corners", "[game][
                {"sperm whale", "stairs.json", "walk:0.6:30"},
                {"trout", "stairs.json", "run:1:15"},
                {"ichthyosaurus", "rough.json", "walk:0.6:30"}});
+}
+
+TEST_CASE("a legless neck reaching out over a drop bends under the slab overhanging it", "[game][anim][locomotion]") {
+  // Random creature 13 (legless, 1.7 t, its neck held high at rest) turns back along
+  // drops.json's floor to the edge under the slab at x 18-26, y 2-4. Over the drop the drape
+  // found no ground and left the neck at its rest angle: neck and skull went 0.35 m into the
+  // slab. A bone now turns the least that clears a box over it, and a body rising after the
+  // drape is laid again at its new height. Every bone within 1 mm.
+  check_clean(random_from_spawn(13, drops(), "walk:0.6:8,run:1:6,stop:1,walk:-0.6:6,jump,walk:0.5:3"),
+              "random creature 13 on drops.json");
 }
 
 TEST_CASE("a rib cage falling past a wall's face stays out of it", "[game][anim][locomotion]") {

@@ -399,9 +399,14 @@ void Animator::prefetch(bool object) const {
 
 void Animator::finish_tick(const AnimContext& ctx, float dt) {
   // Stage 12: the pose. A legless body its wave bent into the ground rises (body placement)
-  // before its limbs are posed.
-  const float raise = pose_body(ctx, body_, body_state_.root_vy, gait_.crawl_phase, motion_.speed, dt, pose_,
-                               {gait_.head_rise, gait_.head_shift});
+  // before its limbs are posed; where a box bent its drape (a slab over a neck), it is laid
+  // again at the new height, which would otherwise lift the bent bones into the box.
+  const HeadMotion head{gait_.head_rise, gait_.head_shift};
+  float raise = pose_body(ctx, body_, body_state_.root_vy, gait_.crawl_phase, motion_.speed, dt, pose_, head);
+  if (raise > 0.0f && pose_.drape_met_level) {
+    raise_body(raise, body_, body_state_);
+    raise = pose_body(ctx, body_, body_state_.root_vy, gait_.crawl_phase, motion_.speed, 0.0f, pose_, head);
+  }
   if (raise > 0.0f) {
     raise_body(raise, body_, body_state_);
     lift_pose(*rig_, raise, pose_);

@@ -106,7 +106,7 @@ float pose_body(const AnimContext& ctx, const BodyFrame& body, float root_vy, fl
     body_fk(rig, state);
     return 0.0f;
   }
-  drape_legless(ctx, body, crawl_phase, speed, pose, state.facing);
+  state.drape_met_level = drape_legless(ctx, body, crawl_phase, speed, pose, state.facing);
   return std::max(body_out_of_ground(ctx, body, state.facing, pose), 0.0f);
 }
 

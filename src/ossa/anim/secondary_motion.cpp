@@ -7,6 +7,7 @@
 #include "ossa/anim/anim_math.h"
 #include "ossa/anim/ground_profile.h"
 #include "ossa/anim/gait_clock.h"
+#include "ossa/anim/level_probe.h"
 #include "ossa/math/angle.h"
 
 namespace ossa::anim {
@@ -27,7 +28,7 @@ void swing_tail(const AnimRig& rig, const AnimatorParams& params, float dt, floa
   for (int b : rig.tail) pose.locals[b].angle_ls += bend;
 }
 
-void drape_legless(const AnimContext& ctx, const BodyFrame& body, float crawl_phase, float speed, Pose& pose,
+bool drape_legless(const AnimContext& ctx, const BodyFrame& body, float crawl_phase, float speed, Pose& pose,
                    std::vector<Mat2x3>& model_fs) {
   constexpr float kMaxDrapeBend = 0.3f;   // radians from a bone's rest angle
   constexpr float kHangTolerance = 1e-4f;  // metres: a rib's end resting on the ground is clear
@@ -54,6 +55,41 @@ void drape_legless(const AnimContext& ctx, const BodyFrame& body, float crawl_ph
     if (!std::isnan(flat)) return flat;
     const float x = body.to_ws({x_fs, 0.0f}).x;
     return ground.spans(x - reach, x + reach) ? ground.highest(x - reach, x + reach) : NAN;
+  };
+  // A bone laid along the ground, or at rest where there is none, can still meet a box over
+  // it: a slab overhanging the drop a long neck reaches out over (random creature 13's neck
+  // went 0.35 m into drops.json's). Of the turns from `turn` outwards, in steps of kClearStep
+  // either way up to kMaxClearTurn, the first whose segment from `start` in direction
+  // base + turn meets no box whose bottom lies above `start` (or within kJointOnBox below it:
+  // a joint lying against the box's underside). A box below or beside it is ground, which the
+  // body rises from (body_out_of_ground). `bent` tells that a box lay within a hip height over
+  // a bone: the body rising after the drape would carry the bone into it.
+  constexpr float kClearStep = 0.05f, kMaxClearTurn = 1.5f;  // radians
+  constexpr float kJointOnBox = 2e-3f;                        // metres
+  bool bent = false;
+  auto turn_clear_of_level = [&](glm::vec2 start, float length, float base, float turn) {
+    if (length <= 1e-6f) return turn;
+    const glm::vec2 a = body.to_ws(start);
+    const float above = a.y - kJointOnBox;
+    auto end = [&](float t) { return body.to_ws(start + length * glm::vec2(std::cos(base + t), std::sin(base + t))); };
+    {
+      const glm::vec2 e = end(turn);
+      ctx.hits.clear();
+      ctx.level.overlapping(Box{glm::min(a, e), glm::max(a, e) + glm::vec2(0.0f, rig.hip_height)}, ctx.hits);
+      if (std::none_of(ctx.hits.begin(), ctx.hits.end(), [&](int h) { return ctx.level.box(h).min_ws.y >= above; })) return turn;
+    }
+    bent = true;
+    auto hits = [&](float t) {
+      const glm::vec2 p[2] = {a, end(t)};
+      return polyline_hits_level(ctx.level, p, 2, ctx.hits, above);
+    };
+    if (!hits(turn)) return turn;
+    for (float d = kClearStep; d <= kMaxClearTurn + 1e-4f; d += kClearStep) {
+      for (const float t : {turn - d, turn + d}) {
+        if (!hits(t)) return t;
+      }
+    }
+    return turn;
   };
   const std::vector<int>& parents = sk.parents();
   // Each bone's angle in facing space, kept alongside its matrix (no atan2 per bone).
@@ -127,6 +163,7 @@ void drape_legless(const AnimContext& ctx, const BodyFrame& body, float crawl_ph
         }
         turn = chosen;
       }
+      turn = turn_clear_of_level(start, length, parent_angle + rest + along, turn);
       pose.locals[b].angle_ls = rest + turn;
     }
     if (b == rig.skull && parent >= 0) {
@@ -149,12 +186,14 @@ void drape_legless(const AnimContext& ctx, const BodyFrame& body, float crawl_ph
         const float up = forward * wrap_angle((forward > 0.0f ? want : kPi - want) - level);
         dir = level + forward * std::clamp(up, 0.0f, kMaxDrapeBend);
       }
+      dir += turn_clear_of_level(joint, length, dir, 0.0f);
       pose.locals[b].angle_ls = wrap_angle(dir - angle[parent]);
     }
     const Mat2x3 local = local_matrix(pose.locals[b]);
     model_fs[b] = parent < 0 ? local : model_fs[parent] * local;
     angle[b] = (parent < 0 ? 0.0f : angle[parent]) + pose.locals[b].angle_ls;
   }
+  return bent;
 }
 
 void swing_arm(const AnimRig& rig, const SplinePrototypes& prototypes, const GaitState& gait, const FootSet& feet, const RigLimb& arm,
