@@ -29,7 +29,7 @@ constexpr float kDt = 1.0f / 120.0f;
 // Of the 250 runs of "random creatures walk and run then turn back and jump on every shipped level", how
 // many put a bone more than 1 mm into a box, slide a stance foot by more or stand it further
 // from its foothold (measured 2026-11-28; lower it as the animator gets better).
-constexpr int kRandomRunsOver1mm = 4;
+constexpr int kRandomRunsOver1mm = 3;
 
 Level drops() { return load_level(scenes::source_path("levels/drops.json")).value(); }
 
@@ -311,6 +311,17 @@ TEST_CASE("a legless neck reaching out over a drop bends under the slab overhang
   // drape is laid again at its new height. Every bone within 1 mm.
   check_clean(random_from_spawn(13, drops(), "walk:0.6:8,run:1:6,stop:1,walk:-0.6:6,jump,walk:0.5:3"),
               "random creature 13 on drops.json");
+}
+
+TEST_CASE("a chest the stance legs cannot lift over a riser waits out of its face", "[game][anim][locomotion]") {
+  // Random creature 10 (a 127 kg quadruped, its rib cage hanging below the spine) walks up
+  // stairs.json. Its first rib came to the top riser 10 cm under its top: a step the trunk
+  // clamp lifts a rib over, but its forefoot had just landed and its legs reached no higher,
+  // so the rib went 9.9 mm into the face. Body placement now says so, and the body goes back
+  // as far as it came on that tick, until its feet have climbed. Every bone within 1 mm.
+  check_clean(random_from_spawn(10, load_level(scenes::source_path("levels/stairs.json")).value(),
+                                "walk:0.6:8,run:1:6,stop:1,walk:-0.6:6,jump,walk:0.5:3"),
+              "random creature 10 on stairs.json");
 }
 
 TEST_CASE("a rib cage falling past a wall's face stays out of it", "[game][anim][locomotion]") {

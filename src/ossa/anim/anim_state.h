@@ -186,6 +186,10 @@ struct TickHandoff {
   // Feet that met the ground while airborne on this tick. Writer: the step stage's air feet.
   // Reader: locomotion's touch-down test.
   int planted = 0;
+  // A bone of the trunk was left in a box: it needed the body to rise further than the stance
+  // legs reach. Writer: body placement (clamp 5). Reader: the orchestrator, which takes the
+  // body back out of the box's face at the end of the tick.
+  bool trunk_left_in = false;
 
   void resize(size_t feet) {
     lift_now.assign(feet, 0);
@@ -195,7 +199,7 @@ struct TickHandoff {
   void begin_tick() {
     std::fill(lift_now.begin(), lift_now.end(), 0);
     std::fill(waiting.begin(), waiting.end(), 0);
-    turned = wall_ahead = crouch_done = false;
+    turned = wall_ahead = crouch_done = trunk_left_in = false;
     no_foothold_leg = -1;
     planted = 0;
   }

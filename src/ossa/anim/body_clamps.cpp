@@ -486,6 +486,11 @@ void keep_body_out_of_ground(Placement& p, float fell, const std::vector<float>&
   }
   const float trunk_raise = std::min(trunk.raise, std::max(least_room - raise, 0.0f));
   p.body.root_y_ws += raise;
+  // Whatever of the need the body does not rise by leaves a bone in the box (beyond the keep).
+  auto left_in = [&](float risen) {
+    if (p.trunk_left_in && trunk.raise - risen > kTrunkKeepOfHip * rig.hip_height + 1e-3f) *p.trunk_left_in = true;
+  };
+  left_in(trunk_raise);
   if (!(trunk_raise > 0.0f)) return;
   // The room was measured before this clamp (a rolling foot's reach moves with its joint): a
   // stance foot the trunk's raise still puts further out of reach than it was takes it back,
@@ -509,8 +514,12 @@ void keep_body_out_of_ground(Placement& p, float fell, const std::vector<float>&
     const float step = std::min(2.0f * over + kReachCheckSlack, trunk_raise - back);
     p.body.root_y_ws -= step;
     back += step;
+    left_in(trunk_raise - back);
   }
-  if (worse() > 0.0f) p.body.root_y_ws -= trunk_raise - back;
+  if (worse() > 0.0f) {
+    p.body.root_y_ws -= trunk_raise - back;
+    left_in(0.0f);
+  }
 }
 
 // 6. The raising clamps (2, 3, 5) may stretch a stance leg again past its reach (a girdle over

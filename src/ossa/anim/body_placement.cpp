@@ -155,6 +155,8 @@ void place_body(const AnimContext& ctx, const PlacementInputs& in, const FootSet
                 BodyState& state) {
   std::fill(handoff.release_next.begin(), handoff.release_next.end(), 0);
   Placement p{ctx, in, feet, body, state, handoff.waiting, &handoff.release_next};
+  handoff.trunk_left_in = false;
+  p.trunk_left_in = &handoff.trunk_left_in;
   const AnimRig& rig = ctx.rig;
   const float old_root = body.root_y_ws;
   body.flex = in.flex;

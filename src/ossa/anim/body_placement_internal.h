@@ -76,6 +76,8 @@ struct Placement {
   // Per foot: stretched past its reach, lifts next tick (TickHandoff::release_next, written by
   // the clamps; nullptr when only the targets are worked out).
   std::vector<uint8_t>* release = nullptr;
+  // Set when clamp 5 leaves a trunk bone in a box (TickHandoff::trunk_left_in; nullptr: not asked).
+  bool* trunk_left_in = nullptr;
   // Clamp 1 left every stance foot within its leg's reach, the body as it was then: clamp 6
   // has nothing to release while the later clamps do not move the body.
   bool reach_checked = false;
