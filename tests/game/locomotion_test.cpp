@@ -29,7 +29,7 @@ constexpr float kDt = 1.0f / 120.0f;
 // Of the 250 runs of "random creatures walk and run then turn back and jump on every shipped level", how
 // many put a bone more than 1 mm into a box, slide a stance foot by more or stand it further
 // from its foothold (measured 2026-11-28; lower it as the animator gets better).
-constexpr int kRandomRunsOver1mm = 3;
+constexpr int kRandomRunsOver1mm = 2;
 
 Level drops() { return load_level(scenes::source_path("levels/drops.json")).value(); }
 
@@ -331,6 +331,17 @@ TEST_CASE("a blocked creature trying the way ahead again goes back out of the st
   // only 1.7 cm (3 % of its hip height). It now goes back as far as it came on the tick.
   // Every bone within 1 mm.
   check_clean(run_from_spawn("frog", drops(), "run:1:15", false), "the frog in the 2 m frame on drops.json");
+}
+
+TEST_CASE("a small bird blocked at a riser taller than its legs stands still on its footholds", "[game][anim][locomotion]") {
+  // Random creature 3 (a 10 g bird, hip 5.6 cm) walks back along rough.json and is blocked
+  // at a 7 cm riser. Its knee at the riser's face counted the riser's top as ground: the knee
+  // clamp lifted the body 2.2 cm in a tick, the legs drew it back down, every tenth of a
+  // second, its feet 14 mm off their footholds. A stance knee clear of the face now rises no
+  // further than the stance legs reach. Every bone within 1 mm, no foot off its foothold.
+  check_clean(random_from_spawn(3, load_level(scenes::source_path("levels/rough.json")).value(),
+                                "walk:0.6:8,run:1:6,stop:1,walk:-0.6:6,jump,walk:0.5:3"),
+              "random creature 3 on rough.json");
 }
 
 TEST_CASE("a rib cage falling past a wall's face stays out of it", "[game][anim][locomotion]") {
