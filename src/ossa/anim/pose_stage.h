@@ -35,7 +35,7 @@ struct PoseState {
   std::vector<std::array<glm::vec2, 3>> leg_dirs;  // per leg: upper, lower, foot directions (_fs)
   float flex_step = 0.0f;                          // each flexing spine bone's turn (AnimRig::flex_sign), radians
   PentapedalState pentapedal;                      // the hands' places in the pentapedal walk
-  bool drape_met_level = false;                    // a box turned a bone of the legless drape
+  bool drape_met_level = false;                    // a box lay over a bone of the legless drape
   // Caches of the lazily computed outputs.
   mutable std::vector<Mat2x3> facing;              // facing-space matrices (_fs)
   mutable std::vector<Mat2x3> world;               // world matrices (_ws)

@@ -33,10 +33,11 @@ void swing_tail(const AnimRig& rig, const AnimatorParams& params, float dt, floa
 // travelling wave at crawl_phase (cycles) lifts short stretches of the body off the ground
 // (never into it) by up to params.crawl_amplitude of the half body length, growing with
 // `speed` (m/s) up to the walk speed. Ground the profile does not hold, or higher than a
-// bone can reach, leaves that bone at its rest angle. A bone so laid that meets a box (a slab
-// over the drop a neck reaches out over) turns the least that clears it. Writes the bones'
-// joint angles and the facing-space matrices of every bone (the root's must be set); returns
-// whether a box turned a bone (the body rising after would bend it again: lay it again there).
+// bone can reach, leaves that bone at its rest angle. A bone so laid that meets a box over it
+// (a slab over the drop a neck reaches out over) turns the least that clears it. Writes the
+// bones' joint angles and the facing-space matrices of every bone (the root's must be set);
+// returns whether a box lay within a hip height over a bone (a body raised after the drape
+// would carry that bone into it: drape it again at its new height).
 inline constexpr float kDrapeSlope = 0.35f;  // sine of the steepest a draped bone lies
 // The skull's far end keeps this share of its length over the ground (its owner's end rises
 // with it).
