@@ -29,7 +29,7 @@ constexpr float kDt = 1.0f / 120.0f;
 // Of the 250 runs of "random creatures walk and run then turn back and jump on every shipped level", how
 // many put a bone more than 1 mm into a box, slide a stance foot by more or stand it further
 // from its foothold (measured 2026-11-28; lower it as the animator gets better).
-constexpr int kRandomRunsOver1mm = 2;
+constexpr int kRandomRunsOver1mm = 1;
 
 Level drops() { return load_level(scenes::source_path("levels/drops.json")).value(); }
 
@@ -342,6 +342,16 @@ TEST_CASE("a small bird blocked at a riser taller than its legs stands still on 
   check_clean(random_from_spawn(3, load_level(scenes::source_path("levels/rough.json")).value(),
                                 "walk:0.6:8,run:1:6,stop:1,walk:-0.6:6,jump,walk:0.5:3"),
               "random creature 3 on rough.json");
+}
+
+TEST_CASE("a swinging knee's raise does not straighten the stance leg behind into a riser", "[game][anim][locomotion]") {
+  // Random creature 40 (a biped, hip 25 cm) walks up stairs.json's 25 cm risers, its toes at
+  // the foot of each riser. A swinging knee at the face of the riser ahead raised the body
+  // 15 cm in a tick, and the stance leg behind straightened with its ankle 5.7 mm into the
+  // riser it stood below. The raise is now halved until no stance leg crosses a step's edge
+  // further than before. Every bone within 1 mm.
+  check_clean(random_from_spawn(40, load_level(scenes::source_path("levels/stairs.json")).value(), "walk:0.6:8"),
+              "random creature 40 on stairs.json");
 }
 
 TEST_CASE("a rib cage falling past a wall's face stays out of it", "[game][anim][locomotion]") {

@@ -200,6 +200,36 @@ float stance_reach_excess(const Placement& p) {
   return most;
 }
 
+// How far a leg's thigh (hip-knee) or shin (knee-heel) cuts across the edge of a step
+// (vertically, metres; raise_to_clear). A joint itself at a box's face, or in it, is the body's
+// business, not its thigh's: a blocked body's pitch easing turned the 2 m-frame rock hyrax's
+// shoulders forward onto drops.json's 0.7 m riser, and lifting the body by the riser's height
+// above them took the forefeet 16 cm off the ground in a tick. The face push-back moves the
+// body out.
+float chain_crossing(const Level& level, std::vector<int>& hits, glm::vec2 hip, glm::vec2 knee, glm::vec2 heel) {
+  const bool joint_in = level.overlaps(Box{hip - glm::vec2(1e-4f), hip + glm::vec2(1e-4f)});
+  return std::max(joint_in ? 0.0f : raise_to_clear(hip, knee, level, hits), raise_to_clear(knee, heel, level, hits));
+}
+
+// The most any stance leg's thigh or shin cuts across the edge of a step as the body is placed
+// now (chain_crossing).
+float stance_crossing(const Placement& p) {
+  const AnimRig& rig = p.ctx.rig;
+  float most = 0.0f;
+  GirdleJointFs joints;
+  for (size_t i = 0; i < rig.legs.size(); ++i) {
+    const FootState& f = p.feet.of_leg(static_cast<int>(i));
+    if (f.state != LegState::kStance) continue;
+    const RigLeg& info = rig.legs[i];
+    const glm::vec2 joint = joints.of(rig, p.body, info.girdle);
+    glm::vec2 dir;
+    const glm::vec2 ankle = leg_ankle(p.ctx, p.body, static_cast<int>(i), p.body.to_fs(f.pos_ws), joint, true, f.stance_clear, &dir, nullptr);
+    const TwoBoneIkResult ik = solve_two_bone_ik_directions(joint, info.upper, info.lower, ankle, info.bend);
+    most = std::max(most, chain_crossing(p.ctx.level, p.ctx.hits, p.body.to_ws(joint), p.body.to_ws(ik.middle), p.body.to_ws(ik.end)));
+  }
+  return most;
+}
+
 // 3. Nor kneel: a leg folded so far that its knee would touch the ground (sprawling legs on a
 // low body, or lifted in a swing) raises its girdle until the knee clears the ground under
 // it. A swinging leg's knee raises it only as far as the legs on the ground allow (their feet
@@ -270,13 +300,7 @@ void keep_knees_off_ground(Placement& p, std::vector<float>& stance_up, std::vec
       // from a knee below it. A shin across a small tread's corner raises its girdle only as
       // far as the stance legs reach (swing_up's limit), lest a foot slide.
       if (steps_near || corner_near || knee.y < f.pos_ws.y + margin) {
-        const glm::vec2 hip = p.body.to_ws(joint), heel = p.body.to_ws(ik.end);
-        // (A joint itself at a box's face, or in it, is the body's business, not its thigh's: a
-        // blocked body's pitch easing turned the 2 m-frame rock hyrax's shoulders forward onto
-        // drops.json's 0.7 m riser, and lifting the body by the riser's height above them took
-        // the forefeet 16 cm off the ground in a tick. The face push-back moves the body out.)
-        const bool joint_in = level.overlaps(Box{hip - glm::vec2(1e-4f), hip + glm::vec2(1e-4f)});
-        const float cross = std::max(joint_in ? 0.0f : raise_to_clear(hip, knee, level, p.ctx.hits), raise_to_clear(knee, heel, level, p.ctx.hits));
+        const float cross = chain_crossing(level, p.ctx.hits, p.body.to_ws(joint), knee, p.body.to_ws(ik.end));
         float& cross_up = corner_near && knee.y >= f.pos_ws.y + margin ? swing_up[info.girdle] : up;
         cross_up = std::max(cross_up, cross);
         if (&cross_up == &stance_up[info.girdle]) crossing[info.girdle] = std::max(crossing[info.girdle], cross);
@@ -303,14 +327,19 @@ void keep_knees_off_ground(Placement& p, std::vector<float>& stance_up, std::vec
       if (up <= 0.0f) continue;
       if (up > stance) {
         // A raised end girdle turns the body about the other one, whose joint moves sideways
-        // a little: a swinging knee's raise must not take a stance foot out of reach (halved
-        // until it does not; a stance knee's raise stands, and its foot lifts, clamp 6).
+        // a little: a swinging knee's raise must not take a stance foot out of reach, nor
+        // straighten a stance leg across a step's edge (halved until it does not; a stance
+        // knee's raise stands, and its foot lifts, clamp 6). (Random creature 40, a biped with a
+        // 25 cm hip on stairs.json's 25 cm risers: a swinging knee at the face of the riser
+        // ahead raised the body 15 cm in a tick, and the stance leg behind, its toe at the foot
+        // of the riser it stood below, straightened with its ankle 5.7 mm into that riser.)
         const BodyFrame before = p.body;
         const float allowed = std::max(stance_reach_excess(p), 0.0f) + kSwingRaiseSlack;
+        const float crossing_allowed = stance_crossing(p) + kSwingRaiseSlack;
         float tried = up;
         for (int k = 0; k < kSwingRaiseHalvings; ++k, tried *= 0.5f) {
           move_girdle(p, static_cast<int>(g), tried);
-          if (stance_reach_excess(p) <= allowed) break;
+          if (stance_reach_excess(p) <= allowed && stance_crossing(p) <= crossing_allowed) break;
           p.body = before;
         }
         if (p.body.root_y_ws == before.root_y_ws && p.body.pitch == before.pitch) continue;
