@@ -14,6 +14,8 @@ namespace {
 constexpr size_t kMaxTailBones = 48;   // keep_tail_clear curls at most this many tail bones
 constexpr float kMaxTailCurl = 1.6f;   // radians over the tail's length
 constexpr float kMaxTailLift = 1.6f;   // radians at the tail's root, when curling is not enough
+constexpr int kTailLiftSteps = 4;      // ... tried in this many steps of the most lift
+constexpr int kTailCurlSteps = 4;      // ... each with this many steps of the most curl, either way
 constexpr size_t kMaxFinBones = 7;
 constexpr float kMaxHeadLift = 1.2f;    // radians at the neck's base
 constexpr float kHeadKeepOfHip = 0.005f;  // keep_head_clear: each head bone this clear of the level
@@ -236,7 +238,25 @@ void keep_tail_clear(const AnimContext& ctx, const BodyFrame& body, const std::v
       bisect(lo, hi, kClearBisections, [&](float mid) { return hits(0.0f, mid * most_lift); });
       lift = hi * most_lift;
     } else {
+      // Lifted and curled: the least lift, then the least curl either way (up to twice the
+      // most: the tail coils), that clears. A chameleon turned round at drops.json's 1 m
+      // riser, its tail's root 8 cm from the face, held its tail up the face with the tip
+      // curled back into it, 4.6 mm; it now coils under its body. If nothing clears, lifted
+      // and curled as far as they go.
       lift = most_lift;
+      bool found = false;
+      for (int l = 1; l <= kTailLiftSteps && !found; ++l) {
+        const float try_lift = most_lift * static_cast<float>(l) / kTailLiftSteps;
+        for (int c = 0; c <= kTailCurlSteps && !found; ++c) {
+          for (const float sign : {1.0f, -1.0f}) {
+            const float try_curl = 2.0f * sign * most * static_cast<float>(c) / kTailCurlSteps;
+            if (!hits(try_curl, try_lift)) {
+              curl = try_curl, lift = try_lift, found = true;
+              break;
+            }
+          }
+        }
+      }
     }
   }
   for (size_t k = 0; k < n; ++k) pose.locals[rig.tail[k]].angle_ls += curl / static_cast<float>(n) + (k == 0 ? lift : 0.0f);
