@@ -88,8 +88,11 @@ void keep_stance_legs_in_reach(Placement& p, std::vector<float>& need, std::vect
     for (size_t i = 0; i < rig.legs.size(); ++i) {
       const RigLeg& info = rig.legs[i];
       const FootState& f = p.feet.of_leg(static_cast<int>(i));
-      // On the turn tick, swinging feet (taken over by other legs) must stay in reach too.
-      if (f.state != LegState::kStance && !(p.in.turning && !f.easing)) continue;
+      // On the turn tick, swinging feet (taken over by other legs) must stay in reach too; not
+      // one hanging over a drop, tucked (turn_feet: the pig turned round for a jump at the end
+      // of drops.json's floor, its new hind feet hanging 19 cm below the floor's top over the
+      // pit, was drawn down 39 cm after them and a rib went 9.3 cm into the floor's edge).
+      if (f.state != LegState::kStance && !(p.in.turning && !f.easing && !f.air)) continue;
       const glm::vec2 joint = joints.of(rig, p.body, info.girdle);
       float r;
       const glm::vec2 anchor = leg_anchor(p.ctx, p.body, static_cast<int>(i), p.body.to_fs(f.pos_ws), joint,
