@@ -27,8 +27,9 @@ namespace {
 
 constexpr float kDt = 1.0f / 120.0f;
 // Of the 250 runs of "random creatures walk and run then turn back and jump on every shipped level", how
-// many put a bone more than 1 mm into a box, slide a stance foot by more or stand it further
-// from its foothold (measured 2026-11-28; lower it as the animator gets better).
+// many slide a stance foot by more than 1 mm or stand it further from its foothold (measured
+// 2026-11-28; lower it as the animator gets better). No run may put a bone more than 1 mm into
+// a box.
 constexpr int kRandomRunsOver1mm = 1;
 
 Level drops() { return load_level(scenes::source_path("levels/drops.json")).value(); }
@@ -650,11 +651,12 @@ TEST_CASE("every example walks and runs then turns back and jumps on every shipp
 
 TEST_CASE("random creatures walk and run then turn back and jump on every shipped level", "[game][anim][locomotion]") {
   // Issue 27's sweep of creatures nobody tuned for: random creatures 1-50 at their true size,
-  // from each shipped level's spawn, walk, run, stop and turn back, jump and walk on. The goal
-  // is every bone within 1 mm and no stance foot sliding or short; not yet reached (README Known
-  // limits: bodies whose spine lies below their feet, necks and arms in ledges after a jump,
-  // tails at a turn), so the test holds the count of runs over 1 mm to what it is now and
-  // every run free of NaN. Under the sanitizers its sample (sweep_sample.h).
+  // from each shipped level's spawn, walk, run, stop and turn back, jump and walk on. Every
+  // bone within 1 mm and every run free of NaN. No stance foot sliding or short of its
+  // foothold is the goal too, not yet reached (README Known limits: random creature 32, a
+  // 170 t biped with a 7.7 m hip, at drops.json's end wall), so the test holds the count of
+  // runs with a stance foot over 1 mm off to what it is now. Under the sanitizers its sample
+  // (sweep_sample.h).
   const char* script = "walk:0.6:8,run:1:6,stop:1,walk:-0.6:6,jump,walk:0.5:3";
   const std::vector<uint64_t> seeds = test::sweep_seeds("game:random levels", 50);
   const char* levels[] = {"default.json", "drops.json", "rough.json", "slopes.json", "stairs.json"};
@@ -673,13 +675,14 @@ TEST_CASE("random creatures walk and run then turn back and jump on every shippe
                      << " m at " << r.probe.deepest_at_s << " s, slide " << r.probe.max_stance_slip_m << " m, gap "
                      << r.probe.max_stance_gap_m << " m");
       CHECK(r.probe.nan_count == 0);
-      if (r.probe.max_penetration_m > 0.001f || r.probe.max_stance_slip_m > 0.001f || r.probe.max_stance_gap_m > 0.001f) {
+      CHECK(r.probe.max_penetration_m <= 0.001f);
+      if (r.probe.max_stance_slip_m > 0.001f || r.probe.max_stance_gap_m > 0.001f) {
         ++over;
         worst << " " << seed << "/" << levels[l];
       }
     }
   }
-  INFO(over << " of " << runs << " runs over 1 mm:" << worst.str());
+  INFO(over << " of " << runs << " runs with a stance foot over 1 mm off:" << worst.str());
   CHECK(runs == 5 * static_cast<int>(seeds.size()));
   if (seeds.size() == 50) CHECK(over <= kRandomRunsOver1mm);
 }
