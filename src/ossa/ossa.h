@@ -95,10 +95,12 @@
 #include "ossa/rig/rig_guess.h"
 #include "ossa/rig/rig_mapping.h"
 
-// game: Controls, Player, World, Replay, headless simulation and its gait measurement
+// game: Controls, Player, World, Replay, headless simulation, its gait measurement and the
+// drawn body's outline against the level
 #include "ossa/game/controls.h"
 #include "ossa/game/gait_metrics.h"
 #include "ossa/game/herd.h"
+#include "ossa/game/outline_probe.h"
 #include "ossa/game/player.h"
 #include "ossa/game/replay.h"
 #include "ossa/game/sim.h"

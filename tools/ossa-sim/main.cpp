@@ -25,6 +25,7 @@
 #include "ossa/gen/generator.h"
 #include "ossa/gen/skeleton_builder.h"
 #include "ossa/game/herd.h"
+#include "ossa/game/outline_probe.h"
 #include "ossa/game/sim.h"
 #include "ossa/game/player.h"
 #include "ossa/game/world.h"
@@ -402,8 +403,13 @@ int main(int argc, char** argv) {
   // Controls of the extra creatures follow the player's script tick by tick, computed as they
   // go (a long script is not stored tick by tick).
   ScriptCursor extra_controls(*script, args.hz);
+  // The drawn body's outline against the level (a generated creature's; a rigged character has
+  // no generated body).
+  std::optional<OutlineProbe> outline;
+  if (creature) outline.emplace(*creature);
   const SimResult result = run_script(player, *level, *script, args.hz, [&](long long tick) {
     const Animator& a = player.animator();
+    if (outline) outline->observe(a, *level, static_cast<float>(tick + 1) * dt);
     if (!extra.empty()) {
       const Controls c = extra_controls.next();
       const auto start = std::chrono::steady_clock::now();
@@ -500,6 +506,11 @@ int main(int argc, char** argv) {
     out["max_body_penetration_m"] = probe.max_body_penetration_m;
     out["deepest_bone"] = probe.deepest_bone;
     out["deepest_at_s"] = probe.deepest_at_s;
+    // The drawn body's outline (outline_probe.h; null for a rigged character): not part of
+    // max_penetration_m, which is the bones'.
+    out["max_outline_penetration_m"] = outline ? Json(outline->max_outline_penetration_m) : Json();
+    out["deepest_outline_part"] = outline ? Json(outline->deepest_outline_part) : Json();
+    out["deepest_outline_at_s"] = outline ? Json(outline->deepest_outline_at_s) : Json();
     out["max_body_jolt_g"] = probe.max_body_jolt_g;
     out["min_swing_clearance_m"] = probe.min_swing_clearance_m > 1e8f ? 0.0f : probe.min_swing_clearance_m;
     out["steps"] = a.steps();

@@ -217,6 +217,9 @@ OJson record_json(const RunRecord& r) {
           {"deepest_bone", r.sim.probe.deepest_bone},
           {"deepest_at_s", json_float(r.sim.probe.deepest_at_s)},
           {"max_body_jolt_g", json_float(r.sim.probe.max_body_jolt_g)},
+          {"max_outline_penetration_m", json_float(r.outline_penetration_m)},
+          {"deepest_outline_part", r.outline_part},
+          {"deepest_outline_at_s", json_float(r.outline_at_s)},
           {"worst_limb", r.worst_limb},
           {"worst_limb_m", json_float(r.worst_limb_m)},
           {"tail_penetration_m", r.has_tail ? OJson(json_float(r.tail_penetration_m)) : OJson(nullptr)},
@@ -332,6 +335,19 @@ int run_sweep(const Args& args, const Setup& setup) {
   }
   std::printf("| runs with a standing foot > 1 mm short of its foothold (a leg stretched past its length) | %d of %d", gaps, count);
   if (widest && gaps > 0) std::printf(" (widest %s, %s on %s)", mm(widest->sim.probe.max_stance_gap_m).c_str(), widest->animal.c_str(), widest->level.c_str());
+  std::printf(" |\n");
+  // The drawn body (outline_probe.h): flesh, horns, fins and flukes beyond the bones, as drawn.
+  int outlines = 0;
+  const RunRecord* deepest_outline = nullptr;
+  for (const RunRecord& r : runs) {
+    outlines += r.outline_penetration_m > kLimit;
+    if (!deepest_outline || r.outline_penetration_m > deepest_outline->outline_penetration_m) deepest_outline = &r;
+  }
+  std::printf("| runs with the drawn body's outline > 1 mm in a collider (not in the bones' figure above) | %d of %d", outlines, count);
+  if (deepest_outline && outlines > 0) {
+    std::printf(" (deepest %s, %s's %s on %s)", mm(deepest_outline->outline_penetration_m).c_str(), deepest_outline->animal.c_str(),
+                deepest_outline->outline_part.c_str(), deepest_outline->level.c_str());
+  }
   std::printf(" |\n");
   std::printf("| runs stopped at a step (< 20%% of the commanded speed, limbs clean) | %zu |\n", stopped.size());
   std::printf("| example walks (%s) with a tail > 1 mm in a step | %zu of %d", texts[0].c_str(), tails.size(), walks);

@@ -7,6 +7,7 @@
 #include <cstdio>
 #include <thread>
 
+#include "ossa/game/outline_probe.h"
 #include "ossa/game/player.h"
 
 namespace ossa::sweep {
@@ -114,7 +115,9 @@ RunRecord run_one(std::shared_ptr<const Creature> creature, const SplinePrototyp
   r.segments[0].x_start = r.segments[0].x_far = a.x();
   std::vector<float> x_mark(script.size(), a.x());
   std::vector<float> x_warm(script.size(), a.x());  // x after run_script's warm-up tick
+  OutlineProbe outline(c);
   r.sim = run_script(player, level, script, tick_hz, [&](long long tick) {
+    outline.observe(a, level, static_cast<float>(tick + 1) * dt);
     while (seg + 1 < segment_end.size() && tick >= segment_end[seg]) {
       seg_first = segment_end[seg];
       ++seg;
@@ -180,6 +183,9 @@ RunRecord run_one(std::shared_ptr<const Creature> creature, const SplinePrototyp
     if (dirs[i] == 0) r.segments[i].x_far = r.segments[i].x_end;
     if (r.segments[i].goal_t < 0.0f) r.segments[i].mean_speed_to_goal = r.sim.segments[i].mean_speed;
   }
+  r.outline_penetration_m = outline.max_outline_penetration_m;
+  r.outline_part = outline.deepest_outline_part;
+  r.outline_at_s = outline.deepest_outline_at_s;
   r.wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return r;
 }

@@ -56,6 +56,11 @@ struct RunRecord {
                                           // first count of tails in steps sampled joints)
   float blocked_s = 0.0f;
   float x_min = 0.0f, x_max = 0.0f;
+  // The drawn body's outline (outline_probe.h): how deep it went into a collider, the part and
+  // when (not part of sim.probe.max_penetration_m, which is the bones').
+  float outline_penetration_m = 0.0f;
+  std::string outline_part;
+  float outline_at_s = 0.0f;
   double wall_s = 0.0;                // wall time of the run
 };
 

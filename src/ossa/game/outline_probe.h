@@ -1,0 +1,47 @@
+#pragma once
+// The drawn body against the level (issue 27: "where a creature has a body outline, for the
+// outline too"). SimProbe measures the bones; the body the game draws around them (body_mesh.h)
+// has flesh, horns, fins and flukes beyond the bones. An OutlineProbe skins that body by the
+// animator's matrices as the body shader does, rests it on the floor the game sends with it
+// (body_floor.h: flesh yields to the box tops under the creature), and measures how deep any
+// part's closed outline lies inside a collider: every segment between two consecutive outline
+// vertices, exactly (segment_penetration). Fills lie inside their outlines; the outline
+// strokes' width is left out.
+//
+// Apart from SimProbe because it costs a body mesh per creature and a skinning per tick:
+// ossa-sim and ossa-sweep report it; the animation tests, which gate on the bones, do not pay
+// for it. A rigged character (character.h) has no generated body and no OutlineProbe.
+
+#include <string>
+#include <vector>
+
+#include "ossa/anim/animator.h"
+#include "ossa/body/body_mesh.h"
+#include "ossa/gen/creature.h"
+#include "ossa/level/level.h"
+
+namespace ossa {
+
+class OutlineProbe {
+ public:
+  // Builds `creature`'s body (build_body with its own look and girth).
+  explicit OutlineProbe(const Creature& creature);
+  // After a tick: `animator` posed over `level`, `t_s` seconds since the start.
+  void observe(const Animator& animator, const Level& level, float t_s);
+
+  // The deepest any drawn outline lay inside a collider, metres; the part it belonged to
+  // (body_part_name: "axial", "leg", "tail_fin" …) and when.
+  float max_outline_penetration_m = 0.0f;
+  std::string deepest_outline_part;
+  float deepest_outline_at_s = 0.0f;
+
+  const BodyMesh& mesh() const { return mesh_; }
+
+ private:
+  BodyMesh mesh_;
+  std::vector<Mat2x3> palette_;
+  std::vector<glm::vec2> drawn_;  // per vertex, as drawn this tick (outline vertices only)
+  std::vector<int> hits_;
+};
+
+}  // namespace ossa
