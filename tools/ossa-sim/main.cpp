@@ -403,10 +403,10 @@ int main(int argc, char** argv) {
   // Controls of the extra creatures follow the player's script tick by tick, computed as they
   // go (a long script is not stored tick by tick).
   ScriptCursor extra_controls(*script, args.hz);
-  // The drawn body's outline against the level (a generated creature's; a rigged character has
-  // no generated body).
+  // The drawn body's outline against the level, for --json (a generated creature's; a rigged
+  // character has no generated body).
   std::optional<OutlineProbe> outline;
-  if (creature) outline.emplace(*creature);
+  if (creature && args.json) outline.emplace(*creature);
   const SimResult result = run_script(player, *level, *script, args.hz, [&](long long tick) {
     const Animator& a = player.animator();
     if (outline) outline->observe(a, *level, static_cast<float>(tick + 1) * dt);

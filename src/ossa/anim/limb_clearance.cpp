@@ -254,6 +254,7 @@ void keep_tail_clear(const AnimContext& ctx, const BodyFrame& body, const std::v
               curl = try_curl, lift = try_lift, found = true;
               break;
             }
+            if (c == 0) break;  // (no curl: one try)
           }
         }
       }

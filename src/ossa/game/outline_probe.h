@@ -35,8 +35,6 @@ class OutlineProbe {
   std::string deepest_outline_part;
   float deepest_outline_at_s = 0.0f;
 
-  const BodyMesh& mesh() const { return mesh_; }
-
  private:
   BodyMesh mesh_;
   std::vector<Mat2x3> palette_;
