@@ -6,7 +6,9 @@
 // (body_floor.h: flesh yields to the box tops under the creature), and measures how deep any
 // part's closed outline lies inside a collider: every segment between two consecutive outline
 // vertices, exactly (segment_penetration). Fills lie inside their outlines; the outline
-// strokes' width is left out.
+// strokes' width is left out, and so is a collider lying wholly inside a part's fill with no
+// outline segment crossing it (a thin post the body is drawn over): the figure is the
+// outline's depth in the level, not the level's depth in the body.
 //
 // Apart from SimProbe because it costs a body mesh per creature and a skinning per tick:
 // ossa-sim and ossa-sweep report it; the animation tests, which gate on the bones, do not pay
