@@ -70,7 +70,8 @@ const char* kUsage = R"(usage: ossa-sim (--example NAME | --creature F.creature.
                    x and y of each bone's joint (BONE_x, BONE_y) and of each bone's far end
                    that no other bone starts at (BONE.end_x, BONE.end_y), metres; to check a
                    pose against the level with no trust in ossa's own metrics
-  --svg F.svg      a strobe of the creature over the level (a pose every 0.4 s)
+  --svg F.svg      a strobe of the creature over the level (a pose every 0.4 s): its bones
+                   and, for a generated creature, its drawn body's outlines
   --svg-window FROM:TO[:EVERY]  the strobe's poses from FROM to TO seconds, one every EVERY
                    seconds (default 0.4): a close look at a moment
 )";
@@ -185,6 +186,7 @@ Args parse_args(int argc, char** argv) {
 
 struct Snapshot {
   std::vector<Mat2x3> world;
+  std::vector<std::vector<glm::vec2>> outlines;  // the drawn body's parts (generated creatures)
 };
 
 std::string strobe_svg(const Skeleton& sk, const Level& level, const std::vector<Snapshot>& shots) {
@@ -218,6 +220,14 @@ std::string strobe_svg(const Skeleton& sk, const Level& level, const std::vector
     const float opacity = 0.25f + 0.75f * static_cast<float>(i + 1) / static_cast<float>(shots.size());
     std::snprintf(buf, sizeof buf, "<g opacity=\"%.2f\" stroke-linecap=\"round\">\n", opacity);
     out += buf;
+    for (const std::vector<glm::vec2>& o : shots[i].outlines) {
+      out += "<polygon fill=\"#d9a066\" fill-opacity=\"0.25\" stroke=\"#6b3d12\" stroke-width=\"0.006\" points=\"";
+      for (const glm::vec2 p : o) {
+        std::snprintf(buf, sizeof buf, "%.4f,%.4f ", p.x, p.y);
+        out += buf;
+      }
+      out += "\"/>\n";
+    }
     for (int layer = 0; layer < kLayerCount; ++layer) {
       for (int b = 0; b < sk.bone_count(); ++b) {
         if (static_cast<int>(sk.layer(b)) != layer || sk.length(b) <= 0.0f) continue;
@@ -406,7 +416,7 @@ int main(int argc, char** argv) {
   // The drawn body's outline against the level, for --json (a generated creature's; a rigged
   // character has no generated body).
   std::optional<OutlineProbe> outline;
-  if (creature && args.json) outline.emplace(*creature);
+  if (creature && (args.json || args.svg)) outline.emplace(*creature);
   const SimResult result = run_script(player, *level, *script, args.hz, [&](long long tick) {
     const Animator& a = player.animator();
     if (outline) outline->observe(a, *level, static_cast<float>(tick + 1) * dt);
@@ -439,7 +449,7 @@ int main(int argc, char** argv) {
       joints << "\n";
     }
     const float t = static_cast<float>(tick) * dt;
-    if (args.svg && tick >= shot_from && t <= args.svg_to && (tick - shot_from) % shot_every == 0) shots.push_back({a.world_matrices()});
+    if (args.svg && tick >= shot_from && t <= args.svg_to && (tick - shot_from) % shot_every == 0) shots.push_back({a.world_matrices(), outline ? outline->drawn_outlines() : std::vector<std::vector<glm::vec2>>{}});
   });
   const SimProbe& probe = result.probe;
   const std::vector<SegmentMetrics>& segments = result.segments;

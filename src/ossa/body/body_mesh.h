@@ -76,6 +76,7 @@ enum class BodyPartKind : uint8_t {
   kEar, kHorn, kAntler, kFrill, kCrest, kMane, kTrunk, kSail, kPlate, kShell, kDorsalFin, kTailFin,
   kEye,
 };
+inline constexpr int kBodyPartKindCount = static_cast<int>(BodyPartKind::kEye) + 1;
 const char* body_part_name(BodyPartKind kind);
 
 // A cross-section of a tube part in the rest pose: its top and bottom outline vertices (the

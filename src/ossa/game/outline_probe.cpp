@@ -34,6 +34,8 @@ void OutlineProbe::observe(const Animator& animator, const Level& level, float t
     for (size_t k = 0; k < n; ++k) {
       const glm::vec2 a = drawn_[part.outline[k]], b = drawn_[part.outline[(k + 1) % n]];
       const float d = segment_penetration(level, a, b, hits_);
+      float& of_kind = max_by_kind[static_cast<size_t>(part.kind)];
+      of_kind = std::max(of_kind, d);
       if (d > max_outline_penetration_m) {
         max_outline_penetration_m = d;
         deepest_outline_part = body_part_name(part.kind);
@@ -41,6 +43,16 @@ void OutlineProbe::observe(const Animator& animator, const Level& level, float t
       }
     }
   }
+}
+
+std::vector<std::vector<glm::vec2>> OutlineProbe::drawn_outlines() const {
+  std::vector<std::vector<glm::vec2>> out;
+  out.reserve(mesh_.parts.size());
+  for (const BodyPart& part : mesh_.parts) {
+    std::vector<glm::vec2>& o = out.emplace_back();
+    for (uint32_t i : part.outline) o.push_back(drawn_[i]);
+  }
+  return out;
 }
 
 }  // namespace ossa

@@ -14,6 +14,7 @@
 // ossa-sim and ossa-sweep report it; the animation tests, which gate on the bones, do not pay
 // for it. A rigged character (character.h) has no generated body and no OutlineProbe.
 
+#include <array>
 #include <string>
 #include <vector>
 
@@ -36,6 +37,12 @@ class OutlineProbe {
   float max_outline_penetration_m = 0.0f;
   std::string deepest_outline_part;
   float deepest_outline_at_s = 0.0f;
+  // The same per kind of part (indexed by BodyPartKind): how deep a whale's flukes went.
+  std::array<float, kBodyPartKindCount> max_by_kind{};
+
+  // Every part's closed outline as observe() last drew it (world metres), in draw order: the
+  // strobe pictures draw them (ossa-sim --svg).
+  std::vector<std::vector<glm::vec2>> drawn_outlines() const;
 
  private:
   BodyMesh mesh_;
