@@ -137,4 +137,14 @@ TEST_CASE("OutlineProbe measures the drawn body where the bones' figure does not
     CHECK(outline->deepest_outline_at_s > 5.0f);
     CHECK(outline->deepest_outline_part == "axial");
   }
+  SECTION("a whale's flukes: kept out of the ground with its tail") {
+    // A whale lies along default.json's floor from its spawn on; its tail's bones lay clear
+    // of the floor while the flukes drawn about them went 0.5 m into it, until the tail's
+    // clearance took the tail's flesh (AnimRig::tail_flesh) along with its bones.
+    for (const char* whale : {"blue whale", "sperm whale"}) {
+      run(whale, load_level(scenes::source_path("levels/default.json")).value(), "walk:0.6:2", outline);
+      INFO(whale);
+      CHECK(outline->max_by_kind[static_cast<size_t>(BodyPartKind::kTailFin)] <= 0.001f);
+    }
+  }
 }

@@ -6,6 +6,7 @@
 #include "ossa/anim/gait_family.h"
 #include "ossa/anim/pentapedal.h"
 #include "ossa/anim/secondary_motion.h"
+#include "ossa/body/body_mesh.h"
 #include "ossa/math/two_bone_ik.h"
 #include "ossa/skeleton/pose.h"
 
@@ -294,6 +295,27 @@ void build_body_outline(AnimRig& rig, const Mat2x3& root_inv) {
   }
 }
 
+// The tail's flesh (roles.flesh) about each tail bone, in its frame at rest.
+void build_tail_flesh(AnimRig& rig, const RigRoles& roles) {
+  rig.tail_flesh.clear();
+  bool any = false;
+  std::vector<Box> flesh(rig.tail.size(), Box{glm::vec2(1e30f), glm::vec2(-1e30f)});
+  for (const RigRoles::FleshPoint& f : roles.flesh) {
+    const auto at = std::find(rig.tail.begin(), rig.tail.end(), f.bone);
+    if (at == rig.tail.end()) continue;
+    const glm::vec2 q = inverse(rig.model_rest[f.bone]).apply(f.position_ms);
+    Box& box = flesh[static_cast<size_t>(at - rig.tail.begin())];
+    box = box.united(Box{q, q});
+    any = true;
+  }
+  if (!any) return;
+  for (size_t k = 0; k < rig.tail.size(); ++k) {  // a bone without flesh of its own: the bone
+    const float len = rig.skeleton.length(rig.tail[k]);
+    flesh[k] = flesh[k].united(Box{glm::vec2(0.0f), glm::vec2(len, 0.0f)});
+  }
+  rig.tail_flesh = std::move(flesh);
+}
+
 // The trunk's segments (AnimRig::trunk): every bone neither a limb's nor the tail's, the
 // skull's and what hangs from it last.
 void build_trunk(AnimRig& rig) {
@@ -527,6 +549,7 @@ void build_fk_plan(const RigRoles& roles, AnimRig& rig) {
       rig.tail_base_bone = b;
       rig.tail_between.assign(between.rbegin(), between.rend());
       for (int t : rig.tail) rig.tail_length += sk.length(t);
+      build_tail_flesh(rig, roles);
       bool rest = true;
       for (int t : rig.tail_between) rest = rest && !rig.dynamic_bone[t];
       if (rest) {
@@ -659,6 +682,18 @@ RigRoles rig_roles(const Creature& creature) {
   for (const Limb& limb : creature.limbs) {
     roles.limbs.push_back({limb.kind, limb.girdle_bone, limb.bones, limb.side, limb.bend_sign,
                            2 * static_cast<int>(limb.girdle) + limb.slot});
+  }
+  // The body's outline vertices, each with the palette entry it follows most (a mid joint's
+  // belongs to a limb: left out).
+  if (Result<BodyMesh> body = try_build_body(creature)) {
+    const int bones = creature.skeleton.bone_count();
+    for (const BodyPart& part : body->parts) {
+      for (uint32_t i : part.outline) {
+        const BodyVertex& v = body->vertices[i];
+        const size_t most = static_cast<size_t>(std::max_element(v.weights.begin(), v.weights.end()) - v.weights.begin());
+        if (v.bones[most] < bones) roles.flesh.push_back({v.bones[most], v.position_ms});
+      }
+    }
   }
   return roles;
 }

@@ -22,6 +22,7 @@
 #include "ossa/anim/gait_family.h"
 #include "ossa/anim/rig_scale.h"
 #include "ossa/gen/creature.h"
+#include "ossa/level/box.h"
 #include "ossa/skeleton/pose.h"
 #include "ossa/skeleton/skeleton.h"
 
@@ -251,6 +252,9 @@ struct AnimRig {
   // flexion bends one of them (empty otherwise).
   std::vector<int> tail_flex_between;
   float tail_length = 0.0f;         // > 0: the tail is kept out of the level
+  // Per tail bone, the box its flesh fills (RigRoles::flesh; fins and flukes too) in its frame
+  // at rest: x along the bone, y across. Empty: the tail's bones alone are kept out.
+  std::vector<Box> tail_flesh;
   // The body plan's gait (anim/gait_family.h): never kAuto here (the builder resolves it with
   // choose_gait_family), and what the choice reads besides the bones.
   GaitFamily gait_family = GaitFamily::kCursorial;
@@ -284,10 +288,19 @@ struct RigRoles {
   GaitFamily gait_family = GaitFamily::kAuto;
   float weight_kg = 0.0f;
   int skull_variant = 0;
+  // The drawn body's outline at rest (model space), each point with the bone it follows most:
+  // the tail's is kept out of the level with its bones (AnimRig::tail_flesh). rig_roles reads
+  // it from a generated creature's body (body_mesh.h); empty: the bones alone (a rigged
+  // character's sprites).
+  struct FleshPoint {
+    int bone = -1;
+    glm::vec2 position_ms{0.0f};
+  };
+  std::vector<FleshPoint> flesh;
 };
 
 // The roles of a generated creature: its spine chains, skull and LimbLayout (legs grouped by
-// girdle and slot).
+// girdle and slot), and its body's outline (build_body).
 RigRoles rig_roles(const Creature& creature);
 
 // Builds a rig from bones, their rest pose (model space: y = 0 on the rest ground, the root at

@@ -204,10 +204,20 @@ void keep_tail_clear(const AnimContext& ctx, const BodyFrame& body, const std::v
     for (int b : rig.tail_between) base = base * local_matrix(pose.locals[b]);
   }
   const glm::vec2 root = body.to_ws(base.apply(pose.locals[rig.tail[0]].offset_ls));
-  const float len = rig.tail_length;
-  if (!ctx.level.first_overlap(Box{root - glm::vec2(len), root + glm::vec2(len)})) return;
   const size_t n = std::min<size_t>(rig.tail.size(), kMaxTailBones);
+  float flesh_reach = 0.0f;  // how far its flesh reaches past its bones
+  for (size_t k = 0; k < rig.tail_flesh.size(); ++k) {
+    const Box& f = rig.tail_flesh[k];
+    flesh_reach = std::max({flesh_reach, -f.min_ws.y, f.max_ws.y, -f.min_ws.x, f.max_ws.x - rig.skeleton.length(rig.tail[k])});
+  }
+  const float len = rig.tail_length + flesh_reach;
+  if (!ctx.level.first_overlap(Box{root - glm::vec2(len), root + glm::vec2(len)})) return;
   glm::vec2 p[kMaxTailBones + 1];
+  // The tail's flesh (AnimRig::tail_flesh) as one closed outline: along the boxes' lower
+  // edges, round the tip, back along their upper edges. The flesh of a T. rex's tail lying on
+  // default.json's end wall, bones clear, went 11 cm into the wall's corner.
+  bool flesh = rig.tail_flesh.size() >= n;
+  glm::vec2 outline[4 * kMaxTailBones + 1];
   auto hits = [&](float turn, float lift = 0.0f) {
     Mat2x3 m = base;
     for (size_t k = 0; k < n; ++k) {
@@ -216,49 +226,71 @@ void keep_tail_clear(const AnimContext& ctx, const BodyFrame& body, const std::v
       m = m * local_matrix(local);
       p[k] = body.to_ws(bone_start(m));
       if (k + 1 == n) p[n] = body.to_ws(bone_end(m, rig.skeleton.length(rig.tail[k])));
+      if (flesh) {
+        const Box& f = rig.tail_flesh[k];
+        outline[2 * k] = body.to_ws(m.apply(f.min_ws));
+        outline[2 * k + 1] = body.to_ws(m.apply({f.max_ws.x, f.min_ws.y}));
+        outline[4 * n - 1 - 2 * k] = body.to_ws(m.apply({f.min_ws.x, f.max_ws.y}));
+        outline[4 * n - 2 - 2 * k] = body.to_ws(m.apply(f.max_ws));
+      }
     }
-    return polyline_hits_level(ctx.level, p, static_cast<int>(n + 1), ctx.hits);
+    if (polyline_hits_level(ctx.level, p, static_cast<int>(n + 1), ctx.hits)) return true;
+    if (!flesh) return false;
+    outline[4 * n] = outline[0];
+    return polyline_hits_level(ctx.level, outline, static_cast<int>(4 * n + 1), ctx.hits);
   };
   if (!hits(0.0f)) return;
-  // The turn that raises the tip first; a curled tail may need the other.
-  const float up = body.facing * (p[n].x - p[0].x) < 0.0f ? -1.0f : 1.0f;
-  float most = kMaxTailCurl * up;
-  if (hits(most) && !hits(-most)) most = -most;
-  float lo = 0.0f, hi = 1.0f;  // fractions of the most: lo hits, hi clears (or is the last resort)
-  bisect(lo, hi, kClearBisections, [&](float mid) { return hits(mid * most); });
-  float curl = hi * most, lift = 0.0f;
-  if (hi == 1.0f && hits(most)) {
-    // Curled as far as it goes and still in the step (a ledge's face right behind a body that
-    // came down it): the tail lifts at its root instead, straight, the least that clears; if
-    // nothing does, lifted and curled.
-    const float most_lift = kMaxTailLift * (most > 0.0f ? 1.0f : -1.0f);
-    if (!hits(0.0f, most_lift)) {
-      curl = 0.0f;
-      lo = 0.0f, hi = 1.0f;
-      bisect(lo, hi, kClearBisections, [&](float mid) { return hits(0.0f, mid * most_lift); });
-      lift = hi * most_lift;
-    } else {
-      // Lifted and curled: the least lift, then the least curl either way (up to twice the
-      // most: the tail coils), that clears. A chameleon turned round at drops.json's 1 m
-      // riser, its tail's root 8 cm from the face, held its tail up the face with the tip
-      // curled back into it, 4.6 mm; it now coils under its body. If nothing clears, lifted
-      // and curled as far as they go.
-      lift = most_lift;
-      bool found = false;
-      for (int l = 1; l <= kTailLiftSteps && !found; ++l) {
-        const float try_lift = most_lift * static_cast<float>(l) / kTailLiftSteps;
-        for (int c = 0; c <= kTailCurlSteps && !found; ++c) {
-          for (const float sign : {1.0f, -1.0f}) {
-            const float try_curl = 2.0f * sign * most * static_cast<float>(c) / kTailCurlSteps;
-            if (!hits(try_curl, try_lift)) {
-              curl = try_curl, lift = try_lift, found = true;
-              break;
+  float curl = 0.0f, lift = 0.0f;
+  auto solve = [&] {
+    // The turn that raises the tip first; a curled tail may need the other.
+    const float up = body.facing * (p[n].x - p[0].x) < 0.0f ? -1.0f : 1.0f;
+    float most = kMaxTailCurl * up;
+    if (hits(most) && !hits(-most)) most = -most;
+    float lo = 0.0f, hi = 1.0f;  // fractions of the most: lo hits, hi clears (or is the last resort)
+    bisect(lo, hi, kClearBisections, [&](float mid) { return hits(mid * most); });
+    curl = hi * most, lift = 0.0f;
+    if (hi == 1.0f && hits(most)) {
+      // Curled as far as it goes and still in the step (a ledge's face right behind a body that
+      // came down it): the tail lifts at its root instead, straight, the least that clears; if
+      // nothing does, lifted and curled.
+      const float most_lift = kMaxTailLift * (most > 0.0f ? 1.0f : -1.0f);
+      if (!hits(0.0f, most_lift)) {
+        curl = 0.0f;
+        lo = 0.0f, hi = 1.0f;
+        bisect(lo, hi, kClearBisections, [&](float mid) { return hits(0.0f, mid * most_lift); });
+        lift = hi * most_lift;
+      } else {
+        // Lifted and curled: the least lift, then the least curl either way (up to twice the
+        // most: the tail coils), that clears. A chameleon turned round at drops.json's 1 m
+        // riser, its tail's root 8 cm from the face, held its tail up the face with the tip
+        // curled back into it, 4.6 mm; it now coils under its body. If nothing clears, lifted
+        // and curled as far as they go.
+        lift = most_lift;
+        bool found = false;
+        for (int l = 1; l <= kTailLiftSteps && !found; ++l) {
+          const float try_lift = most_lift * static_cast<float>(l) / kTailLiftSteps;
+          for (int c = 0; c <= kTailCurlSteps && !found; ++c) {
+            for (const float sign : {1.0f, -1.0f}) {
+              const float try_curl = 2.0f * sign * most * static_cast<float>(c) / kTailCurlSteps;
+              if (!hits(try_curl, try_lift)) {
+                curl = try_curl, lift = try_lift, found = true;
+                break;
+              }
+              if (c == 0) break;  // (no curl: one try)
             }
-            if (c == 0) break;  // (no curl: one try)
           }
         }
       }
     }
+  };
+  solve();
+  // Flesh no curl nor lift clears (the tail's root lies in it: a body spawned by an end
+  // wall) is left where it is: the bones alone are kept out, as the tail would otherwise
+  // stand on end.
+  if (flesh && hits(curl, lift)) {
+    flesh = false;
+    curl = lift = 0.0f;
+    if (hits(0.0f)) solve();
   }
   for (size_t k = 0; k < n; ++k) pose.locals[rig.tail[k]].angle_ls += curl / static_cast<float>(n) + (k == 0 ? lift : 0.0f);
 }
