@@ -197,6 +197,9 @@ std::string strobe_svg(const Skeleton& sk, const Level& level, const std::vector
       lo = glm::min(lo, glm::min(p, q));
       hi = glm::max(hi, glm::max(p, q));
     }
+    for (const std::vector<glm::vec2>& o : s.outlines) {
+      for (const glm::vec2 p : o) lo = glm::min(lo, p), hi = glm::max(hi, p);
+    }
   }
   lo -= glm::vec2(0.5f, 0.6f);
   hi += glm::vec2(0.5f, 0.4f);

@@ -298,6 +298,7 @@ void build_body_outline(AnimRig& rig, const Mat2x3& root_inv) {
 // The tail's flesh (roles.flesh) about each tail bone, in its frame at rest.
 void build_tail_flesh(AnimRig& rig, const RigRoles& roles) {
   rig.tail_flesh.clear();
+  rig.tail_reach = rig.tail_length;
   bool any = false;
   std::vector<Box> flesh(rig.tail.size(), Box{glm::vec2(1e30f), glm::vec2(-1e30f)});
   for (const RigRoles::FleshPoint& f : roles.flesh) {
@@ -309,11 +310,14 @@ void build_tail_flesh(AnimRig& rig, const RigRoles& roles) {
     any = true;
   }
   if (!any) return;
+  float past = 0.0f;
   for (size_t k = 0; k < rig.tail.size(); ++k) {  // a bone without flesh of its own: the bone
     const float len = rig.skeleton.length(rig.tail[k]);
-    flesh[k] = flesh[k].united(Box{glm::vec2(0.0f), glm::vec2(len, 0.0f)});
+    const Box& f = flesh[k] = flesh[k].united(Box{glm::vec2(0.0f), glm::vec2(len, 0.0f)});
+    past = std::max({past, -f.min_ws.y, f.max_ws.y, -f.min_ws.x, f.max_ws.x - len});
   }
   rig.tail_flesh = std::move(flesh);
+  rig.tail_reach = rig.tail_length + past;
 }
 
 // The trunk's segments (AnimRig::trunk): every bone neither a limb's nor the tail's, the

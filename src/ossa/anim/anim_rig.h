@@ -255,6 +255,7 @@ struct AnimRig {
   // Per tail bone, the box its flesh fills (RigRoles::flesh; fins and flukes too) in its frame
   // at rest: x along the bone, y across. Empty: the tail's bones alone are kept out.
   std::vector<Box> tail_flesh;
+  float tail_reach = 0.0f;          // tail_length and as far as its flesh reaches past a bone
   // The body plan's gait (anim/gait_family.h): never kAuto here (the builder resolves it with
   // choose_gait_family), and what the choice reads besides the bones.
   GaitFamily gait_family = GaitFamily::kCursorial;

@@ -205,12 +205,7 @@ void keep_tail_clear(const AnimContext& ctx, const BodyFrame& body, const std::v
   }
   const glm::vec2 root = body.to_ws(base.apply(pose.locals[rig.tail[0]].offset_ls));
   const size_t n = std::min<size_t>(rig.tail.size(), kMaxTailBones);
-  float flesh_reach = 0.0f;  // how far its flesh reaches past its bones
-  for (size_t k = 0; k < rig.tail_flesh.size(); ++k) {
-    const Box& f = rig.tail_flesh[k];
-    flesh_reach = std::max({flesh_reach, -f.min_ws.y, f.max_ws.y, -f.min_ws.x, f.max_ws.x - rig.skeleton.length(rig.tail[k])});
-  }
-  const float len = rig.tail_length + flesh_reach;
+  const float len = rig.tail_reach;  // (with its flesh)
   if (!ctx.level.first_overlap(Box{root - glm::vec2(len), root + glm::vec2(len)})) return;
   glm::vec2 p[kMaxTailBones + 1];
   // The tail's flesh (AnimRig::tail_flesh) as one closed outline: along the boxes' lower
