@@ -31,6 +31,10 @@ constexpr float kDt = 1.0f / 120.0f;
 // 2026-11-28; lower it as the animator gets better). No run may put a bone more than 1 mm into
 // a box.
 constexpr int kRandomRunsOver1mm = 1;
+// Of the 660 runs of "every example in the 2 m frame walks, runs and turns back on every shipped
+// level", how many put a bone more than 1 mm into a box (measured 2026-11-28: the rabbit on
+// slopes.json; lower it as the animator gets better).
+constexpr int kFrameRunsOver1mm = 1;
 
 Level drops() { return load_level(scenes::source_path("levels/drops.json")).value(); }
 
@@ -647,6 +651,41 @@ TEST_CASE("every example walks and runs then turns back and jumps on every shipp
       check_clean(run_from_spawn(name, level, script), name + " on " + file);
     }
   }
+}
+
+TEST_CASE("every example in the 2 m frame walks, runs and turns back on every shipped level", "[game][anim][locomotion]") {
+  // Issue 29's "every size": the Known-limits sweep's runs (ossa-sweep --size 2) of the examples
+  // in the stylised 2 m frame, where the small animals stand as tall as a horse. No stance foot
+  // sliding or short of its foothold and no NaN in any run; every bone within 1 mm is the goal,
+  // not yet reached by one run (README Known limits: the rabbit's forearm 1.5 mm across the
+  // corner of slopes.json's top as its forefoot steps just past it), so the test holds the count
+  // of runs with a bone over 1 mm to what it is now. (The pig, blocked at stairs.json's top
+  // riser, set a forefoot down far ahead and its reach pulled the body 8 cm down onto the step's
+  // corner, a rib 3.1 mm in it.) Under the sanitizers its sample (sweep_sample.h).
+  const std::vector<std::string> animals = sampled_animals("game:frame levels");
+  int runs = 0, over = 0;
+  std::ostringstream worst;
+  for (const char* file : {"default.json", "drops.json", "rough.json", "slopes.json", "stairs.json"}) {
+    const Level level = load_level(scenes::source_path(std::string("levels/") + file)).value();
+    for (const std::string& name : animals) {
+      for (const char* script : {"walk:0.6:30", "run:1:15", "walk:0.5:6,stop:1,walk:-0.6:6"}) {
+        const SimResult r = run_from_spawn(name, level, script, false);
+        ++runs;
+        INFO(name << " in the 2 m frame on " << file << ", " << script << ": deepest " << r.probe.deepest_bone << " "
+                  << r.probe.max_penetration_m << " m at " << r.probe.deepest_at_s << " s");
+        CHECK(r.probe.max_stance_slip_m <= 0.001f);
+        CHECK(r.probe.max_stance_gap_m <= 0.001f);
+        CHECK(r.probe.nan_count == 0);
+        if (r.probe.max_penetration_m > 0.001f) {
+          ++over;
+          worst << " " << name << "/" << file << "/" << script << " " << r.probe.max_penetration_m << " m";
+        }
+      }
+    }
+  }
+  INFO(over << " of " << runs << " runs with a bone over 1 mm:" << worst.str());
+  CHECK(runs == 15 * static_cast<int>(animals.size()));
+  if (animals.size() == 44) CHECK(over <= kFrameRunsOver1mm);
 }
 
 TEST_CASE("random creatures walk and run then turn back and jump on every shipped level", "[game][anim][locomotion]") {

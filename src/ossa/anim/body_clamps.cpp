@@ -400,6 +400,9 @@ void pitch_for_front_shoulder(Placement& p) {
 // kMaxTrunkRaiseOfHip under a riser's top where it crosses it).
 // The bones as at rest, the body placed as now; the skull's kept level.
 constexpr float kTrunkKeepOfHip = 0.01f;  // (kMaxTrunkRaiseOfHip: body_motion.h)
+// A trunk that sank into a box on this tick rises out of it whatever the legs reach, up to this
+// many hip heights (keep_body_out_of_ground).
+constexpr float kTrunkSinkOfHip = 0.05f;
 // A body held by its hind girdle alone turns up for its trunk at most this many times a tick.
 constexpr int kTrunkPitchPasses = 3;
 TrunkNeed trunk_need(const AnimContext& ctx, const BodyFrame& body, float lift, glm::vec2 pivot_ws) {
@@ -522,7 +525,18 @@ void keep_body_out_of_ground(Placement& p, float fell, const std::vector<float>&
     trunk = trunk_need(p.ctx, p.body, raise, pivot);
     if (p.body.pitch == was) break;  // at the steepest already
   }
-  const float trunk_raise = std::min(trunk.raise, std::max(least_room - raise, 0.0f));
+  // What the legs' reach allows; but the body does not sink into a box it was clear of: a need
+  // that only takes back this tick's descent is met whatever the legs reach, and a stance foot
+  // it leaves out of reach lifts (clamp 6). (The pig in the 2 m frame, blocked at stairs.json's
+  // top riser, set a forefoot down far ahead and was pulled 8 cm down onto the step's corner, a
+  // rib 3.1 mm in it.) A need larger than the descent is a box the body was in already (a wall
+  // it stands at), which this clamp does not climb; one larger than kTrunkSinkOfHip, or a
+  // landing's descent, is a fall, which the legs take (random creature 28, landing 0.9 m down a
+  // block of rough.json, held 0.3 m up off its feet, slid them 0.14 m).
+  const bool sank = std::isnan(p.in.root) && trunk.raise > 0.0f && trunk.raise <= fell - std::max(raise, 0.0f) &&
+                    trunk.raise <= kTrunkSinkOfHip * rig.hip_height;
+  const float kept = sank ? trunk.raise : 0.0f;
+  const float trunk_raise = std::max(std::min(trunk.raise, std::max(least_room - raise, 0.0f)), kept);
   p.body.root_y_ws += raise;
   // Whatever of the need the body does not rise by leaves a bone in the box (beyond the keep).
   auto left_in = [&](float risen) {
@@ -549,14 +563,15 @@ void keep_body_out_of_ground(Placement& p, float fell, const std::vector<float>&
   for (int pass = 0; pass < 4; ++pass) {
     const float over = worse();
     if (!(over > 0.0f)) return;
-    const float step = std::min(2.0f * over + kReachCheckSlack, trunk_raise - back);
+    const float step = std::min(2.0f * over + kReachCheckSlack, trunk_raise - kept - back);
+    if (!(step > 0.0f)) return;
     p.body.root_y_ws -= step;
     back += step;
     left_in(trunk_raise - back);
   }
   if (worse() > 0.0f) {
-    p.body.root_y_ws -= trunk_raise - back;
-    left_in(0.0f);
+    p.body.root_y_ws -= trunk_raise - kept - back;
+    left_in(kept);
   }
 }
 
