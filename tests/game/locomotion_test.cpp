@@ -418,6 +418,22 @@ TEST_CASE("a foot left below a riser at a turn steps clear of it", "[game][anim]
   check_clean(run_from_spawn("ichthyornis", slopes, kStopTurn, true), "the ichthyornis on slopes.json");
 }
 
+TEST_CASE("a creature turned back from a drop its legs cannot climb does not step down it", "[game][anim][locomotion]") {
+  // The brachiosaurus (hip 3.2 m) walks to drops.json's 4 m ledge and stops there, a forefoot
+  // on its way down to the floor below and the other at the edge. Turned back, those feet are
+  // its hind feet, their girdle over the drop, and they stepped down to the floor below: the
+  // body, drawn down after them, put a rib 20 cm into the ledge's corner. The creature now turns
+  // away from the drop, its hind feet tucked until they meet the ledge. Every bone within 1 mm,
+  // no stance foot sliding or short of its foothold, and it walks back.
+  const Level level = drops();
+  Player player(example("brachiosaurus"), SplinePrototypes::defaults());
+  player.animator().reset(level.spawn_ws + glm::vec2(6.0f, 1.0f), level);
+  const SimResult r = run_script(player, level, parse_script("walk:0.5:6,stop:1,walk:-0.6:6").value(), 120);
+  CHECK(r.x_max_m > 26.0f);  // it reached the ledge's edge at x 26
+  CHECK(r.x_reached < r.x_max_m - 10.0f);
+  check_clean(r, "the brachiosaurus turned back at drops.json's 4 m ledge");
+}
+
 TEST_CASE("a creature straddling drops.json's gap turns back onto the ledge it came from", "[game][anim][locomotion]") {
   // Random creature 12 (a quadruped, hip 0.86 m) runs to the 3 m gap and stops over it, its
   // forefeet on the far ledge and its hind feet hanging in the gap. Turned back, the feet that

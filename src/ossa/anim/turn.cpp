@@ -25,10 +25,20 @@ void turn_feet(const AnimContext& ctx, const SplinePrototypes& prototypes, const
   const AnimRig& rig = ctx.rig;
   const int n = static_cast<int>(rig.girdles.size());
   // A foot hanging over a drop (step.h) turns back with the creature: it steps under its
-  // girdle like any foot in the air (below).
+  // girdle like any foot in the air (below). So does a foot swinging down a drop deeper than
+  // the legs climb back up.
+  const float climb = ctx.params.max_step_up * rig.climb_height;
+  float lowest = INFINITY;  // the lowest foot standing
+  for (const FootState& f : feet.feet) {
+    if (f.state == LegState::kStance) lowest = std::min(lowest, f.pos_ws.y);
+  }
   std::vector<char> was_air(feet.feet.size(), 0);
   for (size_t k = 0; k < feet.feet.size(); ++k) {
     FootState& f = feet.feet[k];
+    if (f.state == LegState::kSwing && !f.air && f.to_ws.y < std::min(f.from_ws.y, lowest) - climb) {
+      was_air[k] = 1;
+      continue;
+    }
     if (!f.air) continue;
     was_air[k] = 1;
     unhang(f);
@@ -82,8 +92,15 @@ void turn_feet(const AnimContext& ctx, const SplinePrototypes& prototypes, const
     // A foot that hung over a drop and finds no ground its leg reaches from where the girdle
     // stands (the girdle is still over the drop) hangs on, tucked: stepping down the drop would
     // pull the body down after it, and a leg hanging stretched would drag its foot through the
-    // ledge's face as the body walks back.
-    if (was_air[feet.foot_of_leg[i]] && (!found || !reaches(in, leg, landing))) {
+    // ledge's face as the body walks back. So does any foot whose landing out of its leg's
+    // reach lies down a drop deeper than the legs climb, below every foot standing: the
+    // creature turns away from the drop, not down it (one already half down it, its forefeet
+    // on the floor below, steps on down as before). (A brachiosaurus, hip 3.2 m, stopped at drops.json's 4 m ledge with a
+    // forefoot on its way down and the other at the edge; turned round, those feet were its
+    // hind feet, their girdle over the drop, and they stepped down to the floor below: the body,
+    // drawn down after them, put a rib 20 cm into the ledge's corner.)
+    const int k = feet.foot_of_leg[i];
+    if ((was_air[k] || (found && landing.y < lowest - climb)) && (!found || !reaches(in, leg, landing))) {
       hang(ctx, body, leg, 0.0f, f);  // tucked: the girdle goes back over the ledge it hangs from
       // and it plants on that ledge once it meets it (it no longer steps off it: random 12
       // walked back from drops.json's pit on forefeet hanging along the top, and fell when its
