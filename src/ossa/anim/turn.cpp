@@ -93,12 +93,13 @@ void turn_feet(const AnimContext& ctx, const SplinePrototypes& prototypes, const
     // stands (the girdle is still over the drop) hangs on, tucked: stepping down the drop would
     // pull the body down after it, and a leg hanging stretched would drag its foot through the
     // ledge's face as the body walks back. So does any foot whose landing out of its leg's
-    // reach lies down a drop deeper than the legs climb, below every foot standing: the
-    // creature turns away from the drop, not down it (one already half down it, its forefeet
-    // on the floor below, steps on down as before). (A brachiosaurus, hip 3.2 m, stopped at drops.json's 4 m ledge with a
-    // forefoot on its way down and the other at the edge; turned round, those feet were its
-    // hind feet, their girdle over the drop, and they stepped down to the floor below: the body,
-    // drawn down after them, put a rib 20 cm into the ledge's corner.)
+    // reach lies down a drop deeper than the legs climb, below every foot standing (any, when
+    // none stands): the creature turns away from the drop, not down it; one already half down
+    // it, its forefeet on the floor below, steps on down as before. (A brachiosaurus, hip
+    // 3.2 m, stopped at drops.json's 4 m ledge with a forefoot on its way down and the other
+    // at the edge; turned round, those feet were its hind feet, their girdle over the drop, and
+    // they stepped down to the floor below: the body, drawn down after them, put a rib 20 cm
+    // into the ledge's corner.)
     const int k = feet.foot_of_leg[i];
     if ((was_air[k] || (found && landing.y < lowest - climb)) && (!found || !reaches(in, leg, landing))) {
       hang(ctx, body, leg, 0.0f, f);  // tucked: the girdle goes back over the ledge it hangs from
