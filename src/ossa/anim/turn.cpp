@@ -25,20 +25,10 @@ void turn_feet(const AnimContext& ctx, const SplinePrototypes& prototypes, const
   const AnimRig& rig = ctx.rig;
   const int n = static_cast<int>(rig.girdles.size());
   // A foot hanging over a drop (step.h) turns back with the creature: it steps under its
-  // girdle like any foot in the air (below). So does a foot swinging down a drop deeper than
-  // the legs climb back up.
-  const float climb = ctx.params.max_step_up * rig.climb_height;
-  float lowest = INFINITY;  // the lowest foot standing
-  for (const FootState& f : feet.feet) {
-    if (f.state == LegState::kStance) lowest = std::min(lowest, f.pos_ws.y);
-  }
+  // girdle like any foot in the air (below).
   std::vector<char> was_air(feet.feet.size(), 0);
   for (size_t k = 0; k < feet.feet.size(); ++k) {
     FootState& f = feet.feet[k];
-    if (f.state == LegState::kSwing && !f.air && f.to_ws.y < std::min(f.from_ws.y, lowest) - climb) {
-      was_air[k] = 1;
-      continue;
-    }
     if (!f.air) continue;
     was_air[k] = 1;
     unhang(f);
@@ -60,6 +50,12 @@ void turn_feet(const AnimContext& ctx, const SplinePrototypes& prototypes, const
     if (!ok) feet.foot_of_leg = old;
   }
   const FootholdInputs in = planner(ctx, body, gait, feet);
+  // A drop deeper than the legs climb back up, below every foot standing (below).
+  const float climb = ctx.params.max_step_up * rig.climb_height;
+  float lowest = INFINITY;
+  for (const FootState& f : feet.feet) {
+    if (f.state == LegState::kStance) lowest = std::min(lowest, f.pos_ws.y);
+  }
   // Girdles spaced unevenly along the body (three leg pairs) cannot all land on feet: a leg
   // whose foot (standing or in the air) is now out of reach lifts from the nearest foot on the
   // ground it reaches and steps under its girdle. A foot in the air heading out of reach (to
