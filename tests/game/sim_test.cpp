@@ -137,6 +137,28 @@ TEST_CASE("OutlineProbe measures the drawn body where the bones' figure does not
     CHECK(outline->deepest_outline_at_s > 5.0f);
     CHECK(outline->deepest_outline_part == "axial");
   }
+  SECTION("blocked at a wall its legs cannot climb: the drawn body out of it too") {
+    // The wall sweep stops the body before its drawn flesh (AnimRig::flesh) meets a wall, not
+    // only its bones: the triceratops's horns went 0.5 m into slopes.json's end wall, the
+    // elephant's trunk 11 cm into drops.json's, the horse's chest 12 cm into drops.json's 1 m
+    // ledge as it came back to it.
+    struct Case {
+      const char* animal;
+      const char* level;
+      const char* script;
+      BodyPartKind kind;
+    };
+    for (const Case& c : {Case{"triceratops", "levels/slopes.json", "walk:0.6:14", BodyPartKind::kHorn},
+                          Case{"african elephant", "levels/drops.json", "walk:0.6:22", BodyPartKind::kTrunk},
+                          Case{"horse", "levels/drops.json", "walk:0.5:6,stop:1,walk:-0.6:6", BodyPartKind::kAxial}}) {
+      const SimResult r = run(c.animal, load_level(scenes::source_path(c.level)).value(), c.script, outline);
+      INFO(c.animal << " on " << c.level << ": deepest " << outline->deepest_outline_part << " "
+                    << outline->max_outline_penetration_m << " m at " << outline->deepest_outline_at_s << " s");
+      CHECK(r.blocked_s > 0.5f);
+      CHECK(r.probe.max_penetration_m <= 0.001f);
+      CHECK(outline->max_by_kind[static_cast<size_t>(c.kind)] <= 0.001f);
+    }
+  }
   SECTION("a whale's flukes: kept out of the ground with its tail") {
     // A whale lies along default.json's floor from its spawn on; its tail's bones lay clear
     // of the floor while the flukes drawn about them went 0.5 m into it, until the tail's

@@ -21,6 +21,8 @@ constexpr float kMinRestHeightOfReach = 0.25f;
 constexpr float kMinRestHeight = 0.001f;
 // The wall sweep cuts the body into this many slabs along its length.
 constexpr int kBodySlabs = 4;
+// The trunk's drawn outline (AnimRig::flesh) is thinned to within this many hip heights.
+constexpr float kFleshToleranceOfHip = 0.005f;
 // AnimRig::crawl_climb: of the legless root's rest height, and of the body's length.
 constexpr float kCrawlClimbOfRest = 2.0f, kCrawlClimbOfLength = 0.25f;
 
@@ -320,10 +322,10 @@ void build_tail_flesh(AnimRig& rig, const RigRoles& roles) {
   rig.tail_reach = rig.tail_length + past;
 }
 
-// The trunk's segments (AnimRig::trunk): every bone neither a limb's nor the tail's, the
-// skull's and what hangs from it last.
-void build_trunk(AnimRig& rig) {
-  if (rig.legs.empty()) return;
+// Which part of the trunk each bone is: the body's (the spine but the tail, the ribs), the
+// head's (the skull and what hangs from it) or neither (a limb's, the tail's).
+enum class TrunkPart : uint8_t { kBody, kHead, kNone };
+std::vector<TrunkPart> trunk_parts(const AnimRig& rig) {
   const Skeleton& sk = rig.skeleton;
   std::vector<uint8_t> tail(sk.bone_count(), 0), skull(sk.bone_count(), 0);
   for (int b : rig.tail) tail[b] = 1;
@@ -333,6 +335,19 @@ void build_trunk(AnimRig& rig) {
     tail[b] |= tail[sk.parent(b)];
     skull[b] |= skull[sk.parent(b)];
   }
+  std::vector<TrunkPart> part(sk.bone_count(), TrunkPart::kNone);
+  for (int b = 0; b < sk.bone_count(); ++b) {
+    if (!rig.limb_bone[b] && !tail[b]) part[b] = skull[b] ? TrunkPart::kHead : TrunkPart::kBody;
+  }
+  return part;
+}
+
+// The trunk's segments (AnimRig::trunk): every bone neither a limb's nor the tail's, the
+// skull's and what hangs from it last.
+void build_trunk(AnimRig& rig) {
+  if (rig.legs.empty()) return;
+  const Skeleton& sk = rig.skeleton;
+  const std::vector<TrunkPart> parts = trunk_parts(rig);
   std::vector<AnimRig::TrunkSegment> body, head;
   auto add = [&](std::vector<AnimRig::TrunkSegment>& to, int b) {
     const AnimRig::TrunkSegment seg{bone_start(rig.model_rest[b]), bone_end(rig.model_rest[b], sk.length(b))};
@@ -343,8 +358,7 @@ void build_trunk(AnimRig& rig) {
     to.push_back(seg);
   };
   for (int b = 0; b < sk.bone_count(); ++b) {
-    if (rig.limb_bone[b] || tail[b]) continue;
-    add(skull[b] ? head : body, b);
+    if (parts[b] != TrunkPart::kNone) add(parts[b] == TrunkPart::kHead ? head : body, b);
   }
   rig.trunk = body;
   rig.trunk_level_from = body.size();
@@ -355,6 +369,91 @@ void build_trunk(AnimRig& rig) {
   for (const AnimRig::TrunkSegment& t : rig.trunk) {
     rig.trunk_lo = glm::min(rig.trunk_lo, glm::min(t.a, t.b) - root);
     rig.trunk_hi = glm::max(rig.trunk_hi, glm::max(t.a, t.b) - root);
+  }
+}
+
+// Points of an open polyline kept by Douglas–Peucker: every point dropped lies within `tol`
+// of the chord between the kept ones around it.
+void thin_polyline(const std::vector<glm::vec2>& p, size_t from, size_t to, float tol, std::vector<glm::vec2>& kept) {
+  float worst = tol;
+  size_t at = 0;
+  const glm::vec2 a = p[from], d = p[to] - a;
+  const float len = glm::length(d);
+  for (size_t i = from + 1; i < to; ++i) {
+    const glm::vec2 v = p[i] - a;
+    const float off = len > 1e-9f ? std::fabs(v.x * d.y - v.y * d.x) / len : glm::length(v);
+    if (off > worst) worst = off, at = i;
+  }
+  if (at == 0) {
+    kept.push_back(p[to]);
+    return;
+  }
+  thin_polyline(p, from, at, tol, kept);
+  thin_polyline(p, at, to, tol, kept);
+}
+
+// The drawn body's outline about the trunk (AnimRig::flesh): each part's closed outline cut
+// into runs of points that follow the body's bones or the head's, each run thinned to within
+// kFleshToleranceOfHip.
+void build_flesh(AnimRig& rig, const RigRoles& roles) {
+  if (rig.legs.empty() || roles.flesh.empty()) return;
+  const std::vector<TrunkPart> parts = trunk_parts(rig);
+  const float tol = kFleshToleranceOfHip * rig.hip_height;
+  auto part_of = [&](const RigRoles::FleshPoint& f) {
+    return f.bone >= 0 && f.bone < static_cast<int>(parts.size()) ? parts[static_cast<size_t>(f.bone)] : TrunkPart::kNone;
+  };
+  std::vector<AnimRig::TrunkSegment> body, head;
+  std::vector<glm::vec2> run, kept;
+  auto flush = [&](TrunkPart part) {
+    if (run.size() >= 2 && part != TrunkPart::kNone) {
+      kept.assign(1, run[0]);
+      thin_polyline(run, 0, run.size() - 1, tol, kept);
+      std::vector<AnimRig::TrunkSegment>& to = part == TrunkPart::kHead ? head : body;
+      for (size_t i = 1; i < kept.size(); ++i) to.push_back({kept[i - 1], kept[i]});
+    }
+    run.clear();
+  };
+  for (size_t begin = 0; begin < roles.flesh.size();) {
+    size_t end = begin;
+    while (end < roles.flesh.size() && roles.flesh[end].part == roles.flesh[begin].part) ++end;
+    // The closed outline from a point where its part changes (or from its first point), round
+    // to that point again.
+    const size_t n = end - begin;
+    size_t start = 0;
+    for (size_t i = 0; i < n; ++i) {
+      if (part_of(roles.flesh[begin + i]) != part_of(roles.flesh[begin + (i + n - 1) % n])) {
+        start = i;
+        break;
+      }
+    }
+    TrunkPart current = part_of(roles.flesh[begin + start]);
+    for (size_t k = 0; k <= n; ++k) {
+      const RigRoles::FleshPoint& f = roles.flesh[begin + (start + k) % n];
+      const TrunkPart part = part_of(f);
+      if (part != current) {
+        flush(current);
+        current = part;
+      }
+      run.push_back(f.position_ms);
+    }
+    flush(current);
+    begin = end;
+  }
+  rig.flesh = body;
+  rig.flesh_level_from = body.size();
+  rig.flesh.insert(rig.flesh.end(), head.begin(), head.end());
+  const glm::vec2 root{0.0f, rig.root_rest_y};
+  const glm::vec2 skull = rig.skull >= 0 ? bone_start(rig.model_rest[rig.skull]) : glm::vec2(0.0f);
+  rig.flesh_lo = rig.head_flesh_lo = glm::vec2(1e30f);
+  rig.flesh_hi = rig.head_flesh_hi = glm::vec2(-1e30f);
+  for (size_t i = 0; i < rig.flesh.size(); ++i) {
+    const AnimRig::TrunkSegment& t = rig.flesh[i];
+    const bool level = i >= rig.flesh_level_from;
+    glm::vec2& lo = level ? rig.head_flesh_lo : rig.flesh_lo;
+    glm::vec2& hi = level ? rig.head_flesh_hi : rig.flesh_hi;
+    const glm::vec2 from = level ? skull : root;
+    lo = glm::min(lo, glm::min(t.a, t.b) - from);
+    hi = glm::max(hi, glm::max(t.a, t.b) - from);
   }
 }
 
@@ -688,14 +787,15 @@ RigRoles rig_roles(const Creature& creature) {
                            2 * static_cast<int>(limb.girdle) + limb.slot});
   }
   // The body's outline vertices, each with the palette entry it follows most (a mid joint's
-  // belongs to a limb: left out).
+  // belongs to a limb: bone -1).
   if (Result<BodyMesh> body = try_build_body(creature)) {
     const int bones = creature.skeleton.bone_count();
-    for (const BodyPart& part : body->parts) {
-      for (uint32_t i : part.outline) {
+    for (size_t p = 0; p < body->parts.size(); ++p) {
+      for (uint32_t i : body->parts[p].outline) {
         const BodyVertex& v = body->vertices[i];
         const size_t most = static_cast<size_t>(std::max_element(v.weights.begin(), v.weights.end()) - v.weights.begin());
-        if (v.bones[most] < bones) roles.flesh.push_back({v.bones[most], v.position_ms});
+        const int bone = v.bones[most] < bones ? static_cast<int>(v.bones[most]) : -1;
+        roles.flesh.push_back({bone, v.position_ms, static_cast<int>(p)});
       }
     }
   }
@@ -784,6 +884,7 @@ std::shared_ptr<const AnimRig> build_anim_rig(const Skeleton& skeleton, const Po
     rig->crawl_climb = std::min(kCrawlClimbOfRest * rig->root_rest_y, kCrawlClimbOfLength * (rig->body_front - rig->body_back));
   }
   build_trunk(*rig);
+  build_flesh(*rig, roles);
   build_flex(*rig);
   anim::build_pentapedal(*rig);
   rig->weight_kg = roles.weight_kg;

@@ -242,6 +242,15 @@ struct AnimRig {
   std::vector<TrunkSegment> trunk;
   size_t trunk_level_from = 0;
   glm::vec2 trunk_lo{0.0f}, trunk_hi{0.0f};
+  // The drawn body's outline where it follows the trunk's bones (RigRoles::flesh: the chest,
+  // the neck, the hump), then from flesh_level_from on where it follows the skull's (the
+  // muzzle, horns, an elephant's trunk; level with the head), thinned to segments at rest
+  // (model space): the wall sweep stops the body before them meet a wall. flesh_lo/flesh_hi
+  // bound the first relative to the root's rest joint, head_flesh_lo/head_flesh_hi the others
+  // relative to the skull's. Legged rigs with a generated body only.
+  std::vector<TrunkSegment> flesh;
+  size_t flesh_level_from = 0;
+  glm::vec2 flesh_lo{0.0f}, flesh_hi{0.0f}, head_flesh_lo{0.0f}, head_flesh_hi{0.0f};
 
   // Tail: it hangs from the nearest ancestor kept current each tick through the bones between
   // (or their rest product when none bends).
@@ -289,13 +298,15 @@ struct RigRoles {
   GaitFamily gait_family = GaitFamily::kAuto;
   float weight_kg = 0.0f;
   int skull_variant = 0;
-  // The drawn body's outline at rest (model space), each point with the bone it follows most:
-  // the tail's is kept out of the level with its bones (AnimRig::tail_flesh). rig_roles reads
-  // it from a generated creature's body (body_mesh.h); empty: the bones alone (a rigged
-  // character's sprites).
+  // The drawn body's outline at rest (model space), each point with the bone it follows most
+  // (-1: a limb's mid joint) and the body part whose closed outline it lies on, in order
+  // along it: the tail's is kept out of the level with its bones (AnimRig::tail_flesh), the
+  // trunk's and the head's meet walls (AnimRig::flesh). rig_roles reads it from a generated
+  // creature's body (body_mesh.h); empty: the bones alone (a rigged character's sprites).
   struct FleshPoint {
     int bone = -1;
     glm::vec2 position_ms{0.0f};
+    int part = 0;
   };
   std::vector<FleshPoint> flesh;
 };
