@@ -109,9 +109,9 @@ TEST_CASE("joint_angles: each leg's hip, knee and ankle in stance and swing, 180
 
 TEST_CASE("OutlineProbe measures the drawn body where the bones' figure does not look", "[game][sim]") {
   // The drawn body (flesh, fins, horns beyond the bones, rested on the floor as the game draws
-  // it) against the level. Walking on flat ground it stays out. The chamois blocked at
-  // default.json's 1.8 m post keeps its bones out of the post, but the drawn flesh of its chest
-  // and head lies 3.6 cm in it (README Known limits), which only the outline figure sees.
+  // it) against the level. Walking on flat ground it stays out. The chamois climbing
+  // default.json's stairs keeps its bones out of the steps, but the drawn flesh of its chest
+  // lies 3.6 cm in the riser ahead (README Known limits), which only the outline figure sees.
   auto run = [&](const char* name, const Level& level, const char* script, std::optional<OutlineProbe>& outline) {
     const auto c = std::make_shared<const Creature>(build_creature(scenes::generator().example(name).value()).value());
     outline.emplace(*c);
@@ -128,7 +128,7 @@ TEST_CASE("OutlineProbe measures the drawn body where the bones' figure does not
     CHECK(outline->max_outline_penetration_m <= 0.001f);
     CHECK(r.probe.max_penetration_m <= 0.001f);
   }
-  SECTION("blocked at a post: the bones out of it, the drawn body in it") {
+  SECTION("held at a riser: the bones out of it, the drawn body in it") {
     const SimResult r = run("chamois", load_level(scenes::source_path("levels/default.json")).value(), "walk:0.6:6", outline);
     INFO("deepest " << outline->deepest_outline_part << " " << outline->max_outline_penetration_m << " m at " << outline->deepest_outline_at_s << " s");
     CHECK(r.blocked_s > 0.2f);
