@@ -514,13 +514,15 @@ int main(int argc, char** argv) {
     out["joint_angles"] = legs;
     out["max_stance_slip_m"] = probe.max_stance_slip_m;
     out["max_stance_gap_m"] = probe.max_stance_gap_m;  // a standing foot short of its foothold
-    out["max_penetration_m"] = probe.max_penetration_m;  // every bone (limbs and body)
+    // The worst over everything (issue 27): every bone, and the drawn body's outline where the
+    // creature has one; the bones' alone in max_bone_penetration_m.
+    out["max_penetration_m"] = outline ? std::max(probe.max_penetration_m, outline->max_outline_penetration_m) : probe.max_penetration_m;
+    out["max_bone_penetration_m"] = probe.max_penetration_m;
     out["max_limb_penetration_m"] = probe.max_limb_penetration_m;
     out["max_body_penetration_m"] = probe.max_body_penetration_m;
     out["deepest_bone"] = probe.deepest_bone;
     out["deepest_at_s"] = probe.deepest_at_s;
-    // The drawn body's outline (outline_probe.h; null for a rigged character): not part of
-    // max_penetration_m, which is the bones'.
+    // The drawn body's outline (outline_probe.h; null for a rigged character).
     out["max_outline_penetration_m"] = outline ? Json(outline->max_outline_penetration_m) : Json();
     out["deepest_outline_part"] = outline ? Json(outline->deepest_outline_part) : Json();
     out["deepest_outline_at_s"] = outline ? Json(outline->deepest_outline_at_s) : Json();

@@ -211,7 +211,9 @@ OJson record_json(const RunRecord& r) {
           {"script", r.script},
           {"max_stance_slip_m", json_float(r.sim.probe.max_stance_slip_m)},
           {"max_stance_gap_m", json_float(r.sim.probe.max_stance_gap_m)},
-          {"max_penetration_m", json_float(r.sim.probe.max_penetration_m)},
+          // The worst over everything, the drawn body's outline too; the bones' alone next.
+          {"max_penetration_m", json_float(std::max(r.sim.probe.max_penetration_m, r.outline_penetration_m))},
+          {"max_bone_penetration_m", json_float(r.sim.probe.max_penetration_m)},
           {"max_limb_penetration_m", json_float(r.sim.probe.max_limb_penetration_m)},
           {"max_body_penetration_m", json_float(r.sim.probe.max_body_penetration_m)},
           {"deepest_bone", r.sim.probe.deepest_bone},
