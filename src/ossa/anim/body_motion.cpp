@@ -391,7 +391,8 @@ BodyMotionResult sweep_body(const AnimContext& ctx, const BodyFrame& body, const
         const float lo_x = std::min(a.x, b.x), hi_x = std::max(a.x, b.x);
         float floor_y = std::max(line, support) + climb;
         // Ground the legs walk to from under the root, no riser on the way higher than they
-        // climb (a flight of small steps, a tile slope), is ground: flesh rests on it (body_floor.h).
+        // climb (a flight of small steps, a tile slope), is ground: flesh rests on it
+        // (body_floor.h). (No lying range: the walk starts from the support line.)
         const float walked = ctx.ground.climbable_top(body.x_ws, std::min({body.x_ws, lo_x, lo_x + dx - margin_lo.x}),
                                                       std::max({body.x_ws, hi_x, hi_x + dx + margin_hi.x}), 1.0f, -1.0f, support, climb);
         if (walked + kFleshRiseOfHip * hip > floor_y) floor_y = walked + kFleshRiseOfHip * hip;
