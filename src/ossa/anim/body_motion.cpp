@@ -129,10 +129,11 @@ bool on_slope(const AnimContext& ctx, const BodyFrame& body, const RigLeg& info,
                          std::max(info.lower, 1e-3f));
 }
 
-// The trunk's bones' rest bound (AnimRig::trunk_lo/trunk_hi) turned with the body, world space.
-Box trunk_bound_ws(const AnimRig& rig, const BodyFrame& body) {
+// A rest bound relative to the root's rest joint (AnimRig::trunk_lo/trunk_hi,
+// flesh_lo/flesh_hi) turned with the body, world space.
+Box rest_bound_ws(const AnimRig& rig, const BodyFrame& body, glm::vec2 lo, glm::vec2 hi) {
   Box box{glm::vec2(1e30f), glm::vec2(-1e30f)};
-  for (glm::vec2 c : {rig.trunk_lo, rig.trunk_hi, glm::vec2(rig.trunk_lo.x, rig.trunk_hi.y), glm::vec2(rig.trunk_hi.x, rig.trunk_lo.y)}) {
+  for (glm::vec2 c : {lo, hi, glm::vec2(lo.x, hi.y), glm::vec2(hi.x, lo.y)}) {
     const glm::vec2 w = body.body_point_ws(rig, c + glm::vec2(0.0f, rig.root_rest_y));
     box.min_ws = glm::min(box.min_ws, w);
     box.max_ws = glm::max(box.max_ws, w);
@@ -144,18 +145,10 @@ Box trunk_bound_ws(const AnimRig& rig, const BodyFrame& body) {
 // skull's joint at skull_fs (facing space).
 Box flesh_bound_ws(const AnimRig& rig, const BodyFrame& body, glm::vec2 skull_fs) {
   Box box{glm::vec2(1e30f), glm::vec2(-1e30f)};
-  auto add = [&](glm::vec2 w) {
-    box.min_ws = glm::min(box.min_ws, w);
-    box.max_ws = glm::max(box.max_ws, w);
-  };
-  if (rig.flesh_level_from > 0) {
-    for (glm::vec2 c : {rig.flesh_lo, rig.flesh_hi, glm::vec2(rig.flesh_lo.x, rig.flesh_hi.y), glm::vec2(rig.flesh_hi.x, rig.flesh_lo.y)}) {
-      add(body.body_point_ws(rig, c + glm::vec2(0.0f, rig.root_rest_y)));
-    }
-  }
+  if (rig.flesh_level_from > 0) box = rest_bound_ws(rig, body, rig.flesh_lo, rig.flesh_hi);
   if (rig.flesh_level_from < rig.flesh.size()) {
-    add(body.to_ws(skull_fs + rig.head_flesh_lo));
-    add(body.to_ws(skull_fs + rig.head_flesh_hi));
+    const glm::vec2 a = body.to_ws(skull_fs + rig.head_flesh_lo), b = body.to_ws(skull_fs + rig.head_flesh_hi);
+    box = box.united(Box{glm::min(a, b), glm::max(a, b)});
   }
   return box;
 }
@@ -359,7 +352,7 @@ BodyMotionResult sweep_body(const AnimContext& ctx, const BodyFrame& body, const
   // stopped the eared seal half-way up the flight; a bone slanting over a step's corner needs
   // lifting only where it crosses it.
   if (!whole && rig.trunk_level_from > 0 && move > 0.0f) {
-    const Box bound = trunk_bound_ws(rig, body);
+    const Box bound = rest_bound_ws(rig, body, rig.trunk_lo, rig.trunk_hi);
     if (auto near = level.sweep_box(Box{bound.min_ws - margin_lo, bound.max_ws + margin_hi}, {dx, 0.0f}); near && near->t < 1.0f) {
       const float pitch_slope = std::tan(body.pitch);
       for (size_t i = 0; i < rig.trunk_level_from && move > 0.0f; ++i) {
