@@ -843,6 +843,57 @@ TEST_CASE("a jump into a wall stops horizontally at it without entering it", "[g
   CHECK(probe.nan_count == 0);
 }
 
+TEST_CASE("a small creature's jump with the stick pushed leaps forwards and a big one's keeps its height", "[game][anim][locomotion]") {
+  // Borelli: a 3 cm frog's legs throw it about as fast as a horse's (jump_rise), far faster than
+  // it runs. Pushed by the stick it leans that throw forwards (jump_velocity, up to 45° at the
+  // full run's stick), as a real frog leaps forwards, long and low; it hopped 0.48 m up and came
+  // down 0.54 m on. A horse at the run is faster than its
+  // throw: its jump rises its full height, forwards at its speed.
+  const Level flat = scenes::flat_level(40.0f);
+  struct Case {
+    const char* name;
+    bool leaps;
+  };
+  for (const Case c : {Case{"frog", true}, Case{"horse", false}}) {
+    Player player(example(c.name), SplinePrototypes::defaults());
+    Animator& a = player.animator();
+    a.reset({5.0f, 0.5f}, flat);
+    SimProbe probe;
+    const Controls run{1.0f, true, false};
+    step_until(player, flat, run, 2.0f, probe, [] { return false; });
+    step_until(player, flat, {1.0f, true, true}, kDt, probe, [] { return true; });
+    float take_off_x = NAN, take_off_y = NAN, vx = NAN, vy = NAN, apex = -1e9f, last_x = 0.0f;
+    const bool landed = step_until(player, flat, run, 4.0f, probe, [&] {
+      if (a.airborne() && std::isnan(vy)) {
+        take_off_x = a.x(), take_off_y = a.root_y(), vy = a.vertical_speed();
+      } else if (a.airborne() && std::isnan(vx)) {
+        vx = (a.x() - take_off_x) / kDt;
+      }
+      if (a.airborne()) apex = std::max(apex, a.root_y()), last_x = a.x();
+      return !std::isnan(vy) && !a.airborne();
+    });
+    INFO(c.name << ": take-off " << vx << " m/s forwards, " << vy << " m/s up; rose " << apex - take_off_y << " m, flew "
+                << last_x - take_off_x << " m");
+    REQUIRE(landed);
+    const float up = anim::jump_speed(a.rig(), a.params()), rise = anim::jump_rise(a.rig(), a.params());
+    if (c.leaps) {
+      // About 45°: as fast forwards as up, and no faster in all than the throw on top of its run.
+      CHECK(vx == Approx(vy).epsilon(0.1));
+      CHECK(vx * vx + vy * vy <= up * up + a.run_speed() * a.run_speed() + 0.01f);
+      CHECK(apex - take_off_y < 0.7f * rise);
+      CHECK(last_x - take_off_x > 30.0f * a.hip_height());
+    } else {
+      CHECK(vy == Approx(up).epsilon(0.02));
+      CHECK(vx == Approx(a.run_speed()).epsilon(0.1));
+      CHECK(apex - take_off_y == Approx(rise).epsilon(0.05));
+    }
+    CHECK(a.locomotion_stats().hard_landings == 0);
+    CHECK(probe.max_penetration_m <= 0.001f);
+    CHECK(probe.max_stance_slip_m <= 0.001f);
+    CHECK(probe.nan_count == 0);
+  }
+}
+
 TEST_CASE("every example animal with legs jumps its jump height from a standstill and lands clean", "[game][anim][locomotion]") {
   // Birds' crouched legs reach much further than they stand: their feet must still leave the
   // ground (they stayed planted through the whole jump, and the body came down through the

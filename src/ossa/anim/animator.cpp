@@ -305,12 +305,13 @@ void Animator::tick(float dt, const AnimatorIntent& intent, const Level& level) 
   place_body(ctx, dt);                                                          // 10 body placement
   if (!rig.legs.empty()) lift_overstretched_feet(ctx, spline_prototypes_, body_, gait_, motion_.speed, handoff_, step_);  // 10b step
   switch (mode_change(ctx, body_, step_.feet, landing, handoff_.crouch_done, loco_, body_state_.body_lift)) {  // 11 locomotion
-    case ModeChange::kJump:  // forwards at the speed asked for, even from a standstill at a step
-      take_off(ctx, body_, {body_.facing * std::max(motion_.speed, std::fabs(intent.velocity)), jump_speed(rig, params_)}, true,
-               step_.feet, loco_);
+    case ModeChange::kJump: {  // forwards at the speed asked for, even from a standstill at a step
+      const glm::vec2 v = jump_velocity(rig, params_, motion_.speed, std::fabs(intent.velocity), motion_.block.blocked);
+      take_off(ctx, body_, {body_.facing * v.x, v.y}, true, step_.feet, loco_);
       leave_ground(ctx, body_, true, loco_.floor, false, step_);
       clear_block(motion_);
       break;
+    }
     case ModeChange::kFall:  // stepped off the last foothold
       take_off(ctx, body_, {body_.facing * motion_.speed, 0.0f}, false, step_.feet, loco_);
       leave_ground(ctx, body_, false, loco_.floor, false, step_);

@@ -7,6 +7,7 @@
 #include "ossa/anim/animator_params.h"
 #include "ossa/anim/body_motion.h"
 #include "ossa/anim/foothold.h"
+#include "ossa/anim/gait_clock.h"
 
 namespace ossa {
 
@@ -56,6 +57,15 @@ float jump_rise(const AnimRig& rig, const AnimatorParams& params) {
 }
 
 float jump_speed(const AnimRig& rig, const AnimatorParams& params) { return std::sqrt(2.0f * params.gravity * jump_rise(rig, params)); }
+
+glm::vec2 jump_velocity(const AnimRig& rig, const AnimatorParams& params, float speed, float asked, bool blocked) {
+  const float up = jump_speed(rig, params), forwards = std::max(speed, asked);
+  const float full_run = run_speed(rig, params);
+  if (blocked || !(full_run > 0.0f)) return {forwards, up};
+  const float leap = up * std::sin(kLeapLeanMost * std::min(asked / full_run, 1.0f));
+  if (leap <= forwards) return {forwards, up};
+  return {leap, std::sqrt(std::max(up * up - leap * leap + forwards * forwards, 0.0f))};
+}
 
 void begin_crouch(const AnimRig& rig, const AnimatorParams& params, LocomotionState& loco) {
   loco.mode = Locomotion::kCrouch;

@@ -73,6 +73,15 @@ inline constexpr float kLeastJumpRiseM = 0.5f;
 float jump_rise(const AnimRig& rig, const AnimatorParams& params);
 // The vertical take-off speed that lifts the root jump_rise, m/s.
 float jump_speed(const AnimRig& rig, const AnimatorParams& params);
+// A jump's take-off velocity (x along the facing, y up), m/s, for a creature moving at `speed`
+// with the stick asking `asked` (both >= 0): forwards at the faster of the two, jump_speed up.
+// A creature whose legs throw it faster than it runs (a small one: jump_speed is Borelli's, its
+// run Froude's) leans its jump forwards with the stick, up to kLeapLeanMost from the vertical
+// at the full run's stick: a frog leaps a metre at a quarter metre high rather than hopping
+// half a metre straight up. The forward speed the leap adds comes from the same take-off
+// speed (sqrt(jump_speed^2 - leap^2 + forwards^2) up). Blocked at a step it jumps up.
+inline constexpr float kLeapLeanMost = 0.785398f;  // 45°: the farthest throw for a take-off speed
+glm::vec2 jump_velocity(const AnimRig& rig, const AnimatorParams& params, float speed, float asked, bool blocked);
 
 // The jump button, grounded: the crouch begins; its depth and length follow the creature's
 // size. advance_crouch moves it on by dt (loco.crouch follows); true when it is over and

@@ -302,8 +302,14 @@ bool ledge_ahead(const AnimContext& ctx, const BodyFrame& body, int leg, const F
   const glm::vec2 joint = body.girdle_ws(ctx.rig, info.girdle);
   const float R = kFootReach * info.contact_reach, facing = static_cast<float>(body.facing);
   const FootSpan span = foot_span_ws(info, body.facing);
-  if (ground_below(ctx.level, f.pos_ws.x + span.lo, f.pos_ws.x + span.hi, f.pos_ws.y + 1e-3f, R)) return false;
-  const float lowest = joint.y - R, highest = std::min(joint.y - kLedgeBelowJointOfReach * R, f.pos_ws.y);
+  // Ground below within its reach: only a ledge more than a step above that ground (a
+  // sinornis leaping onto a rough.json block 6 cm up, its feet hanging behind the riser, came
+  // down with its belly on the top and its thigh across the block's corner).
+  float lowest = joint.y - R;
+  if (auto below = ground_below(ctx.level, f.pos_ws.x + span.lo, f.pos_ws.x + span.hi, f.pos_ws.y + 1e-3f, R)) {
+    lowest = std::max(lowest, below->height_ws + ctx.params.max_step_up * ctx.rig.climb_height);
+  }
+  const float highest = std::min(joint.y - kLedgeBelowJointOfReach * R, f.pos_ws.y);
   if (!(highest > lowest)) return false;
   const float far = joint.x + facing * R;
   ctx.hits.clear();
