@@ -292,9 +292,10 @@ bool stance_reaches(const AnimContext& ctx, const BodyFrame& body, int leg, glm:
   return glm::length(anchor - joint_fs) <= kFootReach * r;
 }
 
-// Falling, a foot with no ground below it within its leg's reach, short of a ledge ahead whose
-// top lies below its girdle and no higher than the foot, its edge within the leg's reach ahead
-// of the joint: where on that top it reaches for (the nearest such ledge; *over: the foot is
+// Falling, a foot with no ground below it within its leg's reach (or only ground more than a
+// step below the ledge), short of a ledge ahead whose top lies below its girdle and no higher
+// than the foot, its edge within the leg's reach ahead of the joint: where on that top it
+// reaches for (the nearest such ledge; *over: the foot is
 // over its top already). A jump that falls short of the far side of a gap
 // lands its feet on the edge, rather than the body coming down into the ledge's top.
 bool ledge_ahead(const AnimContext& ctx, const BodyFrame& body, int leg, const FootState& f, glm::vec2* onto, bool* over) {
