@@ -13,6 +13,7 @@ layout(location = 5) in vec4 a_pattern;       // sRGB of the pattern + its stren
 layout(location = 6) in uint a_kind;          // CoatPattern
 layout(location = 7) in uint a_palette_base;  // first palette entry of this creature
 layout(location = 8) in uint a_floor_base;    // its floor: kBodyFloorEntries entries
+layout(location = 9) in float a_overhang;     // metres past a top's ends it still holds
 
 uniform samplerBuffer u_palette;
 uniform mat3 u_view_proj;                     // world metres -> clip
@@ -32,7 +33,7 @@ vec2 skin(uint bone, vec2 p) {
 
 // The floor (src/ossa/body/body_floor.h, floor_point): box tops under the creature, two per
 // palette entry (x from, x to, top; then the next), unused ones with x from > x to; flesh
-// below a top over which it lies is lifted onto it.
+// below a top over which it lies, or within a_overhang of its ends, is lifted onto it.
 vec2 rest_on_floor(vec2 p) {
   for (int k = 0; k < 4; ++k) {
     int t = int(a_floor_base) * 3 + k * 3;
@@ -40,9 +41,9 @@ vec2 rest_on_floor(vec2 p) {
     vec2 b = texelFetch(u_palette, t + 1).xy;
     vec2 c = texelFetch(u_palette, t + 2).xy;
     if (a.x > a.y) break;  // segments are filled in order
-    if (p.x >= a.x && p.x <= a.y && p.y < b.x) p.y = b.x;
+    if (p.x >= a.x - a_overhang && p.x <= a.y + a_overhang && p.y < b.x) p.y = b.x;
     if (b.y > c.x) break;
-    if (p.x >= b.y && p.x <= c.x && p.y < c.y) p.y = c.y;
+    if (p.x >= b.y - a_overhang && p.x <= c.x + a_overhang && p.y < c.y) p.y = c.y;
   }
   return p;
 }

@@ -71,6 +71,29 @@ TEST_CASE("a body's floor counts ground its bones sank into, and merges tops of 
   CHECK(body_floor(Level{}, s.skeleton, s.world, 0.1f).count == 0);
 }
 
+TEST_CASE("a long body over more box tops than the floor holds rests on every one of them", "[body]") {
+  // Sixteen treads of 0.125 m under a body 2 m long, a step of 1 or 3 cm between them (a
+  // whale over stairs). Tops merge at the higher one until kBodyFloorSegments remain; no tread
+  // is dropped, which would leave the flesh over it hanging inside its box. The merged tops
+  // lift it by no more than one step.
+  const Stick s(0.0f, 0.5f);
+  std::vector<Box> treads;
+  for (int k = 0; k < 16; ++k) treads.push_back(Box::from_corner(0.125f * k, -1.0f, 0.125f, 1.0f + (k % 2 ? 0.03f : 0.0f) + 0.01f * k));
+  const BodyFloor floor = body_floor(level_of(treads), s.skeleton, s.world, 0.0f);
+  CHECK(floor.count == kBodyFloorSegments);
+  for (const Box& t : treads) {
+    for (float x = t.min_ws.x; x <= t.max_ws.x; x += 0.01f) {
+      const float y = floor_point({x, -1.0f}, floor).y;
+      CHECK(y >= t.max_ws.y);
+      CHECK(y <= t.max_ws.y + 0.04f);
+    }
+  }
+  // Held up past a top's ends by a vertex's overhang: the outline edge between a vertex on a
+  // tread and one short of it then stays above the tread's corner.
+  CHECK(floor_point({2.05f, -1.0f}, floor, 0.1f).y == Approx(treads.back().max_ws.y));
+  CHECK(floor_point({2.05f, -1.0f}, floor).y == -1.0f);
+}
+
 TEST_CASE("a body's floor round-trips through its palette entries", "[body]") {
   BodyFloor floor;
   floor.count = 3;

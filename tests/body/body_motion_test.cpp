@@ -268,7 +268,7 @@ MotionReport run(const std::string& name, int dir) {
     const BodyFloor sent = decode_floor(std::span<const Mat2x3>(palette).subspan(static_cast<size_t>(mesh.floor_entry()), kBodyFloorEntries));
     for (size_t i = 0; i < pos.size(); ++i) {
       skinned[i] = skin_body_vertex(mesh.vertices[i], palette);
-      pos[i] = floor_point(skinned[i], sent);
+      pos[i] = floor_point(skinned[i], sent, mesh.vertices[i].overhang);
     }
   };
   // The rest pose (the bind pose): the model matrices as the world.

@@ -176,7 +176,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
     for (int k = 0; k < 4; ++k) {
       if (v.weights[static_cast<size_t>(k)] > 0.0f && v.bones[static_cast<size_t>(k)] >= body->floor_entry()) fail("body vertex beyond its palette");
     }
-    const glm::vec2 p = floor_point(skin_body_vertex(v, palette), floor);
+    const glm::vec2 p = drawn_body_vertex(v, palette, floor);
     if (!std::isfinite(p.x) || !std::isfinite(p.y)) fail("skinned body vertex not finite");
   }
   return 0;

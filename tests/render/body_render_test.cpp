@@ -41,22 +41,28 @@ bool in_triangle(glm::vec2 p, glm::vec2 a, glm::vec2 b, glm::vec2 c) {
 }  // namespace
 
 TEST_CASE("bodies: the GPU draws what the CPU skins, flesh resting on the floor", "[render][body]") {
-  // A horse in its rest pose sunk 8 cm into a ground whose top is y = 0: the shader lifts the
-  // flesh below the top onto it, as floor_point() does. The pixels the GPU covers are the
-  // pixels the CPU's skinned, floored triangles cover (up to the edges' antialiasing).
+  // A horse in its rest pose sunk to its belly into a ground whose top is y = 0 under its hind
+  // half and 15 cm higher under its fore half: the shader lifts the flesh below a top onto it,
+  // and the trunk's flesh within its overhang of the higher top's end too, as floor_point()
+  // does. The
+  // pixels the GPU covers are the pixels the CPU's skinned, floored triangles cover (up to the
+  // edges' antialiasing).
   Gl& g = gl();
   const glm::vec3 bg{0.1f, 0.2f, 0.3f};
   const Creature c = example("horse");
   const BodyMesh body = build_body(c);
+  const Box rest = body_bounds(body);
+  const float mid = 0.5f * (rest.min_ws.x + rest.max_ws.x);
   Level level;
-  level.add_box(Box::from_corner(-10.0f, -2.0f, 20.0f, 2.0f));
+  level.add_box(Box::from_corner(-10.0f, -2.0f, 10.0f + mid, 2.0f));
+  level.add_box(Box::from_corner(mid, -2.0f, 10.0f, 2.15f));
   Transform2D sunk;
-  sunk.translation = {0.0f, -0.08f};
+  sunk.translation = {0.0f, -0.85f};
   const std::vector<Mat2x3> model = model_matrices(c.skeleton, c.rest_pose.locals);
   std::vector<Mat2x3> world(model.size());
   for (size_t b = 0; b < model.size(); ++b) world[b] = sunk.to_mat2x3() * model[b];
   const BodyFloor floor = body_floor(level, c.skeleton, world, body.reach);
-  REQUIRE(floor.count == 1);
+  REQUIRE(floor.count == 2);
 
   CreatureBatch batch;
   const int id = batch.add_body(body, c.skeleton);
@@ -77,12 +83,15 @@ TEST_CASE("bodies: the GPU draws what the CPU skins, flesh resting on the floor"
   body_palette(body, world, palette, floor);
   std::vector<glm::vec2> px(body.vertices.size());
   float lowest = 1e9f;
+  int overhung = 0;  // held up on the higher top short of its end
   for (size_t i = 0; i < px.size(); ++i) {
-    const glm::vec2 p = floor_point(skin_body_vertex(body.vertices[i], palette), floor);
+    const glm::vec2 p = drawn_body_vertex(body.vertices[i], palette, floor);
     lowest = std::min(lowest, p.y);
+    overhung += p.x < mid && p.y == floor.segments[1].z;
     px[i] = g.renderer->camera.world_to_pixel(p, kW, kH);
   }
   CHECK(lowest >= 0.0f);  // nothing below the ground's top
+  CHECK(overhung > 0);
   std::vector<uint8_t> cpu(static_cast<size_t>(kW * kH), 0);
   for (size_t t = 0; t + 2 < body.indices.size(); t += 3) {
     const glm::vec2 a = px[body.indices[t]], bb = px[body.indices[t + 1]], cc = px[body.indices[t + 2]];
@@ -99,6 +108,12 @@ TEST_CASE("bodies: the GPU draws what the CPU skins, flesh resting on the floor"
   // read_framebuffer's rows: top row first (as world_to_pixel's y).
   int both = 0, either = 0, below_ground = 0;
   const float ground_px = g.renderer->camera.world_to_pixel({0.0f, 0.0f}, kW, kH).y;
+  // Where only the overhang holds the flesh up: just short of the higher top's end, below it.
+  float overhang = 0.0f;
+  for (const BodyVertex& v : body.vertices) overhang = std::max(overhang, v.overhang);
+  const glm::vec2 held_lo = g.renderer->camera.world_to_pixel({mid - overhang, floor.segments[1].z}, kW, kH);
+  const glm::vec2 held_hi = g.renderer->camera.world_to_pixel({mid, 0.0f}, kW, kH);
+  int held_cpu = 0, held_differ = 0;
   for (int y = 0; y < kH; ++y) {
     for (int x = 0; x < kW; ++x) {
       const bool gpu = !background(img.pixel(x, y), bg);
@@ -106,12 +121,15 @@ TEST_CASE("bodies: the GPU draws what the CPU skins, flesh resting on the floor"
       both += gpu && mine;
       either += gpu || mine;
       below_ground += gpu && y > ground_px + 1.0f;
+      if (x >= held_lo.x && x < held_hi.x && y >= held_lo.y && y < held_hi.y) held_cpu += mine, held_differ += gpu != mine;
     }
   }
-  INFO("both " << both << ", either " << either);
+  INFO("both " << both << ", either " << either << "; short of the higher top: " << held_cpu << " drawn, " << held_differ << " differ");
   REQUIRE(either > 2000);
   CHECK(static_cast<double>(both) / either > 0.95);
   CHECK(below_ground == 0);
+  CHECK(held_cpu > 0);
+  CHECK(held_differ < held_cpu / 4);
 }
 
 TEST_CASE("bodies: the body look is one draw, the x-ray look a draw per layer each, from one palette upload", "[render][body]") {

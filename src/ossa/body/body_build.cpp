@@ -61,6 +61,10 @@ namespace {
 
 using namespace body;
 
+// An outline edge skinned over a bending spine stretches on the outside of the bend: the floor
+// holds a part up this many times its longest rest edge past a top's ends.
+constexpr float kOverhangStretch = 1.25f;
+
 const TubePlan* find_axial(const BodyParts& parts) {
   for (const TubePlan& t : parts.tubes) {
     if (t.kind == BodyPartKind::kAxial) return &t;
@@ -262,6 +266,7 @@ BodyMesh build_body(const Creature& c, const BodyOptions& options) {
       v.pattern_kind = static_cast<uint8_t>(look.pattern);
     };
     const auto fill_first = static_cast<uint32_t>(mesh.indices.size());
+    const size_t vertex_first = mesh.vertices.size();
     BodyPart part = e.tube ? emit_tube(parts.tubes[e.index], tube_girth(parts.tubes[e.index], girth), mesh, paint) : emit_flat(parts.flats[e.index], mesh, paint);
     if (part.index_count == 0) {
       mesh.indices.resize(fill_first);
@@ -275,6 +280,18 @@ BodyMesh build_body(const Creature& c, const BodyOptions& options) {
       std::rotate(mesh.indices.begin() + fill_first, mesh.indices.begin() + part.stroke_first_index, mesh.indices.end());
       part.stroke_first_index = fill_first;
       part.first_index = fill_first + part.stroke_index_count;
+    }
+    // How far past a box top's ends the floor holds this part up (BodyVertex::overhang): its
+    // longest outline edge, with room for the skin stretching on the outside of a bend. Legs
+    // and arms keep 0: a hoof set down beside a riser keeps its shape.
+    if (part.kind != BodyPartKind::kLeg && part.kind != BodyPartKind::kArm) {
+      float edge = 0.0f;
+      for (size_t k = 0; k < part.outline.size(); ++k) {
+        const glm::vec2 a = mesh.vertices[part.outline[k]].position_ms;
+        const glm::vec2 b = mesh.vertices[part.outline[(k + 1) % part.outline.size()]].position_ms;
+        edge = std::max(edge, glm::length(b - a));
+      }
+      for (size_t v = vertex_first; v < mesh.vertices.size(); ++v) mesh.vertices[v].overhang = kOverhangStretch * edge;
     }
     mesh.parts.push_back(std::move(part));
   }
@@ -305,6 +322,10 @@ glm::vec2 skin_body_vertex(const BodyVertex& v, std::span<const Mat2x3> palette)
     if (v.weights[k] != 0.0f) p += v.weights[k] * palette[v.bones[k]].apply(v.position_ms);
   }
   return p;
+}
+
+glm::vec2 drawn_body_vertex(const BodyVertex& v, std::span<const Mat2x3> palette, const BodyFloor& floor) {
+  return floor_point(skin_body_vertex(v, palette), floor, v.overhang);
 }
 
 void body_palette(const BodyMesh& mesh, std::span<const Mat2x3> world, std::span<Mat2x3> palette, const BodyFloor& floor) {

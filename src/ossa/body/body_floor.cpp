@@ -53,11 +53,21 @@ BodyFloor body_floor(const Level& level, const Skeleton& skeleton, std::span<con
       merged.push_back(t);
     }
   }
-  if (merged.size() > static_cast<size_t>(kBodyFloorSegments)) {
-    const auto inside = [&](const glm::vec3& t) { return std::min(t.y, hi.x) - std::max(t.x, lo.x); };
-    std::stable_sort(merged.begin(), merged.end(), [&](const glm::vec3& a, const glm::vec3& b) { return inside(a) > inside(b); });
-    merged.resize(static_cast<size_t>(kBodyFloorSegments));
-    std::sort(merged.begin(), merged.end(), [](const glm::vec3& a, const glm::vec3& b) { return a.x < b.x; });
+  // Too many tops (a long body over stairs or a slope of small boxes): neighbours merge, at
+  // the higher top, where that lifts the least flesh (height step times the lower top's width).
+  // A dropped top would leave the flesh over it hanging inside its box.
+  while (merged.size() > static_cast<size_t>(kBodyFloorSegments)) {
+    size_t best = 0;
+    float least = 1e30f;
+    for (size_t k = 0; k + 1 < merged.size(); ++k) {
+      const glm::vec3 &a = merged[k], &b = merged[k + 1];
+      const float lifted = std::fabs(a.z - b.z) * (a.z < b.z ? a.y - a.x : b.y - b.x);
+      if (lifted < least) least = lifted, best = k;
+    }
+    glm::vec3& a = merged[best];
+    const glm::vec3 b = merged[best + 1];
+    a = {std::min(a.x, b.x), std::max(a.y, b.y), std::max(a.z, b.z)};
+    merged.erase(merged.begin() + static_cast<std::ptrdiff_t>(best) + 1);
   }
   floor.count = static_cast<int>(merged.size());
   for (size_t k = 0; k < merged.size(); ++k) floor.segments[k] = merged[k];
@@ -71,10 +81,11 @@ BodyFloor flat_floor(float top) {
   return floor;
 }
 
-glm::vec2 floor_point(glm::vec2 p, const BodyFloor& floor) {
+glm::vec2 floor_point(glm::vec2 p, const BodyFloor& floor, float overhang) {
   for (int k = 0; k < kBodyFloorSegments; ++k) {
     const glm::vec3& s = floor.segments[static_cast<size_t>(k)];
-    if (p.x >= s.x && p.x <= s.y && p.y < s.z) p.y = s.z;
+    if (s.x > s.y) continue;
+    if (p.x >= s.x - overhang && p.x <= s.y + overhang && p.y < s.z) p.y = s.z;
   }
   return p;
 }

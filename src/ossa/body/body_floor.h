@@ -35,16 +35,18 @@ struct BodyFloor {
 // The floor under a creature posed by `world` (its bones' frames, bone → world): the tops of
 // the boxes of `level` within `reach` metres (the flesh around its bones) of its bones' x-span
 // that lie no higher than the highest bone over them (or, past the bones' ends, the nearest
-// bone) plus half of `reach` (bones sunk into the ground) or 1 mm. Neighbouring tops of one height merge; when more than kBodyFloorSegments
-// remain, the widest within the bones' x-span are kept.
+// bone) plus half of `reach` (bones sunk into the ground) or 1 mm. Neighbouring tops of one height merge; while more than kBodyFloorSegments
+// remain, the two neighbours whose merging lifts the least flesh merge at the higher top.
 BodyFloor body_floor(const Level& level, const Skeleton& skeleton, std::span<const Mat2x3> world, float reach);
 
 // A level ground at `top` under everything (pictures of a creature standing on a plain
 // ground line: ossa-render without a level, creature images, contact sheets).
 BodyFloor flat_floor(float top);
 
-// `p` (world) lifted onto the highest floor top under it when it lies below that top.
-glm::vec2 floor_point(glm::vec2 p, const BodyFloor& floor);
+// `p` (world) lifted onto the highest floor top under it when it lies below that top; a top
+// holds it up `overhang` metres past its ends too (BodyVertex::overhang): an outline edge no
+// longer than that, between two floored vertices, then never cuts the top's corner.
+glm::vec2 floor_point(glm::vec2 p, const BodyFloor& floor, float overhang = 0.0f);
 
 // The floor as kBodyFloorEntries palette entries (segments 2k and 2k+1 in entry k: x from,
 // x to, top of the first, then of the second), as the body shader reads them.

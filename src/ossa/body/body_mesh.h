@@ -67,6 +67,11 @@ struct BodyVertex {
                                        // far side darker), or the outline's colour
   std::array<uint8_t, 4> pattern{};    // sRGB of the pattern + its strength here (0 none)
   uint8_t pattern_kind = 0;            // CoatPattern
+  // Metres past a box top's ends that the floor still holds this vertex up (body_floor.h):
+  // its part's longest outline edge (with room to stretch), so that no straight edge between
+  // two floored vertices cuts a top's corner. 0 for legs and arms, whose feet stand beside
+  // risers.
+  float overhang = 0.0f;
 };
 
 // What a part is; decides its shape, depth (body_mass.h) and layer.
@@ -152,6 +157,9 @@ double body_volume_m3(const Creature& creature);
 // A vertex skinned by `palette` (one entry per bone, then per mid joint), as the shader does
 // (without the floor: floor_point() after it, as the shader does).
 glm::vec2 skin_body_vertex(const BodyVertex& v, std::span<const Mat2x3> palette);
+// The vertex as drawn: skinned, then resting on `floor` (floor_point with its overhang), as
+// the shader does.
+glm::vec2 drawn_body_vertex(const BodyVertex& v, std::span<const Mat2x3> palette, const BodyFloor& floor);
 // The palette of a pose: world · inverse_bind per bone, then the mid joints, then `floor`
 // (none: flesh may go anywhere).
 void body_palette(const BodyMesh& mesh, std::span<const Mat2x3> world, std::span<Mat2x3> palette,

@@ -55,8 +55,7 @@ uint32_t append_body_vertices(DrawList& list, const BodyMesh& mesh, std::span<co
   const auto base = static_cast<uint32_t>(list.vertices.size());
   for (const BodyVertex& v : mesh.vertices) {
     DrawVertex d;
-    d.position_ws = skin_body_vertex(v, palette);
-    if (floor) d.position_ws = floor_point(d.position_ws, *floor);
+    d.position_ws = floor ? drawn_body_vertex(v, palette, *floor) : skin_body_vertex(v, palette);
     d.colour = v.colour;
     d.colour[3] = to_byte(alpha * static_cast<float>(v.colour[3]) / 255.0f);
     list.vertices.push_back(d);

@@ -21,7 +21,7 @@ void OutlineProbe::observe(const Animator& animator, const Level& level, float t
   Box all{glm::vec2(1e30f), glm::vec2(-1e30f)};
   for (const BodyPart& part : mesh_.parts) {
     for (uint32_t i : part.outline) {
-      drawn_[i] = floor_point(skin_body_vertex(mesh_.vertices[i], palette_), floor);
+      drawn_[i] = drawn_body_vertex(mesh_.vertices[i], palette_, floor);
       all = all.united(Box{drawn_[i], drawn_[i]});
     }
   }
