@@ -13,6 +13,7 @@
 #include <string>
 #include <vector>
 
+#include "ossa/game/outline_probe.h"
 #include "ossa/game/player.h"
 #include "ossa/game/sim.h"
 #include "ossa/gen/skeleton_builder.h"
@@ -110,7 +111,7 @@ TEST_CASE("a snake crawls over default.json's stairs and ledges with no bone in 
   }
 }
 
-TEST_CASE("a whale crawling to a level's end wall stops at it and stays on the level", "[game][legless]") {
+TEST_CASE("a whale crawling to a level's end wall stops at it, its drawn head too, and stays on the level", "[game][legless]") {
   // The end walls rise 4 m over the floor, lower than a hip above the root of a whale lying on
   // the stairs: the body took the wall's top as ground under its head, rode up onto it, over
   // it and off the level (a fall to the kill height, a respawn). A legless body climbs no
@@ -119,7 +120,9 @@ TEST_CASE("a whale crawling to a level's end wall stops at it and stays on the l
   // post, the 27 m blue whale (1.5 m, its wave lifting it) gets over the post to the end wall.
   // Each part of the body meets the wall from the ground under it: the blue whale lying over
   // stairs.json's 3.3 m landing, its head over the floor before the end wall, went over the
-  // wall when the wall sweep measured the climb for the whole body from the landing.
+  // wall when the wall sweep measured the climb for the whole body from the landing. The drawn
+  // head meets the wall too (AnimRig::crawl_flesh): the sperm whale's reaches 1.5 m past its
+  // skull, 25-30 cm into the walls when the skull alone met them.
   struct Run {
     const char* name;
     const char* level;
@@ -133,15 +136,21 @@ TEST_CASE("a whale crawling to a level's end wall stops at it and stays on the l
     auto creature = std::make_shared<const Creature>(build_creature(scenes::generator().example(k.name).value()).value());
     Player player(creature, SplinePrototypes::defaults());
     player.animator().reset(level.spawn_ws + glm::vec2(0.0f, 1.0f), level);  // as ossa-sim and the sweep
-    const SimResult r = run_script(player, level, parse_script(k.script).value(), 120);
+    OutlineProbe outline(*creature);
+    const SimResult r = run_script(player, level, parse_script(k.script).value(), 120, [&](long long tick) {
+      outline.observe(player.animator(), level, static_cast<float>(tick + 1) / 120.0f);
+    });
     const AnimRig& rig = player.animator().rig();
     INFO(k.name << " on " << k.level << ", " << k.script << ": furthest x " << r.x_max_m << ", front at "
-                << rig.body_hi_ws(r.x_max_m, 1) << ", respawns " << r.locomotion.respawns << ", falls " << r.locomotion.falls);
+                << rig.body_hi_ws(r.x_max_m, 1) << ", respawns " << r.locomotion.respawns << ", falls " << r.locomotion.falls
+                << "; drawn body " << outline.max_outline_penetration_m << " m in (" << outline.deepest_outline_part << " at "
+                << outline.deepest_outline_at_s << " s)");
     CHECK(r.locomotion.respawns == 0);
     CHECK(r.locomotion.falls == 0);
     CHECK(rig.body_hi_ws(r.x_max_m, 1) < k.wall + 0.1f * rig.body_half_length);
     CHECK(r.blocked_s > 0.0f);
     CHECK(r.probe.max_penetration_m <= 0.001f);
+    CHECK(outline.max_outline_penetration_m <= 0.001f);
     CHECK(r.probe.nan_count == 0);
   }
 }

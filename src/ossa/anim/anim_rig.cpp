@@ -297,29 +297,43 @@ void build_body_outline(AnimRig& rig, const Mat2x3& root_inv) {
   }
 }
 
-// The tail's flesh (roles.flesh) about each tail bone, in its frame at rest.
-void build_tail_flesh(AnimRig& rig, const RigRoles& roles) {
-  rig.tail_flesh.clear();
-  rig.tail_reach = rig.tail_length;
+// The flesh (roles.flesh) about each of `bones`, in its frame at rest: x along the bone, y
+// across; a bone without flesh of its own, the bone. Empty when none of them has flesh.
+std::vector<Box> flesh_about(const AnimRig& rig, const RigRoles& roles, const std::vector<int>& bones) {
   bool any = false;
-  std::vector<Box> flesh(rig.tail.size(), Box{glm::vec2(1e30f), glm::vec2(-1e30f)});
+  std::vector<Box> flesh(bones.size(), Box{glm::vec2(1e30f), glm::vec2(-1e30f)});
   for (const RigRoles::FleshPoint& f : roles.flesh) {
-    const auto at = std::find(rig.tail.begin(), rig.tail.end(), f.bone);
-    if (at == rig.tail.end()) continue;
+    const auto at = std::find(bones.begin(), bones.end(), f.bone);
+    if (at == bones.end()) continue;
     const glm::vec2 q = inverse(rig.model_rest[f.bone]).apply(f.position_ms);
-    Box& box = flesh[static_cast<size_t>(at - rig.tail.begin())];
+    Box& box = flesh[static_cast<size_t>(at - bones.begin())];
     box = box.united(Box{q, q});
     any = true;
   }
-  if (!any) return;
-  float past = 0.0f;
-  for (size_t k = 0; k < rig.tail.size(); ++k) {  // a bone without flesh of its own: the bone
+  if (!any) return {};
+  for (size_t k = 0; k < bones.size(); ++k) flesh[k] = flesh[k].united(Box{glm::vec2(0.0f), glm::vec2(rig.skeleton.length(bones[k]), 0.0f)});
+  return flesh;
+}
+
+// The tail's flesh about each tail bone (AnimRig::tail_flesh).
+void build_tail_flesh(AnimRig& rig, const RigRoles& roles) {
+  rig.tail_flesh = flesh_about(rig, roles, rig.tail);
+  rig.tail_reach = rig.tail_length;
+  for (size_t k = 0; k < rig.tail_flesh.size(); ++k) {
     const float len = rig.skeleton.length(rig.tail[k]);
-    const Box& f = flesh[k] = flesh[k].united(Box{glm::vec2(0.0f), glm::vec2(len, 0.0f)});
-    past = std::max({past, -f.min_ws.y, f.max_ws.y, -f.min_ws.x, f.max_ws.x - len});
+    const Box& f = rig.tail_flesh[k];
+    rig.tail_reach = std::max(rig.tail_reach, rig.tail_length + std::max({-f.min_ws.y, f.max_ws.y, -f.min_ws.x, f.max_ws.x - len}));
   }
-  rig.tail_flesh = std::move(flesh);
-  rig.tail_reach = rig.tail_length + past;
+}
+
+// A legless body's flesh about the bones its wall sweep takes (AnimRig::crawl_flesh).
+void build_crawl_flesh(AnimRig& rig, const RigRoles& roles) {
+  rig.crawl_bones = {rig.root};
+  rig.crawl_bones.insert(rig.crawl_bones.end(), rig.back.begin(), rig.back.end());
+  rig.crawl_bones.insert(rig.crawl_bones.end(), rig.neck.begin(), rig.neck.end());
+  if (rig.skull >= 0) rig.crawl_bones.push_back(rig.skull);
+  rig.crawl_flesh = flesh_about(rig, roles, rig.crawl_bones);
+  if (rig.crawl_flesh.empty()) rig.crawl_bones.clear();
 }
 
 // Which part of the trunk each bone is: the body's (the spine but the tail, the ribs), the
@@ -699,7 +713,10 @@ void build_fk_plan(const RigRoles& roles, AnimRig& rig) {
   for (int b = 0; b < sk.bone_count(); ++b) {
     if (rig.dynamic_bone[b] || (limb_bone[b] && !leg_ik_bone[b])) rig.touched_bones.push_back(b);
   }
-  if (rig.legs.empty()) build_drape(roles, rig);
+  if (rig.legs.empty()) {
+    build_drape(roles, rig);
+    build_crawl_flesh(rig, roles);
+  }
 }
 
 // Girdle bone i's model matrix with the spine flexed by `flex` (AnimRig::flex_sign).

@@ -264,6 +264,12 @@ struct AnimRig {
   // Per tail bone, the box its flesh fills (RigRoles::flesh; fins and flukes too) in its frame
   // at rest: x along the bone, y across. Empty: the tail's bones alone are kept out.
   std::vector<Box> tail_flesh;
+  // A legless body's flesh about each bone its wall sweep takes (crawl_bones: the root, the
+  // back, the neck and the skull, as body_boxes), in the bone's frame at rest as tail_flesh:
+  // it meets walls with them (a sperm whale's head reaches 1.5 m past its skull). Empty for a
+  // body with legs.
+  std::vector<int> crawl_bones;
+  std::vector<Box> crawl_flesh;
   float tail_reach = 0.0f;          // tail_length and as far as its flesh reaches past a bone
   // The body plan's gait (anim/gait_family.h): never kAuto here (the builder resolves it with
   // choose_gait_family), and what the choice reads besides the bones.

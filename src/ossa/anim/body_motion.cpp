@@ -411,21 +411,41 @@ BodyMotionResult sweep_body(const AnimContext& ctx, const BodyFrame& body, const
       if (ground < support) lift = std::min(support - ground, rig.crawl_climb);
     }
     body_boxes(rig, body, model_fs, true, &boxes);
-    for (const Box& part : boxes) {
+    for (size_t k = 0; k < boxes.size(); ++k) {
+      const Box& part = boxes[k];
       if (!ctx.ground.spans(part.min_ws.x, part.max_ws.x)) continue;
       const float under = ctx.ground.highest(part.min_ws.x, part.max_ws.x, part.max_ws.y + rig.crawl_climb);
       if (std::isnan(under)) continue;
-      Box box = part;
-      // (A face the bone lies against behind it is no wall ahead: a fin along the floor below
-      // the ledge the body crawls off.)
-      if (dx > 0.0f) box.min_ws.x = std::min(box.min_ws.x + 1e-3f, box.max_ws.x);
-      else box.max_ws.x = std::max(box.max_ws.x - 1e-3f, box.min_ws.x);
-      box.min_ws.y = std::max(box.min_ws.y + kSweepFloorOfHip * hip, under + rig.crawl_climb + lift);
-      box.max_ws.y = std::max(box.max_ws.y, box.min_ws.y + 1e-3f);
-      if (auto wall = level.sweep_box(Box{box.min_ws - margin_lo, box.max_ws + margin_hi}, {dx, 0.0f});
-          wall && wall->t < 1.0f && level.box(wall->index).top() > part.max_ws.y) {
-        move = std::min(move, std::max(0.0f, wall->t * std::fabs(dx) - 1e-4f));
-        out.hit_wall = true;
+      // The bone, then its drawn flesh ahead of it (AnimRig::crawl_flesh: a sperm whale's head
+      // went 25 cm into default.json's 1.8 m post, its skull short of it), each from the same
+      // floor; a box is a wall when it rises above the bone. (The flesh beside and behind the
+      // bone is left out: it lies over the ground the bone has come over, as a perch's head
+      // over the ledge it flops down from.)
+      auto meet = [&](Box box) {
+        // (A face the bone lies against behind it is no wall ahead: a fin along the floor below
+        // the ledge the body crawls off.)
+        if (dx > 0.0f) box.min_ws.x = std::min(box.min_ws.x + 1e-3f, box.max_ws.x);
+        else box.max_ws.x = std::max(box.max_ws.x - 1e-3f, box.min_ws.x);
+        box.min_ws.y = std::max(box.min_ws.y + kSweepFloorOfHip * hip, under + rig.crawl_climb + lift);
+        box.max_ws.y = std::max(box.max_ws.y, box.min_ws.y + 1e-3f);
+        if (auto wall = level.sweep_box(Box{box.min_ws - margin_lo, box.max_ws + margin_hi}, {dx, 0.0f});
+            wall && wall->t < 1.0f && level.box(wall->index).top() > part.max_ws.y) {
+          move = std::min(move, std::max(0.0f, wall->t * std::fabs(dx) - 1e-4f));
+          out.hit_wall = true;
+        }
+      };
+      meet(part);
+      if (k < rig.crawl_flesh.size()) {
+        const Box& f = rig.crawl_flesh[k];
+        const Mat2x3& m = model_fs[rig.crawl_bones[k]];
+        Box flesh{glm::vec2(1e30f), glm::vec2(-1e30f)};
+        for (const glm::vec2 c : {f.min_ws, f.max_ws, glm::vec2(f.min_ws.x, f.max_ws.y), glm::vec2(f.max_ws.x, f.min_ws.y)}) {
+          const glm::vec2 p = body.to_ws(m.apply(c));
+          flesh = flesh.united(Box{p, p});
+        }
+        if (dx > 0.0f) flesh.min_ws.x = std::max(flesh.min_ws.x, part.max_ws.x);
+        else flesh.max_ws.x = std::min(flesh.max_ws.x, part.min_ws.x);
+        if (flesh.min_ws.x < flesh.max_ws.x) meet(flesh);
       }
     }
   }
