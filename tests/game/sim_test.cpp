@@ -192,4 +192,21 @@ TEST_CASE("OutlineProbe measures the drawn body where the bones' figure does not
       CHECK(outline->max_by_kind[static_cast<size_t>(BodyPartKind::kTailFin)] <= 0.001f);
     }
   }
+  SECTION("a long body spawned beside an end wall: its drawn body clear of it") {
+    // The spawns of the shipped levels lie 2 m from a 4 m end wall. The reset took the wall's
+    // top, within its search, as ground under a long tail and did not move the body: the
+    // triceratops stood with its tail on the top and its thigh's flesh 33 cm in the face, the
+    // stegosaurus's 11 cm, the T. rex's and the brachiosaurus's legs hung against it. A body on
+    // legs now stands on ground its legs climb onto, pushed clear of the wall.
+    for (const char* file : {"default.json", "stairs.json", "rough.json"}) {
+      for (const char* animal : {"triceratops", "stegosaurus", "tyrannosaurus", "brachiosaurus", "parasaurolophus"}) {
+        const SimResult r = run(animal, load_level(scenes::source_path(std::string("levels/") + file)).value(), "stop:1", outline);
+        INFO(animal << " on " << file << ": deepest " << outline->deepest_outline_part << " " << outline->max_outline_penetration_m
+                    << " m at " << outline->deepest_outline_at_s << " s");
+        CHECK(r.probe.max_penetration_m <= 0.001f);
+        CHECK(outline->max_outline_penetration_m <= 0.001f);
+        CHECK(r.locomotion.falls == 0);
+      }
+    }
+  }
 }

@@ -171,7 +171,11 @@ void Animator::reset(glm::vec2 position_ws, const Level& level, int facing) {
   // higher than it crawls onto (a whale's tail beside an end wall lower than the search).
   const int dir = facing < 0 ? -1 : 1;
   const float reach = 4.0f * rig.body_half_length + 1.0f;
-  const float climb = rig.legs.empty() ? rig.crawl_climb : INFINITY;
+  // A body on legs stands on ground its legs climb onto: a wall higher than a step beside its
+  // tail is a wall, not ground (the triceratops at default.json's spawn, 2 m from the 4 m end
+  // wall, read the wall's top as ground under its tail and was not moved: it stood with its
+  // tail on the top and its thigh's flesh 33 cm in the face).
+  const float climb = rig.legs.empty() ? rig.crawl_climb : params_.max_step_up * rig.climb_height;
   // (Clear by a margin: a body draped along the ground reaches a little further than at rest,
   // and a tail touching the wall's face would lift the body over the wall.)
   const float margin = kResetClearOfHalfLength * rig.body_half_length;
