@@ -143,9 +143,6 @@ TEST_CASE("OutlineProbe measures the drawn body where the bones' figure does not
     }
     level.add_box(Box::from_corner(-100.0f, top + 0.01f, 300.0f, 50.0f));  // its top out of the reset's reach
     const SimResult r = run("horse", level, "stop:0.5", outline);
-    float drawn_top = -1e9f;
-    for (const auto& o : outline->drawn_outlines()) for (const glm::vec2 p : o) drawn_top = std::max(drawn_top, p.y);
-    INFO("top " << top << " drawn " << drawn_top << " ceiling " << level.box(level.size() - 1).min_ws.y);
     INFO("deepest " << outline->deepest_outline_part << " " << outline->max_outline_penetration_m << " m at " << outline->deepest_outline_at_s << " s");
     CHECK(r.probe.max_penetration_m <= 0.001f);
     CHECK(outline->max_outline_penetration_m > 0.01f);

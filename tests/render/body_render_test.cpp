@@ -44,9 +44,8 @@ TEST_CASE("bodies: the GPU draws what the CPU skins, flesh resting on the floor"
   // A horse in its rest pose sunk to its belly into a ground whose top is y = 0 under its hind
   // half and 15 cm higher under its fore half: the shader lifts the flesh below a top onto it,
   // and the trunk's flesh within its overhang of the higher top's end too, as floor_point()
-  // does. The
-  // pixels the GPU covers are the pixels the CPU's skinned, floored triangles cover (up to the
-  // edges' antialiasing).
+  // does. The pixels the GPU covers are the pixels the CPU's skinned, floored triangles cover
+  // (up to the edges' antialiasing).
   Gl& g = gl();
   const glm::vec3 bg{0.1f, 0.2f, 0.3f};
   const Creature c = example("horse");
