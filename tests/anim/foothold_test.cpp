@@ -4,6 +4,8 @@
 
 #include <cmath>
 
+#include "ossa/gen/generator.h"
+#include "ossa/gen/skeleton_builder.h"
 #include "shared/level_scenes.h"
 #include "shared/scenes.h"
 #include "stage_scene.h"
@@ -111,6 +113,61 @@ TEST_CASE("foothold planner: tile slopes up and down are walked like ramps", "[a
             REQUIRE(landing_for(s, static_cast<int>(leg), x, wanted, &landing));
             CHECK(std::fabs(landing.x - wanted) <= 0.26f * s.gait.stride);
           }
+        }
+      }
+    }
+  }
+}
+
+TEST_CASE("foothold planner: a foot's drawn flesh keeps off a wall ahead, not only its bones", "[anim][foothold]") {
+  // The horse at its true size before a wall too tall to climb (x = 5, mirrored for -x), every
+  // foot aimed where its bones' box would just touch the face: the hoof's flesh reaches
+  // beyond the bones (anim_rig.h RigLeg::flesh_front), and the landing keeps it off the face.
+  const Creature horse = build_creature(scenes::generator().example("horse").value()).value();
+  for (int facing : {1, -1}) {
+    const Box wall = facing > 0 ? Box::from_corner(5.0f, -1.0f, 20.0f, 21.0f) : Box::from_corner(-15.0f, -1.0f, 20.0f, 21.0f);
+    const Level level({Box::from_corner(-20.0f, -1.0f, 45.0f, 1.0f), wall}, {});
+    test::StageScene s(horse, level, 5.0f - facing * 2.0f, facing);
+    const AnimRig& rig = *s.rig;
+    for (size_t i = 0; i < rig.legs.size(); ++i) {
+      const int leg = static_cast<int>(i);
+      const RigLeg& info = rig.legs[i];
+      INFO("facing " << facing << " leg " << leg);
+      REQUIRE(info.flesh_front > 0.0f);
+      const anim::FootSpan bones = anim::foot_span_ws(info, facing), flesh = anim::flesh_span_ws(info, facing);
+      const float toe = facing > 0 ? bones.hi : -bones.lo;
+      const float wanted = 5.0f - facing * (toe + rig.scale.landing_side);
+      glm::vec2 landing;
+      REQUIRE(landing_for(s, leg, s.body.girdle_ws(rig, info.girdle).x, wanted, &landing));
+      CHECK(landing.y == 0.0f);
+      // The flesh's front stays off the face (by the landing's side margin, less its inset).
+      const float front = facing > 0 ? landing.x + flesh.hi : landing.x + flesh.lo;
+      CHECK(facing * (5.0f - front) >= rig.scale.landing_side - rig.scale.landing_inset - 1e-5f);
+      CHECK(anim::foot_fits(s.inputs(), leg, landing, true));
+      // Where the bones alone were asked, the foot would have stood with its flesh in the face.
+      CHECK_FALSE(anim::foot_fits(s.inputs(), leg, {wanted, 0.0f}, true));
+      CHECK(anim::foot_fits(s.inputs(), leg, {wanted, 0.0f}));
+    }
+  }
+}
+
+TEST_CASE("foothold planner: on treads narrower than a foot and its flesh the bones' landing is taken", "[anim][foothold]") {
+  // The rabbit at its true size reads slopes.json's tiles (5 cm wide, 8.8 mm apart) as steps,
+  // and no landing keeps its flesh off their risers: it still finds one for its bones, up and
+  // down, both facings (rather than stop at the crest).
+  const Creature rabbit = build_creature(scenes::generator().example("rabbit").value()).value();
+  for (float rise : {0.0088f, -0.0088f}) {
+    const Level level = test::tile_slope_level(2.0f, 40, 0.05f, rise, 3.0f);
+    for (int facing : {1, -1}) {
+      for (float x = 2.3f; x < 3.7f; x += 0.13f) {
+        test::StageScene s(rabbit, level, x, facing);
+        for (size_t leg = 0; leg < s.rig->legs.size(); ++leg) {
+          glm::vec2 landing;
+          const float foot_x = s.body.girdle_ws(*s.rig, s.rig->legs[leg].girdle).x;
+          const float wanted = foot_x + facing * 0.5f * s.gait.stride;
+          INFO("rise " << rise << " facing " << facing << " x " << x << " leg " << leg);
+          REQUIRE(landing_for(s, static_cast<int>(leg), foot_x, wanted, &landing));
+          CHECK(anim::foot_fits(s.inputs(), static_cast<int>(leg), landing));
         }
       }
     }

@@ -90,3 +90,30 @@ TEST_CASE("swing: a path through a wall is refused, an eased step stays on the g
   CHECK(e.rate == Approx(1.0f / 0.18f));
   for (int k = 0; k <= 10; ++k) CHECK(anim::swing_point(e, k / 10.0f).y == Approx(0.0f).margin(1e-6));
 }
+
+TEST_CASE("swing: a landing beyond the leg's reach across gives way to a place the leg reaches", "[anim][swing]") {
+  // The horse in the 2 m frame standing on flat ground; a foreleg at the end of its swing, its
+  // landing 1.2 reaches ahead of its joint (the body was held back meanwhile). Touching down
+  // there, out of reach, body placement's reach clamp would pull the girdle down to it within
+  // the tick (a parasaurolophus dropped 13 cm, a rib 3 cm into the ground). It eases instead to
+  // a place below the joint that the leg reaches.
+  for (int facing : {1, -1}) {
+    const Level flat({Box::from_corner(-40.0f, -1.0f, 80.0f, 1.0f)}, {});
+    const test::StageScene s(scenes::example_in_frame("horse"), flat, 0.0f, facing);
+    const int leg = s.rig->girdles[0].legs[0];
+    const RigLeg& info = s.rig->legs[leg];
+    const glm::vec2 joint = s.body.girdle_ws(*s.rig, info.girdle);
+    anim::FootState f;
+    f.state = LegState::kSwing;
+    f.from_ws = {joint.x, 0.0f};
+    f.to_ws = f.pos_ws = {joint.x + facing * 1.2f * info.contact_reach, 0.0f};
+    f.progress = 1.0f;
+    f.rate = 1.0f;
+    anim::update_swing_clearance(s.ctx, leg, f);
+    INFO("facing " << facing);
+    CHECK_FALSE(anim::advance_swing(s.inputs(), anim::SwingTick{1.0f / 120.0f, 1.0f, true}, leg, f));
+    CHECK(f.state == LegState::kSwing);
+    CHECK(f.easing);
+    CHECK(anim::reaches(s.inputs(), leg, f.to_ws));
+  }
+}

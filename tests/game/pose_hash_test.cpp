@@ -34,11 +34,11 @@ struct ExpectedHash {
 };
 
 constexpr ExpectedHash kExpected[] = {
-    {"default.json", 0xe75c2773d03c9878ull},
-    {"rough.json", 0xf3ecf1535fbfd669ull},
-    {"stairs.json", 0xb56a899f03f2cfeaull},
-    {"slopes.json", 0x17c511bd43f57143ull},
-    {"drops.json", 0xb1eec0ed75797665ull},
+    {"default.json", 0xba8898d04dc405fdull},
+    {"rough.json", 0xf7eb247201350851ull},
+    {"stairs.json", 0x67d290695cd64617ull},
+    {"slopes.json", 0x825995cab7a9d7c1ull},
+    {"drops.json", 0x582110f14706eb5eull},
 };
 
 std::string hex(uint64_t v) {

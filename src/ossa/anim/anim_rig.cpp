@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "ossa/anim/anim_math.h"
+#include "ossa/anim/foothold.h"
 #include "ossa/anim/gait_family.h"
 #include "ossa/anim/pentapedal.h"
 #include "ossa/anim/secondary_motion.h"
@@ -334,6 +335,34 @@ void build_crawl_flesh(AnimRig& rig, const RigRoles& roles) {
   if (rig.skull >= 0) rig.crawl_bones.push_back(rig.skull);
   rig.crawl_flesh = flesh_about(rig, roles, rig.crawl_bones);
   if (rig.crawl_flesh.empty()) rig.crawl_bones.clear();
+}
+
+// Each leg's flesh about its foot (RigLeg::flesh_back/flesh_front): the outline of every part
+// with a point on the leg's bones (its own part: a near and a far leg each have one).
+void build_foot_flesh(AnimRig& rig, const RigRoles& roles) {
+  for (RigLeg& leg : rig.legs) {
+    const glm::vec2 contact = bone_end(rig.model_rest[leg.contact_bone], rig.skeleton.length(leg.contact_bone));
+    const float height = anim::foot_height(rig.scale, leg);
+    float lo = 0.0f, hi = 0.0f;
+    for (size_t begin = 0; begin < roles.flesh.size();) {
+      size_t end = begin;
+      bool ours = false;
+      while (end < roles.flesh.size() && roles.flesh[end].part == roles.flesh[begin].part) {
+        ours = ours || std::find(leg.bones.begin(), leg.bones.end(), roles.flesh[end].bone) != leg.bones.end();
+        ++end;
+      }
+      for (size_t i = begin; ours && i < end; ++i) {
+        const glm::vec2 p = roles.flesh[i].position_ms - contact;
+        if (p.y > height) continue;
+        lo = std::min(lo, p.x);
+        hi = std::max(hi, p.x);
+      }
+      begin = end;
+    }
+    const anim::FootSpan span = anim::foot_span_ws(leg, 1);
+    leg.flesh_back = std::max(0.0f, span.lo - lo);
+    leg.flesh_front = std::max(0.0f, hi - span.hi);
+  }
 }
 
 // Which part of the trunk each bone is: the body's (the spine but the tail, the ribs), the
@@ -871,6 +900,7 @@ std::shared_ptr<const AnimRig> build_anim_rig(const Skeleton& skeleton, const Po
   }
   rig->body_half_length = std::max(0.5f * (x_max - x_min), 0.05f);
   rig->scale = RigScale::of(2.0f * rig->body_half_length);
+  build_foot_flesh(*rig, roles);
   for (int b = 0; b < sk.bone_count(); ++b) {  // the extent from the root counts bone ends too
     const float e = bone_end(rig->model_rest[b], sk.length(b)).x;
     x_min = std::min(x_min, e);

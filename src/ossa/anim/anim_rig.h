@@ -57,6 +57,11 @@ struct RigLeg {
   // The foot's extent relative to its contact point, facing +x: back to the ankle, forward to
   // the toe (a flat foot's whole sole).
   glm::vec2 ankle_rel_ms{0.0f}, tip_rel_ms{0.0f};
+  // The drawn leg's flesh about the foot (RigRoles::flesh at rest, the outline within the
+  // foot's box height above the contact point, foothold.h foot_height): how far it reaches
+  // behind the bones' span above and ahead of it, facing +x, metres (0: no drawn body). A
+  // foothold keeps it off the level, not only the bones (foothold.h flesh_span_ws).
+  float flesh_back = 0.0f, flesh_front = 0.0f;
   // Three-segment legs (a long foot standing on its tip: hooves, paws, bird feet; issue 29):
   // the foot bone is coupled to the leg instead of keeping its rest angle. A fore foot lies in
   // line with the forearm (the carpus straight under load); a hind foot keeps its rest angle to

@@ -27,9 +27,6 @@ constexpr float kShortestAheadOfStride = 0.05f;
 constexpr float kRiserGapOfRest = 0.25f;
 constexpr float kShinSlope = 1.0f;
 
-// The height of the box a foot needs above its contact point.
-float foot_height(const RigScale& scale, const RigLeg& leg) { return std::max({scale.foot_box, leg.ankle_rel_ms.y, 0.3f * leg.foot_length}); }
-
 // Would a foot landing at height y with its back edge at `back` have the shin cut a riser
 // behind it?
 bool riser_behind(const FootholdInputs& in, const RigLeg& info, float rest_height, const SlopeReading& reading, float back,
@@ -67,6 +64,14 @@ FootSpan foot_span_ws(const RigLeg& leg, int facing) {
   const float b = facing * std::max({0.0f, leg.ankle_rel_ms.x, leg.tip_rel_ms.x});
   return {std::min(a, b), std::max(a, b)};
 }
+
+FootSpan flesh_span_ws(const RigLeg& leg, int facing) {
+  const FootSpan span = foot_span_ws(leg, facing);
+  return facing > 0 ? FootSpan{span.lo - leg.flesh_back, span.hi + leg.flesh_front}
+                    : FootSpan{span.lo - leg.flesh_front, span.hi + leg.flesh_back};
+}
+
+float foot_height(const RigScale& scale, const RigLeg& leg) { return std::max({scale.foot_box, leg.ankle_rel_ms.y, 0.3f * leg.foot_length}); }
 
 FootSpan support_span_ws(const RigLeg& leg, int facing) {
   const float a = facing * std::min(0.0f, leg.tip_rel_ms.x), b = facing * std::max(0.0f, leg.tip_rel_ms.x);
@@ -109,9 +114,9 @@ SlopeReading body_slope_reading(const AnimContext& ctx) {
   return girdle_slope_reading(ctx, lowest);
 }
 
-bool foot_fits(const FootholdInputs& in, int leg, glm::vec2 contact_ws) {
+bool foot_fits(const FootholdInputs& in, int leg, glm::vec2 contact_ws, bool with_flesh) {
   const RigLeg& info = in.ctx.rig.legs[leg];
-  const FootSpan span = foot_span_ws(info, in.body.facing);
+  const FootSpan span = with_flesh ? flesh_span_ws(info, in.body.facing) : foot_span_ws(info, in.body.facing);
   const RigScale& scale = in.ctx.rig.scale;
   const Box foot_box{{contact_ws.x + span.lo - scale.fit_side, contact_ws.y + scale.fit_lift},
                      {contact_ws.x + span.hi + scale.fit_side, contact_ws.y + foot_height(scale, info)}};
@@ -134,7 +139,8 @@ bool reaches(const FootholdInputs& in, int leg, glm::vec2 p_ws, float reach_use)
 
 namespace {
 
-bool nearest_fit_within(const FootholdInputs& in, int leg, glm::vec2 near_ws, glm::vec2* spot, bool in_reach, float reach_use) {
+bool nearest_fit_within(const FootholdInputs& in, int leg, glm::vec2 near_ws, glm::vec2* spot, bool in_reach, float reach_use,
+                        bool with_flesh) {
   // Step by step (RigScale::search_step) either way, up to half a leg's length, on ground within
   // a step (one every leg pair could follow up, as in find_landing).
   const AnimRig& rig = in.ctx.rig;
@@ -152,7 +158,7 @@ bool nearest_fit_within(const FootholdInputs& in, int leg, glm::vec2 near_ws, gl
     if (!hit) continue;
     const glm::vec2 p(x, hit->height_ws);
     if (in_reach && !reaches(in, leg, p, reach_use)) continue;
-    if (foot_fits(in, leg, p)) {
+    if (foot_fits(in, leg, p, with_flesh)) {
       *spot = p;
       return true;
     }
@@ -163,8 +169,14 @@ bool nearest_fit_within(const FootholdInputs& in, int leg, glm::vec2 near_ws, gl
 }  // namespace
 
 bool nearest_fit(const FootholdInputs& in, int leg, glm::vec2 near_ws, glm::vec2* spot, bool prefer_reach, float reach_use) {
-  return (prefer_reach && nearest_fit_within(in, leg, near_ws, spot, true, reach_use)) ||
-         nearest_fit_within(in, leg, near_ws, spot, false, reach_use);
+  // In reach first, if asked; of those, one where the foot's flesh clears the level too
+  // (as find_landing).
+  for (int in_reach = prefer_reach ? 1 : 0; in_reach >= 0; --in_reach) {
+    for (int fleshed = 1; fleshed >= 0; --fleshed) {
+      if (nearest_fit_within(in, leg, near_ws, spot, in_reach, reach_use, fleshed)) return true;
+    }
+  }
+  return false;
 }
 
 void note_ledge(const AnimContext& ctx, FootState& f, float ledge_y) {
@@ -213,6 +225,10 @@ bool find_landing(const FootholdInputs& in, int leg, glm::vec2 foot_ws, float x_
   const FootSpan span = foot_span_ws(info, facing);
   const RigScale& scale = rig.scale;
   const float span_lo = span.lo - scale.landing_side, span_hi = span.hi + scale.landing_side;
+  // The foot's box with its flesh (flesh_span_ws).
+  const FootSpan flesh = flesh_span_ws(info, facing);
+  const float flesh_lo = flesh.lo - scale.landing_side, flesh_hi = flesh.hi + scale.landing_side;
+  const bool has_flesh = flesh.lo != span.lo || flesh.hi != span.hi;
   // What bears on the ground must have ground under it within the step limits (a tip does not
   // stand on the ground under its ankle: a slanted hoof bone at a gap's edge would stand over
   // the gap). The landing's height is still the highest ground under the whole foot.
@@ -237,52 +253,58 @@ bool find_landing(const FootholdInputs& in, int leg, glm::vec2 foot_ws, float x_
     if (slope_from_foot < 0) slope_from_foot = std::fabs(in.ctx.ground.surface_line(foot_ws.x, reading) - foot_ws.y) <= step_up;
     return slope_from_foot == 1;
   };
+  // A landing whose flesh clears the level too first; where there is none (treads narrower
+  // than the foot and its flesh), one whose bones do.
   for (int pass = ledge ? 0 : 1; pass < 2; ++pass) {
     const float floor_y = pass == 0 ? top - 2.0f * up : -1e30f;
-    for (int k = 0; k <= kLandingCandidates; ++k) {
-      const int n = (k + 1) / 2;
-      const float d = k % 2 == 1 ? -stepx * static_cast<float>(n) : 0.25f * stepx * static_cast<float>(n);
-      if (-d > shortest) {
-        if (k % 2 == 1) continue;
-        if (d > longest) break;
-      } else if (k % 2 == 0 && d > longest) {
-        continue;
-      }
-      if (d > longest) continue;
-      const float x = x_wanted + facing * d;
-      // Up or down a slope (a tile hill read as a ramp, with no real riser between the foot and
-      // the landing) a stride may climb or descend further than a step: the step limits count
-      // from the slope's height at the landing.
-      // (Asked only when the plain step limits find no ground there.)
-      float slope_top = top, bottom = lowest;
-      auto hit = ground_below(in.ctx.level, x + span_lo, x + span_hi, top, top - lowest);
-      if (!hit && on_slope()) {
-        const float along = in.ctx.ground.slope_top(foot_ws.x, x + span_lo, x + span_hi, reading);
-        if (!std::isnan(along)) {
-          slope_top = std::max(top, along + up);
-          bottom = std::min(lowest, along - down);
-          hit = ground_below(in.ctx.level, x + span_lo, x + span_hi, slope_top, slope_top - bottom);
+    for (int fleshed = has_flesh ? 1 : 0; fleshed >= 0; --fleshed) {
+      for (int k = 0; k <= kLandingCandidates; ++k) {
+        const int n = (k + 1) / 2;
+        const float d = k % 2 == 1 ? -stepx * static_cast<float>(n) : 0.25f * stepx * static_cast<float>(n);
+        if (-d > shortest) {
+          if (k % 2 == 1) continue;
+          if (d > longest) break;
+        } else if (k % 2 == 0 && d > longest) {
+          continue;
         }
+        if (d > longest) continue;
+        const float x = x_wanted + facing * d;
+        // Up or down a slope (a tile hill read as a ramp, with no real riser between the foot and
+        // the landing) a stride may climb or descend further than a step: the step limits count
+        // from the slope's height at the landing.
+        // (Asked only when the plain step limits find no ground there.)
+        float slope_top = top, bottom = lowest;
+        auto hit = ground_below(in.ctx.level, x + span_lo, x + span_hi, top, top - lowest);
+        if (!hit && on_slope()) {
+          const float along = in.ctx.ground.slope_top(foot_ws.x, x + span_lo, x + span_hi, reading);
+          if (!std::isnan(along)) {
+            slope_top = std::max(top, along + up);
+            bottom = std::min(lowest, along - down);
+            hit = ground_below(in.ctx.level, x + span_lo, x + span_hi, slope_top, slope_top - bottom);
+          }
+        }
+        if (!hit || hit->height_ws < floor_y) continue;
+        if ((support_lo > span_lo || support_hi < span_hi) &&
+            !ground_below(in.ctx.level, x + support_lo, x + support_hi, slope_top, slope_top - bottom)) {
+          continue;
+        }
+        const float y = hit->height_ws;
+        const float box_lo = fleshed ? flesh_lo : span_lo, box_hi = fleshed ? flesh_hi : span_hi;
+        const Box foot_box{{x + box_lo + scale.landing_inset, y + scale.landing_inset},
+                           {x + box_hi - scale.landing_inset, y + height}};
+        if (in.ctx.level.overlaps(foot_box)) continue;
+        // Nothing between the foot and its landing rises more than a step above both: the foot
+        // would have to be lifted over a wall (the swing could raise it, the leg could not).
+        const float wall = std::max(foot_ws.y, y) + up;
+        const float between_lo = std::min(foot_ws.x, x) + 0.001f, between_hi = std::max(foot_ws.x, x) - 0.001f;
+        if (between_lo < between_hi && in.ctx.level.overlaps(Box{{between_lo, wall}, {between_hi, wall + 0.001f}})) continue;
+        // Down a step the shin comes from above and behind: keep the foot off the riser it steps
+        // down from, or the shin cuts the step's edge.
+        const float back = facing > 0 ? x + span_lo : x + span_hi;
+        if ((fleshed || k + 1 < kLandingCandidates) && riser_behind(in, info, girdle.rest_height, reading, back, y, up)) continue;
+        *landing = {x, y};
+        return true;
       }
-      if (!hit || hit->height_ws < floor_y) continue;
-      if ((support_lo > span_lo || support_hi < span_hi) &&
-          !ground_below(in.ctx.level, x + support_lo, x + support_hi, slope_top, slope_top - bottom)) {
-        continue;
-      }
-      const float y = hit->height_ws;
-      const Box foot_box{{x + span_lo + scale.landing_inset, y + scale.landing_inset}, {x + span_hi - scale.landing_inset, y + height}};
-      if (in.ctx.level.overlaps(foot_box)) continue;
-      // Nothing between the foot and its landing rises more than a step above both: the foot
-      // would have to be lifted over a wall (the swing could raise it, the leg could not).
-      const float wall = std::max(foot_ws.y, y) + up;
-      const float between_lo = std::min(foot_ws.x, x) + 0.001f, between_hi = std::max(foot_ws.x, x) - 0.001f;
-      if (between_lo < between_hi && in.ctx.level.overlaps(Box{{between_lo, wall}, {between_hi, wall + 0.001f}})) continue;
-      // Down a step the shin comes from above and behind: keep the foot off the riser it steps
-      // down from, or the shin cuts the step's edge.
-      const float back = facing > 0 ? x + span_lo : x + span_hi;
-      if (k + 1 < kLandingCandidates && riser_behind(in, info, girdle.rest_height, reading, back, y, up)) continue;
-      *landing = {x, y};
-      return true;
     }
   }
   return false;

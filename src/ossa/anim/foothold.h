@@ -49,6 +49,11 @@ struct FootSpan {
   float lo = 0.0f, hi = 0.0f;
 };
 FootSpan foot_span_ws(const RigLeg& leg, int facing);
+// The same widened by the leg's drawn flesh about the foot (RigLeg::flesh_back/flesh_front):
+// what must clear the level where the foot stands or swings.
+FootSpan flesh_span_ws(const RigLeg& leg, int facing);
+// The height of the box a foot needs above its contact point, metres.
+float foot_height(const RigScale& scale, const RigLeg& leg);
 // The part of it that bears on the ground: a flat foot's sole, a tip's point (its ankle and
 // foot bone stand above the ground, over whatever lies there).
 FootSpan support_span_ws(const RigLeg& leg, int facing);
@@ -58,7 +63,8 @@ FootSpan support_span_ws(const RigLeg& leg, int facing);
 float landing_x(const FootholdInputs& in, int leg, float speed, float swing_phase = -1.0f);
 
 // Does leg `leg`'s foot, standing at contact_ws as the creature now faces, clear every box?
-bool foot_fits(const FootholdInputs& in, int leg, glm::vec2 contact_ws);
+// with_flesh: its drawn flesh too (flesh_span_ws).
+bool foot_fits(const FootholdInputs& in, int leg, glm::vec2 contact_ws, bool with_flesh = false);
 
 // Does leg `leg`'s shin, coming down from above and behind to its foot at contact_ws as the
 // creature now faces, clear the ground behind the foot (no riser there that find_landing keeps
@@ -66,8 +72,8 @@ bool foot_fits(const FootholdInputs& in, int leg, glm::vec2 contact_ws);
 bool shin_clears_riser(const FootholdInputs& in, int leg, glm::vec2 contact_ws);
 
 // The nearest place to near_ws (either way along the ground, up to half a leg's length) where
-// leg `leg`'s foot fits; prefer_reach: one the leg reaches (within reach_use of its reach)
-// from where its girdle is now, if there is one.
+// leg `leg`'s foot fits, its flesh too if there is one; prefer_reach: one the leg reaches
+// (within reach_use of its reach) from where its girdle is now, if there is one.
 bool nearest_fit(const FootholdInputs& in, int leg, glm::vec2 near_ws, glm::vec2* spot, bool prefer_reach = false,
                  float reach_use = 1.0f);
 

@@ -92,7 +92,7 @@ bool raise_for_clearance(const AnimContext& ctx, int facing, int leg, FootState&
     for (int k = 1; k < 12 && above; ++k) above = swing_height(f, static_cast<float>(k) / 12.0f) >= lowest;
     if (above) return true;
   }
-  Box foot[kSwingSamples];
+  Box foot[kSwingSamples], flesh[kSwingSamples];
   // A foot that stands pressed against a step (turned round on a narrow tread) only has to
   // clear it once it has left it.
   auto foot_box = [&](float s) {
@@ -105,28 +105,39 @@ bool raise_for_clearance(const AnimContext& ctx, int facing, int leg, FootState&
     return Box{glm::min(glm::min(p, q), r) - glm::vec2(scale.swing_side, 0.0f),
                glm::max(glm::max(p, q), r) + glm::vec2(scale.swing_side, scale.swing_top)};
   };
+  // The same with the foot's flesh (foothold.h flesh_span_ws). A box the flesh meets where the
+  // foot lifts or lands (find_landing found none whose flesh clears: treads narrower than the
+  // foot and its flesh) is cleared by the bones alone.
+  const bool has_flesh = info.flesh_back > 0.0f || info.flesh_front > 0.0f;
+  const glm::vec2 flesh_lo(facing > 0 ? info.flesh_back : info.flesh_front, 0.0f);
+  const glm::vec2 flesh_hi(facing > 0 ? info.flesh_front : info.flesh_back, 0.0f);
+  auto fleshed = [&](const Box& b) { return Box{b.min_ws - flesh_lo, b.max_ws + flesh_hi}; };
   foot[0] = foot_box(0.0f);
+  flesh[0] = fleshed(foot[0]);
+  const Box flesh_end = fleshed(foot_box(1.0f));
   std::vector<int>& hits = ctx.hits;
   for (int iter = 0; iter < kRaiseIterations; ++iter) {
     // The foot's box at each sample, then the colliders near the whole path in one query.
     Box path{glm::vec2(1e30f), glm::vec2(-1e30f)};
     for (int k = 1; k < kSwingSamples; ++k) {
       foot[k] = foot_box(static_cast<float>(k) / kSwingSamples);
-      path.min_ws = glm::min(path.min_ws, foot[k].min_ws);
-      path.max_ws = glm::max(path.max_ws, foot[k].max_ws);
+      flesh[k] = fleshed(foot[k]);
+      path.min_ws = glm::min(path.min_ws, flesh[k].min_ws);
+      path.max_ws = glm::max(path.max_ws, flesh[k].max_ws);
     }
     hits.clear();
     ctx.level.overlapping(path, hits);
     float need = 0.0f;
     for (int h : hits) {
       const Box& box = ctx.level.box(h);
+      const Box* boxes = has_flesh && !box.overlaps(flesh[0]) && !box.overlaps(flesh_end) ? flesh : foot;
       int k = 1;
-      if (box.overlaps(foot[0])) {
-        while (k < kSwingSamples && box.overlaps(foot[k])) ++k;
+      if (box.overlaps(boxes[0])) {
+        while (k < kSwingSamples && box.overlaps(boxes[k])) ++k;
       }
       for (; k < kSwingSamples; ++k) {
-        if (!box.overlaps(foot[k])) continue;
-        const float depth = box.top() + ctx.rig.scale.swing_clearance - foot[k].min_ws.y;
+        if (!box.overlaps(boxes[k])) continue;
+        const float depth = box.top() + ctx.rig.scale.swing_clearance - boxes[k].min_ws.y;
         need = std::max(need, depth / std::max(bump(static_cast<float>(k) / kSwingSamples), kMinBump));
       }
     }
@@ -287,15 +298,17 @@ bool advance_swing(const FootholdInputs& in, const SwingTick& tick, int leg, Foo
     const glm::vec2 joint = body.to_fs(body.girdle_ws(ctx.rig, info.girdle));
     float r;
     const glm::vec2 anchor = leg_anchor(ctx, body, leg, body.to_fs(f.to_ws), joint, f.swing_clear, &r);
-    if (glm::length(anchor - joint) > r && std::fabs(anchor.x - joint.x) < r) {
-      if (f.hover < kMaxHoverSeconds) {
+    if (glm::length(anchor - joint) > r) {
+      if (f.hover < kMaxHoverSeconds && std::fabs(anchor.x - joint.x) < r) {
         f.hover += tick.dt;
         f.progress = 1.0f;
         f.pos_ws = f.to_ws;
         return false;
       }
-      // The body did not come down in time (other feet hold it up): set the foot down on the
-      // nearest place below the joint it reaches instead, from where it hangs now.
+      // The body did not come down in time (other feet hold it up), or the landing lies beyond
+      // the leg's reach across (the body moved on: set down there, the girdle would drop to it
+      // in a tick): set the foot down on the nearest place below the joint it reaches instead,
+      // from where it hangs now.
       glm::vec2 spot;
       const glm::vec2 below_joint = body.to_ws({joint.x, f.to_ws.y});
       if (nearest_fit(in, leg, below_joint, &spot) && reaches(in, leg, spot)) {

@@ -66,7 +66,9 @@ void update_swing_clearance(const AnimContext& ctx, int leg, FootState& foot);
 // the body has been held back (the landing stays half a stance ahead of where the girdle will
 // be); at its end the foot moves on to where it fits if it no longer does there (the creature
 // turned meanwhile), waits up to kMaxHoverSeconds above a landing the leg cannot yet reach
-// while the body comes down to it, then touches down. Returns true on touch-down.
+// while the body comes down to it, then touches down. A landing still out of reach after the
+// wait, or beyond the leg's reach across, gives way to the nearest place below the joint that
+// the leg reaches. Returns true on touch-down.
 struct SwingTick {
   float dt = 0.0f;        // seconds
   float speed = 0.0f;     // m/s along the facing
