@@ -179,6 +179,35 @@ TEST_CASE("OutlineProbe measures the drawn body where the bones' figure does not
       CHECK(outline->max_by_kind[static_cast<size_t>(c.kind)] <= 0.001f);
     }
   }
+  SECTION("a hoof set down at a riser's foot: its flesh kept off the riser") {
+    // A foothold kept the foot's bones off a riser, 1 mm from its face, and the flesh drawn
+    // about the hoof lay 1.6-2.2 cm in it. Footholds keep the foot's flesh off the level too
+    // (anim_rig.h RigLeg::flesh_front).
+    struct Case {
+      const char* animal;
+      const char* level;
+      const char* script;
+    };
+    for (const Case& c : {Case{"horse", "levels/default.json", "walk:0.5:6,stop:1,walk:-0.6:6"},
+                          Case{"dromedary", "levels/stairs.json", "walk:0.6:30"},
+                          Case{"cape buffalo", "levels/stairs.json", "run:1:15"}}) {
+      const SimResult r = run(c.animal, load_level(scenes::source_path(c.level)).value(), c.script, outline);
+      INFO(c.animal << " on " << c.level << ": deepest " << outline->deepest_outline_part << " "
+                    << outline->max_outline_penetration_m << " m at " << outline->deepest_outline_at_s << " s");
+      CHECK(r.probe.max_penetration_m <= 0.001f);
+      CHECK(outline->max_outline_penetration_m <= 0.001f);
+    }
+  }
+  SECTION("a low head at a riser: its drawn snout lifted out of the face") {
+    // The head's bones cleared the riser ahead, and the snout drawn about them lay 3-4 cm in
+    // its face: the head now lifts on its neck until its flesh clears too.
+    for (const char* animal : {"crocodile", "harbour seal", "pig"}) {
+      const SimResult r = run(animal, load_level(scenes::source_path("levels/stairs.json")).value(), "run:1:15", outline);
+      INFO(animal << ": axial " << outline->max_by_kind[static_cast<size_t>(BodyPartKind::kAxial)] << " m");
+      CHECK(r.probe.max_penetration_m <= 0.001f);
+      CHECK(outline->max_by_kind[static_cast<size_t>(BodyPartKind::kAxial)] <= 0.001f);
+    }
+  }
   SECTION("a whale's flukes: kept out of the ground with its tail") {
     // A whale lies along default.json's floor from its spawn on; its tail's bones lay clear
     // of the floor while the flukes drawn about them went 0.5 m into it, until the tail's

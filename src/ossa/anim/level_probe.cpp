@@ -70,7 +70,7 @@ float clear_standing_x(const Level& level, float x, float back, float front, flo
   return right ? *right : left ? *left : x;
 }
 
-bool polyline_hits_level(const Level& level, const glm::vec2* p, int n, std::vector<int>& hits, float above_y) {
+bool polyline_hits_level(const Level& level, const glm::vec2* p, int n, std::vector<int>& hits, float above_y, float top_over) {
   glm::vec2 lo = p[0], hi = p[0];
   for (int i = 1; i < n; ++i) {
     lo = glm::min(lo, p[i]);
@@ -80,7 +80,7 @@ bool polyline_hits_level(const Level& level, const glm::vec2* p, int n, std::vec
   level.overlapping(Box{lo, hi}, hits);
   for (int h : hits) {
     const Box& box = level.box(h);
-    if (box.min_ws.y < above_y) continue;
+    if (box.min_ws.y < above_y || box.top() <= top_over) continue;
     for (int i = 0; i + 1 < n; ++i) {
       const glm::vec2 a = p[i], b = p[i + 1];
       float t0 = 0.0f, t1 = 1.0f;

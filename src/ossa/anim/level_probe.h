@@ -39,9 +39,10 @@ float clear_standing_x(const Level& level, float x, float back, float front, flo
 
 // Does the polyline p[0] - p[1] - ... pass through the interior of a collider (shrunk by a
 // little under a millimetre, 0.99 mm)? One query for its bounds, then a Liang-Barsky clip per segment and box.
-// Only colliders whose bottom lies at or above `above_y` count (the default: every one).
-// `hits` is scratch.
-bool polyline_hits_level(const Level& level, const glm::vec2* p, int n, std::vector<int>& hits, float above_y = -INFINITY);
+// Only colliders whose bottom lies at or above `above_y` and whose top lies above `top_over`
+// count (the defaults: every one). `hits` is scratch.
+bool polyline_hits_level(const Level& level, const glm::vec2* p, int n, std::vector<int>& hits, float above_y = -INFINITY,
+                         float top_over = -INFINITY);
 
 // The least height a point at x must have to stay `keep` above the ground within `half` of it
 // (boxes whose tops lie in [from_y - max_drop, from_y]): the ground within `half` counts in

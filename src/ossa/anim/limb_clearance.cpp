@@ -318,8 +318,23 @@ void keep_head_clear(const AnimContext& ctx, const BodyFrame& body, const std::v
       bound_hi = glm::max(bound_hi, q);
     }
   }
+  // The head's drawn flesh (AnimRig::flesh from flesh_level_from on: level with the skull) keeps
+  // out of what rises above the skull (the body floor draws flesh on the ground under the head,
+  // not into a face: a crocodile's and a harbour seal's snouts went 4 cm into stairs.json's
+  // risers, their skulls clear).
+  const bool head_flesh = rig.skull >= 0 && rig.flesh_level_from < rig.flesh.size();
+  const glm::vec2 skull_ms = rig.skull >= 0 ? bone_start(rig.model_rest[rig.skull]) : glm::vec2(0.0f);
+  float wall_over = INFINITY;
+  if (head_flesh) {
+    const glm::vec2 skull = bone_start(m[rig.skull]);
+    wall_over = std::min(body.to_ws(skull).y, body.to_ws(bone_end(m[rig.skull], sk.length(rig.skull))).y);
+    for (glm::vec2 q : {body.to_ws(skull + rig.head_flesh_lo), body.to_ws(skull + rig.head_flesh_hi)}) {
+      bound_lo = glm::min(bound_lo, q);
+      bound_hi = glm::max(bound_hi, q);
+    }
+  }
   if (!ctx.ground.may_rise_above(bound_lo.x, bound_hi.x, bound_lo.y - keep.y, bound_hi.y)) return;
-  auto hits = [&](float lift) {
+  auto hits = [&](float lift, bool flesh) {
     for (const int b : rig.head_bones) {
       pose_head(b, lift);
       const float len = sk.length(b);
@@ -327,14 +342,25 @@ void keep_head_clear(const AnimContext& ctx, const BodyFrame& body, const std::v
       const glm::vec2 seg[2] = {body.to_ws(bone_start(m[b])) - keep, body.to_ws(bone_end(m[b], len)) - keep};
       if (polyline_hits_level(ctx.level, seg, 2, ctx.hits)) return true;
     }
+    if (flesh) {
+      const glm::vec2 skull = bone_start(m[rig.skull]);
+      for (size_t i = rig.flesh_level_from; i < rig.flesh.size(); ++i) {
+        const glm::vec2 seg[2] = {body.to_ws(skull + (rig.flesh[i].a - skull_ms)), body.to_ws(skull + (rig.flesh[i].b - skull_ms))};
+        if (polyline_hits_level(ctx.level, seg, 2, ctx.hits, -INFINITY, wall_over)) return true;
+      }
+    }
     return false;
   };
-  if (!hits(0.0f)) return;
+  if (!hits(0.0f, head_flesh)) return;
   // Turned up: towards the way the neck reaches from its base at rest (forward, for almost
   // every neck; a neck curled back under the body turns the other way).
   const float most = rig.nod_reach[0].x >= 0.0f ? kMaxHeadLift : -kMaxHeadLift;
+  // Flesh that no lift clears (a muzzle in a wall ahead) leaves the head to its bones: lifted
+  // all the way, a random creature's skull went 6.6 mm into a block above it.
+  const bool flesh = head_flesh && !hits(most, true);
+  if (!flesh && head_flesh && !hits(0.0f, false)) return;
   float lo = 0.0f, hi = 1.0f;  // fractions of the most: lo hits, hi clears (or is the last resort)
-  bisect(lo, hi, kClearBisections, [&](float mid) { return hits(mid * most); });
+  bisect(lo, hi, kClearBisections, [&](float mid) { return hits(mid * most, flesh); });
   pose.locals[base].angle_ls += hi * most;
   pose.locals[rig.skull].angle_ls -= hi * most;
 }
