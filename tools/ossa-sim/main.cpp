@@ -73,7 +73,8 @@ const char* kUsage = R"(usage: ossa-sim (--example NAME | --creature F.creature.
   --svg F.svg      a strobe of the creature over the level (a pose every 0.4 s): its bones
                    and, for a generated creature, its drawn body's outlines
   --svg-window FROM:TO[:EVERY]  the strobe's poses from FROM to TO seconds, one every EVERY
-                   seconds (default 0.4): a close look at a moment
+                   seconds (default 0.4): a close look at a moment (a pose's time is the
+                   metrics': a window from deepest_at_s starts with that pose)
 )";
 
 // Output bounds (see main): at most this many trace rows (ticks) and SVG poses.
@@ -407,9 +408,12 @@ int main(int argc, char** argv) {
   }
   const long long total_ticks = script_ticks(*script, args.hz);
   const long long shot_every = std::max(1LL, std::llround(static_cast<double>(args.svg_every) * args.hz));
-  // The strobe's poses count from the window's first tick (a window between two multiples of
-  // EVERY still has its poses).
-  const long long shot_from = static_cast<long long>(std::ceil(static_cast<double>(args.svg_from) * args.hz - 1e-6));
+  // The pose after tick k is the creature at (k + 1) / hz seconds, the time the metrics stamp
+  // (deepest_at_s, deepest_outline_at_s): a window from such a time draws that pose. The
+  // strobe's poses count from the window's first one (a window between two multiples of EVERY
+  // still has its poses).
+  const long long shot_from =
+      std::max(0LL, static_cast<long long>(std::ceil(static_cast<double>(args.svg_from) * args.hz - 1e-6)) - 1);
   std::vector<Snapshot> shots;
   double extra_seconds = 0.0;
   const float dt = 1.0f / static_cast<float>(args.hz);
@@ -451,7 +455,7 @@ int main(int argc, char** argv) {
       }
       joints << "\n";
     }
-    const float t = static_cast<float>(tick) * dt;
+    const float t = static_cast<float>(tick + 1) * dt;
     if (args.svg && tick >= shot_from && t <= args.svg_to && (tick - shot_from) % shot_every == 0) shots.push_back({a.world_matrices(), outline ? outline->drawn_outlines() : std::vector<std::vector<glm::vec2>>{}});
   });
   const SimProbe& probe = result.probe;
