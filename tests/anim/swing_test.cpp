@@ -5,6 +5,8 @@
 #include <algorithm>
 
 #include "ossa/anim/spline_prototypes.h"
+#include "ossa/gen/generator.h"
+#include "ossa/gen/skeleton_builder.h"
 #include "shared/scenes.h"
 #include "stage_scene.h"
 
@@ -115,5 +117,49 @@ TEST_CASE("swing: a landing beyond the leg's reach across gives way to a place t
     CHECK(f.state == LegState::kSwing);
     CHECK(f.easing);
     CHECK(anim::reaches(s.inputs(), leg, f.to_ws));
+  }
+}
+
+TEST_CASE("swing: a foot's drawn flesh clears a riser on the way up and down", "[anim][swing]") {
+  // The horse at its true size steps onto and off a step from a place where its hoof's flesh
+  // (anim_rig.h RigLeg::flesh_front, flesh_back) clears the level to one where it does: the
+  // swing is raised until the flesh, not only the bones, passes over the step's corner.
+  const SplinePrototypes prototypes = shipped_prototypes();
+  const Creature horse = build_creature(scenes::generator().example("horse").value()).value();
+  for (int facing : {1, -1}) {
+    for (float rise : {0.15f, -0.15f}) {
+      const float edge = facing > 0 ? 5.0f : -5.0f;
+      std::vector<Box> boxes{Box::from_corner(-40.0f, -1.0f, 80.0f, 1.0f)};
+      if (facing > 0) boxes.push_back(Box{{edge, -1.0f}, {40.0f, std::max(rise, -0.5f)}});
+      else boxes.push_back(Box{{-40.0f, -1.0f}, {edge, std::max(rise, -0.5f)}});
+      if (rise < 0.0f) boxes = {Box{{-40.0f, -1.0f}, {40.0f, rise}},
+                                facing > 0 ? Box{{-40.0f, -1.0f}, {edge, 0.0f}} : Box{{edge, -1.0f}, {40.0f, 0.0f}}};
+      const Level level(boxes, {});
+      test::StageScene s(horse, level, edge - facing * 1.0f, facing);
+      for (size_t i = 0; i < s.rig->legs.size(); ++i) {
+        const int leg = static_cast<int>(i);
+        const RigLeg& info = s.rig->legs[i];
+        const anim::FootSpan bones = anim::foot_span_ws(info, facing), flesh = anim::flesh_span_ws(info, facing);
+        REQUIRE(flesh.hi - flesh.lo > bones.hi - bones.lo);
+        // Where the whole foot and its flesh stand before the edge, to where they stand beyond it.
+        const float ahead = (facing > 0 ? flesh.hi : -flesh.lo) + 0.02f, behind = (facing > 0 ? -flesh.lo : flesh.hi) + 0.02f;
+        anim::FootState f;
+        f.pos_ws = {edge - facing * ahead, 0.0f};
+        const glm::vec2 to{edge + facing * behind, rise};
+        REQUIRE(anim::foot_fits(s.inputs(), leg, f.pos_ws, true));
+        REQUIRE(anim::foot_fits(s.inputs(), leg, to, true));
+        INFO("facing " << facing << " rise " << rise << " leg " << leg);
+        REQUIRE(anim::begin_swing(s.ctx, s.body, leg, f, to, anim::step_shape(prototypes, 0.0f, info.reach, 2.0f, false)));
+        for (int k = 1; k < 200; ++k) {
+          const float t = static_cast<float>(k) / 200.0f;
+          const glm::vec2 p = anim::swing_point(f, t);
+          const glm::vec2 ankle = p + glm::vec2(facing * info.ankle_rel_ms.x, info.ankle_rel_ms.y);
+          const glm::vec2 tip = p + glm::vec2(facing * info.tip_rel_ms.x, info.tip_rel_ms.y);
+          const float lo_y = std::min({p.y, ankle.y, tip.y}), hi_y = std::max({p.y, ankle.y, tip.y, lo_y + 1e-3f});
+          INFO("s = " << t);
+          CHECK_FALSE(s.level.overlaps(Box{{p.x + flesh.lo + 1e-3f, lo_y + 1e-3f}, {p.x + flesh.hi - 1e-3f, hi_y}}));
+        }
+      }
+    }
   }
 }

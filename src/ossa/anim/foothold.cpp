@@ -139,8 +139,8 @@ bool reaches(const FootholdInputs& in, int leg, glm::vec2 p_ws, float reach_use)
 
 namespace {
 
-bool nearest_fit_within(const FootholdInputs& in, int leg, glm::vec2 near_ws, glm::vec2* spot, bool in_reach, float reach_use,
-                        bool with_flesh) {
+// The nearest spot whose flesh fits too, else the nearest whose bones do.
+bool nearest_fit_within(const FootholdInputs& in, int leg, glm::vec2 near_ws, glm::vec2* spot, bool in_reach, float reach_use) {
   // Step by step (RigScale::search_step) either way, up to half a leg's length, on ground within
   // a step (one every leg pair could follow up, as in find_landing).
   const AnimRig& rig = in.ctx.rig;
@@ -152,18 +152,20 @@ bool nearest_fit_within(const FootholdInputs& in, int leg, glm::vec2 near_ws, gl
   const RigScale& scale = rig.scale;
   const float sole_lo = std::min(sole, 0.0f) - scale.sole_side, sole_hi = std::max(sole, 0.0f) + scale.sole_side;
   const int n = std::max(1, static_cast<int>(0.5f * (info.reach + info.foot_length) / scale.search_step));
+  bool bones_only = false;
   for (int k = 0; k <= 2 * n; ++k) {
     const float x = near_ws.x + scale.search_step * static_cast<float>(k % 2 == 0 ? k / 2 : -(k + 1) / 2);
     auto hit = ground_below(in.ctx.level, x + sole_lo, x + sole_hi, near_ws.y + up, up + down);
     if (!hit) continue;
     const glm::vec2 p(x, hit->height_ws);
     if (in_reach && !reaches(in, leg, p, reach_use)) continue;
-    if (foot_fits(in, leg, p, with_flesh)) {
-      *spot = p;
-      return true;
-    }
+    if (!foot_fits(in, leg, p)) continue;
+    const bool flesh_fits = foot_fits(in, leg, p, true);
+    if (flesh_fits || !bones_only) *spot = p;
+    if (flesh_fits) return true;
+    bones_only = true;
   }
-  return false;
+  return bones_only;
 }
 
 }  // namespace
@@ -171,12 +173,8 @@ bool nearest_fit_within(const FootholdInputs& in, int leg, glm::vec2 near_ws, gl
 bool nearest_fit(const FootholdInputs& in, int leg, glm::vec2 near_ws, glm::vec2* spot, bool prefer_reach, float reach_use) {
   // In reach first, if asked; of those, one where the foot's flesh clears the level too
   // (as find_landing).
-  for (int in_reach = prefer_reach ? 1 : 0; in_reach >= 0; --in_reach) {
-    for (int fleshed = 1; fleshed >= 0; --fleshed) {
-      if (nearest_fit_within(in, leg, near_ws, spot, in_reach, reach_use, fleshed)) return true;
-    }
-  }
-  return false;
+  return (prefer_reach && nearest_fit_within(in, leg, near_ws, spot, true, reach_use)) ||
+         nearest_fit_within(in, leg, near_ws, spot, false, reach_use);
 }
 
 void note_ledge(const AnimContext& ctx, FootState& f, float ledge_y) {
@@ -254,58 +252,59 @@ bool find_landing(const FootholdInputs& in, int leg, glm::vec2 foot_ws, float x_
     return slope_from_foot == 1;
   };
   // A landing whose flesh clears the level too first; where there is none (treads narrower
-  // than the foot and its flesh), one whose bones do.
+  // than the foot and its flesh), the first one whose bones do.
   for (int pass = ledge ? 0 : 1; pass < 2; ++pass) {
     const float floor_y = pass == 0 ? top - 2.0f * up : -1e30f;
-    for (int fleshed = has_flesh ? 1 : 0; fleshed >= 0; --fleshed) {
-      for (int k = 0; k <= kLandingCandidates; ++k) {
-        const int n = (k + 1) / 2;
-        const float d = k % 2 == 1 ? -stepx * static_cast<float>(n) : 0.25f * stepx * static_cast<float>(n);
-        if (-d > shortest) {
-          if (k % 2 == 1) continue;
-          if (d > longest) break;
-        } else if (k % 2 == 0 && d > longest) {
-          continue;
-        }
-        if (d > longest) continue;
-        const float x = x_wanted + facing * d;
-        // Up or down a slope (a tile hill read as a ramp, with no real riser between the foot and
-        // the landing) a stride may climb or descend further than a step: the step limits count
-        // from the slope's height at the landing.
-        // (Asked only when the plain step limits find no ground there.)
-        float slope_top = top, bottom = lowest;
-        auto hit = ground_below(in.ctx.level, x + span_lo, x + span_hi, top, top - lowest);
-        if (!hit && on_slope()) {
-          const float along = in.ctx.ground.slope_top(foot_ws.x, x + span_lo, x + span_hi, reading);
-          if (!std::isnan(along)) {
-            slope_top = std::max(top, along + up);
-            bottom = std::min(lowest, along - down);
-            hit = ground_below(in.ctx.level, x + span_lo, x + span_hi, slope_top, slope_top - bottom);
-          }
-        }
-        if (!hit || hit->height_ws < floor_y) continue;
-        if ((support_lo > span_lo || support_hi < span_hi) &&
-            !ground_below(in.ctx.level, x + support_lo, x + support_hi, slope_top, slope_top - bottom)) {
-          continue;
-        }
-        const float y = hit->height_ws;
-        const float box_lo = fleshed ? flesh_lo : span_lo, box_hi = fleshed ? flesh_hi : span_hi;
-        const Box foot_box{{x + box_lo + scale.landing_inset, y + scale.landing_inset},
-                           {x + box_hi - scale.landing_inset, y + height}};
-        if (in.ctx.level.overlaps(foot_box)) continue;
-        // Nothing between the foot and its landing rises more than a step above both: the foot
-        // would have to be lifted over a wall (the swing could raise it, the leg could not).
-        const float wall = std::max(foot_ws.y, y) + up;
-        const float between_lo = std::min(foot_ws.x, x) + 0.001f, between_hi = std::max(foot_ws.x, x) - 0.001f;
-        if (between_lo < between_hi && in.ctx.level.overlaps(Box{{between_lo, wall}, {between_hi, wall + 0.001f}})) continue;
-        // Down a step the shin comes from above and behind: keep the foot off the riser it steps
-        // down from, or the shin cuts the step's edge.
-        const float back = facing > 0 ? x + span_lo : x + span_hi;
-        if ((fleshed || k + 1 < kLandingCandidates) && riser_behind(in, info, girdle.rest_height, reading, back, y, up)) continue;
-        *landing = {x, y};
-        return true;
+    bool bones_only = false;
+    for (int k = 0; k <= kLandingCandidates; ++k) {
+      const int n = (k + 1) / 2;
+      const float d = k % 2 == 1 ? -stepx * static_cast<float>(n) : 0.25f * stepx * static_cast<float>(n);
+      if (-d > shortest) {
+        if (k % 2 == 1) continue;
+        if (d > longest) break;
+      } else if (k % 2 == 0 && d > longest) {
+        continue;
       }
+      if (d > longest) continue;
+      const float x = x_wanted + facing * d;
+      // Up or down a slope (a tile hill read as a ramp, with no real riser between the foot and
+      // the landing) a stride may climb or descend further than a step: the step limits count
+      // from the slope's height at the landing.
+      // (Asked only when the plain step limits find no ground there.)
+      float slope_top = top, bottom = lowest;
+      auto hit = ground_below(in.ctx.level, x + span_lo, x + span_hi, top, top - lowest);
+      if (!hit && on_slope()) {
+        const float along = in.ctx.ground.slope_top(foot_ws.x, x + span_lo, x + span_hi, reading);
+        if (!std::isnan(along)) {
+          slope_top = std::max(top, along + up);
+          bottom = std::min(lowest, along - down);
+          hit = ground_below(in.ctx.level, x + span_lo, x + span_hi, slope_top, slope_top - bottom);
+        }
+      }
+      if (!hit || hit->height_ws < floor_y) continue;
+      if ((support_lo > span_lo || support_hi < span_hi) &&
+          !ground_below(in.ctx.level, x + support_lo, x + support_hi, slope_top, slope_top - bottom)) {
+        continue;
+      }
+      const float y = hit->height_ws;
+      const Box foot_box{{x + span_lo + scale.landing_inset, y + scale.landing_inset}, {x + span_hi - scale.landing_inset, y + height}};
+      if (in.ctx.level.overlaps(foot_box)) continue;
+      // Nothing between the foot and its landing rises more than a step above both: the foot
+      // would have to be lifted over a wall (the swing could raise it, the leg could not).
+      const float wall = std::max(foot_ws.y, y) + up;
+      const float between_lo = std::min(foot_ws.x, x) + 0.001f, between_hi = std::max(foot_ws.x, x) - 0.001f;
+      if (between_lo < between_hi && in.ctx.level.overlaps(Box{{between_lo, wall}, {between_hi, wall + 0.001f}})) continue;
+      // Down a step the shin comes from above and behind: keep the foot off the riser it steps
+      // down from, or the shin cuts the step's edge.
+      const bool clear_behind = !riser_behind(in, info, girdle.rest_height, reading, facing > 0 ? x + span_lo : x + span_hi, y, up);
+      if (!clear_behind && k + 1 < kLandingCandidates) continue;
+      const Box flesh_box{{x + flesh_lo + scale.landing_inset, y + scale.landing_inset}, {x + flesh_hi - scale.landing_inset, y + height}};
+      const bool flesh_clear = !has_flesh || (clear_behind && !in.ctx.level.overlaps(flesh_box));
+      if (flesh_clear || !bones_only) *landing = {x, y};
+      if (flesh_clear) return true;
+      bones_only = true;
     }
+    if (bones_only) return true;
   }
   return false;
 }

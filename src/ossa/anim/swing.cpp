@@ -108,9 +108,9 @@ bool raise_for_clearance(const AnimContext& ctx, int facing, int leg, FootState&
   // The same with the foot's flesh (foothold.h flesh_span_ws). A box the flesh meets where the
   // foot lifts or lands (find_landing found none whose flesh clears: treads narrower than the
   // foot and its flesh) is cleared by the bones alone.
-  const bool has_flesh = info.flesh_back > 0.0f || info.flesh_front > 0.0f;
-  const glm::vec2 flesh_lo(facing > 0 ? info.flesh_back : info.flesh_front, 0.0f);
-  const glm::vec2 flesh_hi(facing > 0 ? info.flesh_front : info.flesh_back, 0.0f);
+  const FootSpan bones_span = foot_span_ws(info, facing), flesh_span = flesh_span_ws(info, facing);
+  const bool has_flesh = flesh_span.lo != bones_span.lo || flesh_span.hi != bones_span.hi;
+  const glm::vec2 flesh_lo(bones_span.lo - flesh_span.lo, 0.0f), flesh_hi(flesh_span.hi - bones_span.hi, 0.0f);
   auto fleshed = [&](const Box& b) { return Box{b.min_ws - flesh_lo, b.max_ws + flesh_hi}; };
   foot[0] = foot_box(0.0f);
   flesh[0] = fleshed(foot[0]);
