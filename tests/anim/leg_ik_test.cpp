@@ -162,3 +162,59 @@ TEST_CASE("coupled legs: the tip is reached, a standing foreleg is straight, no 
     CHECK(solved > 300);
   }
 }
+
+TEST_CASE("leg flesh: the drawn leg posed with its bones meets a box its bones clear, both facings", "[anim][ik]") {
+  // The horse standing at rest beside a thin ledge that reaches in front of a shin's bone but
+  // not to it: the bones clear it, the flesh drawn about the shin does not. Moved ahead of the
+  // flesh, or below top_over, it is not met.
+  const Creature horse = scenes::quadruped();
+  for (int facing : {1, -1}) {
+    const auto rig = build_anim_rig(horse);
+    for (size_t i = 0; i < rig->legs.size(); ++i) {
+      const RigLeg& leg = rig->legs[i];
+      REQUIRE(leg.flesh_outline.size() >= 8);
+      CHECK(leg.flesh_margin > 0.0f);
+      auto scene_with = [&](float x0_fs, float x1_fs, float y) {
+        // The box from x0 to x1 in frame space, 1 cm tall about y; no ground (the scene stands
+        // the body as over ground at 0, its feet a little in it: the rest pose, not a stance).
+        const float a = 10.0f + facing * x0_fs, b = 10.0f + facing * x1_fs;
+        return test::StageScene(horse, Level({Box{{std::min(a, b), y - 0.005f}, {std::max(a, b), y + 0.005f}}}, {}), 10.0f, facing);
+      };
+      // The rest pose where the scene stands the body (frame space: the root at x 0).
+      const test::StageScene flat = scene_with(50.0f, 51.0f, 0.5f);
+      Pose pose = rig->rest_pose;
+      pose.locals[rig->root].offset_ls = {0.0f, flat.body.root_y_ws};
+      const std::vector<Mat2x3> placed = model_matrices(rig->skeleton, pose.locals);
+      auto dir_of = [&](int bone) { return glm::vec2(placed[bone].m[0], placed[bone].m[1]); };
+      const glm::vec2 joint = bone_start(placed[leg.bones[0]]);
+      TwoBoneIkResult ik;
+      ik.upper_dir = dir_of(leg.bones[0]);
+      ik.lower_dir = dir_of(leg.bones[1]);
+      ik.middle = bone_start(placed[leg.bones[1]]);
+      ik.end = bone_start(placed[leg.bones[2]]);
+      const glm::vec2 foot_dir = dir_of(leg.bones[2]);
+      // The shin's front-most flesh point about its middle, and where the shin's bone lies at
+      // its height.
+      glm::vec2 front(-1e30f);
+      for (const LegFleshPoint& q : leg.flesh_outline) {
+        if (q.bone != 1 || q.bone2 >= 0 || std::fabs(q.local.x - 0.5f * leg.lower) > 0.25f * leg.lower) continue;
+        const glm::vec2 p = ik.middle + q.local.x * ik.lower_dir + q.local.y * glm::vec2(-ik.lower_dir.y, ik.lower_dir.x);
+        if (p.x > front.x) front = p;
+      }
+      INFO("facing " << facing << " leg " << i);
+      REQUIRE(front.x > -1e29f);
+      const float t = (ik.middle.y - front.y) / (ik.middle.y - ik.end.y);
+      const float bone_x = glm::mix(ik.middle.x, ik.end.x, t);
+      REQUIRE(front.x > bone_x + 0.004f);
+      const test::StageScene in = scene_with(0.5f * (bone_x + front.x), front.x + 0.02f, front.y);
+      const glm::vec2 tip = ik.end + leg.foot_length * foot_dir;
+      const glm::vec2 bones[4] = {in.body.to_ws(joint), in.body.to_ws(ik.middle), in.body.to_ws(ik.end), in.body.to_ws(tip)};
+      std::vector<int> hits;
+      CHECK_FALSE(anim::polyline_hits_level(in.level, bones, 4, hits));
+      CHECK(anim::leg_flesh_hits(in.ctx, in.body, leg, joint, ik, foot_dir));
+      CHECK_FALSE(anim::leg_flesh_hits(in.ctx, in.body, leg, joint, ik, foot_dir, front.y + 0.01f));
+      const test::StageScene ahead = scene_with(front.x + 0.003f, front.x + 0.02f, front.y);
+      CHECK_FALSE(anim::leg_flesh_hits(ahead.ctx, ahead.body, leg, joint, ik, foot_dir));
+    }
+  }
+}

@@ -198,6 +198,24 @@ TEST_CASE("OutlineProbe measures the drawn body where the bones' figure does not
       CHECK(outline->max_outline_penetration_m <= 0.001f);
     }
   }
+  SECTION("a leg swinging or standing by a corner: its drawn flesh kept off it, not only its bones") {
+    // The swing lifted a leg until its bones cleared a step's corner, and a stance foot behind
+    // a riser lifted when its bones would cut the step above it: the flesh drawn about thigh
+    // and shin lay in the corner all the same (the brachiosaurus's 4.5 cm at default.json's
+    // post, the triceratops's 1.8 cm at drops.json's ledge). Both now keep the leg's drawn
+    // outline (anim_rig.h RigLeg::flesh_outline) clear where some pose does.
+    struct Case {
+      const char* animal;
+      const char* level;
+    };
+    for (const Case& c : {Case{"brachiosaurus", "levels/default.json"}, Case{"triceratops", "levels/drops.json"}}) {
+      const SimResult r = run(c.animal, load_level(scenes::source_path(c.level)).value(), "walk:0.6:30", outline);
+      INFO(c.animal << " on " << c.level << ": leg " << outline->max_by_kind[static_cast<size_t>(BodyPartKind::kLeg)] << " m, deepest "
+                    << outline->deepest_outline_part << " at " << outline->deepest_outline_at_s << " s");
+      CHECK(r.probe.max_penetration_m <= 0.001f);
+      CHECK(outline->max_by_kind[static_cast<size_t>(BodyPartKind::kLeg)] <= 0.001f);
+    }
+  }
   SECTION("a low head at a riser: its drawn snout lifted out of the face") {
     // The head's bones cleared the riser ahead, and the snout drawn about them lay 3-4 cm in
     // its face: the head now lifts on its neck until its flesh clears too.

@@ -338,7 +338,8 @@ void build_crawl_flesh(AnimRig& rig, const RigRoles& roles) {
 }
 
 // Each leg's flesh about its foot (RigLeg::flesh_back/flesh_front): the outline of every part
-// with a point on the leg's bones (its own part: a near and a far leg each have one).
+// with a point on the leg's bones (its own part: a near and a far leg each have one). And the
+// leg's drawn outline above the sole, on its bones (RigLeg::flesh_outline).
 void build_foot_flesh(AnimRig& rig, const RigRoles& roles) {
   for (RigLeg& leg : rig.legs) {
     const glm::vec2 contact = bone_end(rig.model_rest[leg.contact_bone], rig.skeleton.length(leg.contact_bone));
@@ -362,6 +363,48 @@ void build_foot_flesh(AnimRig& rig, const RigRoles& roles) {
     const anim::FootSpan span = anim::foot_span_ws(leg, 1);
     leg.flesh_back = std::max(0.0f, span.lo - lo);
     leg.flesh_front = std::max(0.0f, hi - span.hi);
+    // The outline of the leg's own part (the one with most points on its bones) above the
+    // sole, point by point (one that follows the girdle is left out: its neighbours span the
+    // gap). A mid joint's point (bone -1) follows the two bones about the nearest joint.
+    auto bone_of = [&](int bone) { return static_cast<int>(std::find(leg.bones.begin(), leg.bones.end(), bone) - leg.bones.begin()); };
+    std::vector<int> on_leg;
+    for (const RigRoles::FleshPoint& f : roles.flesh) {
+      if (bone_of(f.bone) >= 3) continue;
+      if (on_leg.size() <= static_cast<size_t>(f.part)) on_leg.resize(static_cast<size_t>(f.part) + 1, 0);
+      ++on_leg[static_cast<size_t>(f.part)];
+    }
+    if (on_leg.empty()) continue;
+    const int own = static_cast<int>(std::max_element(on_leg.begin(), on_leg.end()) - on_leg.begin());
+    const float sole = rig.scale.foot_box;
+    const glm::vec2 joints[4] = {bone_start(rig.model_rest[leg.bones[0]]), bone_start(rig.model_rest[leg.bones[1]]),
+                                 bone_start(rig.model_rest[leg.bones[2]]),
+                                 bone_end(rig.model_rest[leg.bones[2]], rig.skeleton.length(leg.bones[2]))};
+    std::vector<LegFleshPoint> outline;
+    auto local = [&](int k, glm::vec2 p) {
+      const glm::vec2 q = inverse(rig.model_rest[leg.bones[k]]).apply(p);
+      const float len = rig.skeleton.length(leg.bones[k]);
+      leg.flesh_margin = std::max(leg.flesh_margin, glm::length(q - glm::vec2(std::clamp(q.x, 0.0f, len), 0.0f)));
+      return q;
+    };
+    for (const RigRoles::FleshPoint& f : roles.flesh) {
+      if (f.part != own || f.position_ms.y - contact.y <= sole) continue;
+      int k = bone_of(f.bone);
+      if (k < 3) {
+        outline.push_back({k, local(k, f.position_ms)});
+        continue;
+      }
+      if (f.bone != -1) continue;
+      k = 0;  // the joint nearest: the hip (the upper bone's), the knee, the ankle or the toe's (the foot's)
+      for (int j = 1; j < 4; ++j) {
+        if (glm::length(f.position_ms - joints[j]) < glm::length(f.position_ms - joints[k])) k = j;
+      }
+      if (k == 3) continue;  // a toe's: the foot's own flesh, the foothold's and the swing's foot box's
+      if (k == 0) outline.push_back({0, local(0, f.position_ms)});
+      else outline.push_back({k - 1, local(k - 1, f.position_ms), k, local(k, f.position_ms)});
+    }
+    // Thinned evenly to at most kLegFleshPoints (a fine body's leg has more).
+    const size_t n = outline.size();
+    for (size_t i = 0; i < std::min(n, kLegFleshPoints); ++i) leg.flesh_outline.push_back(outline[i * n / std::min(n, kLegFleshPoints)]);
   }
 }
 

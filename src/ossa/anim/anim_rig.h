@@ -31,6 +31,16 @@ namespace ossa {
 // Stance legs never extend beyond this fraction of their reach (upper + lower).
 inline constexpr float kReachLimit = 0.985f;
 
+struct LegFleshPoint {
+  int bone = 0;                     // 0 upper, 1 lower, 2 foot
+  glm::vec2 local{0.0f};            // in that bone's frame
+  // A point about the knee or the ankle (a mid joint's) follows both bones there, halfway:
+  // this one the bone after `bone` (-1: none), local2 in its frame.
+  int bone2 = -1;
+  glm::vec2 local2{0.0f};
+};
+inline constexpr size_t kLegFleshPoints = 64;
+
 struct RigLeg {
   std::array<int, 3> bones{};       // upper, lower, foot
   int girdle_bone = -1;             // the bone the chain hangs from
@@ -62,6 +72,13 @@ struct RigLeg {
   // behind the bones' span above and ahead of it, facing +x, metres (0: no drawn body). A
   // foothold keeps it off the level, not only the bones (foothold.h flesh_span_ws).
   float flesh_back = 0.0f, flesh_front = 0.0f;
+  // The drawn leg's outline above the foot's sole (RigRoles::flesh, in order round the leg's
+  // own part): each point in the frame at rest of the leg bone it follows most (0 upper, 1
+  // lower, 2 foot; x along the bone, y across), or of the two about the joint it lies at. Posed with the leg's bones, it is the outline
+  // the swing and the stance keep off the level, not only the bones (leg_geometry.h
+  // leg_flesh_hits). Empty: no drawn body. At most kLegFleshPoints.
+  std::vector<LegFleshPoint> flesh_outline;
+  float flesh_margin = 0.0f;        // the farthest flesh_outline lies from its bone, metres
   // Three-segment legs (a long foot standing on its tip: hooves, paws, bird feet; issue 29):
   // the foot bone is coupled to the leg instead of keeping its rest angle. A fore foot lies in
   // line with the forearm (the carpus straight under load); a hind foot keeps its rest angle to

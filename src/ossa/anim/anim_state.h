@@ -154,13 +154,16 @@ struct LegPhase {
 // What a stage tells a later one, on this tick unless a field says otherwise. Animator::update
 // clears the per-tick fields at its start (begin_tick); each field names its writer and
 // readers.
+inline constexpr uint8_t kLiftNow = 1, kLiftIfPlaced = 2;  // TickHandoff::lift_now
+
 struct TickHandoff {
   // Per leg, while the gait clock runs: its foot's phase and whether its lift-off is due.
   // Writer: the gait clock (tick_clock). Reader: the step stage.
   std::vector<LegPhase> leg_phase;
   // Per foot: standing behind and below its girdle on stairs, its leg would cut a step, so it
-  // lifts at its next chance. Writer: body motion (limit_by_legs). Reader: the step stage's
-  // lift decision, later on this tick.
+  // lifts at its next chance (kLiftNow); or only its drawn flesh would, so it lifts if it
+  // finds a foothold, else stands (kLiftIfPlaced). Writer: body motion (limit_by_legs).
+  // Reader: the step stage's lift decision, later on this tick.
   std::vector<uint8_t> lift_now;
   // Per foot: a stance leg the body placement stretched past its reach (clamps 1 and 6), or
   // left with its thigh or shin across an edge (clamp 3), lifts at its next chance instead of

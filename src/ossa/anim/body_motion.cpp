@@ -494,10 +494,16 @@ float limit_by_legs(const AnimContext& ctx, const BodyFrame& body, const FootSet
     // A foot left below and behind on stairs whose leg would cut the edge of a step above it
     // lifts now (the gait clock reads lift_now) rather than drag its knee through the step.
     // The body waits for it if the leg clears the steps where it is.
-    if (stance && anchor.x < joint.x && !f.stance_reach_clear.clear_above(contact.y) &&
-        stance_leg_hits(ctx, body, leg, f, joint + glm::vec2(std::fabs(dx), 0.0f))) {
-      handoff.lift_now[feet.foot_of_leg[i]] = 1;
-      if (!stance_leg_hits(ctx, body, leg, f, joint)) dx = 0.0f;
+    // One whose drawn flesh only would cut it lifts if it finds a foothold (kLiftIfPlaced); the
+    // body does not wait for it.
+    if (stance && anchor.x < joint.x && !f.stance_reach_clear.clear_above(contact.y)) {
+      const glm::vec2 ahead = joint + glm::vec2(std::fabs(dx), 0.0f);
+      if (stance_leg_hits(ctx, body, leg, f, ahead)) {
+        handoff.lift_now[feet.foot_of_leg[i]] = kLiftNow;
+        if (!stance_leg_hits(ctx, body, leg, f, joint)) dx = 0.0f;
+      } else if (stance_leg_hits(ctx, body, leg, f, ahead, true)) {
+        handoff.lift_now[feet.foot_of_leg[i]] = std::max(handoff.lift_now[feet.foot_of_leg[i]], kLiftIfPlaced);
+      }
     }
   }
   return dx;

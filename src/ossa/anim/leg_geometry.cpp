@@ -1,6 +1,9 @@
 #include "ossa/anim/leg_geometry.h"
 
+#include <array>
+
 #include "ossa/anim/anim_math.h"
+#include "ossa/anim/leg_ik.h"
 #include "ossa/math/two_bone_ik.h"
 
 namespace ossa::anim {
@@ -9,6 +12,9 @@ namespace {
 
 // A rolled foot that would sweep into a step turns back by bisection in this many halvings.
 constexpr int kRollBisections = 6;
+// A standing leg's flesh meets only boxes whose top rises this far above its foot's contact
+// (not the ground it stands on).
+constexpr float kContactSlack = 1e-3f;
 
 }  // namespace
 
@@ -30,7 +36,7 @@ constexpr int kRollBisections = 6;
   return true;
 }
 
-bool stance_leg_hits(const AnimContext& ctx, const BodyFrame& body, int leg, const FootState& f, glm::vec2 joint_fs) {
+bool stance_leg_hits(const AnimContext& ctx, const BodyFrame& body, int leg, const FootState& f, glm::vec2 joint_fs, bool with_flesh) {
   const RigLeg& info = ctx.rig.legs[leg];
   const glm::vec2 contact = body.to_fs(f.pos_ws);
   glm::vec2 dir;
@@ -38,7 +44,31 @@ bool stance_leg_hits(const AnimContext& ctx, const BodyFrame& body, int leg, con
   const TwoBoneIkResult ik = solve_two_bone_ik_directions(joint_fs, info.upper, info.lower, ankle, info.bend);
   const glm::vec2 tip = ik.end + info.foot_length * dir;
   const glm::vec2 p[4] = {body.to_ws(joint_fs), body.to_ws(ik.middle), body.to_ws(ik.end), body.to_ws(tip)};
-  return polyline_hits_level(ctx.level, p, info.foot_length > 0.0f ? 4 : 3, ctx.hits);
+  if (polyline_hits_level(ctx.level, p, info.foot_length > 0.0f ? 4 : 3, ctx.hits)) return true;
+  if (!with_flesh || info.flesh_outline.empty()) return false;
+  // The pose the leg IK draws: a three-segment leg coupled (leg_ik.h), else the plain one.
+  TwoBoneIkResult coupled;
+  glm::vec2 coupled_dir;
+  if (info.coupled && solve_coupled_leg(info, joint_fs, contact, 0.0f, &coupled, &coupled_dir)) {
+    return leg_flesh_hits(ctx, body, info, joint_fs, coupled, coupled_dir, f.pos_ws.y + kContactSlack);
+  }
+  return leg_flesh_hits(ctx, body, info, joint_fs, ik, dir, f.pos_ws.y + kContactSlack);
+}
+
+bool leg_flesh_hits(const AnimContext& ctx, const BodyFrame& body, const RigLeg& info, glm::vec2 joint_fs, const TwoBoneIkResult& ik,
+                    glm::vec2 foot_dir, float top_over) {
+  const size_t n = info.flesh_outline.size();
+  if (n < 2) return false;
+  const glm::vec2 origin[3] = {joint_fs, ik.middle, ik.end};
+  const glm::vec2 dir[3] = {ik.upper_dir, ik.lower_dir, foot_dir};
+  std::array<glm::vec2, kLegFleshPoints + 1> p;
+  for (size_t i = 0; i < n; ++i) {
+    const LegFleshPoint& q = info.flesh_outline[i];
+    auto posed = [&](int k, glm::vec2 l) { return origin[k] + l.x * dir[k] + l.y * glm::vec2(-dir[k].y, dir[k].x); };
+    p[i] = body.to_ws(q.bone2 < 0 ? posed(q.bone, q.local) : 0.5f * (posed(q.bone, q.local) + posed(q.bone2, q.local2)));
+  }
+  p[n] = p[0];
+  return polyline_hits_level(ctx.level, p.data(), static_cast<int>(n + 1), ctx.hits, -INFINITY, top_over);
 }
 
 }  // namespace ossa::anim

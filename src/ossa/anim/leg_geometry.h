@@ -12,6 +12,7 @@
 #include <glm/vec2.hpp>
 
 #include "ossa/anim/anim_state.h"
+#include "ossa/math/two_bone_ik.h"
 
 namespace ossa::anim {
 
@@ -90,7 +91,16 @@ inline float leg_overreach(const AnimContext& ctx, const BodyFrame& body, int le
   return glm::length(anchor - joint_fs) - r;
 }
 // Would leg `leg`'s chain (joint, knee, ankle, toe), its foot standing where it stands, cut
-// into a box with its girdle joint at joint_fs?
-bool stance_leg_hits(const AnimContext& ctx, const BodyFrame& body, int leg, const FootState& foot, glm::vec2 joint_fs);
+// into a box with its girdle joint at joint_fs? with_flesh: or its drawn outline
+// (leg_flesh_hits) a box whose top rises above the foot's contact.
+bool stance_leg_hits(const AnimContext& ctx, const BodyFrame& body, int leg, const FootState& foot, glm::vec2 joint_fs,
+                     bool with_flesh = false);
+
+// Does the leg's drawn outline (RigLeg::flesh_outline), posed with its bones (the upper from
+// joint_fs along ik.upper_dir, the lower from ik.middle along ik.lower_dir, the foot from
+// ik.end along foot_dir; frame space), pass through a collider whose top lies above top_over?
+// false for a leg without one.
+bool leg_flesh_hits(const AnimContext& ctx, const BodyFrame& body, const RigLeg& info, glm::vec2 joint_fs, const TwoBoneIkResult& ik,
+                    glm::vec2 foot_dir, float top_over = -INFINITY);
 
 }  // namespace ossa::anim

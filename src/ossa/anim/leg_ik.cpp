@@ -264,15 +264,19 @@ bool LegIkJob::run() const {
     const bool stretched = moving && f.state == LegState::kStance && glm::dot(ankle - joint, ankle - joint) > stretch * stretch;
     if (f.state == LegState::kSwing || stretched) {
       // A knee, shin or foot swinging into a step lifts the foot until the whole leg clears.
+      // Its drawn flesh too (RigLeg::flesh_outline), where some candidate keeps it clear; where
+      // none does, the bones alone.
       const float F = info.foot_length;  // ankle to toe (to the contact point, or along a flat foot)
       glm::vec2 dir = foot_dir;  // the foot's direction for the candidate being tested
+      bool flesh = !info.flesh_outline.empty();
       auto leg_hits = [&](const TwoBoneIkResult& r) {
         const glm::vec2 tip = r.end + F * dir;
         const glm::vec2 p[4] = {b.to_ws(joint), b.to_ws(r.middle), b.to_ws(r.end), b.to_ws(tip)};
-        return polyline_hits_level(c.level, p, F > 0.0f ? 4 : 3, c.hits);
+        return polyline_hits_level(c.level, p, F > 0.0f ? 4 : 3, c.hits) || (flesh && leg_flesh_hits(c, b, info, joint, r, dir));
       };
-      const float min_y = std::min({joint.y, ik.middle.y, ik.end.y, ik.end.y + F * foot_dir.y});
-      if (!near.clear_above(min_y) && leg_hits(ik)) {
+      const float min_y = std::min({joint.y, ik.middle.y, ik.end.y, ik.end.y + F * foot_dir.y}) - info.flesh_margin;
+      // The first candidate (bisected) that clears, from lifted to turned whole: false if none.
+      auto escape = [&] {
         // Candidates run from the planned ankle straight up, then in towards a tuck under the
         // joint; the first (bisected) that clears wins.
         const glm::vec2 up = glm::vec2(ankle.x, std::max(ankle.y, joint.y - kLiftBelowJointOfLeg * info.reach));
@@ -305,50 +309,55 @@ bool LegIkJob::run() const {
           bisect(lo, hi, kTuckBisections, [&](float mid) { return leg_hits(candidate(mid)); });
           ik = candidate(hi);
           foot_dir = dir;
-        } else {
-          // None clears: carried forward from under the joint instead (a foreleg whose elbow
-          // points back, swinging down off a ledge's edge: drawn back, the elbow only goes
-          // deeper into the ledge; the tortoise's went 2.8 cm into drops.json's first).
-          const glm::vec2 ahead = tuck + glm::vec2(F + kCarryAheadOfLeg * info.reach, 0.0f);
-          auto carried = [&](float s) {
-            const TwoBoneIkResult r = leg_ik(glm::mix(tuck, ahead, s));
-            dir = unfold(r.lower_dir, info.foot_dir_ms);
-            return r;
-          };
-          if (!leg_hits(carried(1.0f))) {
-            float from = 0.0f, to = 1.0f;
-            bisect(from, to, kTuckBisections, [&](float mid) { return leg_hits(carried(mid)); });
-            ik = carried(to);
-            foot_dir = dir;
-          } else {
-            // Last, the planned leg turned whole about the joint, the least turn either way that
-            // clears (random creature 47, a biped running up default.json's 0.2 m step: its knee
-            // points far ahead of its hip, low; no lift, tuck or carry of the foot raised it out of
-            // the step's corner, 2.8 cm in; turned up, the knee rises over the tread).
-            const glm::vec2 planned_ankle = ankle - joint, planned_dir = foot_dir;
-            auto turned = [&](float a) {
-              const TwoBoneIkResult r = leg_ik(joint + rotate(planned_ankle, a));
-              dir = unfold(r.lower_dir, rotate(planned_dir, a));
-              return r;
-            };
-            float from = 0.0f, to = 0.0f;
-            for (float step = 1.0f; step <= kWholeTurnSteps && to == 0.0f; step += 1.0f) {
-              for (float sign : {1.0f, -1.0f}) {
-                const float a = sign * step * kWholeTurnStep;
-                if (!leg_hits(turned(a))) {
-                  from = sign * (step - 1.0f) * kWholeTurnStep;
-                  to = a;
-                  break;
-                }
-              }
-            }
-            if (to != 0.0f) {
-              bisect(from, to, kTuckBisections, [&](float mid) { return leg_hits(turned(mid)); });
-              ik = turned(to);
-              foot_dir = dir;
+          return true;
+        }
+        // None clears: carried forward from under the joint instead (a foreleg whose elbow
+        // points back, swinging down off a ledge's edge: drawn back, the elbow only goes
+        // deeper into the ledge; the tortoise's went 2.8 cm into drops.json's first).
+        const glm::vec2 ahead = tuck + glm::vec2(F + kCarryAheadOfLeg * info.reach, 0.0f);
+        auto carried = [&](float s) {
+          const TwoBoneIkResult r = leg_ik(glm::mix(tuck, ahead, s));
+          dir = unfold(r.lower_dir, info.foot_dir_ms);
+          return r;
+        };
+        if (!leg_hits(carried(1.0f))) {
+          float from = 0.0f, to = 1.0f;
+          bisect(from, to, kTuckBisections, [&](float mid) { return leg_hits(carried(mid)); });
+          ik = carried(to);
+          foot_dir = dir;
+          return true;
+        }
+        // Last, the planned leg turned whole about the joint, the least turn either way that
+        // clears (random creature 47, a biped running up default.json's 0.2 m step: its knee
+        // points far ahead of its hip, low; no lift, tuck or carry of the foot raised it out of
+        // the step's corner, 2.8 cm in; turned up, the knee rises over the tread).
+        const glm::vec2 planned_ankle = ankle - joint, planned_dir = foot_dir;
+        auto turned = [&](float a) {
+          const TwoBoneIkResult r = leg_ik(joint + rotate(planned_ankle, a));
+          dir = unfold(r.lower_dir, rotate(planned_dir, a));
+          return r;
+        };
+        float from = 0.0f, to = 0.0f;
+        for (float step = 1.0f; step <= kWholeTurnSteps && to == 0.0f; step += 1.0f) {
+          for (float sign : {1.0f, -1.0f}) {
+            const float a = sign * step * kWholeTurnStep;
+            if (!leg_hits(turned(a))) {
+              from = sign * (step - 1.0f) * kWholeTurnStep;
+              to = a;
+              break;
             }
           }
         }
+        if (to == 0.0f) return false;
+        bisect(from, to, kTuckBisections, [&](float mid) { return leg_hits(turned(mid)); });
+        ik = turned(to);
+        foot_dir = dir;
+        return true;
+      };
+      if (!near.clear_above(min_y) && leg_hits(ik) && !escape() && flesh) {
+        flesh = false;
+        dir = foot_dir;
+        if (leg_hits(ik)) escape();
       }
     }
     (*leg_dirs)[i] = {ik.upper_dir, ik.lower_dir, foot_dir};

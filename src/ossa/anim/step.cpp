@@ -172,7 +172,7 @@ void step_feet(const AnimContext& ctx, const SplinePrototypes& prototypes, const
   const FootholdInputs in = planner(ctx, body, gait, feet);
   auto asked = [&](int leg) {
     const int k = feet.foot_of_leg[leg];
-    return handoff.lift_now[k] || handoff.release_next[k];
+    return handoff.lift_now[k] == kLiftNow || handoff.release_next[k];
   };
   if (!gait.moving) {
     // Standing: swinging feet set down, eased; a foot the body placement stretched past its
@@ -197,9 +197,12 @@ void step_feet(const AnimContext& ctx, const SplinePrototypes& prototypes, const
       if (!f.easing) f.progress += f.rate * dphi;
       continue;
     }
-    if (!lp.lift_due && !lift_now(ctx, body, leg, f, asked(leg))) continue;
+    const bool optional = handoff.lift_now[feet.foot_of_leg[i]] == kLiftIfPlaced;
+    if (!lp.lift_due && !lift_now(ctx, body, leg, f, asked(leg) || optional)) continue;
     const float swing_phase = std::max(1.0f - lp.phase, 0.05f);
     if (set_new_splines(in, prototypes, gait.run_factor, speed, leg, f, swing_phase)) continue;
+    // (A foot that lifts only for its flesh, finding no foothold, stands.)
+    if (optional && !lp.lift_due && !lift_now(ctx, body, leg, f, asked(leg))) continue;
     // No foothold ahead: over a drop deeper than the legs reach the foot steps off and reaches
     // down past the edge; a wall too tall (or the way walled off) stops the creature.
     float beyond;
