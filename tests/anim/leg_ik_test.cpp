@@ -173,7 +173,8 @@ TEST_CASE("leg flesh: the drawn leg posed with its bones meets a box its bones c
     for (size_t i = 0; i < rig->legs.size(); ++i) {
       const RigLeg& leg = rig->legs[i];
       REQUIRE(leg.flesh_outline.size() >= 8);
-      CHECK(leg.flesh_margin > 0.0f);
+      CHECK(leg.flesh_margin[0] > 0.0f);
+      CHECK(leg.flesh_margin[1] > 0.0f);
       auto scene_with = [&](float x0_fs, float x1_fs, float y) {
         // The box from x0 to x1 in frame space, 1 cm tall about y; no ground (the scene stands
         // the body as over ground at 0, its feet a little in it: the rest pose, not a stance).

@@ -383,7 +383,8 @@ void build_foot_flesh(AnimRig& rig, const RigRoles& roles) {
     auto local = [&](int k, glm::vec2 p) {
       const glm::vec2 q = inverse(rig.model_rest[leg.bones[k]]).apply(p);
       const float len = rig.skeleton.length(leg.bones[k]);
-      leg.flesh_margin = std::max(leg.flesh_margin, glm::length(q - glm::vec2(std::clamp(q.x, 0.0f, len), 0.0f)));
+      float& margin = leg.flesh_margin[static_cast<size_t>(k)];
+      margin = std::max(margin, glm::length(q - glm::vec2(std::clamp(q.x, 0.0f, len), 0.0f)));
       return q;
     };
     for (const RigRoles::FleshPoint& f : roles.flesh) {

@@ -78,7 +78,9 @@ struct RigLeg {
   // the swing and the stance keep off the level, not only the bones (leg_geometry.h
   // leg_flesh_hits). Empty: no drawn body. At most kLegFleshPoints.
   std::vector<LegFleshPoint> flesh_outline;
-  float flesh_margin = 0.0f;        // the farthest flesh_outline lies from its bone, metres
+  // Per bone (upper, lower, foot): the farthest a point of flesh_outline that follows it lies
+  // from it, metres (a bound below the posed bones: leg_ik.cpp's quick test).
+  std::array<float, 3> flesh_margin{};
   // Three-segment legs (a long foot standing on its tip: hooves, paws, bird feet; issue 29):
   // the foot bone is coupled to the leg instead of keeping its rest angle. A fore foot lies in
   // line with the forearm (the carpus straight under load); a hind foot keeps its rest angle to

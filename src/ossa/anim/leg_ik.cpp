@@ -274,7 +274,11 @@ bool LegIkJob::run() const {
         const glm::vec2 p[4] = {b.to_ws(joint), b.to_ws(r.middle), b.to_ws(r.end), b.to_ws(tip)};
         return polyline_hits_level(c.level, p, F > 0.0f ? 4 : 3, c.hits) || (flesh && leg_flesh_hits(c, b, info, joint, r, dir));
       };
-      const float min_y = std::min({joint.y, ik.middle.y, ik.end.y, ik.end.y + F * foot_dir.y}) - info.flesh_margin;
+      const float tip_y = ik.end.y + F * foot_dir.y;
+      const float min_y = std::min({joint.y, ik.middle.y, ik.end.y, tip_y});
+      // (The flesh lies no further below than each bone's margin; a mid joint's point half-way.)
+      const float flesh_y = std::min({std::min(joint.y, ik.middle.y) - info.flesh_margin[0], std::min(ik.middle.y, ik.end.y) - info.flesh_margin[1],
+                                      std::min(ik.end.y, tip_y) - info.flesh_margin[2]});
       // The first candidate (bisected) that clears, from lifted to turned whole: false if none.
       auto escape = [&] {
         // Candidates run from the planned ankle straight up, then in towards a tuck under the
@@ -354,7 +358,7 @@ bool LegIkJob::run() const {
         foot_dir = dir;
         return true;
       };
-      if (!near.clear_above(min_y) && leg_hits(ik) && !escape() && flesh) {
+      if (!near.clear_above(flesh ? std::min(min_y, flesh_y) : min_y) && leg_hits(ik) && !escape() && flesh) {
         flesh = false;
         dir = foot_dir;
         if (leg_hits(ik)) escape();
