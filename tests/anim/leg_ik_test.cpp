@@ -197,7 +197,7 @@ TEST_CASE("leg flesh: the drawn leg posed with its bones meets a box its bones c
       // The shin's front-most flesh point about its middle, and where the shin's bone lies at
       // its height.
       glm::vec2 front(-1e30f);
-      for (const LegFleshPoint& q : leg.flesh_outline) {
+      for (const LimbFleshPoint& q : leg.flesh_outline) {
         if (q.bone != 1 || q.bone2 >= 0 || std::fabs(q.local.x - 0.5f * leg.lower) > 0.25f * leg.lower) continue;
         const glm::vec2 p = ik.middle + q.local.x * ik.lower_dir + q.local.y * glm::vec2(-ik.lower_dir.y, ik.lower_dir.x);
         if (p.x > front.x) front = p;

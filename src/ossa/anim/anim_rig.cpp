@@ -46,7 +46,13 @@ std::vector<glm::vec2> convex_hull(std::vector<glm::vec2> p) {
   return h;
 }
 
-RigLimb rig_limb(const RigLimbRole& limb) { return {limb.girdle_bone, limb.bones, limb.side}; }
+RigLimb rig_limb(const RigLimbRole& limb) {
+  RigLimb out;
+  out.girdle_bone = limb.girdle_bone;
+  out.bones = limb.bones;
+  out.side = limb.side;
+  return out;
+}
 
 // Can the legs hold the back off the ground? The back — the root, the back's vertebrae and
 // what else hangs from them (ribs), not the neck, head, tail or a limb — must not reach below
@@ -337,6 +343,56 @@ void build_crawl_flesh(AnimRig& rig, const RigRoles& roles) {
   if (rig.crawl_flesh.empty()) rig.crawl_bones.clear();
 }
 
+// The outline of a limb's own part (the one with most points on its bones) above `above_y`
+// (model space), point by point (RigLeg::flesh_outline): one that follows the girdle is left
+// out, its neighbours span the gap; a mid joint's point (bone -1) follows the two bones about
+// the nearest joint (at the hand's or foot's end, the toe's, is left out). *margin: per bone,
+// the farthest its points lie from it. Thinned evenly to at most kLimbFleshPoints.
+std::vector<LimbFleshPoint> limb_flesh(const AnimRig& rig, const RigRoles& roles, const std::array<int, 3>& bones, float above_y,
+                                       std::array<float, 3>* margin) {
+  auto bone_of = [&](int bone) { return static_cast<int>(std::find(bones.begin(), bones.end(), bone) - bones.begin()); };
+  std::vector<int> on_limb;
+  for (const RigRoles::FleshPoint& f : roles.flesh) {
+    if (bone_of(f.bone) >= 3) continue;
+    if (on_limb.size() <= static_cast<size_t>(f.part)) on_limb.resize(static_cast<size_t>(f.part) + 1, 0);
+    ++on_limb[static_cast<size_t>(f.part)];
+  }
+  if (on_limb.empty()) return {};
+  const int own = static_cast<int>(std::max_element(on_limb.begin(), on_limb.end()) - on_limb.begin());
+  const glm::vec2 joints[4] = {bone_start(rig.model_rest[bones[0]]), bone_start(rig.model_rest[bones[1]]), bone_start(rig.model_rest[bones[2]]),
+                               bone_end(rig.model_rest[bones[2]], rig.skeleton.length(bones[2]))};
+  const float longest = std::max({rig.skeleton.length(bones[0]), rig.skeleton.length(bones[1]), rig.skeleton.length(bones[2])});
+  auto local = [&](int k, glm::vec2 p) {
+    const glm::vec2 q = inverse(rig.model_rest[bones[k]]).apply(p);
+    const float len = rig.skeleton.length(bones[k]);
+    float& m = (*margin)[static_cast<size_t>(k)];
+    m = std::max(m, glm::length(q - glm::vec2(std::clamp(q.x, 0.0f, len), 0.0f)));
+    return q;
+  };
+  std::vector<LimbFleshPoint> outline;
+  for (const RigRoles::FleshPoint& f : roles.flesh) {
+    if (f.part != own || f.position_ms.y <= above_y) continue;
+    int k = bone_of(f.bone);
+    if (k < 3) {
+      outline.push_back({k, local(k, f.position_ms)});
+      continue;
+    }
+    if (f.bone != -1) continue;
+    k = 0;  // the joint nearest: the upper bone's root, the knee or elbow, the ankle or wrist, the toe's
+    for (int j = 1; j < 4; ++j) {
+      if (glm::length(f.position_ms - joints[j]) < glm::length(f.position_ms - joints[k])) k = j;
+    }
+    // (Not the toe's; nor one far from every joint: another limb's, in a part they share.)
+    if (k == 3 || glm::length(f.position_ms - joints[k]) > 0.5f * longest) continue;
+    if (k == 0) outline.push_back({0, local(0, f.position_ms)});
+    else outline.push_back({k - 1, local(k - 1, f.position_ms), k, local(k, f.position_ms)});
+  }
+  const size_t n = outline.size(), kept = std::min(n, kLimbFleshPoints);
+  std::vector<LimbFleshPoint> thinned;
+  for (size_t i = 0; i < kept; ++i) thinned.push_back(outline[i * n / kept]);
+  return thinned;
+}
+
 // Each leg's flesh about its foot (RigLeg::flesh_back/flesh_front): the outline of every part
 // with a point on the leg's bones (its own part: a near and a far leg each have one). And the
 // leg's drawn outline above the sole, on its bones (RigLeg::flesh_outline).
@@ -363,49 +419,7 @@ void build_foot_flesh(AnimRig& rig, const RigRoles& roles) {
     const anim::FootSpan span = anim::foot_span_ws(leg, 1);
     leg.flesh_back = std::max(0.0f, span.lo - lo);
     leg.flesh_front = std::max(0.0f, hi - span.hi);
-    // The outline of the leg's own part (the one with most points on its bones) above the
-    // sole, point by point (one that follows the girdle is left out: its neighbours span the
-    // gap). A mid joint's point (bone -1) follows the two bones about the nearest joint.
-    auto bone_of = [&](int bone) { return static_cast<int>(std::find(leg.bones.begin(), leg.bones.end(), bone) - leg.bones.begin()); };
-    std::vector<int> on_leg;
-    for (const RigRoles::FleshPoint& f : roles.flesh) {
-      if (bone_of(f.bone) >= 3) continue;
-      if (on_leg.size() <= static_cast<size_t>(f.part)) on_leg.resize(static_cast<size_t>(f.part) + 1, 0);
-      ++on_leg[static_cast<size_t>(f.part)];
-    }
-    if (on_leg.empty()) continue;
-    const int own = static_cast<int>(std::max_element(on_leg.begin(), on_leg.end()) - on_leg.begin());
-    const float sole = rig.scale.foot_box;
-    const glm::vec2 joints[4] = {bone_start(rig.model_rest[leg.bones[0]]), bone_start(rig.model_rest[leg.bones[1]]),
-                                 bone_start(rig.model_rest[leg.bones[2]]),
-                                 bone_end(rig.model_rest[leg.bones[2]], rig.skeleton.length(leg.bones[2]))};
-    std::vector<LegFleshPoint> outline;
-    auto local = [&](int k, glm::vec2 p) {
-      const glm::vec2 q = inverse(rig.model_rest[leg.bones[k]]).apply(p);
-      const float len = rig.skeleton.length(leg.bones[k]);
-      float& margin = leg.flesh_margin[static_cast<size_t>(k)];
-      margin = std::max(margin, glm::length(q - glm::vec2(std::clamp(q.x, 0.0f, len), 0.0f)));
-      return q;
-    };
-    for (const RigRoles::FleshPoint& f : roles.flesh) {
-      if (f.part != own || f.position_ms.y - contact.y <= sole) continue;
-      int k = bone_of(f.bone);
-      if (k < 3) {
-        outline.push_back({k, local(k, f.position_ms)});
-        continue;
-      }
-      if (f.bone != -1) continue;
-      k = 0;  // the joint nearest: the hip (the upper bone's), the knee, the ankle or the toe's (the foot's)
-      for (int j = 1; j < 4; ++j) {
-        if (glm::length(f.position_ms - joints[j]) < glm::length(f.position_ms - joints[k])) k = j;
-      }
-      if (k == 3) continue;  // a toe's: the foot's own flesh, the foothold's and the swing's foot box's
-      if (k == 0) outline.push_back({0, local(0, f.position_ms)});
-      else outline.push_back({k - 1, local(k - 1, f.position_ms), k, local(k, f.position_ms)});
-    }
-    // Thinned evenly to at most kLegFleshPoints (a fine body's leg has more).
-    const size_t n = outline.size();
-    for (size_t i = 0; i < std::min(n, kLegFleshPoints); ++i) leg.flesh_outline.push_back(outline[i * n / std::min(n, kLegFleshPoints)]);
+    leg.flesh_outline = limb_flesh(rig, roles, leg.bones, contact.y + rig.scale.foot_box, &leg.flesh_margin);
   }
 }
 
@@ -945,6 +959,7 @@ std::shared_ptr<const AnimRig> build_anim_rig(const Skeleton& skeleton, const Po
   rig->body_half_length = std::max(0.5f * (x_max - x_min), 0.05f);
   rig->scale = RigScale::of(2.0f * rig->body_half_length);
   build_foot_flesh(*rig, roles);
+  for (RigLimb& arm : rig->arms) arm.flesh_outline = limb_flesh(*rig, roles, arm.bones, -INFINITY, &arm.flesh_margin);
   for (int b = 0; b < sk.bone_count(); ++b) {  // the extent from the root counts bone ends too
     const float e = bone_end(rig->model_rest[b], sk.length(b)).x;
     x_min = std::min(x_min, e);

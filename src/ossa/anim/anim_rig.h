@@ -31,15 +31,15 @@ namespace ossa {
 // Stance legs never extend beyond this fraction of their reach (upper + lower).
 inline constexpr float kReachLimit = 0.985f;
 
-struct LegFleshPoint {
-  int bone = 0;                     // 0 upper, 1 lower, 2 foot
+struct LimbFleshPoint {             // a point of a leg's or an arm's drawn outline
+  int bone = 0;                     // 0 upper, 1 lower, 2 foot (hand)
   glm::vec2 local{0.0f};            // in that bone's frame
   // A point about the knee or the ankle (a mid joint's) follows both bones there, halfway:
   // this one the bone after `bone` (-1: none), local2 in its frame.
   int bone2 = -1;
   glm::vec2 local2{0.0f};
 };
-inline constexpr size_t kLegFleshPoints = 64;
+inline constexpr size_t kLimbFleshPoints = 64;
 
 struct RigLeg {
   std::array<int, 3> bones{};       // upper, lower, foot
@@ -76,8 +76,8 @@ struct RigLeg {
   // own part): each point in the frame at rest of the leg bone it follows most (0 upper, 1
   // lower, 2 foot; x along the bone, y across), or of the two about the joint it lies at. Posed with the leg's bones, it is the outline
   // the swing and the stance keep off the level, not only the bones (leg_geometry.h
-  // leg_flesh_hits). Empty: no drawn body. At most kLegFleshPoints.
-  std::vector<LegFleshPoint> flesh_outline;
+  // leg_flesh_hits). Empty: no drawn body. At most kLimbFleshPoints.
+  std::vector<LimbFleshPoint> flesh_outline;
   // Per bone (upper, lower, foot): the farthest a point of flesh_outline that follows it lies
   // from it, metres (a bound below the posed bones: leg_ik.cpp's quick test).
   std::array<float, 3> flesh_margin{};
@@ -120,6 +120,10 @@ struct RigLimb {                    // an arm, fin or wing: a chain hanging from
   int girdle_bone = -1;
   std::array<int, 3> bones{};
   Side side = Side::kNear;
+  // An arm's drawn outline on its bones, and each bone's margin (as RigLeg's, the whole arm):
+  // its clearance keeps it off the level, not only the bones (limb_clearance.h). Empty: none.
+  std::vector<LimbFleshPoint> flesh_outline;
+  std::array<float, 3> flesh_margin{};
 };
 
 struct AnimRig {

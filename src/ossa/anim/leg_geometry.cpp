@@ -61,9 +61,9 @@ bool leg_flesh_hits(const AnimContext& ctx, const BodyFrame& body, const RigLeg&
   if (n < 2) return false;
   const glm::vec2 origin[3] = {joint_fs, ik.middle, ik.end};
   const glm::vec2 dir[3] = {ik.upper_dir, ik.lower_dir, foot_dir};
-  std::array<glm::vec2, kLegFleshPoints + 1> p;
+  std::array<glm::vec2, kLimbFleshPoints + 1> p;
   for (size_t i = 0; i < n; ++i) {
-    const LegFleshPoint& q = info.flesh_outline[i];
+    const LimbFleshPoint& q = info.flesh_outline[i];
     auto posed = [&](int k, glm::vec2 l) { return origin[k] + l.x * dir[k] + l.y * glm::vec2(-dir[k].y, dir[k].x); };
     p[i] = body.to_ws(q.bone2 < 0 ? posed(q.bone, q.local) : 0.5f * (posed(q.bone, q.local) + posed(q.bone2, q.local2)));
   }

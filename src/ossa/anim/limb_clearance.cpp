@@ -1,6 +1,7 @@
 #include "ossa/anim/limb_clearance.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 
 #include "ossa/anim/anim_math.h"
@@ -25,7 +26,7 @@ constexpr int kFinBisections = 7;
 }  // namespace
 
 void keep_arm_above_ground(const AnimContext& ctx, const BodyFrame& body, const RigLimb& arm, const std::vector<Mat2x3>& model,
-                           float margin, Pose& pose) {
+                           float margin, Pose& pose, bool with_flesh) {
   // Long arms of a low body would reach into the ground (or a ledge): lift the wrist with
   // two-bone IK until elbow, wrist and hand clear the highest ground under the arm; an arm
   // still in a step (a riser in front) folds towards the shoulder until it clears.
@@ -34,15 +35,26 @@ void keep_arm_above_ground(const AnimContext& ctx, const BodyFrame& body, const 
   struct ArmPose {
     glm::vec2 shoulder, elbow, wrist, tip;
     float hand_abs, bend;
+    std::array<Mat2x3, 3> m;  // upper, lower, hand
   };
   auto current = [&] {
     const Mat2x3 upper = model[arm.girdle_bone] * local_matrix(pose.locals[arm.bones[0]]);
     const Mat2x3 lower = upper * local_matrix(pose.locals[arm.bones[1]]);
     const Mat2x3 hand = lower * local_matrix(pose.locals[arm.bones[2]]);
-    ArmPose p{bone_start(upper), bone_start(lower), bone_start(hand), bone_end(hand, l3), bone_angle(hand), 1.0f};
+    ArmPose p{bone_start(upper), bone_start(lower), bone_start(hand), bone_end(hand, l3), bone_angle(hand), 1.0f, {upper, lower, hand}};
     const glm::vec2 a = p.elbow - p.shoulder, b = p.wrist - p.shoulder;
     p.bend = a.x * b.y - a.y * b.x > 0.0f ? 1.0f : -1.0f;  // keep the elbow's side
     return p;
+  };
+  // The arm's drawn outline (RigLimb::flesh_outline) posed with the arm, in frame space.
+  const size_t n = with_flesh ? arm.flesh_outline.size() : 0;
+  std::array<glm::vec2, kLimbFleshPoints + 1> flesh_pts;
+  auto pose_flesh = [&](const ArmPose& q) {
+    for (size_t i = 0; i < n; ++i) {
+      const LimbFleshPoint& f = arm.flesh_outline[i];
+      const glm::vec2 a = q.m[f.bone].apply(f.local);
+      flesh_pts[i] = f.bone2 < 0 ? a : 0.5f * (a + q.m[f.bone2].apply(f.local2));
+    }
   };
   auto set_wrist = [&](const ArmPose& p, glm::vec2 target) {
     const TwoBoneIkResult ik = solve_two_bone_ik(p.shoulder, l1, l2, target, p.bend);
@@ -53,20 +65,34 @@ void keep_arm_above_ground(const AnimContext& ctx, const BodyFrame& body, const 
   for (int pass = 0; pass < 3; ++pass) {
     const ArmPose p = current();
     float x0 = 1e30f, x1 = -1e30f, low = 1e30f;
-    for (glm::vec2 q : {p.elbow, p.wrist, p.tip}) {
+    auto take = [&](glm::vec2 q) {
       const float xw = body.to_ws(q).x;
       x0 = std::min(x0, xw);
       x1 = std::max(x1, xw);
       low = std::min(low, q.y);
+    };
+    for (glm::vec2 q : {p.elbow, p.wrist, p.tip}) take(q);
+    // Its flesh too, below the shoulder (its drawn hand or flipper laid on the ground).
+    if (n > 1) {
+      pose_flesh(p);
+      for (size_t i = 0; i < n; ++i) {
+        if (flesh_pts[i].y < p.shoulder.y) take(flesh_pts[i]);
+      }
     }
     const auto ground = ground_below(ctx.level, x0, x1, p.shoulder.y, ctx.rig.scale.search_depth);
     if (!ground || low >= ground->height_ws + margin) break;
     set_wrist(p, p.wrist + glm::vec2(0.0f, ground->height_ws + margin - low));
   }
   const ArmPose p = current();
+  bool flesh = n > 1;  // the drawn outline too, while some tuck clears it; else the bones alone
   auto hits = [&](const ArmPose& q) {
     const glm::vec2 pts[4] = {body.to_ws(q.shoulder), body.to_ws(q.elbow), body.to_ws(q.wrist), body.to_ws(q.tip)};
-    return polyline_hits_level(ctx.level, pts, 4, ctx.hits);
+    if (polyline_hits_level(ctx.level, pts, 4, ctx.hits)) return true;
+    if (!flesh) return false;
+    pose_flesh(q);
+    for (size_t i = 0; i < n; ++i) flesh_pts[i] = body.to_ws(flesh_pts[i]);
+    flesh_pts[n] = flesh_pts[0];
+    return polyline_hits_level(ctx.level, flesh_pts.data(), static_cast<int>(n + 1), ctx.hits);
   };
   if (!hits(p)) return;
   // Tucked under the shoulder, else folded up in front of the chest, else up behind it: the
@@ -75,24 +101,34 @@ void keep_arm_above_ground(const AnimContext& ctx, const BodyFrame& body, const 
   // up behind; last, with the elbow bent the other way (a shoulder just above a tread, where
   // any elbow bent down meets the tread).
   const float tuck_len = std::max(std::fabs(l1 - l2) + 0.01f, 0.35f * (l1 + l2));
-  for (float bend : {p.bend, -p.bend}) {
-    for (float hand : {p.hand_abs, kPi + 0.3f, kPi - 0.8f}) {
-      ArmPose q = p;
-      q.hand_abs = hand;
-      q.bend = bend;
-      for (glm::vec2 dir : {glm::vec2(-1.0f, -0.3f), glm::vec2(0.4f, 1.0f), glm::vec2(-0.6f, 1.0f)}) {
-        const glm::vec2 tuck = q.shoulder + glm::normalize(dir) * tuck_len;
-        set_wrist(q, tuck);
-        if (hits(current())) continue;
-        float lo = 0.0f, hi = 1.0f;  // fractions of the way to the tuck: lo hits, hi clears
-        bisect(lo, hi, kClearBisections, [&](float mid) {
-          set_wrist(q, glm::mix(q.wrist, tuck, mid));
-          return hits(current());
-        });
-        set_wrist(q, glm::mix(q.wrist, tuck, hi));
-        return;
+  auto tuck_clear = [&] {
+    for (float bend : {p.bend, -p.bend}) {
+      for (float hand : {p.hand_abs, kPi + 0.3f, kPi - 0.8f}) {
+        ArmPose q = p;
+        q.hand_abs = hand;
+        q.bend = bend;
+        for (glm::vec2 dir : {glm::vec2(-1.0f, -0.3f), glm::vec2(0.4f, 1.0f), glm::vec2(-0.6f, 1.0f)}) {
+          const glm::vec2 tuck = q.shoulder + glm::normalize(dir) * tuck_len;
+          set_wrist(q, tuck);
+          if (hits(current())) continue;
+          float lo = 0.0f, hi = 1.0f;  // fractions of the way to the tuck: lo hits, hi clears
+          bisect(lo, hi, kClearBisections, [&](float mid) {
+            set_wrist(q, glm::mix(q.wrist, tuck, mid));
+            return hits(current());
+          });
+          set_wrist(q, glm::mix(q.wrist, tuck, hi));
+          return true;
+        }
       }
     }
+    return false;
+  };
+  const float planned[3] = {pose.locals[arm.bones[0]].angle_ls, pose.locals[arm.bones[1]].angle_ls, pose.locals[arm.bones[2]].angle_ls};
+  if (tuck_clear()) return;
+  if (flesh) {
+    flesh = false;
+    for (int k = 0; k < 3; ++k) pose.locals[arm.bones[k]].angle_ls = planned[k];
+    if (!hits(p) || tuck_clear()) return;
   }
   // Nothing clears (the shoulder itself against a face ahead: a body falling beside a gap's
   // far wall): tucked back under the shoulder, the hand trailing back, away from the face.

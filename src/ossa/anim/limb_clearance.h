@@ -16,9 +16,10 @@
 namespace ossa::anim {
 
 // `margin`: how far above the ground the arm keeps, metres (RigScale::arm_margin; less for a
-// hand that stands on the ground, pentapedal.h).
+// hand that stands on the ground, pentapedal.h). with_flesh: its drawn outline too
+// (RigLimb::flesh_outline; not for a hand that stands on its palm).
 void keep_arm_above_ground(const AnimContext& ctx, const BodyFrame& body, const RigLimb& arm, const std::vector<Mat2x3>& model_fs,
-                           float margin, Pose& pose);
+                           float margin, Pose& pose, bool with_flesh = true);
 void keep_fin_clear(const AnimContext& ctx, const BodyFrame& body, const RigLimb& fin, const std::vector<Mat2x3>& model_fs,
                     Pose& pose);
 void keep_tail_clear(const AnimContext& ctx, const BodyFrame& body, const std::vector<Mat2x3>& model_fs, Pose& pose);

@@ -134,7 +134,7 @@ void pose_limbs(const AnimContext& ctx, const SplinePrototypes& prototypes, cons
   for (const RigLimb& arm : rig.arms) swing_arm(rig, prototypes, gait, feet, arm, motion, pose);
   plant_hands(ctx, body, feet, gait, model, state.pentapedal, pose);
   const float arm_margin = hand_margin(rig, gait);
-  for (const RigLimb& arm : rig.arms) keep_arm_above_ground(ctx, body, arm, model, arm_margin, pose);
+  for (const RigLimb& arm : rig.arms) keep_arm_above_ground(ctx, body, arm, model, arm_margin, pose, !(gait.pentapedal > 0.0f));
   for (const RigLimb& fin : rig.fins) {
     beat_fin(ctx.params, fin, motion, gait.crawl_phase + gait.phase, pose);
     keep_fin_clear(ctx, body, fin, model, pose);
