@@ -163,11 +163,12 @@ TEST_CASE("coupled legs: the tip is reached, a standing foreleg is straight, no 
   }
 }
 
-TEST_CASE("leg flesh: the drawn leg posed with its bones meets a box its bones clear, both facings", "[anim][ik]") {
+TEST_CASE("leg flesh: the drawn leg posed with its bones meets a box its bones clear, and a swing clears it", "[anim][ik]") {
   // The horse standing at rest beside a thin ledge that reaches in front of a shin's bone but
   // not to it: the bones clear it, the flesh drawn about the shin does not. Moved ahead of the
-  // flesh, or below top_over, it is not met.
+  // flesh, or below top_over, it is not met. Both facings.
   const Creature horse = scenes::quadruped();
+  int escaped = 0;  // swings whose planned pose met the ledge with its flesh
   for (int facing : {1, -1}) {
     const auto rig = build_anim_rig(horse);
     for (size_t i = 0; i < rig->legs.size(); ++i) {
@@ -216,6 +217,39 @@ TEST_CASE("leg flesh: the drawn leg posed with its bones meets a box its bones c
       CHECK_FALSE(anim::leg_flesh_hits(in.ctx, in.body, leg, joint, ik, foot_dir, front.y + 0.01f));
       const test::StageScene ahead = scene_with(front.x + 0.003f, front.x + 0.02f, front.y);
       CHECK_FALSE(anim::leg_flesh_hits(ahead.ctx, ahead.body, leg, joint, ik, foot_dir));
+      // Swinging there, the leg IK's escape moves the leg until its flesh clears the ledge too;
+      // a rig without the leg's outline keeps the planned pose, whose bones clear it.
+      auto swing_clears = [&](const AnimRig& r) {
+        anim::AnimContext ctx{r, in.params, in.level, in.ground, hits};
+        std::vector<Mat2x3> model = placed;
+        Pose posed = pose;
+        anim::FootSet feet;
+        feet.feet.resize(r.legs.size());
+        for (size_t j = 0; j < r.legs.size(); ++j) {
+          feet.foot_of_leg.push_back(static_cast<int>(j));
+          const int b = r.legs[j].contact_bone;
+          feet.feet[j].pos_ws = in.body.to_ws(bone_end(placed[b], r.skeleton.length(b)));
+        }
+        feet.feet[i].state = LegState::kSwing;
+        feet.feet[i].progress = 0.5f;
+        std::vector<std::array<glm::vec2, 3>> dirs(r.legs.size());
+        const anim::LegIkJob job{&ctx, &in.body, &feet, &posed, &model, &dirs};
+        REQUIRE(job.run());
+        TwoBoneIkResult out;
+        out.upper_dir = dirs[i][0];
+        out.lower_dir = dirs[i][1];
+        out.middle = bone_start(model[leg.bones[1]]);
+        out.end = bone_start(model[leg.bones[2]]);
+        const glm::vec2 chain[4] = {in.body.to_ws(joint), in.body.to_ws(out.middle), in.body.to_ws(out.end),
+                                    in.body.to_ws(out.end + leg.foot_length * dirs[i][2])};
+        CHECK_FALSE(anim::polyline_hits_level(in.level, chain, 4, hits));
+        return !anim::leg_flesh_hits(ctx, in.body, leg, joint, out, dirs[i][2]);
+      };
+      CHECK(swing_clears(*rig));
+      AnimRig bare = *rig;
+      bare.legs[i].flesh_outline.clear();
+      if (!swing_clears(bare)) ++escaped;
     }
   }
+  CHECK(escaped >= 4);  // the forelegs, both facings (a hind leg's swing folds its hock clear)
 }

@@ -215,6 +215,12 @@ TEST_CASE("OutlineProbe measures the drawn body where the bones' figure does not
       CHECK(r.probe.max_penetration_m <= 0.001f);
       CHECK(outline->max_by_kind[static_cast<size_t>(BodyPartKind::kLeg)] <= 0.001f);
     }
+    // A foot lifted for its flesh alone that finds no foothold stands, and the body does not
+    // wait for it: the pigeon walking rough.json stopped for good at x 28 when the body waited
+    // for such a foot to lift, as it does for one whose bones would cut the step.
+    const SimResult pigeon = run("pigeon", load_level(scenes::source_path("levels/rough.json")).value(), "walk:0.6:30", outline);
+    CHECK(pigeon.blocked_s < 0.5f);
+    CHECK(pigeon.x_max_m > 35.0f);
   }
   SECTION("an arm or a flipper by a riser: its drawn flesh kept off it, not only its bones") {
     // An arm folded until its bones cleared a riser or the ground: the flipper drawn about them
