@@ -48,6 +48,8 @@ void keep_arm_above_ground(const AnimContext& ctx, const BodyFrame& body, const 
   };
   // The arm's drawn outline (RigLimb::flesh_outline) posed with the arm, in frame space.
   const size_t n = with_flesh ? arm.flesh_outline.size() : 0;
+  // The farthest its flesh lies from its bones (0: bones alone).
+  const float reach = n > 1 ? std::max({arm.flesh_margin[0], arm.flesh_margin[1], arm.flesh_margin[2]}) : 0.0f;
   std::array<glm::vec2, kLimbFleshPoints + 1> flesh_pts;
   auto pose_flesh = [&](const ArmPose& q) {
     for (size_t i = 0; i < n; ++i) {
@@ -72,15 +74,17 @@ void keep_arm_above_ground(const AnimContext& ctx, const BodyFrame& body, const 
       low = std::min(low, q.y);
     };
     for (glm::vec2 q : {p.elbow, p.wrist, p.tip}) take(q);
-    // Its flesh too, below the shoulder (its drawn hand or flipper laid on the ground).
-    if (n > 1) {
+    // Its flesh too, below the shoulder (its drawn hand or flipper laid on the ground): the
+    // ground under wherever it may lie, and its points only where they may come down to it.
+    const auto ground = ground_below(ctx.level, x0 - reach, x1 + reach, p.shoulder.y, ctx.rig.scale.search_depth);
+    if (!ground) break;
+    if (n > 1 && low - reach < ground->height_ws + margin) {
       pose_flesh(p);
       for (size_t i = 0; i < n; ++i) {
         if (flesh_pts[i].y < p.shoulder.y) take(flesh_pts[i]);
       }
     }
-    const auto ground = ground_below(ctx.level, x0, x1, p.shoulder.y, ctx.rig.scale.search_depth);
-    if (!ground || low >= ground->height_ws + margin) break;
+    if (low >= ground->height_ws + margin) break;
     set_wrist(p, p.wrist + glm::vec2(0.0f, ground->height_ws + margin - low));
   }
   const ArmPose p = current();
@@ -89,6 +93,11 @@ void keep_arm_above_ground(const AnimContext& ctx, const BodyFrame& body, const 
     const glm::vec2 pts[4] = {body.to_ws(q.shoulder), body.to_ws(q.elbow), body.to_ws(q.wrist), body.to_ws(q.tip)};
     if (polyline_hits_level(ctx.level, pts, 4, ctx.hits)) return true;
     if (!flesh) return false;
+    // (No box within its flesh's reach of the bones: none the flesh meets.)
+    Box near{glm::min(glm::min(pts[0], pts[1]), glm::min(pts[2], pts[3])), glm::max(glm::max(pts[0], pts[1]), glm::max(pts[2], pts[3]))};
+    ctx.hits.clear();
+    ctx.level.overlapping(Box{near.min_ws - glm::vec2(reach), near.max_ws + glm::vec2(reach)}, ctx.hits);
+    if (ctx.hits.empty()) return false;
     pose_flesh(q);
     for (size_t i = 0; i < n; ++i) flesh_pts[i] = body.to_ws(flesh_pts[i]);
     flesh_pts[n] = flesh_pts[0];
