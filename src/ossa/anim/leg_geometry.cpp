@@ -59,14 +59,9 @@ bool leg_flesh_hits(const AnimContext& ctx, const BodyFrame& body, const RigLeg&
                     glm::vec2 foot_dir, float top_over) {
   const size_t n = info.flesh_outline.size();
   if (n < 2) return false;
-  const glm::vec2 origin[3] = {joint_fs, ik.middle, ik.end};
-  const glm::vec2 dir[3] = {ik.upper_dir, ik.lower_dir, foot_dir};
+  const Mat2x3 frames[3] = {frame_matrix(ik.upper_dir, joint_fs), frame_matrix(ik.lower_dir, ik.middle), frame_matrix(foot_dir, ik.end)};
   std::array<glm::vec2, kLimbFleshPoints + 1> p;
-  for (size_t i = 0; i < n; ++i) {
-    const LimbFleshPoint& q = info.flesh_outline[i];
-    auto posed = [&](int k, glm::vec2 l) { return origin[k] + l.x * dir[k] + l.y * glm::vec2(-dir[k].y, dir[k].x); };
-    p[i] = body.to_ws(q.bone2 < 0 ? posed(q.bone, q.local) : 0.5f * (posed(q.bone, q.local) + posed(q.bone2, q.local2)));
-  }
+  for (size_t i = 0; i < n; ++i) p[i] = body.to_ws(posed_flesh(info.flesh_outline[i], frames));
   p[n] = p[0];
   return polyline_hits_level(ctx.level, p.data(), static_cast<int>(n + 1), ctx.hits, -INFINITY, top_over);
 }

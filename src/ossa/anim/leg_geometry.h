@@ -96,6 +96,13 @@ inline float leg_overreach(const AnimContext& ctx, const BodyFrame& body, int le
 bool stance_leg_hits(const AnimContext& ctx, const BodyFrame& body, int leg, const FootState& foot, glm::vec2 joint_fs,
                      bool with_flesh = false);
 
+// A point of a limb's drawn outline (anim_rig.h LimbFleshPoint) posed with the limb's three bone
+// frames (upper, lower, foot or hand), in their space.
+inline glm::vec2 posed_flesh(const LimbFleshPoint& q, const Mat2x3* frames) {
+  const glm::vec2 a = frames[q.bone].apply(q.local);
+  return q.bone2 < 0 ? a : 0.5f * (a + frames[q.bone2].apply(q.local2));
+}
+
 // Does the leg's drawn outline (RigLeg::flesh_outline), posed with its bones (the upper from
 // joint_fs along ik.upper_dir, the lower from ik.middle along ik.lower_dir, the foot from
 // ik.end along foot_dir; frame space), pass through a collider whose top lies above top_over?

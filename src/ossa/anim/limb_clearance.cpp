@@ -6,6 +6,7 @@
 
 #include "ossa/anim/anim_math.h"
 #include "ossa/anim/ground_profile.h"
+#include "ossa/anim/leg_geometry.h"
 #include "ossa/math/two_bone_ik.h"
 
 namespace ossa::anim {
@@ -52,11 +53,7 @@ void keep_arm_above_ground(const AnimContext& ctx, const BodyFrame& body, const 
   const float reach = n > 1 ? std::max({arm.flesh_margin[0], arm.flesh_margin[1], arm.flesh_margin[2]}) : 0.0f;
   std::array<glm::vec2, kLimbFleshPoints + 1> flesh_pts;
   auto pose_flesh = [&](const ArmPose& q) {
-    for (size_t i = 0; i < n; ++i) {
-      const LimbFleshPoint& f = arm.flesh_outline[i];
-      const glm::vec2 a = q.m[f.bone].apply(f.local);
-      flesh_pts[i] = f.bone2 < 0 ? a : 0.5f * (a + q.m[f.bone2].apply(f.local2));
-    }
+    for (size_t i = 0; i < n; ++i) flesh_pts[i] = posed_flesh(arm.flesh_outline[i], q.m.data());
   };
   auto set_wrist = [&](const ArmPose& p, glm::vec2 target) {
     const TwoBoneIkResult ik = solve_two_bone_ik(p.shoulder, l1, l2, target, p.bend);
