@@ -35,12 +35,13 @@ struct Lying {
   float wave = 0.0f;           // the travelling wave's lift at its largest, m
 };
 
-// `name` on flat ground (its top at y = 0) with `controls` for 8 s; the last 6 s measured.
-Lying lie(const std::string& name, Controls controls) {
+// `genome` on flat ground (its top at y = 0, from x = 0) with `controls` for 8 s from `x`; the
+// last 6 s measured.
+Lying lie(const Genome& genome, Controls controls, float x = 2.0f) {
   const Level flat = scenes::flat_level(400.0f);
-  auto creature = std::make_shared<const Creature>(build_creature(scenes::generator().example(name).value()).value());
+  auto creature = std::make_shared<const Creature>(build_creature(genome).value());
   Player player(creature, SplinePrototypes::defaults());
-  player.animator().reset({2.0f, 1.0f}, flat);
+  player.animator().reset({x, 1.0f}, flat);
   const Animator& a = player.animator();
   const AnimRig& rig = a.rig();
   Lying out;
@@ -77,7 +78,7 @@ TEST_CASE("legless bodies lie along flat ground: no bone in it, the belly on it,
       Controls c;
       c.move_x = fast ? 1.0f : 0.5f;
       c.run = fast;
-      const Lying l = lie(name, c);
+      const Lying l = lie(scenes::generator().example(name).value(), c);
       INFO(name << (fast ? " running" : " walking") << ": deepest " << l.probe.max_body_penetration_m << " m ("
                 << l.probe.deepest_bone << "), belly at most " << l.highest_belly << " m over the ground, head at least "
                 << l.lowest_head << " m, jolt " << l.jolt_g << " g");
@@ -90,6 +91,28 @@ TEST_CASE("legless bodies lie along flat ground: no bone in it, the belly on it,
       // The issue's 1.5 g, walking and running (a bone whose hangers would go into the ground
       // keeps its end up rather than turn down and pull the bones after it down too: the whole
       // body used to be lifted by the deepest of them at once, 5-7 g in the fish and whales).
+      CHECK(l.jolt_g <= 1.5f);
+    }
+  }
+}
+
+TEST_CASE("random legless creatures crawl on flat ground without jolting their trunks", "[game][legless]") {
+  // The lift the wave needs comes back every wave on level ground: settling in between, the
+  // body was lifted again at once where its deepest point came back (random creature 26's
+  // pelvis, hung below a spine bent as far as it bends: 5 cm in three ticks, 8.7 g over 25 ms,
+  // 2.2 g in this test's 50 ms steps). The lift is now held a whole wave. Two more legless
+  // random creatures of other shapes with it. (From x = 20: their bodies, up to 8 m long, lie
+  // on level ground from the start.)
+  for (const uint64_t seed : {26u, 36u, 1u}) {
+    for (bool fast : {false, true}) {
+      Controls c;
+      c.move_x = fast ? 1.0f : 0.5f;
+      c.run = fast;
+      const Lying l = lie(scenes::generator().random(seed), c, 20.0f);
+      INFO("random " << seed << (fast ? " running" : " walking") << ": jolt " << l.jolt_g << " g, deepest "
+                     << l.probe.max_body_penetration_m << " m (" << l.probe.deepest_bone << ")");
+      CHECK(l.probe.nan_count == 0);
+      CHECK(l.probe.max_penetration_m <= 0.001f);
       CHECK(l.jolt_g <= 1.5f);
     }
   }

@@ -184,7 +184,11 @@ void place_body(const AnimContext& ctx, const PlacementInputs& in, const FootSet
     const float ground = legless_ground(ctx, body, lo, hi, state.body_lift);
     float level_height;
     const bool level = ctx.ground.spans(lo, hi) && ctx.ground.level_over(lo, hi, &level_height);
-    if (in.dt > 0.0f) state.body_lift *= std::exp(-(level ? kLeglessLiftSettleLevel : kLeglessLiftSettle) * in.dt);
+    if (in.dt > 0.0f && level && state.lift_hold > 0.0f) {
+      state.lift_hold -= std::max(std::fabs(in.speed) / std::max(rig.body_half_length, 0.05f), 1.0f / kLeglessLiftHoldMax) * in.dt;
+    } else if (in.dt > 0.0f) {
+      state.body_lift *= std::exp(-(level ? kLeglessLiftSettleLevel : kLeglessLiftSettle) * in.dt);
+    }
     target_root = ground + rig.root_rest_y + state.body_lift;
   } else {
     girdle_heights(p, height);
@@ -260,7 +264,7 @@ void reset_body(float x, float root_y, int facing, BodyFrame& body, BodyState& s
   body.x_ws = x;
   body.lean = body.pitch = body.flex = 0.0f;
   body.root_y_ws = root_y;
-  state.root_vy = state.body_lift = 0.0f;
+  state.root_vy = state.body_lift = state.lift_hold = 0.0f;
   state.bob_root = state.bob_pitch = 0.0f;
 }
 
@@ -391,6 +395,7 @@ bool rest_body_on_ground(const AnimContext& ctx, float floor, BodyFrame& body) {
 void raise_body(float raise, BodyFrame& body, BodyState& state) {
   body.root_y_ws += raise;
   state.body_lift += raise;
+  state.lift_hold = 1.0f;
 }
 
 }  // namespace ossa::anim

@@ -44,6 +44,7 @@ struct BodyState {
   float pitch_target = 0.0f;  // the pitch of the ground under the girdles, radians
   float root_vy = 0.0f;       // vertical speed of the root, m/s (drives the tail)
   float body_lift = 0.0f;     // legless: how far the wave has lately lifted the body, metres
+  float lift_hold = 0.0f;     // legless: crawl waves left before body_lift may settle (1 at a raise)
   // The part of the root height and the pitch the girdles' bob gave last tick: the placement
   // smooths the rest (steps, slopes) and adds the bob unsmoothed (a low-pass would flatten and
   // delay a trot's bounce).
