@@ -46,13 +46,9 @@ bool stance_leg_hits(const AnimContext& ctx, const BodyFrame& body, int leg, con
   const glm::vec2 p[4] = {body.to_ws(joint_fs), body.to_ws(ik.middle), body.to_ws(ik.end), body.to_ws(tip)};
   if (polyline_hits_level(ctx.level, p, info.foot_length > 0.0f ? 4 : 3, ctx.hits)) return true;
   if (!with_flesh || info.flesh_outline.empty()) return false;
-  // The pose the leg IK draws: a three-segment leg coupled (leg_ik.h), else the plain one.
-  TwoBoneIkResult coupled;
-  glm::vec2 coupled_dir;
-  if (info.coupled && solve_coupled_leg(info, joint_fs, contact, 0.0f, &coupled, &coupled_dir)) {
-    return leg_flesh_hits(ctx, body, info, joint_fs, coupled, coupled_dir, f.pos_ws.y + kContactSlack);
-  }
-  return leg_flesh_hits(ctx, body, info, joint_fs, ik, dir, f.pos_ws.y + kContactSlack);
+  // The flesh as the leg IK draws the leg (leg_ik.h).
+  const StanceLegPose drawn = stance_leg_pose(ctx, body, leg, contact, joint_fs, f.stance_clear);
+  return leg_flesh_hits(ctx, body, info, joint_fs, drawn.ik, drawn.foot_dir, f.pos_ws.y + kContactSlack);
 }
 
 bool leg_flesh_hits(const AnimContext& ctx, const BodyFrame& body, const RigLeg& info, glm::vec2 joint_fs, const TwoBoneIkResult& ik,

@@ -144,6 +144,51 @@ bool solve_coupled_leg(const RigLeg& info, glm::vec2 joint_fs, glm::vec2 tip_fs,
   return pair(false, unit(s * std::min(fold, most)));
 }
 
+namespace {
+
+// A stance pose that cuts the level where the plain one (what the body placement kept clear)
+// may not: a hoof on a step's edge keeps the plain one.
+bool clear_in_stance(const AnimContext& c, const BodyFrame& b, const Clearance& near, glm::vec2 joint, glm::vec2 contact,
+                     const TwoBoneIkResult& r) {
+  if (near.clear_above(std::min({joint.y, r.middle.y, r.end.y, contact.y}))) return true;
+  const glm::vec2 p[4] = {b.to_ws(joint), b.to_ws(r.middle), b.to_ws(r.end), b.to_ws(contact)};
+  return !polyline_hits_level(c.level, p, 4, c.hits);
+}
+
+// A foot holding its angle that would bend the ankle (hock, intertarsal joint) past straight
+// (not folded through shut: the foot not turned back against the shin) has the ankle straight
+// instead (the same pose where it is just straight), where `clear` allows that pose.
+template <class Clear>
+void straighten_ankle(const RigLeg& info, glm::vec2 joint, glm::vec2 contact, TwoBoneIkResult& ik, glm::vec2& foot_dir,
+                      glm::vec2& ankle, Clear clear) {
+  TwoBoneIkResult straight;
+  glm::vec2 straight_dir;
+  if (!info.coupled && info.foot_span > 0.0f && info.fold_sign * (ik.lower_dir.x * foot_dir.y - ik.lower_dir.y * foot_dir.x) < 0.0f &&
+      glm::dot(ik.lower_dir, foot_dir) > 0.0f && solve_straight_ankle(info, joint, contact, &straight, &straight_dir) &&
+      clear(straight)) {
+    ik = straight;
+    foot_dir = straight_dir;
+    ankle = straight.end;
+  }
+}
+
+}  // namespace
+
+StanceLegPose stance_leg_pose(const AnimContext& ctx, const BodyFrame& body, int leg, glm::vec2 contact_fs, glm::vec2 joint_fs,
+                              const Clearance& near) {
+  const RigLeg& info = ctx.rig.legs[leg];
+  auto clear = [&](const TwoBoneIkResult& r) { return clear_in_stance(ctx, body, near, joint_fs, contact_fs, r); };
+  StanceLegPose s;
+  if (info.coupled && solve_coupled_leg(info, joint_fs, contact_fs, 0.0f, &s.ik, &s.foot_dir) && clear(s.ik)) {
+    s.ankle = s.ik.end;
+    return s;
+  }
+  s.ankle = leg_ankle(ctx, body, leg, contact_fs, joint_fs, true, near, &s.foot_dir, nullptr, true);
+  s.ik = solve_two_bone_ik_directions(joint_fs, info.upper, info.lower, s.ankle, info.bend);
+  straighten_ankle(info, joint_fs, contact_fs, s.ik, s.foot_dir, s.ankle, clear);
+  return s;
+}
+
 bool LegIkJob::validate() const { return valid(*this); }
 
 bool LegIkJob::run() const {
@@ -173,13 +218,6 @@ bool LegIkJob::run() const {
     auto leg_ik = [&](glm::vec2 target) {  // directions only: the angles are for pose() (lazily)
       return solve_two_bone_ik_directions(joint, info.upper, info.lower, target, info.bend);
     };
-    // A stance leg whose new pose (below) would cut the level keeps the plain one (a hoof on a
-    // step's edge: the body placement kept that one clear).
-    auto clear_in_stance = [&](const TwoBoneIkResult& r) {
-      if (f.state != LegState::kStance || near.clear_above(std::min({joint.y, r.middle.y, r.end.y, contact.y}))) return true;
-      const glm::vec2 p[4] = {b.to_ws(joint), b.to_ws(r.middle), b.to_ws(r.end), b.to_ws(contact)};
-      return !polyline_hits_level(c.level, p, 4, c.hits);
-    };
     // A swinging foot that holds its angle folds its lower joint no tighter than
     // kLeastSwingAnkle (or its rest angle), nor bends it past straight: random hind legs with a
     // tight rest hock folded the foot through the shin, reading 0 to 360° in the swing (the
@@ -201,41 +239,32 @@ bool LegIkJob::run() const {
     TwoBoneIkResult ik;
     glm::vec2 foot_dir, ankle;
     bool solved = false;
-    if (info.coupled) {
-      const float fold = f.state == LegState::kSwing ? info.swing_fold * std::sin(kPi * std::clamp(f.progress, 0.0f, 1.0f)) : 0.0f;
-      solved = solve_coupled_leg(info, joint, contact, fold, &ik, &foot_dir) && clear_in_stance(ik);
+    if (f.state == LegState::kStance) {
+      const StanceLegPose s = stance_leg_pose(c, b, leg, contact, joint, near);
+      ik = s.ik, foot_dir = s.foot_dir, ankle = s.ankle;
+      solved = true;
+    } else if (info.coupled) {
+      const float fold = info.swing_fold * std::sin(kPi * std::clamp(f.progress, 0.0f, 1.0f));
+      solved = solve_coupled_leg(info, joint, contact, fold, &ik, &foot_dir);
       ankle = ik.end;
     }
-    if (!solved) {  // the plain pose: the foot rolled about its contact, then upper and lower
-      ankle = leg_ankle(c, b, leg, contact, joint, true, near, &foot_dir, nullptr, f.state == LegState::kStance);
-      if (f.state == LegState::kSwing) {
-        // The same for the ankle when the foot could not roll far enough.
-        const float r = info.leg_reach;
-        const float dx = ankle.x - joint.x;
-        if (glm::length(ankle - joint) > r && std::fabs(dx) < r && ankle.y < joint.y) {
-          ankle.y = joint.y - reach_across(r, dx);
-        }
-        // A foot lifted closer to the joint than the leg folds (short legs, high swings) moves
-        // out sideways to where the folded leg reaches, not down through the ground.
-        const float fold = info.fold;
-        const glm::vec2 d = ankle - joint;
-        if (glm::dot(d, d) < fold * fold && std::fabs(d.y) < fold) {
-          ankle.x = joint.x + (d.x >= 0.0f ? 1.0f : -1.0f) * reach_across(fold, d.y);
-        }
+    if (!solved) {  // the plain swing pose: the foot rolled about its contact, then upper and lower
+      ankle = leg_ankle(c, b, leg, contact, joint, true, near, &foot_dir, nullptr, false);
+      // The same for the ankle when the foot could not roll far enough.
+      const float r = info.leg_reach;
+      const float dx = ankle.x - joint.x;
+      if (glm::length(ankle - joint) > r && std::fabs(dx) < r && ankle.y < joint.y) {
+        ankle.y = joint.y - reach_across(r, dx);
+      }
+      // A foot lifted closer to the joint than the leg folds (short legs, high swings) moves
+      // out sideways to where the folded leg reaches, not down through the ground.
+      const float fold = info.fold;
+      const glm::vec2 d = ankle - joint;
+      if (glm::dot(d, d) < fold * fold && std::fabs(d.y) < fold) {
+        ankle.x = joint.x + (d.x >= 0.0f ? 1.0f : -1.0f) * reach_across(fold, d.y);
       }
       ik = leg_ik(ankle);
-      // A foot holding its angle that would bend the ankle (hock, intertarsal joint) past
-      // straight (not folded through shut: the foot not turned back against the shin) has the
-      // ankle straight instead (the same pose where it is just straight).
-      TwoBoneIkResult straight;
-      glm::vec2 straight_dir;
-      if (!info.coupled && info.foot_span > 0.0f && info.fold_sign * (ik.lower_dir.x * foot_dir.y - ik.lower_dir.y * foot_dir.x) < 0.0f &&
-          glm::dot(ik.lower_dir, foot_dir) > 0.0f &&
-          solve_straight_ankle(info, joint, contact, &straight, &straight_dir) && clear_in_stance(straight)) {
-        ik = straight;
-        foot_dir = straight_dir;
-        ankle = straight.end;
-      }
+      straighten_ankle(info, joint, contact, ik, foot_dir, ankle, [](const TwoBoneIkResult&) { return true; });
       // Swinging, nor does it fold tighter than most_fold, nor stay bent past straight (where
       // the straight leg reaches no pose): it turns with the shin about its ankle; where that
       // takes its contact point below its swing path (a bird's toe dipped into the ground at

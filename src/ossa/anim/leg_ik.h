@@ -39,6 +39,19 @@ bool solve_coupled_leg(const RigLeg& info, glm::vec2 joint_fs, glm::vec2 tip_fs,
 // line. False where it cannot reach (as solve_coupled_leg).
 bool solve_straight_ankle(const RigLeg& info, glm::vec2 joint_fs, glm::vec2 tip_fs, TwoBoneIkResult* ik, glm::vec2* foot_dir);
 
+// How the leg IK draws stance leg `leg` (LegIkJob::run, the stance part): its foot's contact
+// point and girdle joint (_fs), what is near the foot (FootState::stance_clear). A three-
+// segment leg coupled, where that pose clears the level; else the foot rolled about its
+// contact (leg_ankle), upper and lower solved to the ankle, and the ankle straight where it
+// would bend past straight (and that clears). `ankle` is the ankle the legs reach for (the
+// IK's end may fall short of it: a leg stretched past its reach).
+struct StanceLegPose {
+  TwoBoneIkResult ik;
+  glm::vec2 foot_dir{0.0f}, ankle{0.0f};
+};
+StanceLegPose stance_leg_pose(const AnimContext& ctx, const BodyFrame& body, int leg, glm::vec2 contact_fs, glm::vec2 joint_fs,
+                              const Clearance& near);
+
 // Poses every leg (ozz-style job: inputs as fields, validate(), run()). Writes the leg bones'
 // facing-space matrices and each leg's bone directions (for the joint angles, worked out
 // lazily by the animator).
