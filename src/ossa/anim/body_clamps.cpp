@@ -444,8 +444,15 @@ TrunkNeed trunk_need(const AnimContext& ctx, const BodyFrame& body, float lift, 
     return i < rig.trunk_level_from ? body.body_point_ws(rig, p_ms, lift) : body.to_ws(skull_fs + (p_ms - skull_ms));
   };
   const float pivot = body.to_fs(pivot_ws).x;
+  // Over level ground under the whole trunk, a head low over it is its neck's business
+  // (keep_head_clear lifts it there), not the body's: held up by its head at each landing, a
+  // hopper carrying its head low stopped dead in the dip (random creature 39, 3.3 g).
+  float level;
+  const size_t n = head && rig.nod_bones[0] >= 0 && ctx.ground.spans(lo.x, hi.x) && ctx.ground.level_over(lo.x, hi.x, &level)
+                       ? rig.trunk_level_from
+                       : rig.trunk.size();
   TrunkNeed need;
-  for (size_t i = 0; i < rig.trunk.size(); ++i) {
+  for (size_t i = 0; i < n; ++i) {
     const glm::vec2 a = point_ws(i, rig.trunk[i].a) - glm::vec2(0.0f, keep);
     const glm::vec2 b = point_ws(i, rig.trunk[i].b) - glm::vec2(0.0f, keep);
     if (!ctx.ground.may_rise_above(std::min(a.x, b.x), std::max(a.x, b.x), std::min(a.y, b.y), std::max(a.y, b.y) + kMaxTrunkRaiseOfHip * hip)) continue;
