@@ -713,7 +713,8 @@ TEST_CASE("random creatures walk and run on flat ground without jolting their tr
   // every wave, 2.6 g and 8.7 g, before the legless lift was held a wave.) Left out, with their
   // reason in README.md "Known limits": random 22 (legs that cannot fold with feet longer than
   // them: its body rises by the fold clamp at every touch-down, 6.4 g), 28 (a neck hanging to
-  // the ground holds its body up on its head, which drops the body 32 cm once a stride, 81 g)
+  // the ground holds its body up on it, which drops the body once a stride, 41 g; 81 g before
+  // its head was left to the neck over level ground)
   // and 47 (a sprawling knee on the ground at the end of each stance, 4.1 g). (Random 39's hop
   // landed at 3.3 g, its body held up by its low head in each landing's dip, before the trunk
   // clamp left a head over level ground to its neck; random 5's at 2.7 g, its ribs meeting the
