@@ -159,15 +159,13 @@ float ease_dip_over_trunk(const AnimContext& ctx, BodyFrame body, float base, fl
     body.root_y_ws = base - dip;
     return trunk_need(ctx, body, 0.0f, pivot).raise;
   };
+  // One look, at twice the dip: no trunk in anything there leaves the dip within the free share
+  // (one look a tick: asked at the dip first, then at twice it, the trunk's need doubled the
+  // horse's share of trunk_need, 15 % -> 26 % of its tick).
   const float dip = -bob;
-  float room;
-  if (const float in = into(dip); in > 0.0f) {
-    room = dip - in;
-  } else if (const float in2 = into(2.0f * dip); in2 > 0.0f) {
-    room = 2.0f * dip - in2;
-  } else {
-    return bob;  // (more than twice the dip: within the free share)
-  }
+  const float in = into(dip / kBobFreeOfTrunkRoom);
+  if (!(in > 0.0f)) return bob;
+  const float room = dip / kBobFreeOfTrunkRoom - in;
   const float free = kBobFreeOfTrunkRoom * room;
   if (!(room > 0.0f) || dip <= free) return bob;
   return -(free + (room - free) * std::tanh((dip - free) / (room - free)));

@@ -3,10 +3,12 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <span>
 
 #include "ossa/anim/anim_math.h"
 #include "ossa/anim/ground_profile.h"
 #include "ossa/anim/leg_geometry.h"
+#include "ossa/body/body_mass.h"
 #include "ossa/math/two_bone_ik.h"
 
 namespace ossa::anim {
@@ -137,16 +139,13 @@ void keep_arm_above_ground(const AnimContext& ctx, const BodyFrame& body, const 
   // clearing, cost it 44 % more time a tick on flat ground.)
   auto shoulder_buried = [&] {
     pose_flesh(p);
-    bool inside = false;
+    if (!inside_polygon(std::span<const glm::vec2>(flesh_pts.data(), n), p.shoulder)) return false;
     float r = 1e30f;
     for (size_t i = 0, j = n - 1; i < n; j = i++) {
-      const glm::vec2 a = flesh_pts[i], b = flesh_pts[j], c = p.shoulder;
-      if ((a.y > c.y) != (b.y > c.y) && c.x < (b.x - a.x) * (c.y - a.y) / (b.y - a.y) + a.x) inside = !inside;
-      const glm::vec2 ab = b - a;
-      const float t = std::clamp(glm::dot(c - a, ab) / std::max(glm::dot(ab, ab), 1e-12f), 0.0f, 1.0f);
-      r = std::min(r, glm::distance(a + t * ab, c));
+      const glm::vec2 a = flesh_pts[i], ab = flesh_pts[j] - a;
+      const float t = std::clamp(glm::dot(p.shoulder - a, ab) / std::max(glm::dot(ab, ab), 1e-12f), 0.0f, 1.0f);
+      r = std::min(r, glm::distance(a + t * ab, p.shoulder));
     }
-    if (!inside) return false;
     const glm::vec2 shoulder = body.to_ws(p.shoulder);
     const auto under = ground_below(ctx.level, shoulder.x, shoulder.x, shoulder.y, r);
     return under && under->height_ws > shoulder.y - r;
