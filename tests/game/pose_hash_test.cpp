@@ -36,7 +36,7 @@ struct ExpectedHash {
 constexpr ExpectedHash kExpected[] = {
     {"default.json", 0xba8898d04dc405fdull},
     {"rough.json", 0xf7eb247201350851ull},
-    {"stairs.json", 0x64ed604fe48808ddull},
+    {"stairs.json", 0xdafdf4ce144e4a5dull},
     {"slopes.json", 0x825995cab7a9d7c1ull},
     {"drops.json", 0x582110f14706eb5eull},
 };

@@ -222,6 +222,25 @@ TEST_CASE("OutlineProbe measures the drawn body where the bones' figure does not
     CHECK(pigeon.blocked_s < 0.5f);
     CHECK(pigeon.x_max_m > 35.0f);
   }
+  SECTION("a foot set down where its standing leg's drawn outline clears the steps") {
+    // A foot landed where its foot and its leg's bones fit, and the flesh drawn about the leg
+    // above it, standing there, lay across a step's corner: the elephant's forefoot set down
+    // 2 cm from the riser of default.json's stairs it steps down, its leg slanting back over
+    // the step above (1.7 cm), the stegosaurus's on stairs.json (9.5 mm). A foot about to land
+    // so shifts on its tread to where the standing leg clears, now and with its girdle over it.
+    struct Case {
+      const char* animal;
+      const char* level;
+    };
+    for (const Case& c : {Case{"african elephant", "levels/default.json"}, Case{"stegosaurus", "levels/stairs.json"}}) {
+      const SimResult r = run(c.animal, load_level(scenes::source_path(c.level)).value(), "walk:0.6:8", outline);
+      INFO(c.animal << " on " << c.level << ": leg " << outline->max_by_kind[static_cast<size_t>(BodyPartKind::kLeg)] << " m, deepest "
+                    << outline->deepest_outline_part << " at " << outline->deepest_outline_at_s << " s");
+      CHECK(r.probe.max_penetration_m <= 0.001f);
+      CHECK(outline->max_by_kind[static_cast<size_t>(BodyPartKind::kLeg)] <= 0.001f);
+      CHECK(r.probe.max_stance_slip_m <= 0.001f);
+    }
+  }
   SECTION("an arm or a flipper by a riser: its drawn flesh kept off it, not only its bones") {
     // An arm folded until its bones cleared a riser or the ground: the flipper drawn about them
     // lay in it all the same (the eared seal's 2.2 cm in stairs.json's risers, the harbour

@@ -19,6 +19,11 @@ constexpr float kMinBump = 0.1f;
 // A foot the body placement stretched past its reach steps to a spot within this fraction of
 // the reach (restep_in_reach).
 constexpr float kRestepReachUse = 0.9f;
+// A foot about to land where its leg's drawn outline would cut a step looks for a spot where
+// it does not within this many of the leg's lengths of its landing (a shift, not a new step).
+constexpr float kFleshSpotOfLeg = 0.25f;
+// ... and no further out of its leg's reach than this fraction of the reach.
+constexpr float kFleshSpotReachSlack = 0.02f;
 
 }  // namespace
 
@@ -236,6 +241,59 @@ namespace {
 constexpr float kReaimOfStride = 0.08f;
 constexpr float kReaimUntil = 0.9f;
 
+// A foot standing at contact_ws, with what is near it as its clearance (update_stance_clearance).
+FootState standing_at(const AnimContext& ctx, glm::vec2 contact_ws) {
+  FootState standing;
+  standing.pos_ws = standing.from_ws = standing.to_ws = contact_ws;
+  update_stance_clearance(ctx, standing);
+  return standing;
+}
+
+// Does the leg standing at `standing` cut the level (stance_leg_hits, the flesh too) with its
+// girdle joint at joint_fs, or, the foot ahead of the joint, once the body has carried the
+// joint over it? (There as high over the ground as now where the ground is known: a body
+// carried up a step rises with it.)
+bool stance_cuts(const AnimContext& ctx, const BodyFrame& body, int leg, const FootState& standing, glm::vec2 joint_fs) {
+  if (stance_leg_hits(ctx, body, leg, standing, joint_fs, true)) return true;
+  const glm::vec2 contact = body.to_fs(standing.pos_ws);
+  if (!(contact.x > joint_fs.x)) return false;
+  const glm::vec2 joint_ws = body.to_ws(joint_fs);
+  const float under = ctx.ground.spans(joint_ws.x, joint_ws.x) ? ctx.ground.highest(joint_ws.x, joint_ws.x, joint_ws.y) : NAN;
+  const float rise = std::isnan(under) ? 0.0f : std::max(standing.pos_ws.y - under, 0.0f);
+  return stance_leg_hits(ctx, body, leg, standing, glm::vec2(contact.x, joint_fs.y + rise), true);
+}
+
+// The nearest spot to near_ws within kFleshSpotOfLeg of the leg's length, as high (on the same
+// tread: shifted up a step, the eared seal's hind flipper stood at the riser above and never
+// lifted again), where the foot fits with its flesh and the leg standing there, its girdle joint
+// at joint_fs, cuts nothing (stance_leg_hits, the flesh too) and reaches the foot, or nearly
+// (leg_overreach within kFleshSpotReachSlack of the reach: the body placement lowers the body
+// that little; a forefoot stepping down stairs finds room for its leg ahead, where the body is
+// about to come down to).
+bool nearest_clear_stance(const FootholdInputs& in, int leg, glm::vec2 near_ws, glm::vec2 joint_fs, glm::vec2* spot) {
+  const AnimRig& rig = in.ctx.rig;
+  const RigLeg& info = rig.legs[leg];
+  const float up = in.ctx.params.max_step_up * rig.climb_height;
+  const float step = rig.scale.search_step;
+  const int n = std::max(1, static_cast<int>(kFleshSpotOfLeg * info.reach / step));
+  const float sole = rig.flat_contact ? in.body.facing * info.foot_length : 0.0f;
+  const float sole_lo = std::min(sole, 0.0f) - rig.scale.sole_side, sole_hi = std::max(sole, 0.0f) + rig.scale.sole_side;
+  const float allowed = kFleshSpotReachSlack * info.contact_reach;
+  for (int k = 1; k <= 2 * n; ++k) {
+    const float x = near_ws.x + step * static_cast<float>(k % 2 == 0 ? k / 2 : -(k + 1) / 2);
+    const auto hit = ground_below(in.ctx.level, x + sole_lo, x + sole_hi, near_ws.y + up, 2.0f * up);
+    if (!hit || std::fabs(hit->height_ws - near_ws.y) > 1e-3f) continue;  // on the same tread
+    const glm::vec2 p(x, hit->height_ws);
+    if (!foot_fits(in, leg, p) || !foot_fits(in, leg, p, true)) continue;
+    const FootState standing = standing_at(in.ctx, p);
+    if (leg_overreach(in.ctx, in.body, leg, standing, joint_fs) > allowed) continue;
+    if (stance_cuts(in.ctx, in.body, leg, standing, joint_fs)) continue;
+    *spot = p;
+    return true;
+  }
+  return false;
+}
+
 }  // namespace
 
 bool advance_swing(const FootholdInputs& in, const SwingTick& tick, int leg, FootState& f) {
@@ -319,6 +377,28 @@ bool advance_swing(const FootholdInputs& in, const SwingTick& tick, int leg, Foo
         f.hover = 0.0f;
         return false;
       }
+    }
+  }
+  if (f.progress >= 1.0f && !f.easing && !ctx.rig.legs[leg].flesh_outline.empty()) {
+    // A foot about to land where its leg's drawn outline, standing, would cut a step (a hind
+    // foot set down at a riser's foot, its leg slanting up to the hip ahead through the riser;
+    // a forefoot stepping down, its leg slanting back over the corner of the step above) sets
+    // down on the nearest spot close by where it does not, if there is one.
+    const glm::vec2 joint_fs = body.to_fs(body.girdle_ws(ctx.rig, ctx.rig.legs[leg].girdle));
+    // (Not a foot landing out of its leg's reach: it is released and steps again, and a spot
+    // found for it was too: an ichthyornis in a rough.json slot stepped between two for good.)
+    const FootState landing = standing_at(ctx, f.to_ws);
+    glm::vec2 spot;
+    if (stance_cuts(ctx, body, leg, landing, joint_fs) && !(leg_overreach(ctx, body, leg, landing, joint_fs) > 0.0f) &&
+        nearest_clear_stance(in, leg, f.to_ws, joint_fs, &spot)) {
+      // At the swing's own pace (a stride in the swing's time), no slower than a stop's ease:
+      // a tick or two for a few centimetres. (Eased for as long as a stop, a running pigeon's
+      // shifted foot came down after its body had climbed on, its shin in a stair's corner.)
+      const float shift = glm::length(spot - f.to_ws);
+      const float pace = tick.moving ? tick.speed / std::max(1.0f - in.duty, 0.1f) : 0.0f;
+      const float most = ctx.params.stop_ease_time;
+      begin_swing(ctx, body, leg, f, spot, ease_shape(pace > 0.0f ? std::min(shift / pace, most) : most));
+      return false;
     }
   }
   if (f.progress >= 1.0f) {
