@@ -714,8 +714,10 @@ TEST_CASE("random creatures walk and run on flat ground without jolting their tr
   // reason in README.md "Known limits": random 22 (legs that cannot fold with feet longer than
   // them: its body rises by the fold clamp at every touch-down, 6.4 g), 28 (a neck hanging to
   // the ground holds its body up on it, which drops the body once a stride, 41 g; 81 g before
-  // its head was left to the neck over level ground)
-  // and 47 (a sprawling knee on the ground at the end of each stance, 4.1 g). (Random 39's hop
+  // its head was left to the neck over level ground). (Random 47's sprawling knees met the
+  // ground at each touch-down and raised its body, eased back down in every flight phase, 1.9 cm
+  // in a tick: 2.1 g walking, 4.1 g running, before the knee clamp's raise over level ground
+  // was held in the body's target, BodyState::knee_lift. Random 39's hop
   // landed at 3.3 g, its body held up by its low head in each landing's dip, before the trunk
   // clamp left a head over level ground to its neck; random 5's at 2.7 g, its ribs meeting the
   // trunk clamp's floor in the dip, before the dip eased into the trunk's room.) Under the
@@ -725,7 +727,7 @@ TEST_CASE("random creatures walk and run on flat ground without jolting their tr
     uint64_t seed;
     const char* text;  // nullptr: walking and running
   };
-  const Known known[] = {{22, nullptr}, {28, nullptr}, {47, nullptr}};
+  const Known known[] = {{22, nullptr}, {28, nullptr}};
   int measured = 0;
   for (const uint64_t seed : test::sweep_seeds("game:random flat jolt", 50)) {
     Result<Creature> c = build_creature(scenes::generator().random(seed));

@@ -45,6 +45,10 @@ struct BodyState {
   float root_vy = 0.0f;       // vertical speed of the root, m/s (drives the tail)
   float body_lift = 0.0f;     // legless: how far the wave has lately lifted the body, metres
   float lift_hold = 0.0f;     // legless: crawl waves left before body_lift may settle (1 at a raise)
+  // Legged, over level ground: how far the knee clamp has lately raised the body above its
+  // target, metres, held in the target and settling back slowly (a sprawling leg's knee meets
+  // the ground in every stance: the body stays up rather than drop and be raised each stride).
+  float knee_lift = 0.0f;
   // The part of the root height and the pitch the girdles' bob gave last tick: the placement
   // smooths the rest (steps, slopes) and adds the bob unsmoothed (a low-pass would flatten and
   // delay a trot's bounce).

@@ -51,6 +51,8 @@ inline constexpr float kLeglessLiftSettle = 1.0f, kLeglessLiftSettleLevel = 0.5f
 // it came back at once (random creature 26's pelvis, 5 cm in three ticks every wave, 8.7 g).
 // Standing, at most this many seconds.
 inline constexpr float kLeglessLiftHoldMax = 4.0f;
+// BodyState::knee_lift settles back at this rate (1/s).
+inline constexpr float kKneeLiftSettle = 0.5f;
 // The bob dips the body by at most this share of its trunk's room over what lies under it
 // freely; deeper it eases into the rest of that room (ease_dip_over_trunk).
 inline constexpr float kBobFreeOfTrunkRoom = 0.5f;
