@@ -241,6 +241,24 @@ TEST_CASE("OutlineProbe measures the drawn body where the bones' figure does not
       CHECK(r.probe.max_stance_slip_m <= 0.001f);
     }
   }
+  SECTION("a foot hanging by a face: its leg's drawn flesh kept off the face's corner") {
+    // A hanging foot (a foot left below a step its body climbs, a foreleg reaching past the
+    // far wall of a gap) was kept out of the face by the line from its girdle joint, and the
+    // flesh drawn about its shin and foot lay across the face's corner: the T. rex's 7.5 cm
+    // climbing back up drops.json's 2 m step, the horse's 1.5 cm at its gap's far wall. The
+    // lines from the joint to either side of the foot, a flesh margin apart, stop short too.
+    struct Case {
+      const char* animal;
+      const char* script;
+    };
+    for (const Case& c : {Case{"tyrannosaurus", "walk:0.5:6,stop:1,walk:-0.6:3"}, Case{"horse", "walk:0.6:15"}}) {
+      const SimResult r = run(c.animal, load_level(scenes::source_path("levels/drops.json")).value(), c.script, outline);
+      INFO(c.animal << ": leg " << outline->max_by_kind[static_cast<size_t>(BodyPartKind::kLeg)] << " m, deepest "
+                    << outline->deepest_outline_part << " at " << outline->deepest_outline_at_s << " s");
+      CHECK(r.probe.max_penetration_m <= 0.001f);
+      CHECK(outline->max_by_kind[static_cast<size_t>(BodyPartKind::kLeg)] <= 0.001f);
+    }
+  }
   SECTION("an arm or a flipper by a riser: its drawn flesh kept off it, not only its bones") {
     // An arm folded until its bones cleared a riser or the ground: the flipper drawn about them
     // lay in it all the same (the eared seal's 2.2 cm in stairs.json's risers, the harbour

@@ -411,6 +411,17 @@ int update_air_feet(const AnimContext& ctx, const BodyFrame& body, float extensi
     // (a leg reaching ahead into the far side of a gap is drawn back).
     const glm::vec2 joint = body.girdle_ws(ctx.rig, info.girdle);
     if (auto hit = ctx.level.raycast(joint, next); hit && hit->t < 1.0f) next = joint + (next - joint) * std::max(hit->t - 0.02f, 0.0f);
+    // Nor its drawn flesh about shin and foot (RigLeg::flesh_margin): the lines from the joint
+    // to either side of the foot by that margin stop short of a box too (a foreleg hanging
+    // past the far wall of drops.json's gap laid its flesh 4 cm across the wall's corner).
+    if (const float r = std::max(info.flesh_margin[1], info.flesh_margin[2]); r > 0.0f && next != joint) {
+      const glm::vec2 d = next - joint, side = glm::vec2(-d.y, d.x) * (r / glm::length(d));
+      float t = 1.0f;
+      for (const glm::vec2 s : {side, -side}) {
+        if (auto hit = ctx.level.raycast(joint, next + s); hit && hit->t < t) t = hit->t;
+      }
+      if (t < 1.0f) next = joint + d * std::max(t - 0.02f, 0.0f);
+    }
     f.pos_ws = f.from_ws = f.to_ws = next;
   }
   return planted;
