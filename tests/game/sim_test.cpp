@@ -122,6 +122,15 @@ TEST_CASE("OutlineProbe measures the drawn body where the bones' figure does not
     });
   };
   std::optional<OutlineProbe> outline;
+  // The run's bones and its legs' drawn outline within 1 mm of every box.
+  auto legs_clear = [&](const char* animal, const char* level, const char* script) {
+    const SimResult r = run(animal, load_level(scenes::source_path(level)).value(), script, outline);
+    INFO(animal << " on " << level << ", " << script << ": leg " << outline->max_by_kind[static_cast<size_t>(BodyPartKind::kLeg)]
+                << " m, deepest " << outline->deepest_outline_part << " at " << outline->deepest_outline_at_s << " s");
+    CHECK(r.probe.max_penetration_m <= 0.001f);
+    CHECK(outline->max_by_kind[static_cast<size_t>(BodyPartKind::kLeg)] <= 0.001f);
+    return r;
+  };
   SECTION("on flat ground: out of it") {
     const SimResult r = run("horse", scenes::flat_level(100.0f), "walk:0.6:4,run:1:3", outline);
     INFO("deepest " << outline->deepest_outline_part << " " << outline->max_outline_penetration_m << " m at " << outline->deepest_outline_at_s << " s");
@@ -209,11 +218,7 @@ TEST_CASE("OutlineProbe measures the drawn body where the bones' figure does not
       const char* level;
     };
     for (const Case& c : {Case{"brachiosaurus", "levels/default.json"}, Case{"triceratops", "levels/drops.json"}}) {
-      const SimResult r = run(c.animal, load_level(scenes::source_path(c.level)).value(), "walk:0.6:30", outline);
-      INFO(c.animal << " on " << c.level << ": leg " << outline->max_by_kind[static_cast<size_t>(BodyPartKind::kLeg)] << " m, deepest "
-                    << outline->deepest_outline_part << " at " << outline->deepest_outline_at_s << " s");
-      CHECK(r.probe.max_penetration_m <= 0.001f);
-      CHECK(outline->max_by_kind[static_cast<size_t>(BodyPartKind::kLeg)] <= 0.001f);
+      legs_clear(c.animal, c.level, "walk:0.6:30");
     }
     // A foot lifted for its flesh alone that finds no foothold stands, and the body does not
     // wait for it: the pigeon walking rough.json stopped for good at x 28 when the body waited
@@ -233,11 +238,7 @@ TEST_CASE("OutlineProbe measures the drawn body where the bones' figure does not
       const char* level;
     };
     for (const Case& c : {Case{"african elephant", "levels/default.json"}, Case{"stegosaurus", "levels/stairs.json"}}) {
-      const SimResult r = run(c.animal, load_level(scenes::source_path(c.level)).value(), "walk:0.6:8", outline);
-      INFO(c.animal << " on " << c.level << ": leg " << outline->max_by_kind[static_cast<size_t>(BodyPartKind::kLeg)] << " m, deepest "
-                    << outline->deepest_outline_part << " at " << outline->deepest_outline_at_s << " s");
-      CHECK(r.probe.max_penetration_m <= 0.001f);
-      CHECK(outline->max_by_kind[static_cast<size_t>(BodyPartKind::kLeg)] <= 0.001f);
+      const SimResult r = legs_clear(c.animal, c.level, "walk:0.6:8");
       CHECK(r.probe.max_stance_slip_m <= 0.001f);
     }
   }
@@ -247,17 +248,8 @@ TEST_CASE("OutlineProbe measures the drawn body where the bones' figure does not
     // flesh drawn about its shin and foot lay across the face's corner: the T. rex's 7.5 cm
     // climbing back up drops.json's 2 m step, the horse's 1.5 cm at its gap's far wall. The
     // lines from the joint to either side of the foot, a flesh margin apart, stop short too.
-    struct Case {
-      const char* animal;
-      const char* script;
-    };
-    for (const Case& c : {Case{"tyrannosaurus", "walk:0.5:6,stop:1,walk:-0.6:3"}, Case{"horse", "walk:0.6:15"}}) {
-      const SimResult r = run(c.animal, load_level(scenes::source_path("levels/drops.json")).value(), c.script, outline);
-      INFO(c.animal << ": leg " << outline->max_by_kind[static_cast<size_t>(BodyPartKind::kLeg)] << " m, deepest "
-                    << outline->deepest_outline_part << " at " << outline->deepest_outline_at_s << " s");
-      CHECK(r.probe.max_penetration_m <= 0.001f);
-      CHECK(outline->max_by_kind[static_cast<size_t>(BodyPartKind::kLeg)] <= 0.001f);
-    }
+    legs_clear("tyrannosaurus", "levels/drops.json", "walk:0.5:6,stop:1,walk:-0.6:3");
+    legs_clear("horse", "levels/drops.json", "walk:0.6:15");
   }
   SECTION("an arm or a flipper by a riser: its drawn flesh kept off it, not only its bones") {
     // An arm folded until its bones cleared a riser or the ground: the flipper drawn about them
