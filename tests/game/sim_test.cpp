@@ -280,6 +280,23 @@ TEST_CASE("OutlineProbe measures the drawn body where the bones' figure does not
       CHECK(outline->max_by_kind[static_cast<size_t>(BodyPartKind::kAxial)] <= 0.001f);
     }
   }
+  SECTION("a body falling into a gap: its drawn head and chest kept out of the far wall") {
+    // Falling into drops.json's pit, the bones that came down into the far wall's face took the
+    // body back out of it, and the flesh drawn about them did not: the red deer's muzzle went
+    // 2.7 cm into the wall, the eared seal's 3.8 cm, their skulls clear. The flesh takes the
+    // body back too.
+    struct Case {
+      const char* animal;
+      const char* script;
+    };
+    for (const Case& c : {Case{"red deer", "walk:0.6:17"}, Case{"eared seal", "walk:0.6:24"}}) {
+      const SimResult r = run(c.animal, load_level(scenes::source_path("levels/drops.json")).value(), c.script, outline);
+      INFO(c.animal << ": axial " << outline->max_by_kind[static_cast<size_t>(BodyPartKind::kAxial)] << " m, falls " << r.locomotion.falls);
+      CHECK(r.locomotion.falls >= 1);
+      CHECK(r.probe.max_penetration_m <= 0.001f);
+      CHECK(outline->max_by_kind[static_cast<size_t>(BodyPartKind::kAxial)] <= 0.001f);
+    }
+  }
   SECTION("a whale's flukes: kept out of the ground with its tail") {
     // A whale lies along default.json's floor from its spawn on; its tail's bones lay clear
     // of the floor while the flukes drawn about them went 0.5 m into it, until the tail's

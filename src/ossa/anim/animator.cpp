@@ -264,7 +264,7 @@ void Animator::tick(float dt, const AnimatorIntent& intent, const Level& level) 
     }
     finish_tick(ctx, dt);                                                       // 12 pose
     // A part of the body come down into a ledge ahead: the body goes back out of it.
-    if (loco_.vy < 0.0f && go_back_from_face(ctx, 1e30f)) loco_.vx = 0.0f;
+    if (loco_.vy < 0.0f && go_back_from_face(ctx, 1e30f, true)) loco_.vx = 0.0f;
     return;
   }
 
@@ -340,8 +340,8 @@ void Animator::tick(float dt, const AnimatorIntent& intent, const Level& level) 
   }
 }
 
-bool Animator::go_back_from_face(const AnimContext& ctx, float most) {
-  const float push = push_back_from_face(ctx, body_, pose_.facing, body_boxes_);
+bool Animator::go_back_from_face(const AnimContext& ctx, float most, bool flesh) {
+  const float push = push_back_from_face(ctx, body_, pose_.facing, body_boxes_, flesh);
   if (!(push > 0.0f) || push > most) return false;
   move_body(-body_.facing * push, body_);
   // On the ground the stance legs must still reach their feet from where the body went (the

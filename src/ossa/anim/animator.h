@@ -214,8 +214,9 @@ class Animator {
   static constexpr int kMaxSubsteps = 8;
   static constexpr float kFallStepOfHip = 0.1f;
   // A part of the body in a box ahead (push_back_from_face): the body goes back out of it,
-  // if that takes no more than `most` metres, and is posed again. Whether it went.
-  bool go_back_from_face(const anim::AnimContext& ctx, float most);
+  // if that takes no more than `most` metres, and is posed again (flesh: its drawn flesh
+  // counts too). Whether it went.
+  bool go_back_from_face(const anim::AnimContext& ctx, float most, bool flesh = false);
   void respawn(const Level& level);
 
   const Creature* creature_ = nullptr;

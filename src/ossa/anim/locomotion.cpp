@@ -196,19 +196,30 @@ float path_height(const AnimContext& ctx, const BodyFrame& body, const std::vect
   return y;
 }
 
-float push_back_from_face(const AnimContext& ctx, const BodyFrame& body, const std::vector<Mat2x3>& model_fs, std::vector<Box>& boxes) {
+float push_back_from_face(const AnimContext& ctx, const BodyFrame& body, const std::vector<Mat2x3>& model_fs, std::vector<Box>& boxes,
+                          bool flesh) {
   const AnimRig& rig = ctx.rig;
   if (rig.body_slabs.empty()) return 0.0f;
   body_boxes(rig, body, model_fs, true, &boxes);
   // (The arms' reach boxes come last: the arms fold out of the way.)
   const size_t parts = boxes.size() - std::min(boxes.size(), rig.arms.size());
   // The trunk's bones (the rib cage below the spine's outline) as segments: a box around a
-  // slanting rib reaches past the face by more than the rib does.
+  // slanting rib reaches past the face by more than the rib does. The flesh too when asked,
+  // the head's level with the skull (as the wall sweep takes it).
   thread_local std::vector<glm::vec2> trunk;
   trunk.clear();
   for (size_t i = 0; i < rig.trunk_level_from; ++i) {
     trunk.push_back(body.body_point_ws(rig, rig.trunk[i].a));
     trunk.push_back(body.body_point_ws(rig, rig.trunk[i].b));
+  }
+  if (flesh && !rig.flesh.empty()) {
+    const glm::vec2 skull_ms = rig.skull >= 0 ? bone_start(rig.model_rest[rig.skull]) : glm::vec2(0.0f);
+    const glm::vec2 skull_fs = body.to_fs(body.body_point_ws(rig, skull_ms));
+    for (size_t i = 0; i < rig.flesh.size(); ++i) {
+      for (glm::vec2 p_ms : {rig.flesh[i].a, rig.flesh[i].b}) {
+        trunk.push_back(i < rig.flesh_level_from ? body.body_point_ws(rig, p_ms) : body.to_ws(skull_fs + (p_ms - skull_ms)));
+      }
+    }
   }
   // Is segment a-b inside collider c? Its x-range there in *x0, *x1.
   auto within = [](glm::vec2 a, glm::vec2 b, const Box& c, float* x0, float* x1) {

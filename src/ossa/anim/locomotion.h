@@ -131,8 +131,12 @@ float path_height(const AnimContext& ctx, const BodyFrame& body, const std::vect
 // the pose just made) that came into a box ahead of it — falling, a head held over the far
 // side of a gap the body falls into; standing, a chest leant into the corner of a ledge —
 // takes the body back, away from that box's face, so far as it came in (world metres, >= 0; 0
-// when clear, or where the body there would meet another box).
-float push_back_from_face(const AnimContext& ctx, const BodyFrame& body, const std::vector<Mat2x3>& model_fs, std::vector<Box>& boxes);
+// when clear, or where the body there would meet another box). flesh: the trunk's and the
+// head's drawn flesh (AnimRig::flesh) as segments too (falling: a deer's muzzle came down
+// 2.7 cm into drops.json's far pit wall, its skull clear). Not on the ground, where a chest
+// over a tread ahead lies on it (body_floor.h), not in a face.
+float push_back_from_face(const AnimContext& ctx, const BodyFrame& body, const std::vector<Mat2x3>& model_fs, std::vector<Box>& boxes,
+                          bool flesh = false);
 // How far the legs reach for the ground, in [0, 1]: tucked while rising or high above it.
 float reach_extension(const AnimContext& ctx, const BodyFrame& body, const LocomotionState& loco);
 // Stage A4. No foot planted yet: may the body itself meet the ground (no foot stands, and it
