@@ -32,18 +32,23 @@ ossa_install_deps() {
   export DEBIAN_FRONTEND=noninteractive
   $sudo apt-get update -qq
   $sudo apt-get install -y -qq --no-install-recommends "${missing[@]}"
+  ossa_use_ccache  # (it may have been installed just now)
 }
 
 # Compiler caching (ccache, when installed): an unchanged tree rebuilds in seconds, also in
 # another clone of it (paths below the tree are hashed relative to it) and after `rm -rf build`.
-# OSSA_CCACHE=0 turns it off.
-ossa_launcher=(-DCMAKE_CXX_COMPILER_LAUNCHER= -DCMAKE_C_COMPILER_LAUNCHER=)
-if [ "${OSSA_CCACHE:-1}" != "0" ] && command -v ccache >/dev/null; then
-  ossa_launcher=(-DCMAKE_CXX_COMPILER_LAUNCHER=ccache -DCMAKE_C_COMPILER_LAUNCHER=ccache)
-  export CCACHE_BASEDIR="$OSSA_ROOT"
-  export CCACHE_SLOPPINESS="${CCACHE_SLOPPINESS:-pch_defines,time_macros,include_file_mtime,include_file_ctime}"
-  export CCACHE_NOHASHDIR=1
-fi
+# OSSA_CCACHE=0 turns it off. Asked again once the packages are installed: on a clean machine
+# the first run installs ccache, and its builds then fill the cache the next run reads.
+ossa_use_ccache() {
+  ossa_launcher=(-DCMAKE_CXX_COMPILER_LAUNCHER= -DCMAKE_C_COMPILER_LAUNCHER=)
+  if [ "${OSSA_CCACHE:-1}" != "0" ] && command -v ccache >/dev/null; then
+    ossa_launcher=(-DCMAKE_CXX_COMPILER_LAUNCHER=ccache -DCMAKE_C_COMPILER_LAUNCHER=ccache)
+    export CCACHE_BASEDIR="$OSSA_ROOT"
+    export CCACHE_SLOPPINESS="${CCACHE_SLOPPINESS:-pch_defines,time_macros,include_file_mtime,include_file_ctime}"
+    export CCACHE_NOHASHDIR=1
+  fi
+}
+ossa_use_ccache
 
 # ossa_build DIR BUILD_TYPE [extra cmake args...]
 ossa_build() {
