@@ -206,18 +206,18 @@ float push_back_from_face(const AnimContext& ctx, const BodyFrame& body, const s
   // The trunk's bones (the rib cage below the spine's outline) as segments: a box around a
   // slanting rib reaches past the face by more than the rib does. The flesh too when asked,
   // the head's level with the skull (as the wall sweep takes it).
-  thread_local std::vector<glm::vec2> trunk;
-  trunk.clear();
+  thread_local std::vector<glm::vec2> segs;  // end points, two a segment
+  segs.clear();
   for (size_t i = 0; i < rig.trunk_level_from; ++i) {
-    trunk.push_back(body.body_point_ws(rig, rig.trunk[i].a));
-    trunk.push_back(body.body_point_ws(rig, rig.trunk[i].b));
+    segs.push_back(body.body_point_ws(rig, rig.trunk[i].a));
+    segs.push_back(body.body_point_ws(rig, rig.trunk[i].b));
   }
   if (flesh && !rig.flesh.empty()) {
     const glm::vec2 skull_ms = rig.skull >= 0 ? bone_start(rig.model_rest[rig.skull]) : glm::vec2(0.0f);
     const glm::vec2 skull_fs = body.to_fs(body.body_point_ws(rig, skull_ms));
     for (size_t i = 0; i < rig.flesh.size(); ++i) {
       for (glm::vec2 p_ms : {rig.flesh[i].a, rig.flesh[i].b}) {
-        trunk.push_back(i < rig.flesh_level_from ? body.body_point_ws(rig, p_ms) : body.to_ws(skull_fs + (p_ms - skull_ms)));
+        segs.push_back(i < rig.flesh_level_from ? body.body_point_ws(rig, p_ms) : body.to_ws(skull_fs + (p_ms - skull_ms)));
       }
     }
   }
@@ -239,12 +239,12 @@ float push_back_from_face(const AnimContext& ctx, const BodyFrame& body, const s
     ctx.level.overlapping(p, ctx.hits);
     for (int h : ctx.hits) meet(ctx.level.box(h), p.min_ws.x, p.max_ws.x);
   }
-  for (size_t k = 0; k < trunk.size(); k += 2) {
+  for (size_t k = 0; k < segs.size(); k += 2) {
     ctx.hits.clear();
-    ctx.level.overlapping(Box{glm::min(trunk[k], trunk[k + 1]), glm::max(trunk[k], trunk[k + 1])}, ctx.hits);
+    ctx.level.overlapping(Box{glm::min(segs[k], segs[k + 1]), glm::max(segs[k], segs[k + 1])}, ctx.hits);
     float x0, x1;
     for (int h : ctx.hits) {
-      if (within(trunk[k], trunk[k + 1], ctx.level.box(h), &x0, &x1)) meet(ctx.level.box(h), x0, x1);
+      if (within(segs[k], segs[k + 1], ctx.level.box(h), &x0, &x1)) meet(ctx.level.box(h), x0, x1);
     }
   }
   if (!(push > 0.0f)) return 0.0f;
@@ -254,8 +254,8 @@ float push_back_from_face(const AnimContext& ctx, const BodyFrame& body, const s
   for (size_t k = 0; k < parts; ++k) {
     if (ctx.level.first_overlap(Box{boxes[k].min_ws + shift, boxes[k].max_ws + shift})) return 0.0f;
   }
-  for (size_t k = 0; k < trunk.size(); k += 2) {
-    const glm::vec2 a = trunk[k] + shift, b = trunk[k + 1] + shift;
+  for (size_t k = 0; k < segs.size(); k += 2) {
+    const glm::vec2 a = segs[k] + shift, b = segs[k + 1] + shift;
     ctx.hits.clear();
     ctx.level.overlapping(Box{glm::min(a, b), glm::max(a, b)}, ctx.hits);
     float x0, x1;
