@@ -284,7 +284,7 @@ bool nearest_clear_stance(const FootholdInputs& in, int leg, glm::vec2 near_ws, 
     const auto hit = ground_below(in.ctx.level, x + sole_lo, x + sole_hi, near_ws.y + up, 2.0f * up);
     if (!hit || std::fabs(hit->height_ws - near_ws.y) > 1e-3f) continue;  // on the same tread
     const glm::vec2 p(x, hit->height_ws);
-    if (!foot_fits(in, leg, p) || !foot_fits(in, leg, p, true)) continue;
+    if (!foot_fits(in, leg, p, true)) continue;  // (the flesh's span holds the bones')
     const FootState standing = standing_at(in.ctx, p);
     if (leg_overreach(in.ctx, in.body, leg, standing, joint_fs) > allowed) continue;
     if (stance_cuts(in.ctx, in.body, leg, standing, joint_fs)) continue;
