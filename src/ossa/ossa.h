@@ -20,6 +20,7 @@
 #include "ossa/io/file.h"
 #include "ossa/io/image_info.h"
 #include "ossa/io/json.h"
+#include "ossa/io/json_fwd.h"
 #include "ossa/io/parse_arg.h"
 #include "ossa/io/result.h"
 

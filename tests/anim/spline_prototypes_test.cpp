@@ -4,6 +4,7 @@
 
 #include <filesystem>
 
+#include "ossa/io/json.h"
 #include "shared/scenes.h"
 
 using namespace ossa;

@@ -16,6 +16,7 @@
 #include <string>
 #include <vector>
 
+#include "ossa/io/json.h"
 #include "ossa/level/level.h"
 #include "ossa/level/level_io.h"
 #include "shared/level_scenes.h"

@@ -9,6 +9,7 @@
 #include "ossa/gen/generator.h"
 #include "ossa/gen/skeleton_builder.h"
 #include "ossa/io/file.h"
+#include "ossa/io/json.h"
 #include "ossa/math/angle.h"
 #include "ossa/math/rng.h"
 #include "ossa/skeleton/pose.h"

@@ -24,6 +24,7 @@
 #include "ossa/editor/creature_panel_model.h"
 #include "ossa/gen/genome.h"
 #include "ossa/io/file.h"
+#include "ossa/io/json.h"
 #include "ossa/platform/window.h"
 #include "shared/scenes.h"
 #include "shared/scratch_files.h"

@@ -11,6 +11,7 @@
 #include "ossa/editor/creature_panel_model.h"
 #include "ossa/editor/undo_stack.h"
 #include "ossa/gen/true_size.h"
+#include "ossa/io/json.h"
 #include "shared/scenes.h"
 
 using namespace ossa;

@@ -6,6 +6,7 @@
 #include "ossa/editor/tuning_model.h"
 #include "ossa/gen/genome.h"
 #include "ossa/io/file.h"
+#include "ossa/io/json.h"
 #include "shared/scenes.h"
 
 namespace ossa {

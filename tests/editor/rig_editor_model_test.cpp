@@ -9,6 +9,7 @@
 #include <unistd.h>
 
 #include "ossa/editor/rig_editor_model.h"
+#include "ossa/io/json.h"
 #include "shared/scenes.h"
 
 using namespace ossa;

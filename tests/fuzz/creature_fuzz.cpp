@@ -20,11 +20,12 @@
 #include "ossa/anim/animator.h"
 #include "ossa/body/body_floor.h"
 #include "ossa/body/body_mesh.h"
+#include "ossa/draw/sprite_mesh.h"
 #include "ossa/gen/genome.h"
 #include "ossa/gen/skeleton_builder.h"
+#include "ossa/io/json.h"
 #include "ossa/level/level.h"
 #include "ossa/math/rng.h"
-#include "ossa/draw/sprite_mesh.h"
 
 namespace {
 

@@ -8,6 +8,8 @@
 #include <string_view>
 
 #include "ossa/gen/dataset.h"
+#include "ossa/gen/pca_model.h"
+#include "ossa/io/json.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   const std::string_view text(reinterpret_cast<const char*>(data), size);

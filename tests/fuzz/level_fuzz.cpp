@@ -8,6 +8,7 @@
 #include <cstdlib>
 #include <string_view>
 
+#include "ossa/io/json.h"
 #include "ossa/level/level_io.h"
 #include "ossa/level/level_load.h"
 #include "ossa/level/tiled.h"

@@ -14,6 +14,7 @@
 #include "ossa/gen/generator.h"
 #include "ossa/gen/skeleton_builder.h"
 #include "ossa/game/sim.h"
+#include "ossa/io/json.h"
 #include "ossa/level/level_io.h"
 #include "ossa/math/rng.h"
 #include "shared/level_scenes.h"

@@ -5,6 +5,8 @@
 #include <set>
 #include <string>
 
+#include "ossa/gen/pca_model.h"
+#include "ossa/io/json.h"
 #include "shared/scenes.h"
 
 using namespace ossa;

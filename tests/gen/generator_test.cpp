@@ -8,6 +8,7 @@
 #include "ossa/gen/body_plan.h"
 #include "ossa/gen/skeleton_builder.h"
 #include "ossa/io/file.h"
+#include "ossa/io/json.h"
 #include "shared/scenes.h"
 
 using namespace ossa;

@@ -11,6 +11,7 @@
 #include "ossa/gen/generator.h"
 #include "ossa/gen/skeleton_builder.h"
 #include "ossa/gen/true_size.h"
+#include "ossa/io/json.h"
 #include "shared/scenes.h"
 
 using namespace ossa;

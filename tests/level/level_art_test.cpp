@@ -5,6 +5,7 @@
 // LDtk's auto-layer and IntGrid tiles; and an ossa level's look, saved and loaded.
 
 #include "ossa/io/file.h"
+#include "ossa/io/json.h"
 #include "ossa/level/level_io.h"
 #include "ossa/level/level_load.h"
 #include "shared/scenes.h"

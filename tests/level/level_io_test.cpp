@@ -2,6 +2,7 @@
 
 #include "ossa/level/level_io.h"
 #include "ossa/io/file.h"
+#include "ossa/io/json.h"
 #include "ossa/math/rng.h"
 #include "shared/level_scenes.h"
 #include "shared/scenes.h"

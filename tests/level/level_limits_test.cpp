@@ -4,6 +4,7 @@
 // level-relative resources that stay in the level's folder.
 
 #include "ossa/io/file.h"
+#include "ossa/io/json.h"
 #include "ossa/level/level_io.h"
 #include "ossa/level/level_load.h"
 #include "ossa/level/tiled.h"

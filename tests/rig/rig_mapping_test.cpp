@@ -7,6 +7,7 @@
 #include <string>
 #include <unistd.h>
 
+#include "ossa/io/json.h"
 #include "ossa/rig/rig_mapping.h"
 #include "ossa/io/file.h"
 #include "ossa/math/rng.h"

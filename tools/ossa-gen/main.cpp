@@ -19,6 +19,7 @@
 #include "ossa/gen/export_obj.h"
 #include "ossa/gen/export_svg.h"
 #include "ossa/gen/generator.h"
+#include "ossa/gen/pca_model.h"
 #include "ossa/gen/skeleton_builder.h"
 #include "ossa/io/data_dir.h"
 #include "ossa/io/file.h"

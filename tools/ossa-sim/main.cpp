@@ -31,6 +31,7 @@
 #include "ossa/game/world.h"
 #include "ossa/io/data_dir.h"
 #include "ossa/io/file.h"
+#include "ossa/io/json.h"
 #include "ossa/io/parse_arg.h"
 #include "ossa/level/level_io.h"
 #if OSSA_SIM_CHARACTERS

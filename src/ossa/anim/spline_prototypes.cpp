@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "ossa/io/file.h"
+#include "ossa/io/json.h"
 
 namespace ossa {
 

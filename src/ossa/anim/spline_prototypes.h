@@ -24,7 +24,7 @@
 #include <string>
 #include <string_view>
 
-#include "ossa/io/json.h"
+#include "ossa/io/json_fwd.h"
 #include "ossa/io/result.h"
 #include "ossa/math/hermite.h"
 

@@ -4,9 +4,11 @@
 #include <cstdio>
 
 #include "ossa/gen/export_svg.h"
+#include "ossa/gen/pca_model.h"
 #include "ossa/gen/skeleton_builder.h"
 #include "ossa/gen/true_size.h"
 #include "ossa/io/file.h"
+#include "ossa/io/json.h"
 #include "ossa/math/rng.h"
 #include "ossa/render/gltf_export.h"
 

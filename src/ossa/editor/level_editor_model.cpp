@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "ossa/io/file.h"
+#include "ossa/io/json.h"
 #include "ossa/level/level_io.h"
 #include "ossa/level/tiled.h"
 

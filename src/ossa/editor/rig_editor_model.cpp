@@ -4,6 +4,7 @@
 #include <cmath>
 #include <filesystem>
 
+#include "ossa/io/json.h"
 #include "ossa/rig/rig_guess.h"
 #include "ossa/game/player.h"
 #include "ossa/render/character_mesh.h"

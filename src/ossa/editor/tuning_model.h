@@ -14,7 +14,7 @@
 #include "ossa/anim/animator.h"
 #include "ossa/anim/animator_params.h"
 #include "ossa/editor/undo_stack.h"
-#include "ossa/io/json.h"
+#include "ossa/io/json_fwd.h"
 #include "ossa/io/result.h"
 
 namespace ossa {

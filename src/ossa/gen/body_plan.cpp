@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "ossa/gen/pca_model.h"
 #include "ossa/math/angle.h"
 #include "ossa/math/two_bone_ik.h"
 

@@ -203,39 +203,4 @@ int dim_from_name(std::string_view name) {
   return -1;
 }
 
-PcaVector to_vector(const Animal& a) {
-  PcaVector v;
-  v[kWings] = a.wings;
-  v[kLegPairs] = a.leg_pairs;
-  v[kWeightKg] = a.weight_kg;
-  for (int i = 0; i < kSpinePoints; ++i) {
-    v[spine_x_dim(i)] = a.spine[i].x;
-    v[spine_y_dim(i)] = a.spine[i].y;
-  }
-  v[kFrontUpper] = a.front.upper;
-  v[kFrontLower] = a.front.lower;
-  v[kFrontHand] = a.front.distal;
-  v[kHindUpper] = a.hind.upper;
-  v[kHindLower] = a.hind.lower;
-  v[kHindFoot] = a.hind.distal;
-  return v;
-}
-
-Animal from_vector(const PcaVector& v) {
-  Animal a;
-  auto round_to = [](double x, int lo, int hi) {
-    if (!std::isfinite(x)) return lo;
-    return static_cast<int>(std::lround(std::clamp(x, static_cast<double>(lo), static_cast<double>(hi))));
-  };
-  a.wings = round_to(v[kWings], 0, 1);
-  a.leg_pairs = round_to(v[kLegPairs], 0, 2);
-  a.weight_kg = v[kWeightKg];
-  for (int i = 0; i < kSpinePoints; ++i) {
-    a.spine[i] = glm::vec2(static_cast<float>(v[spine_x_dim(i)]), static_cast<float>(v[spine_y_dim(i)]));
-  }
-  a.front = {v[kFrontUpper], v[kFrontLower], v[kFrontHand]};
-  a.hind = {v[kHindUpper], v[kHindLower], v[kHindFoot]};
-  return a;
-}
-
 }  // namespace ossa

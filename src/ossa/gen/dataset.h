@@ -20,7 +20,7 @@
 //       "look": {...}, "appendages": [...]}, ...]}     (optional: the body, gen/look.h)
 //
 // Each animal is also a point of the 29-dimensional raw vector space the PCA works in
-// (to_vector / from_vector, layout in `Dim`).
+// (to_vector / from_vector in pca_model.h, layout in `Dim`).
 
 #include <array>
 #include <cstdint>
@@ -29,7 +29,6 @@
 #include <string_view>
 #include <vector>
 
-#include <Eigen/Core>
 #include <glm/vec2.hpp>
 
 #include "ossa/gen/look.h"
@@ -98,10 +97,8 @@ Result<Dataset> load_dataset(const std::string& path);
 // ---------------------------------------------------------------------------------------
 // The raw 29-dimensional vector [Z 6.1] (original units: counts, kg, frame units).
 inline constexpr int kPcaDims = 29;
-using PcaVector = Eigen::Matrix<double, kPcaDims, 1>;
-using PcaMatrix = Eigen::Matrix<double, kPcaDims, kPcaDims>;
 
-// Index layout of a PcaVector.
+// Index layout of the raw vector (PcaVector, pca_model.h).
 enum Dim : int {
   kWings = 0,     // 0..1 (samples are continuous: a probability-like value)
   kLegPairs = 1,  // 0..2 (samples are continuous)
@@ -123,11 +120,5 @@ constexpr int spine_y_dim(int point) { return kSpine0X + 2 * point + 1; }
 const char* dim_name(int dim);
 // The dimension called `name` (as dim_name spells it), or -1.
 int dim_from_name(std::string_view name);
-
-PcaVector to_vector(const Animal& animal);
-// The animal a raw vector describes; names and class are empty. wings and leg_pairs are rounded
-// to the nearest valid value (0..1, 0..2); use the raw vector itself where the continuous value
-// matters (limb lotteries, DESIGN.md §5.4). Nothing else is clamped.
-Animal from_vector(const PcaVector& raw);
 
 }  // namespace ossa

@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "ossa/gen/body_plan.h"
+#include "ossa/gen/pca_model.h"
 #include "ossa/gen/skeleton_builder.h"
 #include "ossa/math/rng.h"
 
@@ -155,7 +156,9 @@ std::vector<Appendage> random_appendages(const Genome& g, uint64_t seed) {
 }
 
 Generator::Generator(Dataset dataset, PcaModel model, BodyVolume body_volume)
-    : dataset_(std::move(dataset)), model_(std::move(model)), body_volume_(std::move(body_volume)) {}
+    : dataset_(std::move(dataset)),
+      model_(std::make_shared<const PcaModel>(std::move(model))),
+      body_volume_(std::move(body_volume)) {}
 
 Result<Generator> Generator::load(const std::string& dataset_path, BodyVolume body_volume) {
   Result<Dataset> data = load_dataset(dataset_path);
@@ -329,13 +332,13 @@ Genome Generator::random(uint64_t seed, const GenerateOptions& options) const {
     for (const Animal& a : dataset_.animals) high = std::max<double>(high, a.spine[kSpineHead].y);
     conditions.push_back({spine_y_dim(kSpineHead), 0.9 * high, false});
   }
-  PcaVector raw = model_.sample_conditional(rng, conditions);
+  PcaVector raw = model_->sample_conditional(rng, conditions);
   // Reject the rare degenerate draw (a back shorter than 5% of the frame).
   for (int attempt = 0; attempt < 8; ++attempt) {
     const glm::vec2 d = glm::vec2(raw[spine_x_dim(kSpineHip)] - raw[spine_x_dim(kSpineShoulder)],
                                   raw[spine_y_dim(kSpineHip)] - raw[spine_y_dim(kSpineShoulder)]);
     if (std::sqrt(d.x * d.x + d.y * d.y) > 50.0f) break;
-    raw = model_.sample_conditional(rng, conditions);
+    raw = model_->sample_conditional(rng, conditions);
   }
   std::array<double, kPcaDims> pca;
   for (int d = 0; d < kPcaDims; ++d) pca[d] = raw[d];
@@ -382,9 +385,9 @@ Genome Generator::variation(const Genome& parent, uint64_t seed, double sigma) c
   g.seed = seed;
   PcaVector raw;
   for (int d = 0; d < kPcaDims; ++d) raw[d] = parent.pca[d];
-  PcaVector s = model_.to_sigma(raw);
+  PcaVector s = model_->to_sigma(raw);
   for (int i = 0; i < kPcaDims; ++i) s[i] += rng.normal(0.0, sigma);
-  raw = model_.from_sigma(s);
+  raw = model_->from_sigma(s);
   for (int d = 0; d < kPcaDims; ++d) g.pca[d] = raw[d];
   // The discrete features the body was built with stay put; they are not PCA dimensions.
   g.pca[kWings] = parent.pca[kWings];

@@ -3,12 +3,12 @@
 // the 44 examples, and variations of a genome [Z 6–8]. All randomness happens here; the
 // SkeletonBuilder (skeleton_builder.h) turns a Genome into a Creature deterministically.
 
+#include <memory>
 #include <optional>
 #include <string_view>
 
 #include "ossa/gen/dataset.h"
 #include "ossa/gen/genome.h"
-#include "ossa/gen/pca_model.h"
 #include "ossa/gen/true_size.h"
 #include "ossa/io/result.h"
 
@@ -18,6 +18,7 @@ namespace ossa {
 // span so far that every value ends clamped at a limit.
 inline constexpr double kMaxVariationSigma = 10.0;
 
+class PcaModel;  // ossa/gen/pca_model.h
 class Rng;
 
 // User input for a random creature. Unset conditions come from the PCA point.
@@ -42,7 +43,7 @@ class Generator {
   static Result<Generator> load(const std::string& dataset_path, BodyVolume body_volume);
 
   const Dataset& dataset() const { return dataset_; }
-  const PcaModel& model() const { return model_; }
+  const PcaModel& model() const { return *model_; }
 
   // A random creature; the same seed and options give a byte-identical genome.
   Genome random(uint64_t seed, const GenerateOptions& options = {}) const;
@@ -67,7 +68,9 @@ class Generator {
 
  private:
   Dataset dataset_;
-  PcaModel model_;
+  // Shared between copies: a fitted model is immutable (and its header, Eigen, stays out of
+  // every file that only draws genomes).
+  std::shared_ptr<const PcaModel> model_;
   BodyVolume body_volume_;
 };
 

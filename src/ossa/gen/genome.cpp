@@ -7,6 +7,7 @@
 
 #include "ossa/gen/skeleton_builder.h"
 #include "ossa/io/file.h"
+#include "ossa/io/json.h"
 #include "ossa/io/parse_arg.h"
 
 namespace ossa {

@@ -45,7 +45,7 @@
 #include "ossa/gen/dataset.h"
 #include "ossa/gen/look.h"
 #include "ossa/gen/skull_shape.h"
-#include "ossa/io/json.h"
+#include "ossa/io/json_fwd.h"
 #include "ossa/io/result.h"
 
 namespace ossa {

@@ -6,6 +6,7 @@
 
 #include <glm/common.hpp>
 
+#include "ossa/io/json.h"
 #include "ossa/math/rng.h"
 
 namespace ossa {

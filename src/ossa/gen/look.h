@@ -25,7 +25,7 @@
 
 #include <glm/vec3.hpp>
 
-#include "ossa/io/json.h"
+#include "ossa/io/json_fwd.h"
 
 namespace ossa {
 

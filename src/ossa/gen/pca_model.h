@@ -24,11 +24,23 @@
 
 #include <vector>
 
+#include <Eigen/Core>
+
 #include "ossa/gen/dataset.h"
 #include "ossa/io/result.h"
 #include "ossa/math/rng.h"
 
 namespace ossa {
+
+// The raw vector of an animal (layout in dataset.h's `Dim`) and the model's matrices.
+using PcaVector = Eigen::Matrix<double, kPcaDims, 1>;
+using PcaMatrix = Eigen::Matrix<double, kPcaDims, kPcaDims>;
+
+PcaVector to_vector(const Animal& animal);
+// The animal a raw vector describes; names and class are empty. wings and leg_pairs are rounded
+// to the nearest valid value (0..1, 0..2); use the raw vector itself where the continuous value
+// matters (limb lotteries, DESIGN.md §5.4). Nothing else is clamped.
+Animal from_vector(const PcaVector& raw);
 
 // Fixes one raw dimension to a value for conditional sampling [Z 6.4].
 struct Condition {

@@ -9,6 +9,8 @@
 
 #include <filesystem>
 
+#include "ossa/io/json.h"
+
 namespace ossa {
 
 namespace {

@@ -18,7 +18,7 @@
 #include <string_view>
 #include <vector>
 
-#include "ossa/io/json.h"
+#include "ossa/io/json_fwd.h"
 #include "ossa/io/result.h"
 
 namespace ossa {

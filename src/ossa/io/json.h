@@ -11,11 +11,10 @@
 
 #include <nlohmann/json.hpp>
 
+#include "ossa/io/json_fwd.h"
 #include "ossa/io/result.h"
 
 namespace ossa {
-
-using Json = nlohmann::json;
 
 // Every JSON document ossa reads (levels, maps, genomes, replays, rig mappings, tuning,
 // datasets, the glTF pre-check) goes through parse_json, which enforces these rules:

@@ -7,6 +7,7 @@
 #include <map>
 #include <optional>
 
+#include "ossa/io/json.h"
 #include "ossa/level/ldtk_art.h"
 #include "ossa/level/level_io.h"
 #include "ossa/level/tile_merge.h"

@@ -31,7 +31,7 @@
 #include <string_view>
 #include <vector>
 
-#include "ossa/io/json.h"
+#include "ossa/io/json_fwd.h"
 #include "ossa/io/result.h"
 #include "ossa/level/level.h"
 #include "ossa/level/level_load.h"

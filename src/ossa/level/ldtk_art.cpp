@@ -1,5 +1,6 @@
 // LDtk import, the art (ldtk_art.h).
 
+#include "ossa/io/json.h"
 #include "ossa/level/ldtk_art.h"
 
 #include <cctype>

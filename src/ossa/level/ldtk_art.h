@@ -20,7 +20,7 @@
 #include <string>
 #include <vector>
 
-#include "ossa/io/json.h"
+#include "ossa/io/json_fwd.h"
 #include "ossa/level/level_art.h"
 
 namespace ossa::ldtk_detail {

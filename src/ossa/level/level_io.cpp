@@ -6,6 +6,7 @@
 #include <cstring>
 
 #include "ossa/io/file.h"
+#include "ossa/io/json.h"
 
 namespace ossa {
 

@@ -47,7 +47,7 @@
 #include <string>
 #include <string_view>
 
-#include "ossa/io/json.h"
+#include "ossa/io/json_fwd.h"
 #include "ossa/io/result.h"
 #include "ossa/level/level.h"
 #include "ossa/level/level_load.h"

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstdio>
 
+#include "ossa/io/json.h"
 #include "ossa/level/level_io.h"
 #include "ossa/level/tiled.h"
 

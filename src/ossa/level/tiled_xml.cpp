@@ -7,6 +7,7 @@
 // <tile gid> children become an array, <chunk>s become "chunks"), objects and their shape.
 // Errors name the file and the element path in the JSON form ("layers[2].width").
 
+#include "ossa/io/json.h"
 #include "ossa/level/tiled.h"
 
 #include <pugixml.hpp>

@@ -12,6 +12,7 @@
 #include <glm/geometric.hpp>
 
 #include "ossa/anim/anim_math.h"
+#include "ossa/io/json.h"
 #include "ossa/math/angle.h"
 #include "ossa/math/two_bone_ik.h"
 #include "ossa/rig/character_checks.h"

@@ -5,6 +5,7 @@
 #include <map>
 
 #include "ossa/io/file.h"
+#include "ossa/io/json.h"
 
 namespace ossa {
 

@@ -41,7 +41,7 @@
 #include <glm/vec2.hpp>
 
 #include "ossa/gen/creature.h"
-#include "ossa/io/json.h"
+#include "ossa/io/json_fwd.h"
 #include "ossa/io/result.h"
 
 namespace ossa {
