@@ -1,8 +1,8 @@
 // Tiled JSON import/export: round trips, hand-written maps from Tiled 1.8 (`type`) and 1.9
 // (`class`), and the documented rules for shapes that cannot be colliders.
 
-#include "ossa/io/json.h"
 #include "ossa/level/tiled.h"
+#include "ossa/io/json.h"
 #include "ossa/level/level_io.h"
 #include "shared/level_scenes.h"
 #include "shared/scenes.h"

@@ -1,11 +1,12 @@
 // LDtk import, the art (ldtk_art.h).
 
-#include "ossa/io/json.h"
 #include "ossa/level/ldtk_art.h"
 
 #include <cctype>
 #include <cmath>
 #include <map>
+
+#include "ossa/io/json.h"
 
 namespace ossa::ldtk_detail {
 

@@ -7,7 +7,6 @@
 // <tile gid> children become an array, <chunk>s become "chunks"), objects and their shape.
 // Errors name the file and the element path in the JSON form ("layers[2].width").
 
-#include "ossa/io/json.h"
 #include "ossa/level/tiled.h"
 
 #include <pugixml.hpp>
@@ -17,6 +16,8 @@
 #include <cmath>
 #include <cstdlib>
 #include <cstring>
+
+#include "ossa/io/json.h"
 
 namespace ossa {
 
