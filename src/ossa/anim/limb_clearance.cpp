@@ -298,6 +298,22 @@ void keep_tail_clear(const AnimContext& ctx, const BodyFrame& body, const std::v
     }
     if (polyline_hits_level(ctx.level, p, static_cast<int>(n + 1), ctx.hits)) return true;
     if (!flesh) return false;
+    // Flesh below the top of a box under its bone is drawn on that top (body_floor.h: soft
+    // tissue flattens on the ground), so it is tested there: a whale's tail lying on the ground,
+    // its flesh deeper than its bones are high, stood on end to clear the floor.
+    for (size_t j = 0; j < 4 * n; ++j) {
+      const size_t k = j < 2 * n ? j / 2 : (4 * n - 1 - j) / 2;
+      const float over = std::max(p[k].y, p[k + 1].y);
+      glm::vec2& q = outline[j];
+      if (q.y >= over) continue;
+      float top = NAN;
+      if (ctx.ground.spans(q.x, q.x)) {
+        top = ctx.ground.highest(q.x, q.x, over);
+      } else if (auto below = ground_below(ctx.level, q.x, q.x, over, over - q.y)) {
+        top = below->height_ws;
+      }
+      if (q.y < top) q.y = top;  // (NaN: no ground under it)
+    }
     outline[4 * n] = outline[0];
     return polyline_hits_level(ctx.level, outline, static_cast<int>(4 * n + 1), ctx.hits);
   };
