@@ -114,7 +114,7 @@ TEST_CASE("limb clearance: a tail in a step curls or lifts out of it, a fin turn
       anim::PoseState pose;
       anim::init_pose(*s.rig, pose);
       anim::pose_body(s.ctx, s.body, 0.0f, 0.0f, 0.0f, 0.0f, pose);
-      anim::keep_tail_clear(s.ctx, s.body, pose.facing, pose.pose);
+      anim::keep_tail_clear(s.ctx, s.body, pose.facing, 0.0f, pose.tail, pose.pose);
       const std::vector<glm::vec2> tail = tail_ws(s, pose.pose);
       CHECK_FALSE(anim::polyline_hits_level(s.level, tail.data(), static_cast<int>(tail.size()), s.hits));
     }
@@ -143,7 +143,7 @@ TEST_CASE("limb clearance: a tail reaching into a wall that rises far above it c
       anim::pose_body(s.ctx, s.body, 0.0f, 0.0f, 0.0f, 0.0f, pose);
       std::vector<glm::vec2> tail = tail_ws(s, pose.pose);
       REQUIRE(anim::polyline_hits_level(s.level, tail.data(), static_cast<int>(tail.size()), s.hits));
-      anim::keep_tail_clear(s.ctx, s.body, pose.facing, pose.pose);
+      anim::keep_tail_clear(s.ctx, s.body, pose.facing, 0.0f, pose.tail, pose.pose);
       tail = tail_ws(s, pose.pose);
       CHECK_FALSE(anim::polyline_hits_level(s.level, tail.data(), static_cast<int>(tail.size()), s.hits));
     }

@@ -423,7 +423,7 @@ void Animator::finish_tick(const AnimContext& ctx, float dt) {
     lift_pose(*rig_, raise, pose_);
   }
   const float motion = std::min(motion_.speed / std::max(gait_.walk_speed, 1e-3f), 1.0f);
-  pose_limbs(ctx, spline_prototypes_, body_, step_.feet, gait_, motion, pose_);
+  pose_limbs(ctx, spline_prototypes_, body_, step_.feet, gait_, motion, dt, pose_);
 }
 
 }  // namespace ossa

@@ -8,6 +8,7 @@
 #include "ossa/anim/anim_math.h"
 #include "ossa/anim/ground_profile.h"
 #include "ossa/anim/leg_geometry.h"
+#include "ossa/anim/secondary_motion.h"
 #include "ossa/body/body_mass.h"
 #include "ossa/math/two_bone_ik.h"
 
@@ -18,6 +19,9 @@ namespace {
 constexpr size_t kMaxTailBones = 48;   // keep_tail_clear curls at most this many tail bones
 constexpr float kMaxTailCurl = 1.6f;   // radians over the tail's length
 constexpr float kMaxTailLift = 1.6f;   // radians at the tail's root, when curling is not enough
+constexpr float kTailClearSettle = 2.0f;  // 1/s: a tail's held clearance turn settles back
+constexpr float kFleshOverhangStretch = 1.25f;  // as the body floor's (body_build.cpp kOverhangStretch)
+constexpr float kFloorMargin = 1e-3f;           // metres: a top as high as the bone over it still holds flesh (body_floor.h)
 constexpr int kTailLiftSteps = 4;      // ... tried in this many steps of the most lift
 constexpr int kTailCurlSteps = 4;      // ... each with this many steps of the most curl, either way
 constexpr size_t kMaxFinBones = 7;
@@ -256,7 +260,8 @@ float body_out_of_ground(const AnimContext& ctx, const BodyFrame& body, const st
   return raise;
 }
 
-void keep_tail_clear(const AnimContext& ctx, const BodyFrame& body, const std::vector<Mat2x3>& model, Pose& pose) {
+void keep_tail_clear(const AnimContext& ctx, const BodyFrame& body, const std::vector<Mat2x3>& model, float dt, TailSpring& tail,
+                     Pose& pose) {
   // A tail hanging into a step (down a flight, or one rising behind) curls up from its root,
   // the least that clears, up to kMaxTailCurl over its length (or, if that is not enough,
   // lifts at its root). Only asked when a box comes within a tail's length of its root: ground,
@@ -273,7 +278,19 @@ void keep_tail_clear(const AnimContext& ctx, const BodyFrame& body, const std::v
   const glm::vec2 root = body.to_ws(base.apply(pose.locals[rig.tail[0]].offset_ls));
   const size_t n = std::min<size_t>(rig.tail.size(), kMaxTailBones);
   const float len = rig.tail_reach;  // (with its flesh)
-  if (!ctx.level.first_overlap(Box{root - glm::vec2(len), root + glm::vec2(len)})) return;
+  // The turn taken lately, settling back (a tail that cleared a step's corner by a curl one
+  // tick and by none the next, as a crawling body rose and sank with its wave, flicked up and
+  // down: the whales' by up to 8 m, 60-100 times in 15 s running default.json and stairs.json).
+  const float keep = dt > 0.0f ? std::exp(-kTailClearSettle * dt) : 1.0f;
+  const float held_curl = tail.curl * keep, held_lift = tail.lift * keep;
+  auto turn = [&](float curl, float lift) {
+    tail.curl = curl, tail.lift = lift;
+    for (size_t k = 0; k < n; ++k) pose.locals[rig.tail[k]].angle_ls += curl / static_cast<float>(n) + (k == 0 ? lift : 0.0f);
+  };
+  if (!ctx.level.first_overlap(Box{root - glm::vec2(len), root + glm::vec2(len)})) {
+    turn(held_curl, held_lift);  // (nothing it could meet)
+    return;
+  }
   glm::vec2 p[kMaxTailBones + 1];
   // The tail's flesh (AnimRig::tail_flesh) as one closed outline: along the boxes' lower
   // edges, round the tip, back along their upper edges. The flesh of a T. rex's tail lying on
@@ -300,16 +317,36 @@ void keep_tail_clear(const AnimContext& ctx, const BodyFrame& body, const std::v
     if (!flesh) return false;
     // Flesh below the top of a box under its bone is drawn on that top (body_floor.h: soft
     // tissue flattens on the ground), so it is tested there: a whale's tail lying on the ground,
-    // its flesh deeper than its bones are high, stood on end to clear the floor.
+    // its flesh deeper than its bones are high, stood on end to clear the floor. A top holds
+    // it up past its ends too, as far as the body floor does (BodyVertex::overhang: the
+    // outline's longest edge, stretched).
+    float edge = 0.0f;
+    for (size_t j = 0; j < 4 * n; ++j) edge = std::max(edge, glm::length(outline[j + 1 == 4 * n ? 0 : j + 1] - outline[j]));
+    const float overhang = kFleshOverhangStretch * edge;
+    // (Only tops no higher than the bones over the point, or past the tail's ends the
+    // nearest end's, count: body_floor.h. A tail fin lying at the foot of a higher block is
+    // drawn into its face.)
+    auto bones_over = [&](float x) {
+      float y = -INFINITY;
+      for (size_t k = 0; k < n; ++k) {
+        const glm::vec2 a = p[k], b = p[k + 1];
+        if ((x - a.x) * (x - b.x) > 0.0f) continue;
+        const float t = std::fabs(b.x - a.x) > 1e-6f ? (x - a.x) / (b.x - a.x) : 0.0f;
+        y = std::max(y, a.y + t * (b.y - a.y));
+      }
+      if (y > -INFINITY) return y;
+      return std::fabs(x - p[0].x) < std::fabs(x - p[n].x) ? p[0].y : p[n].y;
+    };
     for (size_t j = 0; j < 4 * n; ++j) {
       const size_t k = j < 2 * n ? j / 2 : (4 * n - 1 - j) / 2;
-      const float over = std::max(p[k].y, p[k + 1].y);
       glm::vec2& q = outline[j];
+      if (q.y >= std::max(p[k].y, p[k + 1].y)) continue;
+      const float over = bones_over(q.x) + kFloorMargin;
       if (q.y >= over) continue;
       float top = NAN;
-      if (ctx.ground.spans(q.x, q.x)) {
-        top = ctx.ground.highest(q.x, q.x, over);
-      } else if (auto below = ground_below(ctx.level, q.x, q.x, over, over - q.y)) {
+      if (ctx.ground.spans(q.x - overhang, q.x + overhang)) {
+        top = ctx.ground.highest(q.x - overhang, q.x + overhang, over);
+      } else if (auto below = ground_below(ctx.level, q.x - overhang, q.x + overhang, over, over - q.y)) {
         top = below->height_ws;
       }
       if (q.y < top) q.y = top;  // (NaN: no ground under it)
@@ -317,7 +354,6 @@ void keep_tail_clear(const AnimContext& ctx, const BodyFrame& body, const std::v
     outline[4 * n] = outline[0];
     return polyline_hits_level(ctx.level, outline, static_cast<int>(4 * n + 1), ctx.hits);
   };
-  if (!hits(0.0f)) return;
   float curl = 0.0f, lift = 0.0f;
   auto solve = [&] {
     // The turn that raises the tip first; a curled tail may need the other.
@@ -361,16 +397,31 @@ void keep_tail_clear(const AnimContext& ctx, const BodyFrame& body, const std::v
       }
     }
   };
-  solve();
-  // Flesh no curl nor lift clears (the tail's root lies in it: a body spawned by an end
-  // wall) is left where it is: the bones alone are kept out, as the tail would otherwise
-  // stand on end.
-  if (flesh && hits(curl, lift)) {
-    flesh = false;
-    curl = lift = 0.0f;
-    if (hits(0.0f)) solve();
+  if (hits(0.0f)) {
+    solve();
+    // Flesh no curl nor lift clears (the tail's root lies in it: a body spawned by an end
+    // wall) is left where it is: the bones alone are kept out, as the tail would otherwise
+    // stand on end.
+    if (flesh && hits(curl, lift)) {
+      flesh = false;
+      curl = lift = 0.0f;
+      if (hits(0.0f)) solve();
+    }
   }
-  for (size_t k = 0; k < n; ++k) pose.locals[rig.tail[k]].angle_ls += curl / static_cast<float>(n) + (k == 0 ? lift : 0.0f);
+  // The turn held from lately, where it turns the same way and as far or further: as much of
+  // the way from the least that clears to it as still clears.
+  const bool further = held_curl * curl >= 0.0f && std::fabs(held_curl) >= std::fabs(curl) && held_lift * lift >= 0.0f &&
+                       std::fabs(held_lift) >= std::fabs(lift);
+  if ((held_curl != 0.0f || held_lift != 0.0f) && further && (held_curl != curl || held_lift != lift)) {
+    float lo = 0.0f, hi = 1.0f;  // fractions of the way to the held turn: lo clears, hi may not
+    if (hits(held_curl, held_lift)) {
+      bisect(lo, hi, kClearBisections, [&](float mid) { return !hits(curl + mid * (held_curl - curl), lift + mid * (held_lift - lift)); });
+    } else {
+      lo = 1.0f;
+    }
+    curl += lo * (held_curl - curl), lift += lo * (held_lift - lift);
+  }
+  turn(curl, lift);
 }
 
 void keep_head_clear(const AnimContext& ctx, const BodyFrame& body, const std::vector<Mat2x3>& model, Pose& pose) {

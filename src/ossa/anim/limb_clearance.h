@@ -15,6 +15,8 @@
 
 namespace ossa::anim {
 
+struct TailSpring;  // (secondary_motion.h)
+
 // `margin`: how far above the ground the arm keeps, metres (RigScale::arm_margin; less for a
 // hand that stands on the ground, pentapedal.h). with_flesh: its drawn outline too
 // (RigLimb::flesh_outline; not for a hand that stands on its palm).
@@ -22,7 +24,10 @@ void keep_arm_above_ground(const AnimContext& ctx, const BodyFrame& body, const 
                            float margin, Pose& pose, bool with_flesh = true);
 void keep_fin_clear(const AnimContext& ctx, const BodyFrame& body, const RigLimb& fin, const std::vector<Mat2x3>& model_fs,
                     Pose& pose);
-void keep_tail_clear(const AnimContext& ctx, const BodyFrame& body, const std::vector<Mat2x3>& model_fs, Pose& pose);
+// `tail` holds the turn it last took (TailSpring::curl, lift): kept, settling back over `dt`
+// seconds (0: a pose again within the tick), while it still clears.
+void keep_tail_clear(const AnimContext& ctx, const BodyFrame& body, const std::vector<Mat2x3>& model_fs, float dt, TailSpring& tail,
+                     Pose& pose);
 // A head (neck, skull, jaw) the body placed in the ground or a step lifts at the neck's base
 // (AnimRig::nod_bones[0]), the least that clears, the skull kept level.
 void keep_head_clear(const AnimContext& ctx, const BodyFrame& body, const std::vector<Mat2x3>& model_fs, Pose& pose);

@@ -120,12 +120,12 @@ void lift_pose(const AnimRig& rig, float raise, PoseState& state) {
 }
 
 void pose_limbs(const AnimContext& ctx, const SplinePrototypes& prototypes, const BodyFrame& body, const FootSet& feet,
-                const GaitState& gait, float motion, PoseState& state) {
+                const GaitState& gait, float motion, float dt, PoseState& state) {
   const AnimRig& rig = ctx.rig;
   Pose& pose = state.pose;
   std::vector<Mat2x3>& model = state.facing;
   press_tail(ctx, body, feet, gait, model, pose);
-  if (rig.tail_length > 0.0f) keep_tail_clear(ctx, body, model, pose);
+  if (rig.tail_length > 0.0f) keep_tail_clear(ctx, body, model, dt, state.tail, pose);
   if (rig.nod_bones[0] >= 0) keep_head_clear(ctx, body, model, pose);
   const LegIkJob ik{&ctx, &body, &feet, &pose, &model, &state.leg_dirs, gait.moving};
   ik.run();

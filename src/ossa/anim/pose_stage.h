@@ -62,9 +62,10 @@ float pose_body(const AnimContext& ctx, const BodyFrame& body, float root_vy, fl
 // The body rose by `raise` metres after pose_body (body placement's raise_body): the pose
 // follows.
 void lift_pose(const AnimRig& rig, float raise, PoseState& state);
-// The limbs (above). `motion` in [0, 1] is the speed as a fraction of the walk speed.
+// The limbs (above). `motion` in [0, 1] is the speed as a fraction of the walk speed; `dt` the
+// tick's seconds (0: the same tick posed again), over which the tail's held turn settles.
 void pose_limbs(const AnimContext& ctx, const SplinePrototypes& prototypes, const BodyFrame& body, const FootSet& feet,
-                const GaitState& gait, float motion, PoseState& state);
+                const GaitState& gait, float motion, float dt, PoseState& state);
 
 // The lazily computed outputs (see above).
 const Pose& pose_angles(const AnimRig& rig, const PoseState& state);

@@ -16,6 +16,9 @@ namespace ossa::anim {
 struct TailSpring {
   float angle = 0.0f;  // radians, summed over the tail
   float rate = 0.0f;   // radians per second
+  // What keep_tail_clear last turned the tail by to clear the level (radians: the curl over
+  // its length, the lift at its root), held while it clears and settling back.
+  float curl = 0.0f, lift = 0.0f;
 };
 // Advances the tail's spring towards its target (driven by the root's vertical speed root_vy,
 // m/s, and the body angle) and bends the tail bones by it.
