@@ -315,6 +315,8 @@ void keep_tail_clear(const AnimContext& ctx, const BodyFrame& body, const std::v
     }
     if (polyline_hits_level(ctx.level, p, static_cast<int>(n + 1), ctx.hits)) return true;
     if (!flesh) return false;
+    outline[4 * n] = outline[0];
+    if (!polyline_hits_level(ctx.level, outline, static_cast<int>(4 * n + 1), ctx.hits)) return false;
     // Flesh below the top of a box under its bone is drawn on that top (body_floor.h: soft
     // tissue flattens on the ground), so it is tested there: a whale's tail lying on the ground,
     // its flesh deeper than its bones are high, stood on end to clear the floor. A top holds
@@ -323,25 +325,25 @@ void keep_tail_clear(const AnimContext& ctx, const BodyFrame& body, const std::v
     float edge = 0.0f;
     for (size_t j = 0; j < 4 * n; ++j) edge = std::max(edge, glm::length(outline[j + 1 == 4 * n ? 0 : j + 1] - outline[j]));
     const float overhang = kFleshOverhangStretch * edge;
-    // (Only tops no higher than the bones over the point, or past the tail's ends the
-    // nearest end's, count: body_floor.h. A tail fin lying at the foot of a higher block is
-    // drawn into its face.)
-    auto bones_over = [&](float x) {
+    // (Only tops no higher than the bones over the point count, or past the bones the nearer
+    // end's: body_floor.h. A tail fin lying at the foot of a higher block is drawn into its
+    // face. The point's bone and its neighbours are asked.)
+    auto bones_over = [&](size_t k, float x) {
       float y = -INFINITY;
-      for (size_t k = 0; k < n; ++k) {
-        const glm::vec2 a = p[k], b = p[k + 1];
+      for (size_t i = k > 0 ? k - 1 : 0; i <= std::min(k + 1, n - 1); ++i) {
+        const glm::vec2 a = p[i], b = p[i + 1];
         if ((x - a.x) * (x - b.x) > 0.0f) continue;
         const float t = std::fabs(b.x - a.x) > 1e-6f ? (x - a.x) / (b.x - a.x) : 0.0f;
         y = std::max(y, a.y + t * (b.y - a.y));
       }
       if (y > -INFINITY) return y;
-      return std::fabs(x - p[0].x) < std::fabs(x - p[n].x) ? p[0].y : p[n].y;
+      return std::fabs(x - p[k].x) < std::fabs(x - p[k + 1].x) ? p[k].y : p[k + 1].y;
     };
     for (size_t j = 0; j < 4 * n; ++j) {
       const size_t k = j < 2 * n ? j / 2 : (4 * n - 1 - j) / 2;
       glm::vec2& q = outline[j];
       if (q.y >= std::max(p[k].y, p[k + 1].y)) continue;
-      const float over = bones_over(q.x) + kFloorMargin;
+      const float over = bones_over(k, q.x) + kFloorMargin;
       if (q.y >= over) continue;
       float top = NAN;
       if (ctx.ground.spans(q.x - overhang, q.x + overhang)) {
