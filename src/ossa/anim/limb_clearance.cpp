@@ -19,11 +19,15 @@ namespace {
 constexpr size_t kMaxTailBones = 48;   // keep_tail_clear curls at most this many tail bones
 constexpr float kMaxTailCurl = 1.6f;   // radians over the tail's length
 constexpr float kMaxTailLift = 1.6f;   // radians at the tail's root, when curling is not enough
-constexpr float kTailClearSettle = 2.0f;  // 1/s: a tail's held clearance turn settles back
-constexpr float kFleshOverhangStretch = 1.25f;  // as the body floor's (body_build.cpp kOverhangStretch)
-constexpr float kFloorMargin = 1e-3f;           // metres: a top as high as the bone over it still holds flesh (body_floor.h)
 constexpr int kTailLiftSteps = 4;      // ... tried in this many steps of the most lift
 constexpr int kTailCurlSteps = 4;      // ... each with this many steps of the most curl, either way
+constexpr float kTailClearSettle = 2.0f;    // 1/s: a tail's held clearance turn settles back
+constexpr float kTailClearSettled = 1e-3f;  // radians: ... and is let go below this
+// The body floor's reach (body_floor.h), as keep_tail_clear tests the flesh: a top holds flesh
+// up past its ends by the outline's longest edge times this (body_build.cpp's
+// kOverhangStretch), and a top up to kFloorMargin metres above the bone over it still counts.
+constexpr float kFleshOverhangStretch = 1.25f;
+constexpr float kFloorMargin = 1e-3f;
 constexpr size_t kMaxFinBones = 7;
 constexpr float kMaxHeadLift = 1.2f;    // radians at the neck's base
 constexpr float kHeadKeepOfHip = 0.005f;  // keep_head_clear: each head bone this clear of the level
@@ -282,7 +286,8 @@ void keep_tail_clear(const AnimContext& ctx, const BodyFrame& body, const std::v
   // tick and by none the next, as a crawling body rose and sank with its wave, flicked up and
   // down: the whales' by up to 8 m, 60-100 times in 15 s running default.json and stairs.json).
   const float keep = dt > 0.0f ? std::exp(-kTailClearSettle * dt) : 1.0f;
-  const float held_curl = tail.curl * keep, held_lift = tail.lift * keep;
+  const auto settled = [&](float turn) { return std::fabs(turn * keep) < kTailClearSettled ? 0.0f : turn * keep; };
+  const float held_curl = settled(tail.curl), held_lift = settled(tail.lift);
   auto turn = [&](float curl, float lift) {
     tail.curl = curl, tail.lift = lift;
     for (size_t k = 0; k < n; ++k) pose.locals[rig.tail[k]].angle_ls += curl / static_cast<float>(n) + (k == 0 ? lift : 0.0f);
@@ -315,6 +320,8 @@ void keep_tail_clear(const AnimContext& ctx, const BodyFrame& body, const std::v
     }
     if (polyline_hits_level(ctx.level, p, static_cast<int>(n + 1), ctx.hits)) return true;
     if (!flesh) return false;
+    // (Flattening only raises points onto the tops under them: an outline that meets nothing
+    // as it is meets nothing flattened, and most ticks stop here.)
     outline[4 * n] = outline[0];
     if (!polyline_hits_level(ctx.level, outline, static_cast<int>(4 * n + 1), ctx.hits)) return false;
     // Flesh below the top of a box under its bone is drawn on that top (body_floor.h: soft
@@ -417,7 +424,8 @@ void keep_tail_clear(const AnimContext& ctx, const BodyFrame& body, const std::v
   if ((held_curl != 0.0f || held_lift != 0.0f) && further && (held_curl != curl || held_lift != lift)) {
     float lo = 0.0f, hi = 1.0f;  // fractions of the way to the held turn: lo clears, hi may not
     if (hits(held_curl, held_lift)) {
-      bisect(lo, hi, kClearBisections, [&](float mid) { return !hits(curl + mid * (held_curl - curl), lift + mid * (held_lift - lift)); });
+      bisect(lo, hi, kClearBisections,
+             [&](float mid) { return !hits(curl + mid * (held_curl - curl), lift + mid * (held_lift - lift)); });
     } else {
       lo = 1.0f;
     }
