@@ -147,12 +147,12 @@ TEST_CASE("a snake crawls over default.json's stairs and ledges with no bone in 
 TEST_CASE("a crawling body's tail follows the steps behind it without flicking", "[game][legless]") {
   // A tail hanging over a step's edge behind a crawling body curls the least that clears it
   // (keep_tail_clear). The whales' tails cleared a corner by a curl one tick and by none the
-  // next, as the body rose and sank with its wave, and flicked up and down by up to 8 m, 60-100
-  // times in 15 s running default.json and stairs.json: their flesh, drawn resting on a top
+  // next, as the body rose and sank with its wave, and flicked up and down by up to 8 m, 28-88
+  // times in 14 s running default.json and stairs.json: their flesh, drawn resting on a top
   // and past its end (the body floor's overhang), was tested as if it hung into the corner,
   // and no turn was held. Measured after the first second (the body settling at the spawn):
   // the tail tip's height over its root changes by at most a tenth of the tail's length a tick.
-  // (Left out: the ichthyosaurus, whose tail flicked 8-13 times in those runs and now once,
+  // (Left out: the ichthyosaurus, whose tail flicked 62-71 times in those runs and now once,
   // 16-25 cm of its 1.1 m, the tick its whole body rises 15 cm onto a step: README, Known
   // limits, "A legless body climbing a step rises at once".)
   for (const char* level_name : {"default.json", "stairs.json"}) {

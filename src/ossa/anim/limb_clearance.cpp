@@ -284,7 +284,7 @@ void keep_tail_clear(const AnimContext& ctx, const BodyFrame& body, const std::v
   const float len = rig.tail_reach;  // (with its flesh)
   // The turn taken lately, settling back (a tail that cleared a step's corner by a curl one
   // tick and by none the next, as a crawling body rose and sank with its wave, flicked up and
-  // down: the whales' by up to 8 m, 60-100 times in 15 s running default.json and stairs.json).
+  // down: the whales' by up to 8 m, 28-88 times in 14 s running default.json and stairs.json).
   const float keep = dt > 0.0f ? std::exp(-kTailClearSettle * dt) : 1.0f;
   const auto settled = [&](float turn) { return std::fabs(turn * keep) < kTailClearSettled ? 0.0f : turn * keep; };
   const float held_curl = settled(tail.curl), held_lift = settled(tail.lift);
