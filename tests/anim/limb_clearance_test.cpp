@@ -6,6 +6,7 @@
 
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <map>
 #include <string>
@@ -69,6 +70,45 @@ std::vector<glm::vec2> tail_ws(const test::StageScene& s, const Pose& pose) {
 }
 
 }  // namespace
+
+TEST_CASE("limb clearance: an arm lifted off the ground keeps its elbow on the side it bends to", "[anim][limbs]") {
+  // The wrist is lifted by two-bone IK until the arm clears the ground under it; the elbow
+  // stays on its side of the line from the shoulder to the wrist. (The side was read the other
+  // way round, so every lift bent the elbow the other way: the eared seal's elbow, its fore
+  // flipper laid on the ground, went 0.3 m behind its shoulder one tick and 0.3 m in front of
+  // it the next.) A low block under the whole arm, 2 cm above its lowest point at rest.
+  for (const char* name : {"eared seal", "harbour seal"}) {
+    for (int facing : {1, -1}) {
+      INFO(name << " facing " << facing);
+      const Creature& c = example(name);
+      test::StageScene probe(c, scenes::flat_level(100.0f), 50.0f, facing);
+      REQUIRE_FALSE(probe.rig->arms.empty());
+      const RigLimb& arm = probe.rig->arms.front();
+      const std::vector<int> bones = {arm.bones[0], arm.bones[1], arm.bones[2]};
+      anim::PoseState ps;
+      anim::init_pose(*probe.rig, ps);
+      anim::pose_body(probe.ctx, probe.body, 0.0f, 0.0f, 0.0f, 0.0f, ps);
+      const std::vector<glm::vec2> rest = chain_ws(probe, ps.facing, arm.girdle_bone, bones, ps.pose);
+      float x0 = 1e30f, x1 = -1e30f, low = 1e30f;
+      for (glm::vec2 q : rest) x0 = std::min(x0, q.x), x1 = std::max(x1, q.x), low = std::min(low, q.y);
+      const Level block({Box::from_corner(0.0f, -1.0f, 100.0f, 1.0f), Box{{x0 - 0.5f, 0.0f}, {x1 + 0.5f, low + 0.02f}}}, {0.0f, 0.0f});
+      test::StageScene s(c, block, 50.0f, facing);
+      anim::PoseState pose;
+      anim::init_pose(*s.rig, pose);
+      anim::pose_body(s.ctx, s.body, 0.0f, 0.0f, 0.0f, 0.0f, pose);
+      const std::vector<glm::vec2> before = chain_ws(s, pose.facing, arm.girdle_bone, bones, pose.pose);
+      anim::keep_arm_above_ground(s.ctx, s.body, arm, pose.facing, s.rig->scale.arm_margin, pose.pose, false);
+      const std::vector<glm::vec2> after = chain_ws(s, pose.facing, arm.girdle_bone, bones, pose.pose);
+      auto side = [](const std::vector<glm::vec2>& p) {
+        const glm::vec2 a = p[1] - p[0], b = p[2] - p[0];
+        return b.x * a.y - b.y * a.x;
+      };
+      INFO("elbow side before " << side(before) << ", after " << side(after) << "; wrist y " << before[2].y << " -> " << after[2].y);
+      CHECK(after[2].y > before[2].y);  // lifted
+      CHECK(side(before) * side(after) > 0.0f);
+    }
+  }
+}
 
 TEST_CASE("limb clearance: an arm reaching into a step in front of the chest folds out of it", "[anim][limbs]") {
   const Creature& c = scenes::biped();  // the kangaroo's arms hang forward of its chest
