@@ -25,7 +25,9 @@ constexpr float kTailClearSettle = 2.0f;    // 1/s: a tail's held clearance turn
 constexpr float kTailClearSettled = 1e-3f;  // radians: ... and is let go below this
 // The body floor's reach (body_floor.h), as keep_tail_clear tests the flesh: a top holds flesh
 // up past its ends by the outline's longest edge times this (body_build.cpp's
-// kOverhangStretch), and a top up to kFloorMargin metres above the bone over it still counts.
+// kOverhangStretch), and a top up to kFloorMargin metres above the bone over it still counts
+// (the floor itself takes tops up to half the flesh's reach above the bones: the test is the
+// stricter, a tail sunk that deep curls out rather than rests on the top).
 constexpr float kFleshOverhangStretch = 1.25f;
 constexpr float kFloorMargin = 1e-3f;
 constexpr size_t kMaxFinBones = 7;
@@ -56,8 +58,9 @@ void keep_arm_above_ground(const AnimContext& ctx, const BodyFrame& body, const 
     // Keep the elbow's side: solve_two_bone_ik's bend is +1 for an elbow on the left of the
     // line from the shoulder to the wrist. (Read the other way round, every lift of the wrist
     // put the elbow on the other side: the eared seal's elbow, its fore flipper laid on the
-    // ground, went 0.3 m behind its shoulder one tick and 0.3 m in front of it the next,
-    // 150-370 times in 14 s running the shipped levels; the harbour seal's 50-290.)
+    // ground, went 0.3 m behind its shoulder one tick and 0.3 m in front of it the next: an
+    // arm joint moved more than half a hip height in a tick 14-147 times in 14 s running each
+    // shipped level, the harbour seal's 19-221; README, Known limits.)
     const glm::vec2 a = p.elbow - p.shoulder, b = p.wrist - p.shoulder;
     p.bend = b.x * a.y - b.y * a.x > 0.0f ? 1.0f : -1.0f;
     return p;
@@ -326,7 +329,8 @@ void keep_tail_clear(const AnimContext& ctx, const BodyFrame& body, const std::v
     if (polyline_hits_level(ctx.level, p, static_cast<int>(n + 1), ctx.hits)) return true;
     if (!flesh) return false;
     // (Flattening only raises points onto the tops under them: an outline that meets nothing
-    // as it is meets nothing flattened, and most ticks stop here.)
+    // as it is would meet nothing flattened, but for a point raised near a box above it, which
+    // this skips; most ticks stop here.)
     outline[4 * n] = outline[0];
     if (!polyline_hits_level(ctx.level, outline, static_cast<int>(4 * n + 1), ctx.hits)) return false;
     // Flesh below the top of a box under its bone is drawn on that top (body_floor.h: soft
