@@ -196,45 +196,6 @@ SimResult run_script(Entity& entity, const Level& level, const std::vector<Scrip
   return result;
 }
 
-float penetration_depth(const Level& level, glm::vec2 p) {
-  std::vector<int> hits;
-  level.overlapping(Box{p - glm::vec2(1e-6f), p + glm::vec2(1e-6f)}, hits);
-  float depth = 0.0f;
-  for (int h : hits) {
-    const Box& b = level.box(h);
-    const float d = std::min({p.x - b.min_ws.x, b.max_ws.x - p.x, p.y - b.min_ws.y, b.max_ws.y - p.y});
-    depth = std::max(depth, d);
-  }
-  return depth;
-}
-
-float segment_penetration(const Level& level, glm::vec2 a, glm::vec2 b, const std::vector<int>& boxes) {
-  float depth = 0.0f;
-  for (int h : boxes) {
-    const Box& box = level.box(h);
-    // depth(t) = min of four linear functions of t along a + t (b - a): its maximum over
-    // [0, 1] is at 0, 1, or where two of them are equal.
-    const glm::vec2 d = b - a;
-    const float c0[4] = {a.x - box.min_ws.x, box.max_ws.x - a.x, a.y - box.min_ws.y, box.max_ws.y - a.y};
-    const float c1[4] = {d.x, -d.x, d.y, -d.y};
-    auto at = [&](float t) {
-      float m = 1e30f;
-      for (int k = 0; k < 4; ++k) m = std::min(m, c0[k] + c1[k] * t);
-      return m;
-    };
-    depth = std::max({depth, at(0.0f), at(1.0f)});
-    for (int i = 0; i < 4; ++i) {
-      for (int k = i + 1; k < 4; ++k) {
-        const float slope = c1[i] - c1[k];
-        if (std::fabs(slope) < 1e-12f) continue;
-        const float t = (c0[k] - c0[i]) / slope;
-        if (t > 0.0f && t < 1.0f) depth = std::max(depth, at(t));
-      }
-    }
-  }
-  return depth;
-}
-
 void SimProbe::observe(const Animator& a, const Level& level) {
   const AnimRig& rig = a.rig();
   const Skeleton& sk = rig.skeleton;

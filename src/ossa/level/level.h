@@ -165,4 +165,12 @@ class Level {
   std::uint64_t revision_ = 0;
 };
 
+// Deepest a point lies inside any collider (0 when outside or on a surface), metres.
+float penetration_depth(const Level& level, glm::vec2 p_ws);
+// Deepest any point of the segment a-b lies inside the colliders `boxes` (indices into the
+// level), metres: exact, not sampled (inside a box the depth is the least distance to its four
+// sides, concave along a segment, so its largest value lies at an end of the part of the
+// segment inside the box or where two sides' distances meet).
+float segment_penetration(const Level& level, glm::vec2 a_ws, glm::vec2 b_ws, const std::vector<int>& boxes);
+
 }  // namespace ossa
