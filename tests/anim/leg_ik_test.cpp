@@ -198,9 +198,11 @@ TEST_CASE("leg flesh: the drawn leg posed with its bones meets a box its bones c
       // The shin's front-most flesh point about its middle, and where the shin's bone lies at
       // its height.
       glm::vec2 front(-1e30f);
+      Mat2x3 frames[kLimbSkinFrames] = {placed[leg.bones[0]], placed[leg.bones[1]], placed[leg.bones[2]]};
+      anim::limb_skin_frames(leg.flesh_mids, frames);
       for (const LimbFleshPoint& q : leg.flesh_outline) {
-        if (q.bone != 1 || q.bone2 >= 0 || std::fabs(q.local.x - 0.5f * leg.lower) > 0.25f * leg.lower) continue;
-        const glm::vec2 p = ik.middle + q.local.x * ik.lower_dir + q.local.y * glm::vec2(-ik.lower_dir.y, ik.lower_dir.x);
+        if (q.count != 1 || q.frame[0] != 1 || std::fabs(q.local[0].x - 0.5f * leg.lower) > 0.25f * leg.lower) continue;
+        const glm::vec2 p = anim::posed_flesh(q, frames);
         if (p.x > front.x) front = p;
       }
       INFO("facing " << facing << " leg " << i);

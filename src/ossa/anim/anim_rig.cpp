@@ -343,14 +343,18 @@ void build_crawl_flesh(AnimRig& rig, const RigRoles& roles) {
   if (rig.crawl_flesh.empty()) rig.crawl_bones.clear();
 }
 
-// The outline of a limb's own part (the one with most points on its bones) above `above_y`
-// (model space), point by point (RigLeg::flesh_outline): one that follows the girdle is left
-// out, its neighbours span the gap; a mid joint's point (bone -1) follows the two bones about
-// the nearest joint (at the hand's or foot's end, the toe's, is left out). *margin: per bone,
-// the farthest its points lie from it. Thinned evenly to at most kLimbFleshPoints.
-std::vector<LimbFleshPoint> limb_flesh(const AnimRig& rig, const RigRoles& roles, const std::array<int, 3>& bones, float above_y,
-                                       std::array<float, 3>* margin) {
+// The outline of a limb's own part (the one with most points on its bones), point by point
+// (RigLeg::flesh_outline), each skinned as the body skins it:
+// its weights on the limb's bones and on the mid joints between them (knee, ankle, the foot's
+// level frame: *mids, their parent and child the limb's bone slots). Weight on other frames
+// (the girdle's) is left out; a point that follows them more than the limb is left out
+// whole, its neighbours span the gap. *margin: per bone, the farthest a point lies from it in
+// a frame on it (a mid joint's: from the joint; the level frame's: from the foot). Thinned
+// evenly to at most kLimbFleshPoints.
+std::vector<LimbFleshPoint> limb_flesh(const AnimRig& rig, const RigRoles& roles, const std::array<int, 3>& bones,
+                                       std::array<float, 3>* margin, std::vector<MidJoint>* mids) {
   auto bone_of = [&](int bone) { return static_cast<int>(std::find(bones.begin(), bones.end(), bone) - bones.begin()); };
+  mids->clear();
   std::vector<int> on_limb;
   for (const RigRoles::FleshPoint& f : roles.flesh) {
     if (bone_of(f.bone) >= 3) continue;
@@ -359,33 +363,61 @@ std::vector<LimbFleshPoint> limb_flesh(const AnimRig& rig, const RigRoles& roles
   }
   if (on_limb.empty()) return {};
   const int own = static_cast<int>(std::max_element(on_limb.begin(), on_limb.end()) - on_limb.begin());
-  const glm::vec2 joints[4] = {bone_start(rig.model_rest[bones[0]]), bone_start(rig.model_rest[bones[1]]), bone_start(rig.model_rest[bones[2]]),
-                               bone_end(rig.model_rest[bones[2]], rig.skeleton.length(bones[2]))};
-  const float longest = std::max({rig.skeleton.length(bones[0]), rig.skeleton.length(bones[1]), rig.skeleton.length(bones[2])});
-  auto local = [&](int k, glm::vec2 p) {
-    const glm::vec2 q = inverse(rig.model_rest[bones[k]]).apply(p);
-    const float len = rig.skeleton.length(bones[k]);
-    float& m = (*margin)[static_cast<size_t>(k)];
-    m = std::max(m, glm::length(q - glm::vec2(std::clamp(q.x, 0.0f, len), 0.0f)));
-    return q;
+  const int bone_count = rig.skeleton.bone_count();
+  // The skin frame of palette entry e on this limb (-1: none of the limb's), its mid joint
+  // taken into *mids the first time.
+  std::vector<int> frame_of_entry(static_cast<size_t>(bone_count) + roles.mid_joints.size(), -2);
+  auto frame_of = [&](int e) {
+    if (static_cast<size_t>(e) >= frame_of_entry.size()) return -1;
+    int& f = frame_of_entry[static_cast<size_t>(e)];
+    if (f != -2) return f;
+    f = -1;
+    if (e < bone_count) {
+      const int k = bone_of(e);
+      if (k < 3) f = k;
+      return f;
+    }
+    MidJoint j = roles.mid_joints[static_cast<size_t>(e - bone_count)];
+    const int parent = bone_of(j.parent), child = bone_of(j.child);
+    if (parent < 3 && child < 3 && mids->size() < kLimbMidFrames) {
+      j.parent = parent;
+      j.child = child;
+      f = 3 + static_cast<int>(mids->size());
+      mids->push_back(j);
+    }
+    return f;
   };
   std::vector<LimbFleshPoint> outline;
   for (const RigRoles::FleshPoint& f : roles.flesh) {
-    if (f.part != own || f.position_ms.y <= above_y) continue;
-    int k = bone_of(f.bone);
-    if (k < 3) {
-      outline.push_back({k, local(k, f.position_ms)});
-      continue;
+    if (f.part != own) continue;
+    LimbFleshPoint q;
+    float total = 0.0f;
+    for (size_t i = 0; i < 4; ++i) {
+      if (!(f.weights[i] > 0.0f)) continue;
+      const int frame = frame_of(f.entries[i]);
+      if (frame < 0) continue;
+      const size_t c = static_cast<size_t>(q.count++);
+      q.frame[c] = static_cast<uint8_t>(frame);
+      q.weight[c] = f.weights[i];
+      total += f.weights[i];
+      int k;  // the bone the frame lies on
+      float off;
+      if (frame < 3) {
+        k = frame;
+        q.local[c] = inverse(rig.model_rest[bones[static_cast<size_t>(k)]]).apply(f.position_ms);
+        off = glm::length(q.local[c] - glm::vec2(std::clamp(q.local[c].x, 0.0f, rig.skeleton.length(bones[static_cast<size_t>(k)])), 0.0f));
+      } else {
+        const MidJoint& j = (*mids)[static_cast<size_t>(frame - 3)];
+        k = j.child;
+        q.local[c] = j.inverse_bind.apply(f.position_ms);
+        off = glm::length(q.local[c]);
+      }
+      float& m = (*margin)[static_cast<size_t>(k)];
+      m = std::max(m, off);
     }
-    if (f.bone != -1) continue;
-    k = 0;  // the joint nearest: the upper bone's root, the knee or elbow, the ankle or wrist, the toe's
-    for (int j = 1; j < 4; ++j) {
-      if (glm::length(f.position_ms - joints[j]) < glm::length(f.position_ms - joints[k])) k = j;
-    }
-    // (Not the toe's; nor one far from every joint: another limb's, in a part they share.)
-    if (k == 3 || glm::length(f.position_ms - joints[k]) > 0.5f * longest) continue;
-    if (k == 0) outline.push_back({0, local(0, f.position_ms)});
-    else outline.push_back({k - 1, local(k - 1, f.position_ms), k, local(k, f.position_ms)});
+    if (!(total >= 0.5f)) continue;
+    for (int i = 0; i < q.count; ++i) q.weight[static_cast<size_t>(i)] /= total;
+    outline.push_back(q);
   }
   const size_t n = outline.size(), kept = std::min(n, kLimbFleshPoints);
   std::vector<LimbFleshPoint> thinned;
@@ -419,7 +451,7 @@ void build_foot_flesh(AnimRig& rig, const RigRoles& roles) {
     const anim::FootSpan span = anim::foot_span_ws(leg, 1);
     leg.flesh_back = std::max(0.0f, span.lo - lo);
     leg.flesh_front = std::max(0.0f, hi - span.hi);
-    leg.flesh_outline = limb_flesh(rig, roles, leg.bones, contact.y + rig.scale.foot_box, &leg.flesh_margin);
+    leg.flesh_outline = limb_flesh(rig, roles, leg.bones, &leg.flesh_margin, &leg.flesh_mids);
   }
 }
 
@@ -899,9 +931,10 @@ RigRoles rig_roles(const Creature& creature) {
         const BodyVertex& v = body->vertices[i];
         const size_t most = static_cast<size_t>(std::max_element(v.weights.begin(), v.weights.end()) - v.weights.begin());
         const int bone = v.bones[most] < bones ? static_cast<int>(v.bones[most]) : -1;
-        roles.flesh.push_back({bone, v.position_ms, static_cast<int>(p)});
+        roles.flesh.push_back({bone, v.position_ms, static_cast<int>(p), v.bones, v.weights});
       }
     }
+    roles.mid_joints = body->mid_joints;
   }
   return roles;
 }
@@ -959,7 +992,7 @@ std::shared_ptr<const AnimRig> build_anim_rig(const Skeleton& skeleton, const Po
   rig->body_half_length = std::max(0.5f * (x_max - x_min), 0.05f);
   rig->scale = RigScale::of(2.0f * rig->body_half_length);
   build_foot_flesh(*rig, roles);
-  for (RigLimb& arm : rig->arms) arm.flesh_outline = limb_flesh(*rig, roles, arm.bones, -INFINITY, &arm.flesh_margin);
+  for (RigLimb& arm : rig->arms) arm.flesh_outline = limb_flesh(*rig, roles, arm.bones, &arm.flesh_margin, &arm.flesh_mids);
   for (int b = 0; b < sk.bone_count(); ++b) {  // the extent from the root counts bone ends too
     const float e = bone_end(rig->model_rest[b], sk.length(b)).x;
     x_min = std::min(x_min, e);

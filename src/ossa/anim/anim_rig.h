@@ -14,6 +14,7 @@
 
 #include <array>
 #include <cmath>
+#include <cstdint>
 #include <memory>
 #include <vector>
 
@@ -23,6 +24,7 @@
 #include "ossa/anim/rig_scale.h"
 #include "ossa/gen/creature.h"
 #include "ossa/level/box.h"
+#include "ossa/skeleton/mid_joint.h"
 #include "ossa/skeleton/pose.h"
 #include "ossa/skeleton/skeleton.h"
 
@@ -32,14 +34,21 @@ namespace ossa {
 inline constexpr float kReachLimit = 0.985f;
 
 struct LimbFleshPoint {             // a point of a leg's or an arm's drawn outline
-  int bone = 0;                     // 0 upper, 1 lower, 2 foot (hand)
-  glm::vec2 local{0.0f};            // in that bone's frame
-  // A point about the knee or the ankle (a mid joint's) follows both bones there, halfway:
-  // this one the bone after `bone` (-1: none), local2 in its frame.
-  int bone2 = -1;
-  glm::vec2 local2{0.0f};
+  // Skinned as the drawn body skins it (body_mesh.h): a blend of up to four of the limb's skin
+  // frames (limb_skin_frames: 0 upper, 1 lower, 2 foot or hand, 3 on its mid joints), each
+  // weight with the point in that frame at rest. Weights sum to 1.
+  int count = 0;
+  std::array<uint8_t, 4> frame{};
+  std::array<float, 4> weight{};
+  std::array<glm::vec2, 4> local{};
 };
-inline constexpr size_t kLimbFleshPoints = 64;
+// A limb's skin frames: its three bones' and at most this many mid joints' (knee, ankle, the
+// foot's level frame: skeleton/mid_joint.h).
+inline constexpr size_t kLimbMidFrames = 9;
+inline constexpr size_t kLimbSkinFrames = 3 + kLimbMidFrames;
+// A limb's outline keeps at most this many points (the examples' legs have up to 75; thinned
+// to 64, the triceratops's shoulder lost the points about its corner, 2 cm of flesh).
+inline constexpr size_t kLimbFleshPoints = 96;
 
 struct RigLeg {
   std::array<int, 3> bones{};       // upper, lower, foot
@@ -72,15 +81,19 @@ struct RigLeg {
   // behind the bones' span above and ahead of it, facing +x, metres (0: no drawn body). A
   // foothold keeps it off the level, not only the bones (foothold.h flesh_span_ws).
   float flesh_back = 0.0f, flesh_front = 0.0f;
-  // The drawn leg's outline above the foot's sole (RigRoles::flesh, in order round the leg's
-  // own part): each point in the frame at rest of the leg bone it follows most (0 upper, 1
-  // lower, 2 foot; x along the bone, y across), or of the two about the joint it lies at. Posed with the leg's bones, it is the outline
-  // the swing and the stance keep off the level, not only the bones (leg_geometry.h
-  // leg_flesh_hits). Empty: no drawn body. At most kLimbFleshPoints.
+  // The drawn leg's outline, its sole too (RigRoles::flesh, in order round the leg's own
+  // part), each point skinned as the body skins it (LimbFleshPoint: the leg's bones, the
+  // knee's and ankle's mid joints, a hoof's or toes' level frame). Posed with the leg's bones,
+  // it is the outline the swing and the stance keep off the level, not only the bones
+  // (leg_geometry.h leg_flesh_hits; a standing leg's against boxes rising above its foot). Empty: no
+  // drawn body. At most kLimbFleshPoints.
   std::vector<LimbFleshPoint> flesh_outline;
-  // Per bone (upper, lower, foot): the farthest a point of flesh_outline that follows it lies
-  // from it, metres (a bound below the posed bones: leg_ik.cpp's quick test).
+  // Per bone (upper, lower, foot): the farthest a point of flesh_outline lies from it in a
+  // frame on it, metres (a bound below the posed bones: leg_ik.cpp's quick test).
   std::array<float, 3> flesh_margin{};
+  // The mid joints flesh_outline follows (skin frames 3, 4, …), their parent and child the
+  // limb's bone slots (0 upper, 1 lower, 2 foot), not bones.
+  std::vector<MidJoint> flesh_mids;
   // Three-segment legs (a long foot standing on its tip: hooves, paws, bird feet; issue 29):
   // the foot bone is coupled to the leg instead of keeping its rest angle. A fore foot lies in
   // line with the forearm (the carpus straight under load); a hind foot keeps its rest angle to
@@ -124,6 +137,7 @@ struct RigLimb {                    // an arm, fin or wing: a chain hanging from
   // its clearance keeps it off the level, not only the bones (limb_clearance.h). Empty: none.
   std::vector<LimbFleshPoint> flesh_outline;
   std::array<float, 3> flesh_margin{};
+  std::vector<MidJoint> flesh_mids;
 };
 
 struct AnimRig {
@@ -337,12 +351,17 @@ struct RigRoles {
   // along it: the tail's is kept out of the level with its bones (AnimRig::tail_flesh), the
   // trunk's and the head's meet walls (AnimRig::flesh). rig_roles reads it from a generated
   // creature's body (body_mesh.h); empty: the bones alone (a rigged character's sprites).
+  // With each point its skinning (palette entries: the bones, then mid_joints; weights), from
+  // which the limbs' outlines are posed as the body draws them (RigLeg::flesh_outline).
   struct FleshPoint {
     int bone = -1;
     glm::vec2 position_ms{0.0f};
     int part = 0;
+    std::array<uint8_t, 4> entries{};
+    std::array<float, 4> weights{};
   };
   std::vector<FleshPoint> flesh;
+  std::vector<MidJoint> mid_joints;
 };
 
 // The roles of a generated creature: its spine chains, skull and LimbLayout (legs grouped by

@@ -630,6 +630,10 @@ float allowed_move(const AnimContext& ctx, const BodyFrame& body, const std::vec
   const BodyMotionResult swept = sweep_body(ctx, body, model_fs, dx, boxes);
   if (swept.hit_wall) handoff.wall_ahead = true;
   dx = limit_by_legs(ctx, body, feet, swept.dx, handoff);
+  if (const float kept = stance_flesh_advance(ctx, body, feet, dx); kept != dx) {
+    dx = kept;
+    handoff.wall_ahead = true;
+  }
   const float ledge = limit_by_ledges(ctx, body, feet, stride, dx);  // a face it cannot climb
   if (ledge == 0.0f && dx != 0.0f) handoff.wall_ahead = true;
   return ledge;

@@ -7,12 +7,14 @@
 
 #include <algorithm>
 #include <cmath>
+#include <vector>
 
 #include <glm/geometric.hpp>
 #include <glm/vec2.hpp>
 
 #include "ossa/anim/anim_state.h"
 #include "ossa/math/two_bone_ik.h"
+#include "ossa/skeleton/mid_joint.h"
 
 namespace ossa::anim {
 
@@ -96,11 +98,34 @@ inline float leg_overreach(const AnimContext& ctx, const BodyFrame& body, int le
 bool stance_leg_hits(const AnimContext& ctx, const BodyFrame& body, int leg, const FootState& foot, glm::vec2 joint_fs,
                      bool with_flesh = false);
 
-// A point of a limb's drawn outline (anim_rig.h LimbFleshPoint) posed with the limb's three bone
-// frames (upper, lower, foot or hand), in their space.
+// How far the body must go back (world metres, >= 0) for its stance legs' drawn outline
+// (RigLeg::flesh_outline, as the leg IK draws each leg, its foot where it stands) to leave the
+// faces of the boxes ahead of their feet that rise above them (a triceratops blocked at a post,
+// its shoulder's flesh in the post's corner; a pigeon blocked at a riser, its knee in it): 0
+// when clear, or when no shift up to `most` clears them, or where it would put a leg's outline
+// into a box it is not in now. Standing still: its feet stay, its legs follow the body.
+float stance_flesh_push(const AnimContext& ctx, const BodyFrame& body, const FootSet& feet, float most);
+// How far of `dx` (world metres along x) the body may move with its stance legs' drawn outline,
+// the legs following it, going no deeper into the face of a box ahead of a foot that rises
+// higher than the legs climb (a wall: the triceratops's shoulder met default.json's post a
+// tick before its trunk did, the pigeon's knee a riser as it tried the way ahead again).
+float stance_flesh_advance(const AnimContext& ctx, const BodyFrame& body, const FootSet& feet, float dx);
+
+// A limb's skin frames (anim_rig.h kLimbSkinFrames) from its three bone frames frames[0..2]:
+// frames[3 + i] the frame of mid joint mids[i] (skeleton/mid_joint.h), as the body's palette
+// has it.
+inline void limb_skin_frames(const std::vector<MidJoint>& mids, Mat2x3* frames) {
+  for (size_t i = 0; i < mids.size(); ++i) {
+    const MidJoint& j = mids[i];
+    frames[3 + i] = j.level ? level_frame(j, frames[j.child]) : mid_joint_frame(frames[j.parent], frames[j.child], j.turn, j.rest_half);
+  }
+}
+// A point of a limb's drawn outline (anim_rig.h LimbFleshPoint) posed with the limb's skin
+// frames (limb_skin_frames), in their space.
 inline glm::vec2 posed_flesh(const LimbFleshPoint& q, const Mat2x3* frames) {
-  const glm::vec2 a = frames[q.bone].apply(q.local);
-  return q.bone2 < 0 ? a : 0.5f * (a + frames[q.bone2].apply(q.local2));
+  glm::vec2 p = q.weight[0] * frames[q.frame[0]].apply(q.local[0]);
+  for (int i = 1; i < q.count; ++i) p += q.weight[static_cast<size_t>(i)] * frames[q.frame[static_cast<size_t>(i)]].apply(q.local[static_cast<size_t>(i)]);
+  return p;
 }
 
 // Does the leg's drawn outline (RigLeg::flesh_outline), posed with its bones (the upper from
@@ -109,5 +134,8 @@ inline glm::vec2 posed_flesh(const LimbFleshPoint& q, const Mat2x3* frames) {
 // false for a leg without one.
 bool leg_flesh_hits(const AnimContext& ctx, const BodyFrame& body, const RigLeg& info, glm::vec2 joint_fs, const TwoBoneIkResult& ik,
                     glm::vec2 foot_dir, float top_over = -INFINITY);
+// How deep that outline lies in those colliders, metres (level.h segment_penetration; 0: clear).
+float leg_flesh_depth(const AnimContext& ctx, const BodyFrame& body, const RigLeg& info, glm::vec2 joint_fs, const TwoBoneIkResult& ik,
+                      glm::vec2 foot_dir, float top_over = -INFINITY);
 
 }  // namespace ossa::anim

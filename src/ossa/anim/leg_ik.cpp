@@ -21,6 +21,14 @@ constexpr float kCarryAheadOfLeg = 0.5f;
 // ... or, last, turned whole about the joint in steps of this (radians), up to this many each way.
 constexpr float kWholeTurnStep = kPi / 12.0f;
 constexpr float kWholeTurnSteps = 6.0f;
+// The swing's candidates kept for when none clears with its flesh (leg_ik: planned, lifted,
+// tucked, drawn back, carried ahead, turned whole either way), and how much less deep another
+// candidate's flesh must lie than the bones-only escape's to be taken instead, metres.
+constexpr size_t kTriedCandidates = 20;
+constexpr float kFleshDepthGain = 1e-3f;
+// A swinging leg's flesh meets boxes whose top lies this far above the ground it steps from or
+// to, metres (not that ground).
+constexpr float kGroundSlack = 1e-3f;
 // A stance leg whose ankle lies further from the joint than the leg's length by more than this
 // fraction of it is stretched (the leg IK cannot reach the foot).
 constexpr float kStretchedOfLeg = 0.01f;
@@ -298,14 +306,30 @@ bool LegIkJob::run() const {
       const float F = info.foot_length;  // ankle to toe (to the contact point, or along a flat foot)
       glm::vec2 dir = foot_dir;  // the foot's direction for the candidate being tested
       bool flesh = !info.flesh_outline.empty();
+      // Its flesh rests on the ground it steps from or to where it meets it (the body floor draws
+      // it on it, body_floor.h), not on any box rising higher (nor, stretched, on the ground it
+      // stands on).
+      const float ground_over = (f.state == LegState::kStance ? f.pos_ws.y : std::min(f.from_ws.y, f.to_ws.y)) + kGroundSlack;
+      // The candidates whose bones cleared but not their flesh (where none clears, the one
+      // whose flesh lies least deep).
+      struct Tried {
+        TwoBoneIkResult ik;
+        glm::vec2 dir;
+      };
+      std::array<Tried, kTriedCandidates> tried;
+      size_t tried_count = 0;
       auto leg_hits = [&](const TwoBoneIkResult& r) {
         const glm::vec2 tip = r.end + F * dir;
         const glm::vec2 p[4] = {b.to_ws(joint), b.to_ws(r.middle), b.to_ws(r.end), b.to_ws(tip)};
-        return polyline_hits_level(c.level, p, F > 0.0f ? 4 : 3, c.hits) || (flesh && leg_flesh_hits(c, b, info, joint, r, dir));
+        if (polyline_hits_level(c.level, p, F > 0.0f ? 4 : 3, c.hits)) return true;
+        if (!flesh || !leg_flesh_hits(c, b, info, joint, r, dir, ground_over)) return false;
+        if (tried_count < tried.size()) tried[tried_count++] = {r, dir};
+        return true;
       };
       const float tip_y = ik.end.y + F * foot_dir.y;
       const float min_y = std::min({joint.y, ik.middle.y, ik.end.y, tip_y});
-      // (The flesh lies no further below than each bone's margin; a mid joint's point half-way.)
+      // (The flesh lies no further below than each bone's margin: a point on a mid joint's frame
+      // within it of the joint, on the level frame within it of the foot's end.)
       const float flesh_y = std::min({std::min(joint.y, ik.middle.y) - info.flesh_margin[0], std::min(ik.middle.y, ik.end.y) - info.flesh_margin[1],
                                       std::min(ik.end.y, tip_y) - info.flesh_margin[2]});
       // The first candidate (bisected) that clears, from lifted to turned whole: false if none.
@@ -388,9 +412,22 @@ bool LegIkJob::run() const {
         return true;
       };
       if (!near.clear_above(flesh ? std::min(min_y, flesh_y) : min_y) && leg_hits(ik) && !escape() && flesh) {
+        // None clears with its flesh: the bones alone, unless a candidate tried whose bones
+        // clear lays its flesh less deep than that (the pigeon running over rough.json's
+        // blocks: a foot's flesh 7.9 mm in a block's corner, 4.0 mm with the least deep).
+        const size_t with_flesh = tried_count;
         flesh = false;
         dir = foot_dir;
         if (leg_hits(ik)) escape();
+        float least = leg_flesh_depth(c, b, info, joint, ik, foot_dir, ground_over) - kFleshDepthGain;
+        for (size_t k = 0; k < with_flesh && least > 0.0f; ++k) {
+          const float d = leg_flesh_depth(c, b, info, joint, tried[k].ik, tried[k].dir, ground_over);
+          if (d < least) {
+            least = d;
+            ik = tried[k].ik;
+            foot_dir = tried[k].dir;
+          }
+        }
       }
     }
     (*leg_dirs)[i] = {ik.upper_dir, ik.lower_dir, foot_dir};

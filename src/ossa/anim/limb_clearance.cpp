@@ -71,7 +71,10 @@ void keep_arm_above_ground(const AnimContext& ctx, const BodyFrame& body, const 
   const float reach = n > 1 ? std::max({arm.flesh_margin[0], arm.flesh_margin[1], arm.flesh_margin[2]}) : 0.0f;
   std::array<glm::vec2, kLimbFleshPoints + 1> flesh_pts;
   auto pose_flesh = [&](const ArmPose& q) {
-    for (size_t i = 0; i < n; ++i) flesh_pts[i] = posed_flesh(arm.flesh_outline[i], q.m.data());
+    if (n == 0) return;
+    Mat2x3 frames[kLimbSkinFrames] = {q.m[0], q.m[1], q.m[2]};
+    limb_skin_frames(arm.flesh_mids, frames);
+    for (size_t i = 0; i < n; ++i) flesh_pts[i] = posed_flesh(arm.flesh_outline[i], frames);
   };
   auto set_wrist = [&](const ArmPose& p, glm::vec2 target) {
     const TwoBoneIkResult ik = solve_two_bone_ik(p.shoulder, l1, l2, target, p.bend);

@@ -8,6 +8,7 @@
 #include "ossa/anim/body_motion.h"
 #include "ossa/anim/foothold.h"
 #include "ossa/anim/gait_clock.h"
+#include "ossa/anim/leg_geometry.h"
 
 namespace ossa {
 
@@ -197,7 +198,7 @@ float path_height(const AnimContext& ctx, const BodyFrame& body, const std::vect
 }
 
 float push_back_from_face(const AnimContext& ctx, const BodyFrame& body, const std::vector<Mat2x3>& model_fs, std::vector<Box>& boxes,
-                          bool flesh) {
+                          bool flesh, float most, const FootSet* stance, float legs_most) {
   const AnimRig& rig = ctx.rig;
   if (rig.body_slabs.empty()) return 0.0f;
   body_boxes(rig, body, model_fs, true, &boxes);
@@ -247,21 +248,31 @@ float push_back_from_face(const AnimContext& ctx, const BodyFrame& body, const s
       if (within(segs[k], segs[k + 1], ctx.level.box(h), &x0, &x1)) meet(ctx.level.box(h), x0, x1);
     }
   }
-  if (!(push > 0.0f)) return 0.0f;
-  push += 1e-3f;
-  // Back there, nothing of the body may be in a box (a gap narrower than the body: it stays).
-  const glm::vec2 shift(-body.facing * push, 0.0f);
-  for (size_t k = 0; k < parts; ++k) {
-    if (ctx.level.first_overlap(Box{boxes[k].min_ws + shift, boxes[k].max_ws + shift})) return 0.0f;
-  }
-  for (size_t k = 0; k < segs.size(); k += 2) {
-    const glm::vec2 a = segs[k] + shift, b = segs[k + 1] + shift;
-    ctx.hits.clear();
-    ctx.level.overlapping(Box{glm::min(a, b), glm::max(a, b)}, ctx.hits);
-    float x0, x1;
-    for (int h : ctx.hits) {
-      if (within(a, b, ctx.level.box(h), &x0, &x1)) return 0.0f;
+  // Back there, nothing of the body may be in a box (a gap narrower than the body: it stays):
+  // the trunk's bones (and flesh, when asked), the hull's boxes too where `parts_too`.
+  auto clear_at = [&](float back, bool parts_too) {
+    const glm::vec2 shift(-body.facing * back, 0.0f);
+    for (size_t k = 0; parts_too && k < parts; ++k) {
+      if (ctx.level.first_overlap(Box{boxes[k].min_ws + shift, boxes[k].max_ws + shift})) return false;
     }
+    for (size_t k = 0; k < segs.size(); k += 2) {
+      const glm::vec2 a = segs[k] + shift, b = segs[k + 1] + shift;
+      ctx.hits.clear();
+      ctx.level.overlapping(Box{glm::min(a, b), glm::max(a, b)}, ctx.hits);
+      float x0, x1;
+      for (int h : ctx.hits) {
+        if (within(a, b, ctx.level.box(h), &x0, &x1)) return false;
+      }
+    }
+    return true;
+  };
+  if (push > 0.0f) push += 1e-3f;
+  if (push > most || (push > 0.0f && !clear_at(push, true))) push = 0.0f;
+  // The stance legs' outline goes back with the legs' own test (the hull's boxes are a bound
+  // that may lie over a tread the body stands below: a pigeon's neck over a riser's top).
+  if (stance) {
+    const float legs = stance_flesh_push(ctx, body, *stance, legs_most);
+    if (legs > push && clear_at(legs, false)) push = legs;
   }
   return push;
 }

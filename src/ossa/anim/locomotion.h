@@ -134,9 +134,11 @@ float path_height(const AnimContext& ctx, const BodyFrame& body, const std::vect
 // when clear, or where the body there would meet another box). flesh: the trunk's and the
 // head's drawn flesh (AnimRig::flesh) as segments too (falling: a deer's muzzle came down
 // 2.7 cm into drops.json's far pit wall, its skull clear). Not on the ground, where a chest
-// over a tread ahead lies on it (body_floor.h), not in a face.
+// over a tread ahead lies on it (body_floor.h), not in a face. 0 too where the body would go
+// back further than `most`. stance: standing on these feet, the stance legs' drawn outline too,
+// the legs following the body, no further than legs_most (leg_geometry.h stance_flesh_push).
 float push_back_from_face(const AnimContext& ctx, const BodyFrame& body, const std::vector<Mat2x3>& model_fs, std::vector<Box>& boxes,
-                          bool flesh = false);
+                          bool flesh, float most, const FootSet* stance = nullptr, float legs_most = 0.0f);
 // How far the legs reach for the ground, in [0, 1]: tucked while rising or high above it.
 float reach_extension(const AnimContext& ctx, const BodyFrame& body, const LocomotionState& loco);
 // Stage A4. No foot planted yet: may the body itself meet the ground (no foot stands, and it
