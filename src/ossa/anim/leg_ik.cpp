@@ -411,7 +411,10 @@ bool LegIkJob::run() const {
         foot_dir = dir;
         return true;
       };
-      if (!near.clear_above(flesh ? std::min(min_y, flesh_y) : min_y) && leg_hits(ik) && !escape() && flesh) {
+      // (The flesh meets only boxes rising above the ground it steps from or to: on flat
+      // ground, none.)
+      const bool flesh_near = flesh && !near.clear_above(flesh_y) && std::max(near.base, near.top) > ground_over;
+      if ((!near.clear_above(min_y) || flesh_near) && leg_hits(ik) && !escape() && flesh) {
         // None clears with its flesh: the bones alone, unless a candidate tried whose bones
         // clear lays its flesh less deep than that (the pigeon running over rough.json's
         // blocks: a foot's flesh 7.9 mm in a block's corner, 4.0 mm with the least deep).
