@@ -24,6 +24,24 @@ constexpr int kFleshPushTries = 4;
 // stance_flesh_advance: halvings of the move that would take the outline deeper.
 constexpr int kFleshAdvanceBisections = 6;
 
+// A leg's drawn outline (RigLeg::flesh_outline) posed with its bones (the upper from joint_fs
+// along ik.upper_dir, the lower from ik.middle, the foot from ik.end along foot_dir; frame
+// space) into p[0..n] in world space, closed (p[n] = p[0]); its bounds. n: the outline's size.
+using LegOutline = std::array<glm::vec2, kLimbFleshPoints + 1>;
+Box pose_leg_outline(const BodyFrame& body, const RigLeg& info, glm::vec2 joint_fs, const TwoBoneIkResult& ik, glm::vec2 foot_dir,
+                     LegOutline& p) {
+  const size_t n = info.flesh_outline.size();
+  Mat2x3 frames[kLimbSkinFrames] = {frame_matrix(ik.upper_dir, joint_fs), frame_matrix(ik.lower_dir, ik.middle), frame_matrix(foot_dir, ik.end)};
+  limb_skin_frames(info.flesh_mids, frames);
+  Box bound{glm::vec2(1e30f), glm::vec2(-1e30f)};
+  for (size_t k = 0; k < n; ++k) {
+    p[k] = body.to_ws(posed_flesh(info.flesh_outline[k], frames));
+    bound = bound.united(Box{p[k], p[k]});
+  }
+  p[n] = p[0];
+  return bound;
+}
+
 // How deep the stance legs' drawn outline (as the leg IK draws each leg, its foot where it
 // stands) lies in the boxes that rise more than `rise` above its foot, world metres along x:
 // *ahead into the face of a box ahead of the foot (facing), *behind into that of one behind it.
@@ -31,7 +49,7 @@ void stance_flesh_depth(const AnimContext& ctx, const BodyFrame& body, const Foo
   const AnimRig& rig = ctx.rig;
   *ahead = *behind = 0.0f;
   GirdleJointFs joints;
-  std::array<glm::vec2, kLimbFleshPoints + 1> p;
+  LegOutline p;
   for (size_t i = 0; i < rig.legs.size(); ++i) {
     const RigLeg& info = rig.legs[i];
     const FootState& f = feet.of_leg(static_cast<int>(i));
@@ -39,18 +57,9 @@ void stance_flesh_depth(const AnimContext& ctx, const BodyFrame& body, const Foo
     if (f.state != LegState::kStance || n < 2) continue;
     const glm::vec2 joint_fs = joints.of(rig, body, info.girdle);
     const StanceLegPose drawn = stance_leg_pose(ctx, body, static_cast<int>(i), body.to_fs(f.pos_ws), joint_fs, f.stance_clear);
-    Mat2x3 frames[kLimbSkinFrames] = {frame_matrix(drawn.ik.upper_dir, joint_fs), frame_matrix(drawn.ik.lower_dir, drawn.ik.middle),
-                                      frame_matrix(drawn.foot_dir, drawn.ik.end)};
-    limb_skin_frames(info.flesh_mids, frames);
-    glm::vec2 lo(1e30f), hi(-1e30f);
-    for (size_t k = 0; k < n; ++k) {
-      p[k] = body.to_ws(posed_flesh(info.flesh_outline[k], frames));
-      lo = glm::min(lo, p[k]);
-      hi = glm::max(hi, p[k]);
-    }
-    p[n] = p[0];
+    const Box bound = pose_leg_outline(body, info, joint_fs, drawn.ik, drawn.foot_dir, p);
     ctx.hits.clear();
-    ctx.level.overlapping(Box{lo, hi}, ctx.hits);
+    ctx.level.overlapping(bound, ctx.hits);
     for (int h : ctx.hits) {
       const Box& c = ctx.level.box(h);
       // (Not the ground it stands on; rise < 0: only a wall rising above the leg's joint.)
@@ -110,11 +119,8 @@ bool leg_flesh_hits(const AnimContext& ctx, const BodyFrame& body, const RigLeg&
                     glm::vec2 foot_dir, float top_over) {
   const size_t n = info.flesh_outline.size();
   if (n < 2) return false;
-  Mat2x3 frames[kLimbSkinFrames] = {frame_matrix(ik.upper_dir, joint_fs), frame_matrix(ik.lower_dir, ik.middle), frame_matrix(foot_dir, ik.end)};
-  limb_skin_frames(info.flesh_mids, frames);
-  std::array<glm::vec2, kLimbFleshPoints + 1> p;
-  for (size_t i = 0; i < n; ++i) p[i] = body.to_ws(posed_flesh(info.flesh_outline[i], frames));
-  p[n] = p[0];
+  LegOutline p;
+  pose_leg_outline(body, info, joint_fs, ik, foot_dir, p);
   return polyline_hits_level(ctx.level, p.data(), static_cast<int>(n + 1), ctx.hits, -INFINITY, top_over);
 }
 
@@ -122,18 +128,10 @@ float leg_flesh_depth(const AnimContext& ctx, const BodyFrame& body, const RigLe
                       glm::vec2 foot_dir, float top_over) {
   const size_t n = info.flesh_outline.size();
   if (n < 2) return 0.0f;
-  Mat2x3 frames[kLimbSkinFrames] = {frame_matrix(ik.upper_dir, joint_fs), frame_matrix(ik.lower_dir, ik.middle), frame_matrix(foot_dir, ik.end)};
-  limb_skin_frames(info.flesh_mids, frames);
-  std::array<glm::vec2, kLimbFleshPoints + 1> p;
-  glm::vec2 lo(1e30f), hi(-1e30f);
-  for (size_t i = 0; i < n; ++i) {
-    p[i] = body.to_ws(posed_flesh(info.flesh_outline[i], frames));
-    lo = glm::min(lo, p[i]);
-    hi = glm::max(hi, p[i]);
-  }
-  p[n] = p[0];
+  LegOutline p;
+  const Box bound = pose_leg_outline(body, info, joint_fs, ik, foot_dir, p);
   ctx.hits.clear();
-  ctx.level.overlapping(Box{lo, hi}, ctx.hits);
+  ctx.level.overlapping(bound, ctx.hits);
   float depth = 0.0f;
   if (ctx.hits.empty()) return depth;
   std::erase_if(ctx.hits, [&](int h) { return !(ctx.level.box(h).top() > top_over); });
