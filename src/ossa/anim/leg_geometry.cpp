@@ -43,9 +43,11 @@ Box pose_leg_outline(const BodyFrame& body, const RigLeg& info, glm::vec2 joint_
 }
 
 // How deep the stance legs' drawn outline (as the leg IK draws each leg, its foot where it
-// stands) lies in the boxes that rise more than `rise` above its foot, world metres along x:
-// *ahead into the face of a box ahead of the foot (facing), *behind into that of one behind it.
-void stance_flesh_depth(const AnimContext& ctx, const BodyFrame& body, const FootSet& feet, float rise, float* ahead, float* behind) {
+// stands) lies in the boxes that rise above its foot (walls_only: above the leg's joint), world
+// metres along x: *ahead into the face of a box ahead of the foot (facing), *behind into that
+// of one behind it.
+void stance_flesh_depth(const AnimContext& ctx, const BodyFrame& body, const FootSet& feet, bool walls_only, float* ahead,
+                        float* behind) {
   const AnimRig& rig = ctx.rig;
   *ahead = *behind = 0.0f;
   GirdleJointFs joints;
@@ -62,8 +64,8 @@ void stance_flesh_depth(const AnimContext& ctx, const BodyFrame& body, const Foo
     ctx.level.overlapping(bound, ctx.hits);
     for (int h : ctx.hits) {
       const Box& c = ctx.level.box(h);
-      // (Not the ground it stands on; rise < 0: only a wall rising above the leg's joint.)
-      if (!(c.max_ws.y > (rise < 0.0f ? body.to_ws(joint_fs).y : f.pos_ws.y + rise))) continue;
+      // (Not the ground it stands on.)
+      if (!(c.max_ws.y > (walls_only ? body.to_ws(joint_fs).y : f.pos_ws.y + kContactSlack))) continue;
       const bool front = body.facing > 0 ? c.min_ws.x > f.pos_ws.x : c.max_ws.x < f.pos_ws.x;
       for (size_t k = 0; k < n; ++k) {
         float x0, x1;
@@ -142,7 +144,7 @@ float leg_flesh_depth(const AnimContext& ctx, const BodyFrame& body, const RigLe
 float stance_flesh_push(const AnimContext& ctx, const BodyFrame& body, const FootSet& feet, float most) {
   if (ctx.rig.legs.empty() || !(most > 0.0f)) return 0.0f;
   float ahead, behind0;
-  stance_flesh_depth(ctx, body, feet, kContactSlack, &ahead, &behind0);
+  stance_flesh_depth(ctx, body, feet, false, &ahead, &behind0);
   BodyFrame moved = body;
   float push = 0.0f;
   for (int i = 0; i < kFleshPushTries && ahead > 0.0f; ++i) {
@@ -150,7 +152,7 @@ float stance_flesh_push(const AnimContext& ctx, const BodyFrame& body, const Foo
     if (push > most) return 0.0f;
     moved.x_ws = body.x_ws - static_cast<float>(body.facing) * push;
     float behind;
-    stance_flesh_depth(ctx, moved, feet, kContactSlack, &ahead, &behind);
+    stance_flesh_depth(ctx, moved, feet, false, &ahead, &behind);
     if (behind > behind0 + kFleshPushMargin) return 0.0f;
   }
   return ahead > 0.0f ? 0.0f : push;
@@ -161,7 +163,6 @@ float stance_flesh_advance(const AnimContext& ctx, const BodyFrame& body, const 
   if (dx == 0.0f || rig.legs.empty()) return dx;
   // Only a box rising above the leg's joint is a wall (a riser it steps up, its flesh at the
   // riser's corner as it goes, is not: the swing and the foothold see to that).
-  const float rise = -1.0f;
   // First, cheaply: any box about the stance legs that rises so high?
   Box around{glm::vec2(1e30f), glm::vec2(-1e30f)};
   float lowest_joint = 1e30f;
@@ -181,12 +182,12 @@ float stance_flesh_advance(const AnimContext& ctx, const BodyFrame& body, const 
   ctx.level.overlapping(around, ctx.hits);
   if (std::none_of(ctx.hits.begin(), ctx.hits.end(), [&](int h) { return ctx.level.box(h).top() > lowest_joint; })) return dx;
   float now, behind;
-  stance_flesh_depth(ctx, body, feet, rise, &now, &behind);
+  stance_flesh_depth(ctx, body, feet, true, &now, &behind);
   BodyFrame moved = body;
   auto deeper = [&](float t) {
     moved.x_ws = body.x_ws + t * dx;
     float ahead;
-    stance_flesh_depth(ctx, moved, feet, rise, &ahead, &behind);
+    stance_flesh_depth(ctx, moved, feet, true, &ahead, &behind);
     return ahead > now + kFleshPushMargin;
   };
   if (!deeper(1.0f)) return dx;

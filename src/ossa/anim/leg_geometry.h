@@ -102,13 +102,14 @@ bool stance_leg_hits(const AnimContext& ctx, const BodyFrame& body, int leg, con
 // (RigLeg::flesh_outline, as the leg IK draws each leg, its foot where it stands) to leave the
 // faces of the boxes ahead of their feet that rise above them (a triceratops blocked at a post,
 // its shoulder's flesh in the post's corner; a pigeon blocked at a riser, its knee in it): 0
-// when clear, or when no shift up to `most` clears them, or where it would put a leg's outline
-// into a box it is not in now. Standing still: its feet stay, its legs follow the body.
+// when clear, or when no shift up to `most` clears them, or where it would lay a leg's outline
+// deeper into a box behind its foot. Standing still: its feet stay, its legs follow the body.
 float stance_flesh_push(const AnimContext& ctx, const BodyFrame& body, const FootSet& feet, float most);
 // How far of `dx` (world metres along x) the body may move with its stance legs' drawn outline,
 // the legs following it, going no deeper into the face of a box ahead of a foot that rises
-// higher than the legs climb (a wall: the triceratops's shoulder met default.json's post a
-// tick before its trunk did, the pigeon's knee a riser as it tried the way ahead again).
+// above the leg's joint (a wall; a riser the legs climb is none: the triceratops's shoulder met
+// default.json's post before its trunk did, the pigeon's knee a riser as it tried the way
+// ahead again).
 float stance_flesh_advance(const AnimContext& ctx, const BodyFrame& body, const FootSet& feet, float dx);
 
 // A limb's skin frames (anim_rig.h kLimbSkinFrames) from its three bone frames frames[0..2]:
