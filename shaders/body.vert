@@ -14,6 +14,7 @@ layout(location = 6) in uint a_kind;          // CoatPattern
 layout(location = 7) in uint a_palette_base;  // first palette entry of this creature
 layout(location = 8) in uint a_floor_base;    // its floor: kBodyFloorEntries entries
 layout(location = 9) in float a_overhang;     // metres past a top's ends it still holds
+layout(location = 10) in uint a_foot;         // a leg's vertex: its foot (< 8), else 255
 
 uniform samplerBuffer u_palette;
 uniform mat3 u_view_proj;                     // world metres -> clip
@@ -33,17 +34,29 @@ vec2 skin(uint bone, vec2 p) {
 
 // The floor (src/ossa/body/body_floor.h, floor_point): box tops under the creature, two per
 // palette entry (x from, x to, top; then the next), unused ones with x from > x to; flesh
-// below a top over which it lies, or within a_overhang of its ends, is lifted onto it.
+// below a top over which it lies, or within a_overhang of its ends, is lifted onto it. A
+// leg's flesh is held up past a top's ends only by the top its own foot stands on (four
+// entries after the segments, two feet each), and only within a_overhang below it.
 vec2 rest_on_floor(vec2 p) {
+  bool leg = a_foot < 8u;
+  float past = leg ? 0.0 : a_overhang;
   for (int k = 0; k < 4; ++k) {
     int t = int(a_floor_base) * 3 + k * 3;
     vec2 a = texelFetch(u_palette, t).xy;
     vec2 b = texelFetch(u_palette, t + 1).xy;
     vec2 c = texelFetch(u_palette, t + 2).xy;
     if (a.x > a.y) break;  // segments are filled in order
-    if (p.x >= a.x - a_overhang && p.x <= a.y + a_overhang && p.y < b.x) p.y = b.x;
+    if (p.x >= a.x - past && p.x <= a.y + past && p.y < b.x) p.y = b.x;
     if (b.y > c.x) break;
-    if (p.x >= b.y - a_overhang && p.x <= c.x + a_overhang && p.y < c.y) p.y = c.y;
+    if (p.x >= b.y - past && p.x <= c.x + past && p.y < c.y) p.y = c.y;
+  }
+  if (leg) {
+    int t = (int(a_floor_base) + 4 + int(a_foot / 2u)) * 3;
+    vec2 a = texelFetch(u_palette, t).xy;
+    vec2 b = texelFetch(u_palette, t + 1).xy;
+    vec2 c = texelFetch(u_palette, t + 2).xy;
+    vec3 s = (a_foot % 2u) == 0u ? vec3(a, b.x) : vec3(b.y, c);
+    if (s.x <= s.y && p.x >= s.x - a_overhang && p.x <= s.y + a_overhang && p.y < s.z && p.y > s.z - a_overhang) p.y = s.z;
   }
   return p;
 }

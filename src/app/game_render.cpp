@@ -325,7 +325,7 @@ void Game::Impl::render(Game& game, float alpha) {
       // A body rests on the ground under it (body_floor.h): flesh flattens, never enters it.
       const Entity& e = entity_at(world, i);
       if (const auto it = e.is_character() ? bodies.end() : bodies.find(&e.creature()); it != bodies.end()) {
-        batch->set_floor(instance, body_floor(level, e.skeleton(), blended, it->second.reach));
+        batch->set_floor(instance, body_floor(level, e.skeleton(), blended, it->second.reach, it->second.feet));
       }
     }
   }

@@ -118,7 +118,7 @@ struct Scene {
     for (int i = 0; i < kCreatures; ++i) {
       const int k = kind_of[static_cast<size_t>(i)];
       body_batch->set_world(i, world[i]);
-      body_batch->set_floor(i, body_floor(ground, kinds[k].skeleton, world[i], bodies[k].reach));
+      body_batch->set_floor(i, body_floor(ground, kinds[k].skeleton, world[i], bodies[k].reach, bodies[k].feet));
     }
   }
 };

@@ -268,7 +268,7 @@ MotionReport run(const std::string& name, int dir) {
     const BodyFloor sent = decode_floor(std::span<const Mat2x3>(palette).subspan(static_cast<size_t>(mesh.floor_entry()), kBodyFloorEntries));
     for (size_t i = 0; i < pos.size(); ++i) {
       skinned[i] = skin_body_vertex(mesh.vertices[i], palette);
-      pos[i] = floor_point(skinned[i], sent, mesh.vertices[i].overhang);
+      pos[i] = floor_point(skinned[i], sent, mesh.vertices[i].overhang, mesh.vertices[i].foot);
     }
   };
   // The rest pose (the bind pose): the model matrices as the world.
@@ -317,7 +317,7 @@ MotionReport run(const std::string& name, int dir) {
     if (tick % kEvery != 0) return;
     ++r.checked;
     const std::vector<Mat2x3>& world = a.world_matrices();
-    skin_all(world, body_floor(level, s, world, mesh.reach));
+    skin_all(world, body_floor(level, s, world, mesh.reach, mesh.feet));
     dump_svg(name, dir, tick, mesh, pos, world, s);
     const std::string when = " at tick " + std::to_string(tick);
     // One region.

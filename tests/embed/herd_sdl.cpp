@@ -113,7 +113,7 @@ void build_draw_list(const Herd& herd, ossa::DrawList& list) {
   for (size_t i = 0; i < herd.entities.size(); ++i) {
     const ossa::Entity& e = *herd.entities[i];
     const std::vector<ossa::Mat2x3>& world = e.animator().world_matrices();
-    const ossa::BodyFloor floor = ossa::body_floor(herd.level, e.skeleton(), world, herd.drawables[i]->body.reach);
+    const ossa::BodyFloor floor = ossa::body_floor(herd.level, e.skeleton(), world, herd.drawables[i]->body.reach, herd.drawables[i]->body.feet);
     ossa::append_creature(list, *herd.drawables[i], world, &floor);
   }
 }

@@ -171,7 +171,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   }
   const std::vector<Mat2x3>& world = animator.world_matrices();
   std::vector<Mat2x3> palette(static_cast<size_t>(body->palette_size()));
-  const BodyFloor floor = body_floor(level, creature.skeleton, world, body->reach);
+  const BodyFloor floor = body_floor(level, creature.skeleton, world, body->reach, body->feet);
   body_palette(*body, world, palette, floor);
   for (const BodyVertex& v : body->vertices) {
     for (int k = 0; k < 4; ++k) {

@@ -60,7 +60,7 @@ TEST_CASE("bodies: the GPU draws what the CPU skins, flesh resting on the floor"
   const std::vector<Mat2x3> model = model_matrices(c.skeleton, c.rest_pose.locals);
   std::vector<Mat2x3> world(model.size());
   for (size_t b = 0; b < model.size(); ++b) world[b] = sunk.to_mat2x3() * model[b];
-  const BodyFloor floor = body_floor(level, c.skeleton, world, body.reach);
+  const BodyFloor floor = body_floor(level, c.skeleton, world, body.reach, body.feet);
   REQUIRE(floor.count == 2);
 
   CreatureBatch batch;
@@ -109,7 +109,7 @@ TEST_CASE("bodies: the GPU draws what the CPU skins, flesh resting on the floor"
   const float ground_px = g.renderer->camera.world_to_pixel({0.0f, 0.0f}, kW, kH).y;
   // Where only the overhang holds the flesh up: just short of the higher top's end, below it.
   float overhang = 0.0f;
-  for (const BodyVertex& v : body.vertices) overhang = std::max(overhang, v.overhang);
+  for (const BodyVertex& v : body.vertices) overhang = v.foot == kNoFoot ? std::max(overhang, v.overhang) : overhang;
   const glm::vec2 held_lo = g.renderer->camera.world_to_pixel({mid - overhang, floor.segments[1].z}, kW, kH);
   const glm::vec2 held_hi = g.renderer->camera.world_to_pixel({mid, 0.0f}, kW, kH);
   int held_cpu = 0, held_differ = 0;
@@ -129,6 +129,94 @@ TEST_CASE("bodies: the GPU draws what the CPU skins, flesh resting on the floor"
   CHECK(below_ground == 0);
   CHECK(held_cpu > 0);
   CHECK(held_differ < held_cpu / 4);
+}
+
+TEST_CASE("bodies: a leg's flesh rests level past the edge of the top its foot stands on, in the shader too", "[render][body]") {
+  // A horse in its rest pose, its foremost hoof's tip 2 mm short of the end of the ground's
+  // top, the ground 0.3 m lower beyond: the hoof's flesh out over the edge is held level with
+  // the top (body_floor.h, floor_point with the vertex's foot), by the GPU as by the CPU.
+  Gl& g = gl();
+  const glm::vec3 bg{0.1f, 0.2f, 0.3f};
+  const Creature c = example("horse");
+  const BodyMesh body = build_body(c);
+  REQUIRE(body.feet.size() == 4);
+  const std::vector<Mat2x3> world = model_matrices(c.skeleton, c.rest_pose.locals);
+  glm::vec2 toe(-1e9f);
+  for (const BodyFoot& f : body.feet) {
+    const glm::vec2 t = bone_end(world[static_cast<size_t>(f.toe_bone)], c.skeleton.length(f.toe_bone));
+    if (t.x > toe.x) toe = t;
+  }
+  const float edge = toe.x + 0.002f;
+  Level level;
+  level.add_box(Box::from_corner(-10.0f, toe.y - 2.0f, 10.0f + edge, 2.0f));
+  level.add_box(Box::from_corner(edge, toe.y - 2.0f, 10.0f, 1.7f));
+  const BodyFloor floor = body_floor(level, c.skeleton, world, body.reach, body.feet);
+  BodyFloor no_feet = floor;
+  no_feet.feet.fill(glm::vec3(1.0f, 0.0f, 0.0f));
+
+  CreatureBatch batch;
+  const int id = batch.add_body(body, c.skeleton);
+  batch.set_world(id, world);
+  batch.set_floor(id, floor);
+  batch.upload_palettes();
+  const glm::vec2 lo = toe - glm::vec2(0.15f), hi = toe + glm::vec2(0.15f);
+  g.renderer->camera.fit({lo, hi}, float(kW) / kH);
+  g.renderer->begin_frame(kW, kH, bg);
+  g.renderer->draw_creatures(batch, {}, CreatureLook::kBody);
+  CHECK(check_gl("bodies at an edge"));
+  const Image img = read_framebuffer(kW, kH);
+
+  std::vector<Mat2x3> palette(static_cast<size_t>(body.palette_size()));
+  body_palette(body, world, palette, floor);
+  std::vector<glm::vec2> px(body.vertices.size());
+  int held = 0;  // held level past the edge by its own foot's top
+  float below = 0.0f;
+  for (size_t i = 0; i < px.size(); ++i) {
+    const BodyVertex& v = body.vertices[i];
+    const glm::vec2 p = drawn_body_vertex(v, palette, floor);
+    const glm::vec2 unheld = floor_point(skin_body_vertex(v, palette), no_feet, v.overhang, v.foot);
+    if (p.y != unheld.y) {
+      ++held;
+      CHECK(p.x > edge);
+      CHECK(p.y == Approx(toe.y).margin(1e-5));
+      below = std::max(below, p.y - unheld.y);
+    }
+    px[i] = g.renderer->camera.world_to_pixel(p, kW, kH);
+  }
+  INFO("held " << held << " vertices, up to " << below << " m");
+  CHECK(held > 0);
+  CHECK(below < 0.05f);
+  // The pixels past the edge below the top's height: the GPU's are the CPU's.
+  const glm::vec2 corner = g.renderer->camera.world_to_pixel({edge, toe.y}, kW, kH);
+  const glm::vec2 low = g.renderer->camera.world_to_pixel({edge, toe.y - 0.1f}, kW, kH);
+  std::vector<uint8_t> cpu(static_cast<size_t>(kW * kH), 0);
+  for (size_t t = 0; t + 2 < body.indices.size(); t += 3) {
+    const glm::vec2 a = px[body.indices[t]], bb = px[body.indices[t + 1]], cc = px[body.indices[t + 2]];
+    const int x0 = std::max(0, static_cast<int>(std::floor(std::min({a.x, bb.x, cc.x}))));
+    const int x1 = std::min(kW - 1, static_cast<int>(std::ceil(std::max({a.x, bb.x, cc.x}))));
+    const int y0 = std::max(0, static_cast<int>(std::floor(std::min({a.y, bb.y, cc.y}))));
+    const int y1 = std::min(kH - 1, static_cast<int>(std::ceil(std::max({a.y, bb.y, cc.y}))));
+    for (int y = y0; y <= y1; ++y) {
+      for (int x = x0; x <= x1; ++x) {
+        if (in_triangle({x + 0.5f, y + 0.5f}, a, bb, cc)) cpu[static_cast<size_t>(y * kW + x)] = 1;
+      }
+    }
+  }
+  int both = 0, either = 0, gpu_below = 0, cpu_below = 0;
+  for (int y = 0; y < kH; ++y) {
+    for (int x = 0; x < kW; ++x) {
+      const bool gpu = !background(img.pixel(x, y), bg);
+      const bool mine = cpu[static_cast<size_t>(y * kW + x)] != 0;
+      both += gpu && mine;
+      either += gpu || mine;
+      if (x > corner.x + 1.0f && y > corner.y + 1.0f && y < low.y) gpu_below += gpu, cpu_below += mine;
+    }
+  }
+  INFO("both " << both << ", either " << either << "; below the top past the edge: GPU " << gpu_below << ", CPU " << cpu_below);
+  REQUIRE(either > 2000);
+  CHECK(static_cast<double>(both) / either > 0.95);
+  CHECK(cpu_below == 0);
+  CHECK(gpu_below <= 2 * kW / 100);  // antialiased edge pixels at most
 }
 
 TEST_CASE("bodies: the body look is one draw, the x-ray look a draw per layer each, from one palette upload", "[render][body]") {

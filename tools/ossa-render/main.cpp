@@ -342,7 +342,7 @@ int run(const Args& a) {
       // Its flesh rests on the ground as in the game (body_floor.h).
       std::vector<Mat2x3> world = model_matrices(creature.skeleton, creature.rest_pose.locals);
       for (Mat2x3& m : world) m = place.to_mat2x3() * m;
-      batch.set_floor(id, level ? body_floor(*level, creature.skeleton, world, flesh->reach) : flat_floor(at.y));
+      batch.set_floor(id, level ? body_floor(*level, creature.skeleton, world, flesh->reach, flesh->feet) : flat_floor(at.y));
     }
   }
   batch.upload_palettes();

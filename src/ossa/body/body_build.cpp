@@ -272,6 +272,27 @@ BodyMesh build_body(const Creature& c, const BodyOptions& options) {
       mesh.indices.resize(fill_first);
       continue;
     }
+    // A leg's vertices are held up past a box top's ends only by the top its own foot stands
+    // on (BodyVertex::overhang, body_floor.h), each as far as its own outline edges reach,
+    // stretched (inside the outline, its longest edge); set before the stroke, which copies
+    // its outline's vertices.
+    if (part.kind == BodyPartKind::kLeg && part.limb >= 0 && mesh.feet.size() < static_cast<size_t>(kBodyFloorFeet)) {
+      const Limb& limb = c.limbs[static_cast<size_t>(part.limb)];
+      const auto foot = static_cast<uint8_t>(mesh.feet.size());
+      mesh.feet.push_back({limb.bones[2], c.contact == ContactMode::kFlat ? limb.bones[1] : -1});
+      const size_t n = part.outline.size();
+      std::vector<float> edge(n);
+      float longest = 0.0f;
+      for (size_t k = 0; k < n; ++k) {
+        edge[k] = glm::length(mesh.vertices[part.outline[(k + 1) % n]].position_ms - mesh.vertices[part.outline[k]].position_ms);
+        longest = std::max(longest, edge[k]);
+      }
+      for (size_t v = vertex_first; v < mesh.vertices.size(); ++v) {
+        mesh.vertices[v].overhang = kOverhangStretch * longest;
+        mesh.vertices[v].foot = foot;
+      }
+      for (size_t k = 0; k < n; ++k) mesh.vertices[part.outline[k]].overhang = kOverhangStretch * std::max(edge[k], edge[(k + n - 1) % n]);
+    }
     if (stroke > 0.0f && part.kind != BodyPartKind::kEye) {
       const bool fade = e.tube && parts.tubes[e.index].fade_start;
       add_stroke(part, mesh, stroke, glm::vec4(outline * dim, 1.0f),
@@ -282,8 +303,8 @@ BodyMesh build_body(const Creature& c, const BodyOptions& options) {
       part.first_index = fill_first + part.stroke_index_count;
     }
     // How far past a box top's ends the floor holds this part up (BodyVertex::overhang): its
-    // longest outline edge, with room for the skin stretching on the outside of a bend. Legs
-    // and arms keep 0: a hoof set down beside a riser keeps its shape.
+    // longest outline edge, with room for the skin stretching on the outside of a bend (a
+    // leg's, above). Arms keep 0: a hand set down beside a riser keeps its shape.
     if (part.kind != BodyPartKind::kLeg && part.kind != BodyPartKind::kArm) {
       float edge = 0.0f;
       for (size_t k = 0; k < part.outline.size(); ++k) {
@@ -325,7 +346,7 @@ glm::vec2 skin_body_vertex(const BodyVertex& v, std::span<const Mat2x3> palette)
 }
 
 glm::vec2 drawn_body_vertex(const BodyVertex& v, std::span<const Mat2x3> palette, const BodyFloor& floor) {
-  return floor_point(skin_body_vertex(v, palette), floor, v.overhang);
+  return floor_point(skin_body_vertex(v, palette), floor, v.overhang, v.foot);
 }
 
 void body_palette(const BodyMesh& mesh, std::span<const Mat2x3> world, std::span<Mat2x3> palette, const BodyFloor& floor) {

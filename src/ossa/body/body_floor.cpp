@@ -11,7 +11,46 @@
 
 namespace ossa {
 
-BodyFloor body_floor(const Level& level, const Skeleton& skeleton, std::span<const Mat2x3> world, float reach) {
+namespace {
+
+// The top the foot whose ground-bearing ends are `points` stands on (body_floor), with the tops
+// of one height joining it, within `window` metres of those ends; unused when it stands on none.
+glm::vec3 foot_top(const Level& level, std::span<const glm::vec2> points, float window, std::vector<int>& hits) {
+  glm::vec3 top(1.0f, 0.0f, 0.0f);
+  float lo = 1e30f, hi = -1e30f;
+  for (const glm::vec2 p : points) lo = std::min(lo, p.x - window), hi = std::max(hi, p.x + window);
+  for (const glm::vec2 p : points) {
+    hits.clear();
+    level.overlapping(Box{{p.x, p.y - kFootOnTop}, {p.x, p.y + kFootOnTop}}, hits);
+    for (const int h : hits) {
+      const Box& box = level.box(h);
+      if (std::fabs(box.max_ws.y - p.y) > kFootOnTop || (top.x <= top.y && box.max_ws.y <= top.z)) continue;
+      top = {box.min_ws.x, box.max_ws.x, box.max_ws.y};
+    }
+  }
+  if (top.x > top.y) return top;
+  // Boxes of one height side by side (a tread of tiles) are one top.
+  hits.clear();
+  level.overlapping(Box{{lo, top.z - 1e-5f}, {hi, top.z + 1e-5f}}, hits);
+  for (bool grew = true; grew;) {
+    grew = false;
+    for (const int h : hits) {
+      const Box& box = level.box(h);
+      if (box.max_ws.y != top.z || box.min_ws.x > top.y || box.max_ws.x < top.x) continue;
+      if (box.min_ws.x < top.x || box.max_ws.x > top.y) {
+        top.x = std::min(top.x, box.min_ws.x), top.y = std::max(top.y, box.max_ws.x);
+        grew = true;
+      }
+    }
+  }
+  top.x = std::max(top.x, lo), top.y = std::min(top.y, hi);
+  return top;
+}
+
+}  // namespace
+
+BodyFloor body_floor(const Level& level, const Skeleton& skeleton, std::span<const Mat2x3> world, float reach,
+                     std::span<const BodyFoot> feet) {
   BodyFloor floor;
   OSSA_ASSERT(static_cast<int>(world.size()) == skeleton.bone_count(), "body_floor: one matrix per bone");
   if (world.empty() || level.empty() || !(reach >= 0.0f) || !std::isfinite(reach)) return floor;
@@ -71,6 +110,16 @@ BodyFloor body_floor(const Level& level, const Skeleton& skeleton, std::span<con
   }
   floor.count = static_cast<int>(merged.size());
   for (size_t k = 0; k < merged.size(); ++k) floor.segments[k] = merged[k];
+  for (size_t f = 0; f < std::min(feet.size(), static_cast<size_t>(kBodyFloorFeet)); ++f) {
+    glm::vec2 points[2];
+    size_t n = 0;
+    for (const int b : {feet[f].toe_bone, feet[f].heel_bone}) {
+      if (b >= 0 && b < skeleton.bone_count()) points[n++] = bone_end(world[static_cast<size_t>(b)], skeleton.length(b));
+    }
+    // (Within a foot's length of its ends: a swinging foot's toe touching a top near its
+    // edge does not hold up the knee beyond the edge.)
+    floor.feet[f] = foot_top(level, std::span<const glm::vec2>(points, n), n > 0 ? skeleton.length(feet[f].toe_bone) : 0.0f, hits);
+  }
   return floor;
 }
 
@@ -81,11 +130,17 @@ BodyFloor flat_floor(float top) {
   return floor;
 }
 
-glm::vec2 floor_point(glm::vec2 p, const BodyFloor& floor, float overhang) {
+glm::vec2 floor_point(glm::vec2 p, const BodyFloor& floor, float overhang, uint8_t foot) {
+  const bool leg = foot < kBodyFloorFeet;
+  const float past = leg ? 0.0f : overhang;
   for (int k = 0; k < kBodyFloorSegments; ++k) {
     const glm::vec3& s = floor.segments[static_cast<size_t>(k)];
     if (s.x > s.y) continue;
-    if (p.x >= s.x - overhang && p.x <= s.y + overhang && p.y < s.z) p.y = s.z;
+    if (p.x >= s.x - past && p.x <= s.y + past && p.y < s.z) p.y = s.z;
+  }
+  if (leg) {
+    const glm::vec3& s = floor.feet[foot];
+    if (s.x <= s.y && p.x >= s.x - overhang && p.x <= s.y + overhang && p.y < s.z && p.y > s.z - overhang) p.y = s.z;
   }
   return p;
 }
@@ -93,8 +148,10 @@ glm::vec2 floor_point(glm::vec2 p, const BodyFloor& floor, float overhang) {
 void encode_floor(const BodyFloor& floor, std::span<Mat2x3> entries) {
   OSSA_ASSERT(entries.size() == static_cast<size_t>(kBodyFloorEntries), "encode_floor: kBodyFloorEntries entries");
   for (int k = 0; k < kBodyFloorEntries; ++k) {
-    const glm::vec3& a = floor.segments[static_cast<size_t>(2 * k)];
-    const glm::vec3& b = floor.segments[static_cast<size_t>(2 * k + 1)];
+    const bool seg = 2 * k < kBodyFloorSegments;
+    const size_t i = static_cast<size_t>(seg ? 2 * k : 2 * k - kBodyFloorSegments);
+    const glm::vec3& a = seg ? floor.segments[i] : floor.feet[i];
+    const glm::vec3& b = seg ? floor.segments[i + 1] : floor.feet[i + 1];
     Mat2x3& m = entries[static_cast<size_t>(k)];
     m.m[0] = a.x, m.m[1] = a.y, m.m[2] = a.z;
     m.m[3] = b.x, m.m[4] = b.y, m.m[5] = b.z;
@@ -106,8 +163,10 @@ BodyFloor decode_floor(std::span<const Mat2x3> entries) {
   BodyFloor floor;
   for (int k = 0; k < kBodyFloorEntries; ++k) {
     const Mat2x3& m = entries[static_cast<size_t>(k)];
-    floor.segments[static_cast<size_t>(2 * k)] = {m.m[0], m.m[1], m.m[2]};
-    floor.segments[static_cast<size_t>(2 * k + 1)] = {m.m[3], m.m[4], m.m[5]};
+    const bool seg = 2 * k < kBodyFloorSegments;
+    const size_t i = static_cast<size_t>(seg ? 2 * k : 2 * k - kBodyFloorSegments);
+    (seg ? floor.segments[i] : floor.feet[i]) = {m.m[0], m.m[1], m.m[2]};
+    (seg ? floor.segments[i + 1] : floor.feet[i + 1]) = {m.m[3], m.m[4], m.m[5]};
   }
   floor.count = 0;
   for (const glm::vec3& s : floor.segments) floor.count += s.x <= s.y;

@@ -69,9 +69,11 @@ struct BodyVertex {
   uint8_t pattern_kind = 0;            // CoatPattern
   // Metres past a box top's ends that the floor still holds this vertex up (body_floor.h):
   // its part's longest outline edge (with room to stretch), so that no straight edge between
-  // two floored vertices cuts a top's corner. 0 for legs and arms, whose feet stand beside
-  // risers.
+  // two floored vertices cuts a top's corner. A leg's: its own outline edges' (stretched), and
+  // only by the top its foot stands on (`foot`), whose hoof may stand beside a riser. 0 for
+  // arms.
   float overhang = 0.0f;
+  uint8_t foot = kNoFoot;              // a leg's vertex: its foot (BodyMesh::feet, BodyFloor::feet)
 };
 
 // What a part is; decides its shape, depth (body_mass.h) and layer.
@@ -136,6 +138,7 @@ struct BodyMesh {
   bool mass_matched = true;               // false when the girth hit its range
   float reach = 0.0f;                     // metres the flesh reaches past the bones' box
                                           // (rest pose): body_floor()'s reach
+  std::vector<BodyFoot> feet;             // the legs' feet, by BodyVertex::foot: body_floor()'s
 
   // Palette entries: the bones, the mid joints, then the floor (body_floor.h).
   int floor_entry() const { return static_cast<int>(inverse_bind.size() + mid_joints.size()); }

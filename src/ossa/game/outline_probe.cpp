@@ -16,7 +16,7 @@ OutlineProbe::OutlineProbe(const Creature& creature) : mesh_(build_body(creature
 void OutlineProbe::observe(const Animator& animator, const Level& level, float t_s) {
   if (mesh_.parts.empty()) return;
   const std::vector<Mat2x3>& world = animator.world_matrices();
-  body_palette(mesh_, world, palette_, body_floor(level, animator.rig().skeleton, world, mesh_.reach));
+  body_palette(mesh_, world, palette_, body_floor(level, animator.rig().skeleton, world, mesh_.reach, mesh_.feet));
   const BodyFloor floor = decode_floor(std::span<const Mat2x3>(palette_).subspan(static_cast<size_t>(mesh_.floor_entry()), kBodyFloorEntries));
   Box all{glm::vec2(1e30f), glm::vec2(-1e30f)};
   for (const BodyPart& part : mesh_.parts) {

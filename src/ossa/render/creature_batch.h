@@ -67,6 +67,7 @@ struct BodyBatchVertex {
   uint32_t palette_base = 0;
   uint32_t floor_base = 0;  // its creature's floor entries (body_floor.h) in the palette
   float overhang = 0.0f;    // BodyVertex::overhang
+  uint8_t foot = kNoFoot;   // BodyVertex::foot
   static std::span<const VertexAttrib> layout();
 };
 

@@ -12,7 +12,7 @@
 namespace ossa {
 
 std::span<const VertexAttrib> BodyBatchVertex::layout() {
-  static const std::array<VertexAttrib, 10> kLayout{{
+  static const std::array<VertexAttrib, 11> kLayout{{
       {0, 2, GL_FLOAT, false, false, offsetof(BodyBatchVertex, position_ms)},
       {1, 2, GL_FLOAT, false, false, offsetof(BodyBatchVertex, coat)},
       {2, 4, GL_UNSIGNED_BYTE, false, true, offsetof(BodyBatchVertex, bones)},
@@ -23,6 +23,7 @@ std::span<const VertexAttrib> BodyBatchVertex::layout() {
       {7, 1, GL_UNSIGNED_INT, false, true, offsetof(BodyBatchVertex, palette_base)},
       {8, 1, GL_UNSIGNED_INT, false, true, offsetof(BodyBatchVertex, floor_base)},
       {9, 1, GL_FLOAT, false, false, offsetof(BodyBatchVertex, overhang)},
+      {10, 1, GL_UNSIGNED_BYTE, false, true, offsetof(BodyBatchVertex, foot)},
   }};
   return kLayout;
 }
@@ -54,6 +55,7 @@ int CreatureBatch::add_body(const BodyMesh& mesh, const Skeleton& skeleton) {
     b.palette_base = c.palette_base;
     b.floor_base = c.palette_base + static_cast<uint32_t>(mesh.floor_entry());
     b.overhang = v.overhang;
+    b.foot = v.foot;
     body_vertices_.push_back(b);
   }
   body_mesh_indices_.insert(body_mesh_indices_.end(), mesh.indices.begin(), mesh.indices.end());
