@@ -532,6 +532,9 @@ int main(int argc, char** argv) {
     out["deepest_outline_part"] = outline ? Json(outline->deepest_outline_part) : Json();
     out["deepest_outline_at_s"] = outline ? Json(outline->deepest_outline_at_s) : Json();
     out["max_body_jolt_g"] = probe.max_body_jolt_g;
+    out["max_limb_flick"] = probe.max_limb_flick;  // SimProbe: limb flicks
+    out["limb_flick_at_s"] = probe.limb_flick_at_s;
+    out["limb_flicks"] = probe.limb_flicks;
     out["min_swing_clearance_m"] = probe.min_swing_clearance_m > 1e8f ? 0.0f : probe.min_swing_clearance_m;
     out["steps"] = a.steps();
     out["x_reached"] = result.x_reached;  // the final x (SimResult::x_reached)

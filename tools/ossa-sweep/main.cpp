@@ -219,6 +219,9 @@ OJson record_json(const RunRecord& r) {
           {"deepest_bone", r.sim.probe.deepest_bone},
           {"deepest_at_s", json_float(r.sim.probe.deepest_at_s)},
           {"max_body_jolt_g", json_float(r.sim.probe.max_body_jolt_g)},
+          {"max_limb_flick", json_float(r.sim.probe.max_limb_flick)},
+          {"limb_flick_at_s", json_float(r.sim.probe.limb_flick_at_s)},
+          {"limb_flicks", r.sim.probe.limb_flicks},
           {"max_outline_penetration_m", json_float(r.outline_penetration_m)},
           {"deepest_outline_part", r.outline_part},
           {"deepest_outline_at_s", json_float(r.outline_at_s)},
@@ -349,6 +352,22 @@ int run_sweep(const Args& args, const Setup& setup) {
   if (deepest_outline && outlines > 0) {
     std::printf(" (deepest %s, %s's %s on %s)", mm(deepest_outline->outline_penetration_m).c_str(), deepest_outline->animal.c_str(),
                 deepest_outline->outline_part.c_str(), deepest_outline->level.c_str());
+  }
+  std::printf(" |\n");
+  // Limb flicks (SimProbe::limb_flicks): a leg or arm thrown somewhere else for a tick.
+  int flicking = 0;
+  long long flick_ticks = 0;
+  const RunRecord* hardest = nullptr;
+  for (const RunRecord& r : runs) {
+    flicking += r.sim.probe.limb_flicks > 0;
+    flick_ticks += r.sim.probe.limb_flicks;
+    if (!hardest || r.sim.probe.max_limb_flick > hardest->sim.probe.max_limb_flick) hardest = &r;
+  }
+  std::printf("| runs with a limb flick (a joint thrown > %.0f times the gait's own acceleration in a tick) | %d of %d, %lld ticks",
+              static_cast<double>(SimProbe::kLimbFlick), flicking, count, flick_ticks);
+  if (hardest && flicking > 0) {
+    std::printf(" (hardest %.0f times, %s on %s at %.2f s)", static_cast<double>(hardest->sim.probe.max_limb_flick), hardest->animal.c_str(),
+                hardest->level.c_str(), static_cast<double>(hardest->sim.probe.limb_flick_at_s));
   }
   std::printf(" |\n");
   std::printf("| runs stopped at a step (< 20%% of the commanded speed, limbs clean) | %zu |\n", stopped.size());

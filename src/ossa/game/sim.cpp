@@ -295,6 +295,34 @@ void SimProbe::observe(const Animator& a, const Level& level) {
   // A turn, or a start again at the spawn, plants every foot anew.
   const bool turned = (last_facing_ != 0 && a.facing() != last_facing_) || a.locomotion_stats().respawns != last_respawns_;
   last_respawns_ = a.locomotion_stats().respawns;
+  // The limbs' joints relative to their girdle joints, against the last two ticks'.
+  size_t j = 0;
+  const bool had = !limb_joints_.empty() && !turned;
+  float flick = 0.0f;
+  auto limb_joint = [&](glm::vec2 girdle, glm::vec2 p) {
+    const glm::vec2 rel = p - girdle;
+    if (2 * j + 1 >= limb_joints_.size()) limb_joints_.resize(2 * j + 2, glm::vec2(NAN));
+    glm::vec2& last = limb_joints_[2 * j];
+    glm::vec2& before = limb_joints_[2 * j + 1];
+    if (had && std::isfinite(before.x)) flick = std::max(flick, glm::length(rel - 2.0f * last + before));
+    before = had ? last : glm::vec2(NAN);
+    last = rel;
+    ++j;
+  };
+  auto chain = [&](const std::array<int, 3>& bones) {
+    const glm::vec2 girdle = bone_start(world[static_cast<size_t>(bones[0])]);
+    limb_joint(girdle, bone_start(world[static_cast<size_t>(bones[1])]));
+    limb_joint(girdle, bone_start(world[static_cast<size_t>(bones[2])]));
+    limb_joint(girdle, bone_end(world[static_cast<size_t>(bones[2])], sk.length(bones[2])));
+  };
+  for (const RigLeg& leg : rig.legs) chain(leg.bones);
+  for (const RigLimb& arm : rig.arms) chain(arm.bones);
+  const float omega = 2.0f * 3.14159265f * a.cycle_frequency();
+  const float scale = std::max(omega * omega * a.hip_height(), a.params().gravity) * dt * dt;
+  if (const float times = flick / scale; std::isfinite(times)) {
+    if (times > max_limb_flick) max_limb_flick = times, limb_flick_at_s = static_cast<float>(ticks_) * dt;
+    limb_flicks += times > kLimbFlick;
+  }
   for (int i = 0; i < legs; ++i) {
     const glm::vec2 foot = a.foot_ws(i);
     if (a.leg_state(i) == LegState::kStance) {
