@@ -34,11 +34,11 @@ struct ExpectedHash {
 };
 
 constexpr ExpectedHash kExpected[] = {
-    {"default.json", 0xba8898d04dc405fdull},
-    {"rough.json", 0xf7eb247201350851ull},
-    {"stairs.json", 0x0aa149abc612002bull},
-    {"slopes.json", 0x825995cab7a9d7c1ull},
-    {"drops.json", 0xeae7d3c26b143957ull},
+    {"default.json", 0xc6d9021a9cf0bd6cull},
+    {"rough.json", 0xd6133b81a1b4eb9full},
+    {"stairs.json", 0x38eea3d9e891a8b6ull},
+    {"slopes.json", 0xcf2249e6dc3f0691ull},
+    {"drops.json", 0x40219ed074593ed2ull},
 };
 
 std::string hex(uint64_t v) {

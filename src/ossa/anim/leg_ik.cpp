@@ -36,6 +36,8 @@ constexpr float kStretchedOfLeg = 0.01f;
 // bends no closer than this multiple of its fold.
 constexpr float kCoupledReach = 0.999f;
 constexpr float kCoupledFold = 1.02f;
+// most_turn leaves the chain this fraction of the reach to spare.
+constexpr float kTurnReachSlack = 1e-4f;
 // A swinging foot that holds its angle folds its lower joint (hock, intertarsal joint) to no
 // less than this angle between shin and foot (radians), or its rest angle where that is less.
 constexpr float kLeastSwingAnkle = 0.2f;
@@ -105,9 +107,12 @@ bool solve_pair(const RigLeg& info, bool hind_pair, glm::vec2 joint_fs, glm::vec
 }
 
 // The most the foot may turn from p and the chain (p + q·e^(iγ), then o) still reach d:
-// |p + q·e^(iγ)| >= d / kCoupledReach - o. Negative: not even straight.
+// |p + q·e^(iγ)| >= d / kCoupledReach - o, with kTurnReachSlack to spare: solve_pair tests the
+// same bound, and a turn right on it failed there by a rounding every few strides, leaving the
+// leg to the plain swing pose for a tick (the giraffe's foreleg in the middle of its gallop's
+// swing, its ankle thrown 20 cm forward and back). Negative: not even straight.
 float most_turn(float p, float q, float o, float d) {
-  const float need = d / kCoupledReach - o;
+  const float need = d * (1.0f + kTurnReachSlack) / kCoupledReach - o;
   if (need <= std::fabs(p - q)) return kPi;
   if (!(p * q > 0.0f)) return -1.0f;
   const float c = (need * need - p * p - q * q) / (2.0f * p * q);
