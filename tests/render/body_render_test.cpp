@@ -31,13 +31,6 @@ bool background(const uint8_t* p, glm::vec3 bg) {
   return std::abs(p[0] - bg.r * 255.0f) < 3.0f && std::abs(p[1] - bg.g * 255.0f) < 3.0f && std::abs(p[2] - bg.b * 255.0f) < 3.0f;
 }
 
-float cross2(glm::vec2 a, glm::vec2 b) { return a.x * b.y - a.y * b.x; }
-
-bool in_triangle(glm::vec2 p, glm::vec2 a, glm::vec2 b, glm::vec2 c) {
-  const float d1 = cross2(b - a, p - a), d2 = cross2(c - b, p - b), d3 = cross2(a - c, p - c);
-  return !((d1 < 0.0f || d2 < 0.0f || d3 < 0.0f) && (d1 > 0.0f || d2 > 0.0f || d3 > 0.0f));
-}
-
 }  // namespace
 
 TEST_CASE("bodies: the GPU draws what the CPU skins, flesh resting on the floor", "[render][body]") {
@@ -91,19 +84,7 @@ TEST_CASE("bodies: the GPU draws what the CPU skins, flesh resting on the floor"
   }
   CHECK(lowest >= 0.0f);  // nothing below the ground's top
   CHECK(overhung > 0);
-  std::vector<uint8_t> cpu(static_cast<size_t>(kW * kH), 0);
-  for (size_t t = 0; t + 2 < body.indices.size(); t += 3) {
-    const glm::vec2 a = px[body.indices[t]], bb = px[body.indices[t + 1]], cc = px[body.indices[t + 2]];
-    const int x0 = std::max(0, static_cast<int>(std::floor(std::min({a.x, bb.x, cc.x}))));
-    const int x1 = std::min(kW - 1, static_cast<int>(std::ceil(std::max({a.x, bb.x, cc.x}))));
-    const int y0 = std::max(0, static_cast<int>(std::floor(std::min({a.y, bb.y, cc.y}))));
-    const int y1 = std::min(kH - 1, static_cast<int>(std::ceil(std::max({a.y, bb.y, cc.y}))));
-    for (int y = y0; y <= y1; ++y) {
-      for (int x = x0; x <= x1; ++x) {
-        if (in_triangle({x + 0.5f, y + 0.5f}, a, bb, cc)) cpu[static_cast<size_t>(y * kW + x)] = 1;
-      }
-    }
-  }
+  const std::vector<uint8_t> cpu = covered_pixels(px, body.indices);
   // read_framebuffer's rows: top row first (as world_to_pixel's y).
   int both = 0, either = 0, below_ground = 0;
   const float ground_px = g.renderer->camera.world_to_pixel({0.0f, 0.0f}, kW, kH).y;
@@ -189,19 +170,7 @@ TEST_CASE("bodies: a leg's flesh rests level past the edge of the top its foot s
   // The pixels past the edge below the top's height: the GPU's are the CPU's.
   const glm::vec2 corner = g.renderer->camera.world_to_pixel({edge, toe.y}, kW, kH);
   const glm::vec2 low = g.renderer->camera.world_to_pixel({edge, toe.y - 0.1f}, kW, kH);
-  std::vector<uint8_t> cpu(static_cast<size_t>(kW * kH), 0);
-  for (size_t t = 0; t + 2 < body.indices.size(); t += 3) {
-    const glm::vec2 a = px[body.indices[t]], bb = px[body.indices[t + 1]], cc = px[body.indices[t + 2]];
-    const int x0 = std::max(0, static_cast<int>(std::floor(std::min({a.x, bb.x, cc.x}))));
-    const int x1 = std::min(kW - 1, static_cast<int>(std::ceil(std::max({a.x, bb.x, cc.x}))));
-    const int y0 = std::max(0, static_cast<int>(std::floor(std::min({a.y, bb.y, cc.y}))));
-    const int y1 = std::min(kH - 1, static_cast<int>(std::ceil(std::max({a.y, bb.y, cc.y}))));
-    for (int y = y0; y <= y1; ++y) {
-      for (int x = x0; x <= x1; ++x) {
-        if (in_triangle({x + 0.5f, y + 0.5f}, a, bb, cc)) cpu[static_cast<size_t>(y * kW + x)] = 1;
-      }
-    }
-  }
+  const std::vector<uint8_t> cpu = covered_pixels(px, body.indices);
   int both = 0, either = 0, gpu_below = 0, cpu_below = 0;
   for (int y = 0; y < kH; ++y) {
     for (int x = 0; x < kW; ++x) {

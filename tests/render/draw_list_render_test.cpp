@@ -24,29 +24,11 @@ bool background(const uint8_t* p, glm::vec3 bg) {
   return std::abs(p[0] - bg.r * 255.0f) < 3.0f && std::abs(p[1] - bg.g * 255.0f) < 3.0f && std::abs(p[2] - bg.b * 255.0f) < 3.0f;
 }
 
-float cross2(glm::vec2 a, glm::vec2 b) { return a.x * b.y - a.y * b.x; }
-
 // The pixels whose centres lie in a triangle of `list` (top row first, as read_framebuffer).
 std::vector<uint8_t> rasterise(const DrawList& list, const Camera2D& camera) {
-  std::vector<uint8_t> out(static_cast<size_t>(kW * kH), 0);
   std::vector<glm::vec2> px(list.vertices.size());
   for (size_t i = 0; i < px.size(); ++i) px[i] = camera.world_to_pixel(list.vertices[i].position_ws, kW, kH);
-  for (size_t t = 0; t + 2 < list.indices.size(); t += 3) {
-    const glm::vec2 a = px[list.indices[t]], b = px[list.indices[t + 1]], c = px[list.indices[t + 2]];
-    const int x0 = std::max(0, static_cast<int>(std::floor(std::min({a.x, b.x, c.x}))));
-    const int x1 = std::min(kW - 1, static_cast<int>(std::ceil(std::max({a.x, b.x, c.x}))));
-    const int y0 = std::max(0, static_cast<int>(std::floor(std::min({a.y, b.y, c.y}))));
-    const int y1 = std::min(kH - 1, static_cast<int>(std::ceil(std::max({a.y, b.y, c.y}))));
-    for (int y = y0; y <= y1; ++y) {
-      for (int x = x0; x <= x1; ++x) {
-        const glm::vec2 p{x + 0.5f, y + 0.5f};
-        const float d1 = cross2(b - a, p - a), d2 = cross2(c - b, p - b), d3 = cross2(a - c, p - c);
-        const bool inside = !((d1 < 0.0f || d2 < 0.0f || d3 < 0.0f) && (d1 > 0.0f || d2 > 0.0f || d3 > 0.0f));
-        if (inside) out[static_cast<size_t>(y * kW + x)] = 1;
-      }
-    }
-  }
-  return out;
+  return covered_pixels(px, list.indices);
 }
 
 }  // namespace
