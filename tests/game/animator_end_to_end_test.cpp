@@ -741,9 +741,10 @@ TEST_CASE("random creatures walk and run on flat ground without jolting their tr
   };
   const Known known[] = {{22, nullptr}, {28, nullptr}};
   // Limb flicks (as the examples above), but for the arms of random 5 (its pentapedal hands),
-  // 6, 9, 20, 26, 33 and 39, and random 41's leg at the middle of its walk's swing.
-  const Known flicking[] = {{5, "walk:0.5"}, {6, "walk:0.5"}, {9, "run:1"}, {20, "walk:0.5"}, {26, nullptr},
-                            {33, "run:1"},   {39, "run:1"},    {41, "walk:0.5"}};
+  // 6, 9, 20, 26, 33 and 39, random 41's leg at the middle of its walk's swing, random 1's
+  // folded wings and random 36's hind limbs, short enough to be held as fins.
+  const Known flicking[] = {{1, "walk:0.5"}, {5, "walk:0.5"}, {6, "walk:0.5"}, {9, "run:1"}, {20, "walk:0.5"}, {26, nullptr},
+                            {33, "run:1"},   {36, nullptr},    {39, "run:1"},    {41, "walk:0.5"}};
   int measured = 0;
   for (const uint64_t seed : test::sweep_seeds("game:random flat jolt", 50)) {
     Result<Creature> c = build_creature(scenes::generator().random(seed));

@@ -316,7 +316,9 @@ void SimProbe::observe(const Animator& a, const Level& level) {
     limb_joint(girdle, bone_end(world[static_cast<size_t>(bones[2])], sk.length(bones[2])));
   };
   for (const RigLeg& leg : rig.legs) chain(leg.bones);
-  for (const RigLimb& arm : rig.arms) chain(arm.bones);
+  for (const std::vector<RigLimb>* limbs : {&rig.arms, &rig.fins, &rig.wings}) {
+    for (const RigLimb& limb : *limbs) chain(limb.bones);
+  }
   const float omega = 2.0f * 3.14159265f * a.cycle_frequency();
   const float scale = std::max(omega * omega * a.hip_height(), a.params().gravity) * dt * dt;
   if (const float times = flick / scale; std::isfinite(times)) {

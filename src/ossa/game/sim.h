@@ -121,8 +121,8 @@ class SimProbe {
   // before a jump (those are meant to jolt): the largest so far and on the last tick.
   float max_body_jolt_g = 0.0f;
   float jolt_g = 0.0f;
-  // Limb flicks: how hard any leg's or arm's joint (knee, ankle and toe; elbow, wrist and the
-  // hand's end) is thrown about relative to its girdle joint: its acceleration there over three
+  // Limb flicks: how hard any leg's, arm's, fin's or wing's joint (its middle joint, its last
+  // bone's start and end: knee, ankle and toe; elbow, wrist and the hand's end) is thrown about relative to its girdle joint: its acceleration there over three
   // ticks (the second difference of its place), in units of the gait's own, (2π f)² h (f the
   // gait's cycle frequency, h the hip height; at least g, a leg swinging as a pendulum), not
   // across a turn (which mirrors the limbs) nor a start again at the spawn. The largest, when
